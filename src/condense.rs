@@ -1,0 +1,258 @@
+//! Condensation of the BEM system to the contact flexibility (seed eqs. 14–24).
+//!
+//! With the support's displacement prescribed (its rigid motion), the free boundary traction-free and the contact
+//! nodes' displacements and tractions both unknown, `H u = G t` is rearranged into `A x = b(t_c, ρ)` with the
+//! unknowns `x` = support tractions, free-boundary displacements and contact displacements: A's column for a
+//! support degree of freedom is −G's, every other column is H's. One LU factorisation of A then gives, by solves
+//! against the contact-traction columns of G, the contact displacements per unit contact traction — the
+//! flexibility F — and, by solves against −H·(rigid mode) over the support, the contact displacements caused by
+//! each unit rigid motion ρ of the support. No inverse of the whole system is formed.
+//!
+//! F is expressed in the flat's frame (`DESIGN.md`): N = y (pressure p = t_y, gap change u_y), T = x (shear
+//! q = t_x, slip u_x), so `u_N = F_NN p + F_NT q + R_N ρ` and `u_T = F_TN p + F_TT q + R_T ρ`. The seed's per-node
+//! rotation C_i (eq. 18) is not applied: the counter-body is a flat, whose frame is the same at every node.
+//!
+//! Units: everything here is dimensionless, lengths divided by the model's reference length `L0 = 2R` and
+//! stresses by Young's modulus (see [`Model`]). The rigid modes are, in this order, the tangential shift
+//! (u = (1, 0)), the approach towards the flat (u = (0, −1)) and the counter-clockwise rotation about the wheel
+//! centre (u = (−y, x)).
+
+use crate::bem::{assemble, kelvin::Kelvin, BlockSink};
+use crate::error::{Error, Result};
+use crate::mesh::{Bc, Mesh};
+use crate::scene::{Scene, Support};
+use faer::linalg::solvers::Solve;
+use faer::Mat;
+
+/// The scene's wheel in dimensionless form: mesh in units of `length`, Kelvin kernels with E = 1.
+#[derive(Debug, Clone)]
+pub struct Model {
+    /// Boundary mesh, lengths divided by `length`.
+    pub mesh: Mesh,
+    /// Kernel constants with Young's modulus 1.
+    pub kelvin: Kelvin,
+    /// Reference length L0 = 2R (user's unit): the wheel's diameter, so every distance in the body is ≤ 1 and the
+    /// logarithmic kernel stays clear of the degenerate scales of 2D elastostatics (which lie near radius 1).
+    pub length: f64,
+    /// Reference stress = Young's modulus E (user's unit).
+    pub modulus: f64,
+}
+
+impl Model {
+    /// Build the dimensionless model of a (validated) scene.
+    pub fn new(scene: &Scene) -> Model {
+        let w = &scene.wheel;
+        let length = 2.0 * w.radius;
+        let support = match w.support {
+            Support::Hub { radius } => Support::Hub { radius: radius / length },
+            s @ Support::TopArc { .. } => s,
+        };
+        Model {
+            mesh: Mesh::wheel(w.radius / length, support, &scene.mesh),
+            kelvin: Kelvin::new(1.0, w.poisson_ratio),
+            length,
+            modulus: w.youngs_modulus,
+        }
+    }
+}
+
+/// Which blocks of the flexibility to compute.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Blocks {
+    /// Only F_NN and the normal rigid responses: the frictionless problem.
+    Normal,
+    /// F_NN, F_NT, F_TN, F_TT and both rigid responses.
+    All,
+}
+
+/// The contact flexibility and the contact nodes' data, dimensionless (see the module docs).
+#[derive(Debug, Clone)]
+pub struct Flexibility {
+    /// u_y per unit t_y (n × n).
+    pub nn: Mat<f64>,
+    /// u_y per unit t_x (only with [`Blocks::All`]).
+    pub nt: Option<Mat<f64>>,
+    /// u_x per unit t_y (only with [`Blocks::All`]).
+    pub tn: Option<Mat<f64>>,
+    /// u_x per unit t_x (only with [`Blocks::All`]).
+    pub tt: Option<Mat<f64>>,
+    /// u_y of the contact nodes per unit rigid mode (n × 3: shift, approach, rotation).
+    pub rigid_n: Mat<f64>,
+    /// u_x of the contact nodes per unit rigid mode (only with [`Blocks::All`]).
+    pub rigid_t: Option<Mat<f64>>,
+    /// Contact-node x coordinates (increasing).
+    pub x: Vec<f64>,
+    /// Contact-node y coordinates.
+    pub y: Vec<f64>,
+    /// Initial gaps g0 = y + R to the flat.
+    pub g0: Vec<f64>,
+    /// Tributary lengths (∫N ds): nodal force = weight × traction.
+    pub weights: Vec<f64>,
+    /// Size of the rearranged BEM system (2 × nodes).
+    pub system_size: usize,
+    /// Ratio of the largest to the smallest |U_ii| of A's LU factors: a cheap lower bound of A's condition number.
+    pub pivot_ratio: f64,
+}
+
+impl Flexibility {
+    /// Number of contact nodes.
+    pub fn n(&self) -> usize {
+        self.x.len()
+    }
+}
+
+struct CondSink<'a> {
+    a: &'a mut Mat<f64>,
+    rhs: &'a mut Mat<f64>,
+    mesh: &'a Mesh,
+    /// For each node: its contact index, if it is a contact node.
+    contact_index: &'a [Option<usize>],
+    /// Number of contact-traction right-hand sides per component that are stored (0: none for t_x).
+    store_tx: bool,
+    n_contact: usize,
+}
+
+impl BlockSink for CondSink<'_> {
+    #[inline]
+    fn add(&mut self, row: usize, col: usize, h: &[[f64; 2]; 2], g: &[[f64; 2]; 2]) {
+        let node = &self.mesh.nodes[col];
+        match node.bc {
+            Bc::Support => {
+                let p = node.pos;
+                let modes = [[1.0, 0.0], [0.0, -1.0], [-p[1], p[0]]];
+                let base = self.rhs.ncols() - 3;
+                for l in 0..2 {
+                    for m in 0..2 {
+                        self.a[(2 * row + l, 2 * col + m)] -= g[l][m];
+                    }
+                    for (mi, mode) in modes.iter().enumerate() {
+                        self.rhs[(2 * row + l, base + mi)] -= h[l][0] * mode[0] + h[l][1] * mode[1];
+                    }
+                }
+            }
+            Bc::Free => {
+                for l in 0..2 {
+                    for m in 0..2 {
+                        self.a[(2 * row + l, 2 * col + m)] += h[l][m];
+                    }
+                }
+            }
+            Bc::Contact => {
+                let c = self.contact_index[col].expect("contact node has an index");
+                for l in 0..2 {
+                    for m in 0..2 {
+                        self.a[(2 * row + l, 2 * col + m)] += h[l][m];
+                    }
+                    // Column layout of rhs: t_y columns 0..n, then t_x columns n..2n (if stored), then 3 rigid.
+                    self.rhs[(2 * row + l, c)] += g[l][1];
+                    if self.store_tx {
+                        self.rhs[(2 * row + l, self.n_contact + c)] += g[l][0];
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Timings of the two BEM stages, seconds.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct BemTiming {
+    /// Assembly of A and the right-hand sides.
+    pub assembly: f64,
+    /// LU factorisation and solves.
+    pub condensation: f64,
+}
+
+/// The rearranged BEM system `A x = rhs` before factorisation (see the module docs).
+pub struct System {
+    /// A: −G columns for support DOFs, H columns otherwise (2N × 2N).
+    pub a: Mat<f64>,
+    /// Right-hand sides: t_y columns of the contact nodes, then (with [`Blocks::All`]) their t_x columns, then the
+    /// three rigid modes.
+    pub rhs: Mat<f64>,
+    /// Which blocks the right-hand sides serve.
+    pub blocks: Blocks,
+}
+
+/// Assemble the rearranged system of `model` (the BEM assembly stage).
+pub fn assemble_system(model: &Model, blocks: Blocks) -> Result<System> {
+    let mesh = &model.mesh;
+    let nn = mesh.n_nodes();
+    let nc = mesh.contact_nodes.len();
+    let mut contact_index = vec![None; nn];
+    for (c, &i) in mesh.contact_nodes.iter().enumerate() {
+        contact_index[i] = Some(c);
+    }
+    let store_tx = blocks == Blocks::All;
+    let ncols = if store_tx { 2 * nc } else { nc } + 3;
+    let mut a = Mat::<f64>::zeros(2 * nn, 2 * nn);
+    let mut rhs = Mat::<f64>::zeros(2 * nn, ncols);
+    {
+        let mut sink = CondSink {
+            a: &mut a,
+            rhs: &mut rhs,
+            mesh,
+            contact_index: &contact_index,
+            store_tx,
+            n_contact: nc,
+        };
+        assemble(mesh, &model.kelvin, &mut sink);
+    }
+    if !a.col_iter().all(|c| c.iter().all(|v| v.is_finite())) {
+        return Err(Error::Numerical { stage: "assembly", message: "the BEM system has non-finite entries".into() });
+    }
+    Ok(System { a, rhs, blocks })
+}
+
+/// Factorise the rearranged system once and solve for the flexibility (the condensation stage).
+pub fn solve_system(model: &Model, sys: &System) -> Result<Flexibility> {
+    let mesh = &model.mesh;
+    let nn = mesh.n_nodes();
+    let nc = mesh.contact_nodes.len();
+    let store_tx = sys.blocks == Blocks::All;
+    let ncols = sys.rhs.ncols();
+    let lu = sys.a.partial_piv_lu();
+    let u = lu.U();
+    let (mut umax, mut umin) = (0.0_f64, f64::INFINITY);
+    for i in 0..u.nrows() {
+        let v = u[(i, i)].abs();
+        umax = umax.max(v);
+        umin = umin.min(v);
+    }
+    let pivot_ratio = umax / umin;
+    if !pivot_ratio.is_finite() || pivot_ratio > 1e14 {
+        return Err(Error::Numerical {
+            stage: "condensation",
+            message: format!("the rearranged BEM system is singular (LU pivot ratio {pivot_ratio:.3e}): check the support"),
+        });
+    }
+    let sol = lu.solve(&sys.rhs);
+    let rows = |comp: usize, col0: usize, ncol: usize| {
+        Mat::from_fn(nc, ncol, |r, c| sol[(2 * mesh.contact_nodes[r] + comp, col0 + c)])
+    };
+    let rigid0 = ncols - 3;
+    Ok(Flexibility {
+        nn: rows(1, 0, nc),
+        nt: store_tx.then(|| rows(1, nc, nc)),
+        tn: store_tx.then(|| rows(0, 0, nc)),
+        tt: store_tx.then(|| rows(0, nc, nc)),
+        rigid_n: rows(1, rigid0, 3),
+        rigid_t: store_tx.then(|| rows(0, rigid0, 3)),
+        x: mesh.contact_nodes.iter().map(|&i| mesh.nodes[i].pos[0]).collect(),
+        y: mesh.contact_nodes.iter().map(|&i| mesh.nodes[i].pos[1]).collect(),
+        g0: mesh.contact_nodes.iter().map(|&i| mesh.initial_gap(i)).collect(),
+        weights: mesh.contact_nodes.iter().map(|&i| mesh.nodes[i].weight).collect(),
+        system_size: 2 * nn,
+        pivot_ratio,
+    })
+}
+
+/// Assemble, factorise and condense the model to the contact flexibility, timing both stages.
+pub fn condense(model: &Model, blocks: Blocks) -> Result<(Flexibility, BemTiming)> {
+    let t0 = std::time::Instant::now();
+    let sys = assemble_system(model, blocks)?;
+    let t1 = std::time::Instant::now();
+    let flex = solve_system(model, &sys)?;
+    let t2 = std::time::Instant::now();
+    Ok((flex, BemTiming { assembly: (t1 - t0).as_secs_f64(), condensation: (t2 - t1).as_secs_f64() }))
+}

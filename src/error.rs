@@ -1,0 +1,73 @@
+//! Error types. Bad input is an [`Error`]; a contact problem without a solution is *not* an error but a
+//! [`crate::solvers::Status`] recorded in the result.
+
+use std::path::PathBuf;
+
+/// Everything that stops rollbem before it can produce a result.
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    /// A scene file could not be read.
+    #[error("cannot read scene file {path}: {source}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The I/O error.
+        source: std::io::Error,
+    },
+    /// A scene file is not valid TOML or does not match the scene schema (missing key, wrong type, unknown key).
+    #[error("{path}: {message}")]
+    Parse {
+        /// The file.
+        path: PathBuf,
+        /// The parser's message, with the line and column and the key where known.
+        message: String,
+    },
+    /// A scene value is out of its valid range.
+    #[error("{path}: invalid value for `{field}`: {message}")]
+    Invalid {
+        /// The file (or `<scene>` for a scene built in code).
+        path: PathBuf,
+        /// Dotted path of the offending key, e.g. `wheel.radius`.
+        field: String,
+        /// What is wrong and what is expected.
+        message: String,
+    },
+    /// The scene asks for something this version cannot simulate (stated precisely).
+    #[error("{path}: unsupported: {message}")]
+    Unsupported {
+        /// The file.
+        path: PathBuf,
+        /// What is not supported.
+        message: String,
+    },
+    /// An output file could not be written.
+    #[error("cannot write {path}: {source}")]
+    Write {
+        /// The file.
+        path: PathBuf,
+        /// The I/O error.
+        source: std::io::Error,
+    },
+    /// The BEM system is singular or not finite (a degenerate mesh or support).
+    #[error("numerical failure in {stage}: {message}")]
+    Numerical {
+        /// Pipeline stage, e.g. `condensation`.
+        stage: &'static str,
+        /// Diagnosis.
+        message: String,
+    },
+}
+
+impl Error {
+    /// Process exit code for this error: 2 for bad input (the user's to fix), 3 for I/O, 4 for numerical failure.
+    pub fn exit_code(&self) -> i32 {
+        match self {
+            Error::Io { .. } | Error::Parse { .. } | Error::Invalid { .. } | Error::Unsupported { .. } => 2,
+            Error::Write { .. } => 3,
+            Error::Numerical { .. } => 4,
+        }
+    }
+}
+
+/// Result alias.
+pub type Result<T> = std::result::Result<T, Error>;

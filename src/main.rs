@@ -1,0 +1,129 @@
+//! The `rollbem` command line. Exit codes: 0 success (every check passed), 1 a check failed or a solver did not
+//! solve, 2 bad input, 3 an output file could not be written, 4 numerical failure of the BEM system.
+
+use clap::{Parser, Subcommand};
+use rollbem::run::{run_scene, write_atomic, Report};
+use rollbem::scene::{Scene, SolverName};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(name = "rollbem", version, about = "Wheel-on-flat contact by BEM and complementarity, checked against theory")]
+struct Cli {
+    #[command(subcommand)]
+    cmd: Cmd,
+}
+
+#[derive(Subcommand)]
+enum Cmd {
+    /// Solve a scene with its solvers, print a table, optionally write the JSON result document.
+    Run {
+        /// Scene file (TOML).
+        scene: PathBuf,
+        /// Write the JSON result document here (written only when the run completes).
+        #[arg(long)]
+        json: Option<PathBuf>,
+        /// Override the scene's `[solvers] use` (repeatable): lemke, clarabel, all.
+        #[arg(long = "solver", value_parser = parse_solver)]
+        solvers: Vec<SolverName>,
+    },
+}
+
+fn parse_solver(s: &str) -> Result<SolverName, String> {
+    match s {
+        "lemke" => Ok(SolverName::Lemke),
+        "clarabel" => Ok(SolverName::Clarabel),
+        "all" => Ok(SolverName::All),
+        _ => Err(format!("unknown solver `{s}` (expected one of: lemke, clarabel, all)")),
+    }
+}
+
+fn print_report(r: &Report) {
+    println!("scene {} — {}", r.scene.name, r.scene.description);
+    println!(
+        "mesh: {} {} elements, {} nodes, {} contact nodes, BEM system {}×{}; effects: {}",
+        r.mesh.elements,
+        r.mesh.element.name(),
+        r.mesh.nodes,
+        r.mesh.contact_nodes,
+        r.mesh.system_size,
+        r.mesh.system_size,
+        r.effects.join(", ")
+    );
+    println!(
+        "health: BEM LU pivot ratio {:.2e}, flexibility asymmetry {:.2e}",
+        r.diagnostics.bem_pivot_ratio, r.diagnostics.flexibility_asymmetry
+    );
+    if let Some(h) = &r.references.hertz {
+        println!("Hertz at P = {:.6e}: a = {:.6e}, p0 = {:.6e}", h.load, h.half_width, h.peak_pressure);
+    }
+    println!(
+        "{:<9} {:<16} {:>5} {:>8} {:>10} {:>12} {:>12} {:>12} {:>12} {:>10}",
+        "solver", "status", "size", "work", "residual", "P", "a (fit)", "p0 (fit)", "d_N", "time [s]"
+    );
+    for run in &r.runs {
+        let work = run.work.pivots.map(|p| format!("{p} piv")).or(run.work.iterations.map(|i| format!("{i} it"))).unwrap_or_default();
+        let opt = |v: Option<f64>| v.map(|v| format!("{v:.6e}")).unwrap_or_else(|| "-".into());
+        println!(
+            "{:<9} {:<16} {:>5} {:>8} {:>10.2e} {:>12.6e} {:>12} {:>12} {:>12.5e} {:>10.4}",
+            run.solver,
+            run.status.name(),
+            run.problem_size,
+            work,
+            run.residuals.max(),
+            run.resultants.normal,
+            opt(run.contact.fit_half_width),
+            opt(run.contact.fit_peak_pressure),
+            run.rigid_body.normal,
+            run.timing_s.total
+        );
+        if run.status != rollbem::solvers::Status::Solved {
+            println!("          {}", run.message);
+        }
+    }
+    println!("checks:");
+    for c in &r.checks {
+        println!(
+            "  [{}] {:<48} measured {:>12.6e}  reference {:>12.6e}  error {:>9.2e}  tol {:>8.1e}",
+            if c.pass { "pass" } else { "FAIL" },
+            c.name,
+            c.measured,
+            c.reference,
+            c.error,
+            c.tolerance
+        );
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match cli.cmd {
+        Cmd::Run { scene, json, solvers } => {
+            let result = Scene::from_file(&scene).and_then(|mut s| {
+                if !solvers.is_empty() {
+                    s.solvers.use_ = solvers;
+                }
+                let report = run_scene(&s, &scene)?;
+                if let Some(path) = &json {
+                    let text = serde_json::to_string_pretty(&report).expect("report serialises");
+                    write_atomic(path, &text)?;
+                }
+                Ok(report)
+            });
+            match result {
+                Ok(report) => {
+                    print_report(&report);
+                    if report.all_pass() {
+                        ExitCode::SUCCESS
+                    } else {
+                        ExitCode::from(1)
+                    }
+                }
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    ExitCode::from(e.exit_code() as u8)
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,291 @@
+//! Wheel meshes: the boundary of a disk (support `top_arc`) or an annulus (support `hub`), with a finer,
+//! uniform mesh on the potential contact arc around the bottom point and a smooth geometric size grading into the
+//! rest of the outer boundary.
+//!
+//! Geometry conventions (`DESIGN.md`): x horizontal, y up, the wheel centre at the origin, the flat the line
+//! y = −R touching the undeformed wheel at (0, −R). Angles are polar angles (radians, counter-clockwise from +x);
+//! the bottom point is at −π/2. The outer circle is traversed counter-clockwise and the hub circle clockwise, so
+//! the body lies on the left and the outward normal is `n = (t_y, −t_x)` for the unit tangent `t`.
+//!
+//! Constant elements are straight chords between vertices on the circle, with one node (collocation point) at the
+//! chord's midpoint. Quadratic elements follow the exact circular arc, with three nodes at ξ = −2/3, 0, 2/3
+//! ([`crate::bem::quadratic`]).
+
+use crate::bem::quadratic::{ArcElement, XI_NODES};
+use crate::scene::{ElementKind, MeshSpec, Support};
+use std::f64::consts::PI;
+
+/// Boundary condition class of an element (and of its nodes).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Bc {
+    /// Traction-free outer boundary: displacements unknown.
+    Free,
+    /// Potential contact zone: displacements and tractions both unknown (tied by the contact law).
+    Contact,
+    /// Clamped to the rigid support: displacement = the support's rigid motion, tractions unknown.
+    Support,
+}
+
+/// Geometry of one element.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Shape {
+    /// Straight element from `a` to `b` (constant elements).
+    Straight {
+        /// Start vertex.
+        a: [f64; 2],
+        /// End vertex.
+        b: [f64; 2],
+    },
+    /// Exact circular arc (quadratic elements).
+    Arc(ArcElement),
+}
+
+/// One boundary element.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Element {
+    /// Geometry.
+    pub shape: Shape,
+    /// Boundary condition class.
+    pub bc: Bc,
+    /// Index of the element's first node in [`Mesh::nodes`]; its nodes are consecutive.
+    pub first_node: usize,
+    /// Number of nodes (1 for constant, 3 for quadratic).
+    pub n_nodes: usize,
+}
+
+/// One node (collocation point): where displacements and tractions are sampled.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Node {
+    /// Position (length unit of the mesh).
+    pub pos: [f64; 2],
+    /// Outward unit normal of the body.
+    pub normal: [f64; 2],
+    /// ∫ N_j ds: the length that carries this node's traction (tributary length; resultant = Σ weight·t).
+    pub weight: f64,
+    /// Owning element.
+    pub element: usize,
+    /// Boundary condition class.
+    pub bc: Bc,
+}
+
+/// A meshed wheel boundary.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Mesh {
+    /// Element family.
+    pub kind: ElementKind,
+    /// Outer radius (length unit of the mesh).
+    pub radius: f64,
+    /// Elements, outer circle first (counter-clockwise from the left end of the contact arc), then the hub.
+    pub elements: Vec<Element>,
+    /// Nodes, element by element.
+    pub nodes: Vec<Node>,
+    /// Indices of the contact nodes, in increasing x.
+    pub contact_nodes: Vec<usize>,
+}
+
+/// Sizes `h0·r^k`, k = 1..=n, with the ratio r chosen so they sum to `span` (r < 1 when n·h0 > span).
+fn graded_sizes(h0: f64, span: f64, n: usize) -> Vec<f64> {
+    let total = |r: f64| (1..=n).map(|k| h0 * r.powi(k as i32)).sum::<f64>();
+    let (mut lo, mut hi) = (1e-3_f64, 10.0_f64);
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if total(mid) > span {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    let r = 0.5 * (lo + hi);
+    let mut sizes: Vec<f64> = (1..=n).map(|k| h0 * r.powi(k as i32)).collect();
+    // Absorb the bisection's last rounding so the sizes close the span exactly.
+    let s: f64 = sizes.iter().sum();
+    for h in &mut sizes {
+        *h *= span / s;
+    }
+    sizes
+}
+
+impl Mesh {
+    /// Mesh a wheel of outer radius `radius` with the given support (its lengths in the same unit as `radius`).
+    pub fn wheel(radius: f64, support: Support, spec: &MeshSpec) -> Mesh {
+        let alpha = spec.contact_arc_deg.to_radians();
+        let nc = spec.contact_elements;
+        let h0 = alpha / nc as f64;
+        let start = -PI / 2.0 - alpha / 2.0;
+        // Outer-circle vertex angles, counter-clockwise, and the class of each element.
+        let mut angles = vec![start];
+        let mut classes = Vec::new();
+        for k in 1..=nc {
+            angles.push(start + h0 * k as f64);
+            classes.push(Bc::Contact);
+        }
+        let no = spec.other_elements;
+        match support {
+            Support::Hub { .. } => {
+                let nr = no.div_ceil(2);
+                let nl = no - nr;
+                let span = PI - alpha / 2.0;
+                let right = graded_sizes(h0, span, nr);
+                let left = graded_sizes(h0, span, nl);
+                let mut a = *angles.last().unwrap();
+                for h in right.iter().chain(left.iter().rev()) {
+                    a += h;
+                    angles.push(a);
+                    classes.push(Bc::Free);
+                }
+            }
+            Support::TopArc { angle_deg } => {
+                let beta = angle_deg.to_radians();
+                let span = PI - alpha / 2.0 - beta / 2.0;
+                // Choose how many uniform elements the clamped arc gets so that their size continues the grading.
+                let mut best: Option<(f64, usize)> = None;
+                for ntop in 1..=no.saturating_sub(2).max(1) {
+                    let nr = (no - ntop).div_ceil(2);
+                    let nl = no - ntop - nr;
+                    if nl == 0 {
+                        continue;
+                    }
+                    let last = *graded_sizes(h0, span, nr).last().unwrap();
+                    let mismatch = ((beta / ntop as f64) / last).ln().abs();
+                    if best.is_none_or(|(m, _)| mismatch < m) {
+                        best = Some((mismatch, ntop));
+                    }
+                }
+                let ntop = best.map(|b| b.1).unwrap_or(1);
+                let nr = (no - ntop).div_ceil(2);
+                let nl = no - ntop - nr;
+                let right = graded_sizes(h0, span, nr);
+                let left = graded_sizes(h0, span, nl);
+                let mut a = *angles.last().unwrap();
+                for h in &right {
+                    a += h;
+                    angles.push(a);
+                    classes.push(Bc::Free);
+                }
+                for _ in 0..ntop {
+                    a += beta / ntop as f64;
+                    angles.push(a);
+                    classes.push(Bc::Support);
+                }
+                for h in left.iter().rev() {
+                    a += h;
+                    angles.push(a);
+                    classes.push(Bc::Free);
+                }
+            }
+        }
+        // Close the circle exactly.
+        *angles.last_mut().unwrap() = start + 2.0 * PI;
+
+        let mut mesh = Mesh {
+            kind: spec.element,
+            radius,
+            elements: Vec::new(),
+            nodes: Vec::new(),
+            contact_nodes: Vec::new(),
+        };
+        for (k, bc) in classes.iter().enumerate() {
+            mesh.push_element(radius, angles[k], angles[k + 1], *bc);
+        }
+        if let Support::Hub { radius: rh } = support {
+            let mean_other = (2.0 * PI - alpha) * radius / no as f64;
+            let nh = ((2.0 * PI * rh / mean_other).round() as usize).max(12);
+            let dh = 2.0 * PI / nh as f64;
+            for k in 0..nh {
+                // Clockwise: the body (the annulus) lies on the left of the hole's boundary.
+                let t0 = PI / 2.0 - dh * k as f64;
+                mesh.push_element(rh, t0, t0 - dh, Bc::Support);
+            }
+        }
+        mesh.contact_nodes = (0..mesh.nodes.len()).filter(|&i| mesh.nodes[i].bc == Bc::Contact).collect();
+        mesh.contact_nodes.sort_by(|&a, &b| mesh.nodes[a].pos[0].total_cmp(&mesh.nodes[b].pos[0]));
+        mesh
+    }
+
+    fn push_element(&mut self, rho: f64, t0: f64, t1: f64, bc: Bc) {
+        let e = self.elements.len();
+        let first = self.nodes.len();
+        match self.kind {
+            ElementKind::Constant => {
+                let a = [rho * t0.cos(), rho * t0.sin()];
+                let b = [rho * t1.cos(), rho * t1.sin()];
+                let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+                let len = dx.hypot(dy);
+                let t = [dx / len, dy / len];
+                self.nodes.push(Node {
+                    pos: [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])],
+                    normal: [t[1], -t[0]],
+                    weight: len,
+                    element: e,
+                    bc,
+                });
+                self.elements.push(Element { shape: Shape::Straight { a, b }, bc, first_node: first, n_nodes: 1 });
+            }
+            ElementKind::Quadratic => {
+                let arc = ArcElement { centre: [0.0, 0.0], radius: rho, theta0: t0, theta1: t1 };
+                let w = arc.node_weights();
+                for (j, &xi) in XI_NODES.iter().enumerate() {
+                    self.nodes.push(Node { pos: arc.position(xi), normal: arc.normal(xi), weight: w[j], element: e, bc });
+                }
+                self.elements.push(Element { shape: Shape::Arc(arc), bc, first_node: first, n_nodes: 3 });
+            }
+        }
+    }
+
+    /// Number of nodes.
+    pub fn n_nodes(&self) -> usize {
+        self.nodes.len()
+    }
+
+    /// Exact initial gap of node `i` to the flat y = −R: `g0 = y_i + R` (≥ 0 for nodes on the arc; a constant
+    /// element's chord midpoint lies inside the circle by the sagitta, which is part of its initial gap).
+    pub fn initial_gap(&self, i: usize) -> f64 {
+        self.nodes[i].pos[1] + self.radius
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spec(element: ElementKind) -> MeshSpec {
+        MeshSpec { element, contact_arc_deg: 30.0, contact_elements: 24, other_elements: 32 }
+    }
+
+    #[test]
+    fn seed_mesh_counts_and_closure() {
+        // The seed's Fig. 5/6 mesh: 56 elements, 24 of them on 1/12 of the contour.
+        let m = Mesh::wheel(1.0, Support::TopArc { angle_deg: 30.0 }, &spec(ElementKind::Constant));
+        assert_eq!(m.elements.len(), 56);
+        assert_eq!(m.contact_nodes.len(), 24);
+        // Perimeter of the inscribed polygon ≈ 2π (chords), closed: last vertex = first vertex.
+        let per: f64 = m.nodes.iter().map(|n| n.weight).sum();
+        assert!((per - 2.0 * PI).abs() < 0.01, "perimeter {per}");
+        let n_support = m.elements.iter().filter(|e| e.bc == Bc::Support).count();
+        assert!(n_support >= 1);
+        // Grading is smooth: neighbouring free elements differ by less than 40 % in size.
+        for w in m.nodes.windows(2) {
+            let r = w[1].weight / w[0].weight;
+            assert!(r < 1.4 && r > 1.0 / 1.4, "size jump {r}");
+        }
+    }
+
+    #[test]
+    fn hub_mesh_normals_point_out_of_the_annulus() {
+        let m = Mesh::wheel(2.0, Support::Hub { radius: 0.5 }, &spec(ElementKind::Quadratic));
+        for n in &m.nodes {
+            let r = n.pos[0].hypot(n.pos[1]);
+            let radial = (n.normal[0] * n.pos[0] + n.normal[1] * n.pos[1]) / r;
+            if r > 1.0 {
+                assert!((radial - 1.0).abs() < 1e-12);
+            } else {
+                assert!((radial + 1.0).abs() < 1e-12);
+                assert_eq!(n.bc, Bc::Support);
+            }
+        }
+        // Contact nodes are in increasing x and symmetric about x = 0.
+        let xs: Vec<f64> = m.contact_nodes.iter().map(|&i| m.nodes[i].pos[0]).collect();
+        assert!(xs.windows(2).all(|w| w[0] < w[1]));
+        assert!((xs[0] + xs[xs.len() - 1]).abs() < 1e-12);
+    }
+}

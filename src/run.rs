@@ -1,0 +1,429 @@
+//! The pipeline for one scene: model → condensation → formulation → every requested solver → post-processing →
+//! checks. Produces the JSON document of `DESIGN.md` ([`Report`]).
+//!
+//! Only the effects the scene calls for are simulated: a frictionless scene condenses only the normal columns of
+//! the flexibility ([`Blocks::Normal`]), builds an LCP of one unknown per contact node (plus two per load-driven
+//! rigid degree of freedom) and does no tangential or rolling work; `effects` and `problem_size` in the report
+//! show it.
+
+use crate::condense::{condense, BemTiming, Blocks, Flexibility, Model};
+use crate::error::{Error, Result};
+use crate::formulation::{DriveIssue, Frictionless, MODE_APPROACH};
+use crate::hertz::Hertz;
+use crate::post::{evaluate_frictionless, ContactSummary, Evaluation, NodeResult, Residuals, Resultants, RigidBody};
+use crate::scene::{Dof, ElementKind, Scene, SolverName};
+use crate::solvers::clarabel_qp::{self, QpSettings, QpStatus};
+use crate::solvers::lemke::{self, LemkeSettings};
+use crate::solvers::Status;
+use crate::tolerances as tol;
+use serde::Serialize;
+use std::path::Path;
+use std::time::Instant;
+
+/// Work counters of a solver run.
+#[derive(Debug, Clone, Copy, Default, Serialize)]
+pub struct Work {
+    /// Lemke pivots.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pivots: Option<usize>,
+    /// Interior-point iterations.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub iterations: Option<u32>,
+}
+
+/// Wall-clock time per stage, seconds. Assembly and condensation are shared by all solvers of a scene.
+#[derive(Debug, Clone, Copy, Default, Serialize)]
+pub struct Timing {
+    /// BEM assembly.
+    pub assembly: f64,
+    /// LU factorisation and solves for the flexibility.
+    pub condensation: f64,
+    /// Building the LCP / QP.
+    pub formulation: f64,
+    /// The solver.
+    pub solve: f64,
+    /// Sum of the above.
+    pub total: f64,
+}
+
+/// One solver's run on the scene.
+#[derive(Debug, Clone, Serialize)]
+pub struct SolverRun {
+    /// Solver name.
+    pub solver: String,
+    /// `frictionless` | `displacement` | `loading`.
+    pub formulation: String,
+    /// Outcome (after the solver-independent residual check).
+    pub status: Status,
+    /// Detail from the solver or the residual check.
+    pub message: String,
+    /// Number of complementarity (or QP) unknowns solved.
+    pub problem_size: usize,
+    /// Work counters.
+    pub work: Work,
+    /// Time per stage.
+    pub timing_s: Timing,
+    /// Solver-independent residuals.
+    pub residuals: Residuals,
+    /// Resultants of the contact tractions.
+    pub resultants: Resultants,
+    /// Rigid motion of the support.
+    pub rigid_body: RigidBody,
+    /// Contact figures.
+    pub contact: ContactSummary,
+    /// Per contact node.
+    pub nodes: Vec<NodeResult>,
+    /// For clarabel: max |p − p_unpolished| / p_max, the effect of solving the symmetrised QP before the
+    /// active-set polish with the nonsymmetric flexibility.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub polish_change: Option<f64>,
+}
+
+/// Mesh facts.
+#[derive(Debug, Clone, Serialize)]
+pub struct MeshInfo {
+    /// Number of elements.
+    pub elements: usize,
+    /// Number of nodes (collocation points).
+    pub nodes: usize,
+    /// Number of contact nodes.
+    pub contact_nodes: usize,
+    /// Element family.
+    pub element: ElementKind,
+    /// Size of the rearranged BEM system.
+    pub system_size: usize,
+    /// Smallest contact element length (user's unit).
+    pub contact_element_length: f64,
+}
+
+/// Numerical health of the condensation.
+#[derive(Debug, Clone, Serialize)]
+pub struct Diagnostics {
+    /// Largest/smallest |U_ii| of the BEM system's LU (a lower bound of its condition number).
+    pub bem_pivot_ratio: f64,
+    /// ‖K − Kᵀ‖_F / ‖K‖_F of the normal flexibility in nodal forces (collocation asymmetry).
+    pub flexibility_asymmetry: f64,
+}
+
+/// Analytic references that apply to the scene.
+#[derive(Debug, Clone, Serialize, Default)]
+pub struct References {
+    /// Hertz at the run's load (frictionless scenes), from the first solved run's P when displacement-driven.
+    pub hertz: Option<Hertz>,
+}
+
+/// One check: a measured figure against a reference.
+#[derive(Debug, Clone, Serialize)]
+pub struct Check {
+    /// What is checked.
+    pub name: String,
+    /// Measured value.
+    pub measured: f64,
+    /// Reference value (theory, or the peer solver).
+    pub reference: f64,
+    /// Error (relative unless the name says otherwise).
+    pub error: f64,
+    /// Tolerance (from [`crate::tolerances`]).
+    pub tolerance: f64,
+    /// error ≤ tolerance.
+    pub pass: bool,
+}
+
+/// The JSON document of one scene run (`DESIGN.md`, "Result files").
+#[derive(Debug, Clone, Serialize)]
+pub struct Report {
+    /// The scene as parsed, with defaults filled in.
+    pub scene: Scene,
+    /// Effects simulated.
+    pub effects: Vec<String>,
+    /// Mesh facts.
+    pub mesh: MeshInfo,
+    /// Numerical health.
+    pub diagnostics: Diagnostics,
+    /// Analytic references.
+    pub references: References,
+    /// One entry per solver.
+    pub runs: Vec<SolverRun>,
+    /// Checks against theory and between solvers.
+    pub checks: Vec<Check>,
+}
+
+impl Report {
+    /// Whether every check passed and every run solved.
+    pub fn all_pass(&self) -> bool {
+        self.checks.iter().all(|c| c.pass)
+    }
+}
+
+/// The solvers to run for a frictionless scene: `all` expands to every valid one; an explicitly named solver that
+/// does not apply is an error naming `solvers.use`.
+fn resolve_solvers(scene: &Scene, path: &Path, clarabel_ok: bool) -> Result<Vec<SolverName>> {
+    let mut out = Vec::new();
+    for &s in &scene.solvers.use_ {
+        match s {
+            SolverName::All => {
+                out.push(SolverName::Lemke);
+                if clarabel_ok {
+                    out.push(SolverName::Clarabel);
+                }
+            }
+            SolverName::Clarabel if !clarabel_ok => {
+                return Err(Error::Unsupported {
+                    path: path.to_path_buf(),
+                    message: "solvers.use: clarabel solves the frictionless QP with at most the normal load prescribed; \
+                              this scene prescribes a moment"
+                        .into(),
+                })
+            }
+            s => out.push(s),
+        }
+    }
+    out.sort();
+    out.dedup();
+    Ok(out)
+}
+
+fn asymmetry(k: &faer::Mat<f64>) -> f64 {
+    let n = k.nrows();
+    let (mut d, mut s) = (0.0, 0.0);
+    for j in 0..n {
+        for i in 0..n {
+            d += (k[(i, j)] - k[(j, i)]).powi(2);
+            s += k[(i, j)].powi(2);
+        }
+    }
+    (d / s.max(f64::MIN_POSITIVE)).sqrt() / 2.0_f64.sqrt()
+}
+
+/// Run a validated scene. `path` is used in error messages.
+pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
+    if scene.contact.friction > 0.0 {
+        return Err(Error::Unsupported {
+            path: path.to_path_buf(),
+            message: format!(
+                "contact.friction = {}: frictional contact (seed §4, LCPs eqs. 38 and 49) is not implemented in this \
+                 version; set friction = 0 for the normal problem",
+                scene.contact.friction
+            ),
+        });
+    }
+    if scene.rolling.is_some() {
+        return Err(Error::Unsupported {
+            path: path.to_path_buf(),
+            message: "[rolling]: the slip velocity needs the frictional formulation, not implemented in this version".into(),
+        });
+    }
+    let model = Model::new(scene);
+    let (flex, bem_t) = condense(&model, Blocks::Normal)?;
+    let tf = Instant::now();
+    let prob = Frictionless::new(scene, &model, &flex).map_err(|DriveIssue::TangentialLoadWithoutFriction(q)| {
+        Error::Unsupported {
+            path: path.to_path_buf(),
+            message: format!(
+                "drive.tangential_load = {q}: a frictionless contact carries no tangential load (gross sliding); \
+                 use tangential_load = 0 or friction > 0"
+            ),
+        }
+    })?;
+    let formulation_time = tf.elapsed().as_secs_f64();
+    let clarabel_ok = prob.loads.iter().all(|l| l.mode == MODE_APPROACH);
+    let solvers = resolve_solvers(scene, path, clarabel_ok)?;
+    let formulation = if prob.loads.is_empty() { "frictionless" } else { "frictionless_loading" };
+
+    let mut runs = Vec::new();
+    for s in solvers {
+        let t0 = Instant::now();
+        let (status, message, work, f, rigid, polish_change) = match s {
+            SolverName::Lemke => {
+                let out = lemke::solve(&prob.lcp, &LemkeSettings::default());
+                let (f, rigid) = prob.unpack(&out.z);
+                (out.status, out.message, Work { pivots: Some(out.pivots), iterations: None }, f, rigid, None)
+            }
+            SolverName::Clarabel => {
+                let n = prob.n();
+                let kcol: Vec<f64> = (0..n * n).map(|idx| prob.k[(idx % n, idx / n)]).collect();
+                let ones = vec![1.0; n];
+                let load = prob.loads.first().map(|l| (ones.as_slice(), l.load));
+                let out = clarabel_qp::solve_frictionless(&kcol, n, &prob.q0, load, &QpSettings::default());
+                let mut rigid = prob.rigid_given;
+                if let Some(d) = out.approach {
+                    rigid[MODE_APPROACH] = d;
+                }
+                let pmax = out.f.iter().zip(&flex.weights).fold(0.0_f64, |a, (f, w)| a.max(f / w));
+                let change = out
+                    .f
+                    .iter()
+                    .zip(&out.f_unpolished)
+                    .zip(&flex.weights)
+                    .fold(0.0_f64, |a, ((f, g), w)| a.max((f - g).abs() / w))
+                    / pmax.max(f64::MIN_POSITIVE);
+                let (status, msg) = match &out.status {
+                    QpStatus::Solved | QpStatus::AlmostSolved => (Status::Solved, format!("{}", out.status)),
+                    QpStatus::MaxIterations => (Status::NotConverged, format!("{}", out.status)),
+                    QpStatus::Infeasible => (Status::Infeasible, format!("{}", out.status)),
+                    QpStatus::NumericalError(m) => (Status::NumericalError, m.clone()),
+                };
+                let msg = format!("{msg}; active-set polish {}", if out.polished { "accepted" } else { "not accepted" });
+                (status, msg, Work { pivots: None, iterations: Some(out.iterations) }, out.f, rigid, Some(change))
+            }
+            SolverName::All => unreachable!("expanded by resolve_solvers"),
+        };
+        let solve_time = t0.elapsed().as_secs_f64();
+        runs.push(finish_run(scene, &model, &flex, &bem_t, s, formulation, prob.lcp.size(), status, message, work, &f, rigid, formulation_time, solve_time, polish_change));
+    }
+
+    let hertz = reference_hertz(scene, &runs);
+    let checks = make_checks(scene, &model, &runs, hertz.as_ref());
+    let mesh = &model.mesh;
+    Ok(Report {
+        scene: scene.clone(),
+        effects: vec!["normal".into()],
+        mesh: MeshInfo {
+            elements: mesh.elements.len(),
+            nodes: mesh.n_nodes(),
+            contact_nodes: flex.n(),
+            element: mesh.kind,
+            system_size: flex.system_size,
+            contact_element_length: scene.wheel.radius * scene.mesh.contact_arc_deg.to_radians() / scene.mesh.contact_elements as f64,
+        },
+        diagnostics: Diagnostics { bem_pivot_ratio: flex.pivot_ratio, flexibility_asymmetry: asymmetry(&prob.k) },
+        references: References { hertz },
+        runs,
+        checks,
+    })
+}
+
+#[allow(clippy::too_many_arguments)]
+fn finish_run(
+    scene: &Scene,
+    model: &Model,
+    flex: &Flexibility,
+    bem_t: &BemTiming,
+    solver: SolverName,
+    formulation: &str,
+    problem_size: usize,
+    mut status: Status,
+    mut message: String,
+    work: Work,
+    f: &[f64],
+    rigid: [f64; 3],
+    formulation_time: f64,
+    solve_time: f64,
+    polish_change: Option<f64>,
+) -> SolverRun {
+    let ev: Evaluation = evaluate_frictionless(scene, model, flex, f, rigid);
+    let worst = ev.residuals.max();
+    if status == Status::Solved && !(worst <= tol::RESIDUAL_REFUSE) {
+        status = Status::NumericalError;
+        message = format!("solver reported success but the independent residual is {worst:.3e} > {:.0e}; {message}", tol::RESIDUAL_REFUSE);
+    }
+    SolverRun {
+        solver: solver.name().into(),
+        formulation: formulation.into(),
+        status,
+        message,
+        problem_size,
+        work,
+        timing_s: Timing {
+            assembly: bem_t.assembly,
+            condensation: bem_t.condensation,
+            formulation: formulation_time,
+            solve: solve_time,
+            total: bem_t.assembly + bem_t.condensation + formulation_time + solve_time,
+        },
+        residuals: ev.residuals,
+        resultants: ev.resultants,
+        rigid_body: ev.rigid_body,
+        contact: ev.contact,
+        nodes: ev.nodes,
+        polish_change,
+    }
+}
+
+/// Hertz at the scene's load, or at the first solved run's load when the approach is prescribed.
+fn reference_hertz(scene: &Scene, runs: &[SolverRun]) -> Option<Hertz> {
+    let w = &scene.wheel;
+    let p = match scene.drive.normal() {
+        Dof::Load(p) => Some(p),
+        Dof::Displacement(_) => runs.iter().find(|r| r.status == Status::Solved).map(|r| r.resultants.normal),
+    }?;
+    (p > 0.0).then(|| Hertz::new(w.radius, w.youngs_modulus, w.poisson_ratio, p))
+}
+
+fn check(name: String, measured: f64, reference: f64, tolerance: f64) -> Check {
+    let error = if reference != 0.0 { (measured - reference).abs() / reference.abs() } else { measured.abs() };
+    Check { name, measured, reference, error, tolerance, pass: error <= tolerance }
+}
+
+fn make_checks(scene: &Scene, model: &Model, runs: &[SolverRun], hertz: Option<&Hertz>) -> Vec<Check> {
+    let mut out = Vec::new();
+    for r in runs {
+        out.push(Check {
+            name: format!("{}: status", r.solver),
+            measured: if r.status == Status::Solved { 0.0 } else { 1.0 },
+            reference: 0.0,
+            error: if r.status == Status::Solved { 0.0 } else { 1.0 },
+            tolerance: 0.0,
+            pass: r.status == Status::Solved,
+        });
+        if r.status != Status::Solved {
+            continue;
+        }
+        out.push(Check {
+            name: format!("{}: largest residual (absolute)", r.solver),
+            measured: r.residuals.max(),
+            reference: 0.0,
+            error: r.residuals.max(),
+            tolerance: tol::RESIDUAL_DIRECT,
+            pass: r.residuals.max() <= tol::RESIDUAL_DIRECT,
+        });
+        if let Dof::Load(p) = scene.drive.normal() {
+            out.push(check(format!("{}: resultant P = normal_load", r.solver), r.resultants.normal, p, tol::LOAD_RESULTANT));
+        }
+        if let Some(h) = hertz {
+            let hmesh = scene.wheel.radius * scene.mesh.contact_arc_deg.to_radians() / scene.mesh.contact_elements as f64;
+            let across = 2.0 * h.half_width / hmesh;
+            let applies = across >= tol::HERTZ_MIN_ELEMENTS && h.half_width / scene.wheel.radius <= tol::HERTZ_MAX_A_OVER_R;
+            let t = match model.mesh.kind {
+                ElementKind::Constant => tol::HERTZ_CONSTANT,
+                ElementKind::Quadratic => tol::HERTZ_QUADRATIC,
+            };
+            if applies {
+                if let (Some(a), Some(p0)) = (r.contact.fit_half_width, r.contact.fit_peak_pressure) {
+                    out.push(check(format!("{}: Hertz half-width a (fit)", r.solver), a, h.half_width, t));
+                    out.push(check(format!("{}: Hertz peak pressure p0 (fit)", r.solver), p0, h.peak_pressure, t));
+                }
+            }
+        }
+    }
+    // Solvers against each other: pressures relative to the peak.
+    let solved: Vec<&SolverRun> = runs.iter().filter(|r| r.status == Status::Solved).collect();
+    for i in 0..solved.len() {
+        for j in i + 1..solved.len() {
+            let (a, b) = (solved[i], solved[j]);
+            let p0 = a.contact.peak_pressure.max(f64::MIN_POSITIVE);
+            let d = a.nodes.iter().zip(&b.nodes).fold(0.0_f64, |m, (x, y)| m.max((x.pressure - y.pressure).abs())) / p0;
+            out.push(Check {
+                name: format!("{} vs {}: max |Δp| / p_max", a.solver, b.solver),
+                measured: d,
+                reference: 0.0,
+                error: d,
+                tolerance: tol::SOLVER_AGREEMENT,
+                pass: d <= tol::SOLVER_AGREEMENT,
+            });
+        }
+    }
+    out
+}
+
+/// Write `text` to `path` atomically (temporary file in the same folder, then rename): nothing half-written.
+pub fn write_atomic(path: &Path, text: &str) -> Result<()> {
+    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "out".into());
+    let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
+    std::fs::write(&tmp, text).map_err(|source| Error::Write { path: path.to_path_buf(), source })?;
+    std::fs::rename(&tmp, path).map_err(|source| {
+        let _ = std::fs::remove_file(&tmp);
+        Error::Write { path: path.to_path_buf(), source }
+    })
+}

@@ -1,0 +1,178 @@
+//! Frictionless contact, end to end from a scene: Hertz at equal load, Lemke against clarabel, resultants,
+//! problem sizes and unit invariance. Expected values: Hertz's formulas (REFERENCES.md, `rollbem::hertz`), the
+//! prescribed load, and the peer solver.
+
+use rollbem::condense::{condense, Blocks, Model};
+use rollbem::formulation::Frictionless;
+use rollbem::run::{run_scene, Report, SolverRun};
+use rollbem::scene::Scene;
+use rollbem::solvers::Status;
+use rollbem::tolerances as tol;
+use std::path::Path;
+
+/// A hub-supported wheel scene. `a_over_r` sets the Hertz half-width the load is chosen for; the candidate arc is
+/// 4a wide, so with `ne` contact elements there are ne/2 elements across the contact.
+#[allow(clippy::too_many_arguments)]
+fn scene(r: f64, e: f64, nu: f64, hub: f64, a_over_r: f64, element: &str, ne: usize, other: usize) -> Scene {
+    let estar = e / (1.0 - nu * nu);
+    let a = a_over_r * r;
+    let p = std::f64::consts::PI * estar * a * a / (4.0 * r);
+    let arc_deg = (4.0 * a_over_r).to_degrees();
+    let text = format!(
+        r#"
+name = "hertz-test"
+[wheel]
+radius = {r}
+youngs_modulus = {e}
+poisson_ratio = {nu}
+support = {{ kind = "hub", radius = {hub} }}
+[mesh]
+element = "{element}"
+contact_arc_deg = {arc_deg}
+contact_elements = {ne}
+other_elements = {other}
+[drive]
+normal_load = {p}
+[solvers]
+use = ["all"]
+"#
+    );
+    Scene::from_toml(&text, Path::new("<test>")).expect("valid scene")
+}
+
+fn run(s: &Scene) -> Report {
+    run_scene(s, Path::new("<test>")).expect("runs")
+}
+
+fn solver<'a>(r: &'a Report, name: &str) -> &'a SolverRun {
+    r.runs.iter().find(|x| x.solver == name).unwrap_or_else(|| panic!("no {name} run"))
+}
+
+/// The two wheels of the Hertz test: (R, E, ν, hub radius) in different units and materials.
+const WHEELS: [(f64, f64, f64, f64); 2] = [
+    (1.0, 94500.0, 0.1, 0.2),         // the seed's material, metres and a generic stress unit
+    (460.0, 210000.0, 0.3, 100.0),    // a steel rail wheel in mm and MPa
+];
+
+#[test]
+fn hertz_at_equal_load_constant_and_quadratic() {
+    for &(r, e, nu, hub) in &WHEELS {
+        for (element, ne, t) in [("constant", 48, tol::HERTZ_CONSTANT), ("quadratic", 40, tol::HERTZ_QUADRATIC)] {
+            let s = scene(r, e, nu, hub, 0.03, element, ne, 96);
+            let rep = run(&s);
+            let h = rep.references.hertz.expect("Hertz applies");
+            for run in &rep.runs {
+                assert_eq!(run.status, Status::Solved, "{element} {}: {}", run.solver, run.message);
+                let a = run.contact.fit_half_width.unwrap();
+                let p0 = run.contact.fit_peak_pressure.unwrap();
+                let (ea, ep) = ((a / h.half_width - 1.0).abs(), (p0 / h.peak_pressure - 1.0).abs());
+                eprintln!("R={r} {element} {}: a err {ea:.2e}, p0 err {ep:.2e}", run.solver);
+                assert!(ea <= t && ep <= t, "R={r} {element} {}: a err {ea:.3e}, p0 err {ep:.3e} > {t}", run.solver);
+                // The pressure resultant equals the prescribed load.
+                let load = s.drive.normal_load.unwrap();
+                let el = (run.resultants.normal / load - 1.0).abs();
+                assert!(el <= tol::LOAD_RESULTANT, "load error {el:e}");
+            }
+            assert!(rep.all_pass(), "{:?}", rep.checks.iter().filter(|c| !c.pass).collect::<Vec<_>>());
+        }
+    }
+}
+
+#[test]
+fn lemke_and_clarabel_agree_and_lemke_is_complementary() {
+    for &(r, e, nu, hub) in &WHEELS {
+        for element in ["constant", "quadratic"] {
+            let s = scene(r, e, nu, hub, 0.05, element, 30, 60);
+            let rep = run(&s);
+            let (l, c) = (solver(&rep, "lemke"), solver(&rep, "clarabel"));
+            assert_eq!(l.status, Status::Solved);
+            assert_eq!(c.status, Status::Solved);
+            let p0 = rep.references.hertz.unwrap().peak_pressure;
+            let d = l.nodes.iter().zip(&c.nodes).map(|(a, b)| (a.pressure - b.pressure).abs()).fold(0.0, f64::max);
+            assert!(d <= tol::SOLVER_AGREEMENT * p0, "{element}: |Δp| = {:.3e} p0", d / p0);
+            assert!(
+                l.residuals.complementarity <= tol::LEMKE_COMPLEMENTARITY,
+                "Lemke complementarity {:e}",
+                l.residuals.complementarity
+            );
+        }
+    }
+}
+
+#[test]
+fn frictionless_scene_builds_and_solves_only_the_normal_problem() {
+    // Displacement-driven: exactly one complementarity unknown per contact node; the flexibility has no
+    // tangential blocks; the report says effects = ["normal"] and computes no u_x, slip or slip velocity.
+    let mut s = scene(1.0, 94500.0, 0.1, 0.2, 0.05, "constant", 24, 32);
+    s.drive.normal_load = None;
+    s.drive.normal_approach = Some(0.004);
+    let model = Model::new(&s);
+    let (flex, _) = condense(&model, Blocks::Normal).unwrap();
+    assert!(flex.nt.is_none() && flex.tn.is_none() && flex.tt.is_none() && flex.rigid_t.is_none());
+    let prob = Frictionless::new(&s, &model, &flex).unwrap();
+    assert_eq!(prob.lcp.size(), flex.n());
+    let rep = run(&s);
+    assert_eq!(rep.effects, vec!["normal".to_string()]);
+    for run in &rep.runs {
+        assert_eq!(run.problem_size, rep.mesh.contact_nodes, "{}", run.solver);
+        assert!(run.nodes.iter().all(|n| n.u_x.is_none() && n.slip.is_none() && n.slip_velocity.is_none() && n.shear == 0.0));
+    }
+    // Load-driven: one unknown per contact node plus the split approach u⁺, u⁻.
+    let s2 = scene(1.0, 94500.0, 0.1, 0.2, 0.05, "constant", 24, 32);
+    let rep2 = run(&s2);
+    assert_eq!(solver(&rep2, "lemke").problem_size, rep2.mesh.contact_nodes + 2);
+}
+
+#[test]
+fn displacement_and_load_drives_agree() {
+    // Feed the load computed under a prescribed approach back as the drive: the approach and the pressures must
+    // come back (the two formulations describe one physics). Reference: the displacement-driven run itself.
+    let mut s = scene(1.0, 94500.0, 0.1, 0.2, 0.05, "constant", 24, 32);
+    s.drive.normal_load = None;
+    s.drive.normal_approach = Some(0.004);
+    let rd = run(&s);
+    let ld = solver(&rd, "lemke");
+    s.drive.normal_approach = None;
+    s.drive.normal_load = Some(ld.resultants.normal);
+    let rl = run(&s);
+    let ll = solver(&rl, "lemke");
+    assert!((ll.rigid_body.normal / 0.004 - 1.0).abs() < 1e-10, "approach {}", ll.rigid_body.normal);
+    let pmax = ld.contact.peak_pressure;
+    for (a, b) in ld.nodes.iter().zip(&ll.nodes) {
+        assert!((a.pressure - b.pressure).abs() <= 1e-10 * pmax);
+    }
+}
+
+#[test]
+fn unit_invariance_m_and_mm() {
+    // The same steel wheel in N, mm, MPa and in N, m, Pa: stresses equal to 1e-9 relative.
+    let mm = scene(460.0, 210000.0, 0.3, 100.0, 0.03, "quadratic", 24, 48);
+    let mut m = mm.clone();
+    m.wheel.radius = 0.46;
+    m.wheel.youngs_modulus = 210e9;
+    m.wheel.support = rollbem::scene::Support::Hub { radius: 0.1 };
+    m.drive.normal_load = Some(mm.drive.normal_load.unwrap() * 1e3); // N/mm → N/m
+    let (a, b) = (run(&mm), run(&m));
+    for (ra, rb) in a.runs.iter().zip(&b.runs) {
+        let pmax = ra.contact.peak_pressure;
+        for (na, nb) in ra.nodes.iter().zip(&rb.nodes) {
+            let d = (na.pressure - nb.pressure * 1e-6).abs();
+            assert!(d <= tol::UNIT_INVARIANCE * pmax, "{}: Δp = {:e} of p_max", ra.solver, d / pmax);
+            assert!((na.x - nb.x * 1e3).abs() <= 1e-9 * 460.0);
+        }
+    }
+}
+
+#[test]
+fn a_negative_approach_gives_no_contact_and_zero_load() {
+    // A wheel lifted off the flat: every node separated, P = 0 (exact: q ≥ 0 gives z = 0).
+    let mut s = scene(1.0, 94500.0, 0.1, 0.2, 0.05, "constant", 24, 32);
+    s.drive.normal_load = None;
+    s.drive.normal_approach = Some(-0.001);
+    s.solvers.use_ = vec![rollbem::scene::SolverName::Lemke];
+    let rep = run(&s);
+    let l = solver(&rep, "lemke");
+    assert_eq!(l.status, Status::Solved);
+    assert_eq!(l.contact.nodes_contact, 0);
+    assert_eq!(l.resultants.normal, 0.0);
+}
