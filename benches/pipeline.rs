@@ -94,7 +94,15 @@ fn frictionless_solve(c: &mut Criterion) {
         let ones = vec![1.0; nc];
         let load = prob.loads[0].load;
         g.bench_with_input(BenchmarkId::new("clarabel", nc), &prob, |b, p| {
-            b.iter(|| black_box(clarabel_qp::solve_frictionless(&kcol, nc, &p.q0, Some((&ones, load)), &QpSettings::default())))
+            b.iter(|| {
+                black_box(clarabel_qp::solve_frictionless(
+                    &kcol,
+                    nc,
+                    &p.q0,
+                    Some((&ones, load)),
+                    &QpSettings::default(),
+                ))
+            })
         });
     }
     g.finish();

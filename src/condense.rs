@@ -188,14 +188,8 @@ pub fn assemble_system(model: &Model, blocks: Blocks) -> Result<System> {
     let mut a = Mat::<f64>::zeros(2 * nn, 2 * nn);
     let mut rhs = Mat::<f64>::zeros(2 * nn, ncols);
     {
-        let mut sink = CondSink {
-            a: &mut a,
-            rhs: &mut rhs,
-            mesh,
-            contact_index: &contact_index,
-            store_tx,
-            n_contact: nc,
-        };
+        let mut sink =
+            CondSink { a: &mut a, rhs: &mut rhs, mesh, contact_index: &contact_index, store_tx, n_contact: nc };
         assemble(mesh, &model.kelvin, &mut sink);
     }
     if !a.col_iter().all(|c| c.iter().all(|v| v.is_finite())) {
@@ -223,7 +217,9 @@ pub fn solve_system(model: &Model, sys: &System) -> Result<Flexibility> {
     if !pivot_ratio.is_finite() || pivot_ratio > 1e14 {
         return Err(Error::Numerical {
             stage: "condensation",
-            message: format!("the rearranged BEM system is singular (LU pivot ratio {pivot_ratio:.3e}): check the support"),
+            message: format!(
+                "the rearranged BEM system is singular (LU pivot ratio {pivot_ratio:.3e}): check the support"
+            ),
         });
     }
     let sol = lu.solve(&sys.rhs);

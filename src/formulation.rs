@@ -87,21 +87,20 @@ impl Frictionless {
         let mut loads = Vec::new();
         match scene.drive.tangential() {
             Dof::Displacement(d) => rigid_given[MODE_SHIFT] = d / l0,
-            Dof::Load(q) if q == 0.0 => {}
+            Dof::Load(0.0) => {}
             Dof::Load(q) => return Err(DriveIssue::TangentialLoadWithoutFriction(q)),
         }
         match scene.drive.normal() {
             Dof::Displacement(d) => rigid_given[MODE_APPROACH] = d / l0,
-            Dof::Load(p) => loads.push(LoadDof { mode: MODE_APPROACH, row: vec![1.0; n], sign: -1.0, load: p / (e * l0) }),
+            Dof::Load(p) => {
+                loads.push(LoadDof { mode: MODE_APPROACH, row: vec![1.0; n], sign: -1.0, load: p / (e * l0) })
+            }
         }
         match scene.drive.rotational() {
             Dof::Displacement(phi) => rigid_given[MODE_ROTATION] = phi,
-            Dof::Load(m) => loads.push(LoadDof {
-                mode: MODE_ROTATION,
-                row: flex.x.clone(),
-                sign: 1.0,
-                load: m / (e * l0 * l0),
-            }),
+            Dof::Load(m) => {
+                loads.push(LoadDof { mode: MODE_ROTATION, row: flex.x.clone(), sign: 1.0, load: m / (e * l0 * l0) })
+            }
         }
         let q0: Vec<f64> =
             (0..n).map(|i| flex.g0[i] + (0..3).map(|m| flex.rigid_n[(i, m)] * rigid_given[m]).sum::<f64>()).collect();

@@ -29,6 +29,8 @@
 //! length is divided by L0 = 2R and every stress by E, so results do not depend on the unit of length.
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
+// Index loops over 2×2 blocks and matrix rows read like the formulas they implement.
+#![allow(clippy::needless_range_loop)]
 
 pub mod bem;
 pub mod condense;

@@ -8,7 +8,11 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 #[derive(Parser)]
-#[command(name = "rollbem", version, about = "Wheel-on-flat contact by BEM and complementarity, checked against theory")]
+#[command(
+    name = "rollbem",
+    version,
+    about = "Wheel-on-flat contact by BEM and complementarity, checked against theory"
+)]
 struct Cli {
     #[command(subcommand)]
     cmd: Cmd,
@@ -62,7 +66,12 @@ fn print_report(r: &Report) {
         "solver", "status", "size", "work", "residual", "P", "a (fit)", "p0 (fit)", "d_N", "time [s]"
     );
     for run in &r.runs {
-        let work = run.work.pivots.map(|p| format!("{p} piv")).or(run.work.iterations.map(|i| format!("{i} it"))).unwrap_or_default();
+        let work = run
+            .work
+            .pivots
+            .map(|p| format!("{p} piv"))
+            .or(run.work.iterations.map(|i| format!("{i} it")))
+            .unwrap_or_default();
         let opt = |v: Option<f64>| v.map(|v| format!("{v:.6e}")).unwrap_or_else(|| "-".into());
         println!(
             "{:<9} {:<16} {:>5} {:>8} {:>10.2e} {:>12.6e} {:>12} {:>12} {:>12.5e} {:>10.4}",

@@ -177,13 +177,8 @@ impl Mesh {
         // Close the circle exactly.
         *angles.last_mut().unwrap() = start + 2.0 * PI;
 
-        let mut mesh = Mesh {
-            kind: spec.element,
-            radius,
-            elements: Vec::new(),
-            nodes: Vec::new(),
-            contact_nodes: Vec::new(),
-        };
+        let mut mesh =
+            Mesh { kind: spec.element, radius, elements: Vec::new(), nodes: Vec::new(), contact_nodes: Vec::new() };
         for (k, bc) in classes.iter().enumerate() {
             mesh.push_element(radius, angles[k], angles[k + 1], *bc);
         }
@@ -225,7 +220,13 @@ impl Mesh {
                 let arc = ArcElement { centre: [0.0, 0.0], radius: rho, theta0: t0, theta1: t1 };
                 let w = arc.node_weights();
                 for (j, &xi) in XI_NODES.iter().enumerate() {
-                    self.nodes.push(Node { pos: arc.position(xi), normal: arc.normal(xi), weight: w[j], element: e, bc });
+                    self.nodes.push(Node {
+                        pos: arc.position(xi),
+                        normal: arc.normal(xi),
+                        weight: w[j],
+                        element: e,
+                        bc,
+                    });
                 }
                 self.elements.push(Element { shape: Shape::Arc(arc), bc, first_node: first, n_nodes: 3 });
             }
@@ -258,9 +259,17 @@ mod tests {
         let m = Mesh::wheel(1.0, Support::TopArc { angle_deg: 30.0 }, &spec(ElementKind::Constant));
         assert_eq!(m.elements.len(), 56);
         assert_eq!(m.contact_nodes.len(), 24);
-        // Perimeter of the inscribed polygon ≈ 2π (chords), closed: last vertex = first vertex.
-        let per: f64 = m.nodes.iter().map(|n| n.weight).sum();
-        assert!((per - 2.0 * PI).abs() < 0.01, "perimeter {per}");
+        // Closed polygon inscribed in the circle: consecutive elements share vertices, every vertex lies on the
+        // circle, and the subtended angles add up to 2π.
+        let mut total = 0.0;
+        for (k, e) in m.elements.iter().enumerate() {
+            let Shape::Straight { a, b } = e.shape else { panic!("constant elements are straight") };
+            let Shape::Straight { a: next, .. } = m.elements[(k + 1) % m.elements.len()].shape else { unreachable!() };
+            assert!((b[0] - next[0]).abs() < 1e-15 && (b[1] - next[1]).abs() < 1e-15, "gap after element {k}");
+            assert!((a[0].hypot(a[1]) - 1.0).abs() < 1e-15);
+            total += (a[0] * b[1] - a[1] * b[0]).atan2(a[0] * b[0] + a[1] * b[1]);
+        }
+        assert!((total - 2.0 * PI).abs() < 1e-12, "angles add to {total}");
         let n_support = m.elements.iter().filter(|e| e.bc == Bc::Support).count();
         assert!(n_support >= 1);
         // Grading is smooth: neighbouring free elements differ by less than 40 % in size.

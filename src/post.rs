@@ -121,9 +121,15 @@ pub struct Residuals {
 impl Residuals {
     /// Largest of the residuals that apply.
     pub fn max(&self) -> f64 {
-        [self.complementarity, self.penetration, self.tension, self.friction.unwrap_or(0.0), self.equilibrium.unwrap_or(0.0)]
-            .into_iter()
-            .fold(0.0, f64::max)
+        [
+            self.complementarity,
+            self.penetration,
+            self.tension,
+            self.friction.unwrap_or(0.0),
+            self.equilibrium.unwrap_or(0.0),
+        ]
+        .into_iter()
+        .fold(0.0, f64::max)
     }
 }
 
@@ -145,13 +151,23 @@ pub struct Evaluation {
 /// Evaluate a frictionless solution: `f` are the dimensionless nodal normal forces, `rigid` the dimensionless rigid
 /// motion (shift, approach, rotation). The reference gap ℓ of the residuals is the largest rigid gap
 /// `|g₀ + R_N ρ|` over the candidate zone: the gap the contact has to close or keep open.
-pub fn evaluate_frictionless(scene: &Scene, model: &Model, flex: &Flexibility, f: &[f64], rigid: [f64; 3]) -> Evaluation {
+pub fn evaluate_frictionless(
+    scene: &Scene,
+    model: &Model,
+    flex: &Flexibility,
+    f: &[f64],
+    rigid: [f64; 3],
+) -> Evaluation {
     let n = flex.n();
     let (l0, e) = (model.length, model.modulus);
     let p: Vec<f64> = (0..n).map(|i| f[i] / flex.weights[i]).collect();
-    let rig_gap: Vec<f64> = (0..n).map(|i| flex.g0[i] + (0..3).map(|m| flex.rigid_n[(i, m)] * rigid[m]).sum::<f64>()).collect();
+    let rig_gap: Vec<f64> =
+        (0..n).map(|i| flex.g0[i] + (0..3).map(|m| flex.rigid_n[(i, m)] * rigid[m]).sum::<f64>()).collect();
     let uy: Vec<f64> = (0..n)
-        .map(|i| (0..n).map(|j| flex.nn[(i, j)] * p[j]).sum::<f64>() + (0..3).map(|m| flex.rigid_n[(i, m)] * rigid[m]).sum::<f64>())
+        .map(|i| {
+            (0..n).map(|j| flex.nn[(i, j)] * p[j]).sum::<f64>()
+                + (0..3).map(|m| flex.rigid_n[(i, m)] * rigid[m]).sum::<f64>()
+        })
         .collect();
     let gap: Vec<f64> = (0..n).map(|i| flex.g0[i] + uy[i]).collect();
     let pmax = p.iter().fold(0.0_f64, |a, &v| a.max(v));
@@ -195,7 +211,8 @@ pub fn evaluate_frictionless(scene: &Scene, model: &Model, flex: &Flexibility, f
     let x_min = loaded.first().map(|nd| nd.x);
     let x_max = loaded.last().map(|nd| nd.x);
     let xs: Vec<f64> = nodes.iter().map(|nd| nd.x).collect();
-    let ps: Vec<f64> = nodes.iter().map(|nd| if nd.state == NodeState::Separated { 0.0 } else { nd.pressure }).collect();
+    let ps: Vec<f64> =
+        nodes.iter().map(|nd| if nd.state == NodeState::Separated { 0.0 } else { nd.pressure }).collect();
     let fit = hertz::fit_ellipse(&xs, &ps);
     let contact = ContactSummary {
         x_min,

@@ -170,9 +170,10 @@ fn resolve_solvers(scene: &Scene, path: &Path, clarabel_ok: bool) -> Result<Vec<
             SolverName::Clarabel if !clarabel_ok => {
                 return Err(Error::Unsupported {
                     path: path.to_path_buf(),
-                    message: "solvers.use: clarabel solves the frictionless QP with at most the normal load prescribed; \
+                    message:
+                        "solvers.use: clarabel solves the frictionless QP with at most the normal load prescribed; \
                               this scene prescribes a moment"
-                        .into(),
+                            .into(),
                 })
             }
             s => out.push(s),
@@ -210,7 +211,8 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
     if scene.rolling.is_some() {
         return Err(Error::Unsupported {
             path: path.to_path_buf(),
-            message: "[rolling]: the slip velocity needs the frictional formulation, not implemented in this version".into(),
+            message: "[rolling]: the slip velocity needs the frictional formulation, not implemented in this version"
+                .into(),
         });
     }
     let model = Model::new(scene);
@@ -263,13 +265,30 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
                     QpStatus::Infeasible => (Status::Infeasible, format!("{}", out.status)),
                     QpStatus::NumericalError(m) => (Status::NumericalError, m.clone()),
                 };
-                let msg = format!("{msg}; active-set polish {}", if out.polished { "accepted" } else { "not accepted" });
+                let msg =
+                    format!("{msg}; active-set polish {}", if out.polished { "accepted" } else { "not accepted" });
                 (status, msg, Work { pivots: None, iterations: Some(out.iterations) }, out.f, rigid, Some(change))
             }
             SolverName::All => unreachable!("expanded by resolve_solvers"),
         };
         let solve_time = t0.elapsed().as_secs_f64();
-        runs.push(finish_run(scene, &model, &flex, &bem_t, s, formulation, prob.lcp.size(), status, message, work, &f, rigid, formulation_time, solve_time, polish_change));
+        runs.push(finish_run(
+            scene,
+            &model,
+            &flex,
+            &bem_t,
+            s,
+            formulation,
+            prob.lcp.size(),
+            status,
+            message,
+            work,
+            &f,
+            rigid,
+            formulation_time,
+            solve_time,
+            polish_change,
+        ));
     }
 
     let hertz = reference_hertz(scene, &runs);
@@ -284,7 +303,8 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
             contact_nodes: flex.n(),
             element: mesh.kind,
             system_size: flex.system_size,
-            contact_element_length: scene.wheel.radius * scene.mesh.contact_arc_deg.to_radians() / scene.mesh.contact_elements as f64,
+            contact_element_length: scene.wheel.radius * scene.mesh.contact_arc_deg.to_radians()
+                / scene.mesh.contact_elements as f64,
         },
         diagnostics: Diagnostics { bem_pivot_ratio: flex.pivot_ratio, flexibility_asymmetry: asymmetry(&prob.k) },
         references: References { hertz },
@@ -313,9 +333,12 @@ fn finish_run(
 ) -> SolverRun {
     let ev: Evaluation = evaluate_frictionless(scene, model, flex, f, rigid);
     let worst = ev.residuals.max();
-    if status == Status::Solved && !(worst <= tol::RESIDUAL_REFUSE) {
+    if status == Status::Solved && (worst.is_nan() || worst > tol::RESIDUAL_REFUSE) {
         status = Status::NumericalError;
-        message = format!("solver reported success but the independent residual is {worst:.3e} > {:.0e}; {message}", tol::RESIDUAL_REFUSE);
+        message = format!(
+            "solver reported success but the independent residual is {worst:.3e} > {:.0e}; {message}",
+            tol::RESIDUAL_REFUSE
+        );
     }
     SolverRun {
         solver: solver.name().into(),
@@ -378,12 +401,19 @@ fn make_checks(scene: &Scene, model: &Model, runs: &[SolverRun], hertz: Option<&
             pass: r.residuals.max() <= tol::RESIDUAL_DIRECT,
         });
         if let Dof::Load(p) = scene.drive.normal() {
-            out.push(check(format!("{}: resultant P = normal_load", r.solver), r.resultants.normal, p, tol::LOAD_RESULTANT));
+            out.push(check(
+                format!("{}: resultant P = normal_load", r.solver),
+                r.resultants.normal,
+                p,
+                tol::LOAD_RESULTANT,
+            ));
         }
         if let Some(h) = hertz {
-            let hmesh = scene.wheel.radius * scene.mesh.contact_arc_deg.to_radians() / scene.mesh.contact_elements as f64;
+            let hmesh =
+                scene.wheel.radius * scene.mesh.contact_arc_deg.to_radians() / scene.mesh.contact_elements as f64;
             let across = 2.0 * h.half_width / hmesh;
-            let applies = across >= tol::HERTZ_MIN_ELEMENTS && h.half_width / scene.wheel.radius <= tol::HERTZ_MAX_A_OVER_R;
+            let applies =
+                across >= tol::HERTZ_MIN_ELEMENTS && h.half_width / scene.wheel.radius <= tol::HERTZ_MAX_A_OVER_R;
             let t = match model.mesh.kind {
                 ElementKind::Constant => tol::HERTZ_CONSTANT,
                 ElementKind::Quadratic => tol::HERTZ_QUADRATIC,

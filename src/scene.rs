@@ -243,10 +243,8 @@ impl Scene {
 
     /// Parse and validate scene text; `path` is used in error messages only.
     pub fn from_toml(text: &str, path: &Path) -> Result<Scene> {
-        let scene: Scene = toml::from_str(text).map_err(|e| Error::Parse {
-            path: path.to_path_buf(),
-            message: e.to_string().trim_end().to_string(),
-        })?;
+        let scene: Scene = toml::from_str(text)
+            .map_err(|e| Error::Parse { path: path.to_path_buf(), message: e.to_string().trim_end().to_string() })?;
         scene.validate(path)?;
         Ok(scene)
     }
@@ -292,13 +290,19 @@ impl Scene {
             }
             Support::TopArc { angle_deg } => {
                 if !angle_deg.is_finite() || angle_deg <= 0.0 || angle_deg >= 180.0 {
-                    return Err(bad("wheel.support.angle_deg", format!("must lie in (0, 180) degrees (got {angle_deg})")));
+                    return Err(bad(
+                        "wheel.support.angle_deg",
+                        format!("must lie in (0, 180) degrees (got {angle_deg})"),
+                    ));
                 }
             }
         }
         let m = &self.mesh;
         if !m.contact_arc_deg.is_finite() || m.contact_arc_deg <= 0.0 || m.contact_arc_deg >= 180.0 {
-            return Err(bad("mesh.contact_arc_deg", format!("must lie in (0, 180) degrees (got {})", m.contact_arc_deg)));
+            return Err(bad(
+                "mesh.contact_arc_deg",
+                format!("must lie in (0, 180) degrees (got {})", m.contact_arc_deg),
+            ));
         }
         if let Support::TopArc { angle_deg } = w.support {
             if m.contact_arc_deg + angle_deg >= 300.0 {

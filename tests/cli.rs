@@ -49,7 +49,19 @@ fn good_scene_writes_the_json_document() {
         assert!(doc.get(key).is_some(), "missing key {key}");
     }
     let run = &doc["runs"][0];
-    for key in ["solver", "formulation", "status", "problem_size", "work", "timing_s", "residuals", "resultants", "rigid_body", "contact", "nodes"] {
+    for key in [
+        "solver",
+        "formulation",
+        "status",
+        "problem_size",
+        "work",
+        "timing_s",
+        "residuals",
+        "resultants",
+        "rigid_body",
+        "contact",
+        "nodes",
+    ] {
         assert!(run.get(key).is_some(), "missing runs[].{key}");
     }
     for key in ["x", "y", "pressure", "shear", "u_x", "u_y", "gap", "slip", "state", "slip_velocity"] {
@@ -75,12 +87,20 @@ fn bad_cases() -> Vec<(&'static str, String, &'static str)> {
         ("unknown solver", r("use = [\"lemke\", \"clarabel\"]", "use = [\"lemk\"]"), "lemk"),
         ("malformed TOML", r("[drive]", "[drive"), "line"),
         ("unknown key", r("friction = 0.0", "friction = 0.0\nfriktion = 0.3"), "friktion"),
-        ("both drives", r("normal_load = 749.70", "normal_load = 749.70\nnormal_approach = 0.01"), "drive.normal_approach"),
+        (
+            "both drives",
+            r("normal_load = 749.70", "normal_load = 749.70\nnormal_approach = 0.01"),
+            "drive.normal_approach",
+        ),
         ("no normal drive", r("normal_load = 749.70", ""), "normal_load"),
         ("zero contact elements", r("contact_elements = 24", "contact_elements = 0"), "mesh.contact_elements"),
         ("arc too wide", r("contact_arc_deg = 30.0", "contact_arc_deg = 200.0"), "mesh.contact_arc_deg"),
         ("negative friction", r("friction = 0.0", "friction = -0.1"), "contact.friction"),
-        ("hub larger than wheel", r("{ kind = \"top_arc\", angle_deg = 30.0 }", "{ kind = \"hub\", radius = 1.5 }"), "wheel.support.radius"),
+        (
+            "hub larger than wheel",
+            r("{ kind = \"top_arc\", angle_deg = 30.0 }", "{ kind = \"hub\", radius = 1.5 }"),
+            "wheel.support.radius",
+        ),
         ("unknown support", r("kind = \"top_arc\"", "kind = \"axle\""), "axle"),
         ("negative load", r("normal_load = 749.70", "normal_load = -5.0"), "drive.normal_load"),
         ("infinite approach", r("normal_load = 749.70", "normal_approach = inf"), "drive.normal_approach"),
@@ -100,7 +120,13 @@ fn bad_scenes_are_refused_with_exit_2_naming_the_field_and_nothing_written() {
         assert!(stderr.contains(&format!("bad{i}.toml")), "{what}: error does not name the file: {stderr}");
         assert!(!json.exists(), "{what}: output written");
         // Nothing half-written either: no temporary file left behind.
-        assert_eq!(std::fs::read_dir(dir.path()).unwrap().filter(|e| e.as_ref().unwrap().path().extension().is_some_and(|x| x != "toml")).count(), 0);
+        assert_eq!(
+            std::fs::read_dir(dir.path())
+                .unwrap()
+                .filter(|e| e.as_ref().unwrap().path().extension().is_some_and(|x| x != "toml"))
+                .count(),
+            0
+        );
     }
 }
 

@@ -50,8 +50,8 @@ fn solver<'a>(r: &'a Report, name: &str) -> &'a SolverRun {
 
 /// The two wheels of the Hertz test: (R, E, ν, hub radius) in different units and materials.
 const WHEELS: [(f64, f64, f64, f64); 2] = [
-    (1.0, 94500.0, 0.1, 0.2),         // the seed's material, metres and a generic stress unit
-    (460.0, 210000.0, 0.3, 100.0),    // a steel rail wheel in mm and MPa
+    (1.0, 94500.0, 0.1, 0.2),      // the seed's material, metres and a generic stress unit
+    (460.0, 210000.0, 0.3, 100.0), // a steel rail wheel in mm and MPa
 ];
 
 #[test]
@@ -115,7 +115,10 @@ fn frictionless_scene_builds_and_solves_only_the_normal_problem() {
     assert_eq!(rep.effects, vec!["normal".to_string()]);
     for run in &rep.runs {
         assert_eq!(run.problem_size, rep.mesh.contact_nodes, "{}", run.solver);
-        assert!(run.nodes.iter().all(|n| n.u_x.is_none() && n.slip.is_none() && n.slip_velocity.is_none() && n.shear == 0.0));
+        assert!(run
+            .nodes
+            .iter()
+            .all(|n| n.u_x.is_none() && n.slip.is_none() && n.slip_velocity.is_none() && n.shear == 0.0));
     }
     // Load-driven: one unknown per contact node plus the split approach u⁺, u⁻.
     let s2 = scene(1.0, 94500.0, 0.1, 0.2, 0.05, "constant", 24, 32);

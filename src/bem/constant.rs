@@ -15,7 +15,13 @@ use super::kelvin::Kelvin;
 /// Returns `(h, g)` with `h[l][k] = ∫T*_lk ds`, `g[l][k] = ∫U*_lk ds`. `self_element` means `src` is the
 /// element's midpoint: `h` is then returned as zero (set later from the rigid-body condition).
 #[inline]
-pub fn integrate(a: [f64; 2], b: [f64; 2], src: [f64; 2], self_element: bool, k: &Kelvin) -> ([[f64; 2]; 2], [[f64; 2]; 2]) {
+pub fn integrate(
+    a: [f64; 2],
+    b: [f64; 2],
+    src: [f64; 2],
+    self_element: bool,
+    k: &Kelvin,
+) -> ([[f64; 2]; 2], [[f64; 2]; 2]) {
     let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
     let len = dx.hypot(dy);
     let t = [dx / len, dy / len];

@@ -57,10 +57,7 @@ impl Kelvin {
         let r = r2.sqrt();
         let (d0, d1) = (rx / r, ry / r);
         let lnr = -self.a34 * 0.5 * r2.ln();
-        [
-            [self.cu * (lnr + d0 * d0), self.cu * d0 * d1],
-            [self.cu * d1 * d0, self.cu * (lnr + d1 * d1)],
-        ]
+        [[self.cu * (lnr + d0 * d0), self.cu * d0 * d1], [self.cu * d1 * d0, self.cu * (lnr + d1 * d1)]]
     }
 
     /// Traction kernel T*_lk at field point `x` with outward unit normal `n`, source at `xi`.

@@ -46,11 +46,7 @@ pub fn shape(xi: f64) -> [f64; 3] {
     let d0 = xi - XI_NODES[0];
     let d1 = xi - XI_NODES[1];
     let d2 = xi - XI_NODES[2];
-    [
-        d1 * d2 / LAGRANGE_DEN[0],
-        d0 * d2 / LAGRANGE_DEN[1],
-        d0 * d1 / LAGRANGE_DEN[2],
-    ]
+    [d1 * d2 / LAGRANGE_DEN[0], d0 * d2 / LAGRANGE_DEN[1], d0 * d1 / LAGRANGE_DEN[2]]
 }
 
 /// A circular-arc boundary element: position(ξ) = centre + radius·(cos θ, sin θ), θ(ξ) = θm + ξ·(theta1 − theta0)/2,
@@ -95,10 +91,7 @@ impl ArcElement {
     #[inline]
     pub fn position(&self, xi: f64) -> [f64; 2] {
         let (s, c) = self.theta(xi).sin_cos();
-        [
-            self.centre[0] + self.radius * c,
-            self.centre[1] + self.radius * s,
-        ]
+        [self.centre[0] + self.radius * c, self.centre[1] + self.radius * s]
     }
 
     /// Outward unit normal of the body at `xi`: +(cos θ, sin θ) if CCW, −(cos θ, sin θ) if CW.
@@ -177,12 +170,7 @@ const MAX_DEPTH: u32 = 40;
 ///
 /// # Panics
 /// If `self_node = Some(i)` with i ≥ 3.
-pub fn integrate(
-    el: &ArcElement,
-    source: [f64; 2],
-    self_node: Option<usize>,
-    k: &Kelvin,
-) -> (NodeBlocks, NodeBlocks) {
+pub fn integrate(el: &ArcElement, source: [f64; 2], self_node: Option<usize>, k: &Kelvin) -> (NodeBlocks, NodeBlocks) {
     let mut h = [[[0.0; 2]; 2]; 3];
     let mut g = [[[0.0; 2]; 2]; 3];
     let jac = el.jacobian();
@@ -303,11 +291,7 @@ fn off_element_singularities(el: &ArcElement, source: [f64; 2]) -> [[f64; 2]; 3]
     let phi = dy.atan2(dx);
     let dphi = (phi - thm).rem_euclid(2.0 * PI);
     let dphi = if dphi > PI { dphi - 2.0 * PI } else { dphi };
-    [
-        [(dphi - 2.0 * PI) / h, im],
-        [dphi / h, im],
-        [(dphi + 2.0 * PI) / h, im],
-    ]
+    [[(dphi - 2.0 * PI) / h, im], [dphi / h, im], [(dphi + 2.0 * PI) / h, im]]
 }
 
 /// Bernstein-ellipse parameter ρ ≥ 1 of the point `z` (re, im) relative to the interval [−1, 1]:
@@ -330,11 +314,7 @@ fn adaptive<F: FnMut(f64, f64)>(a: f64, b: f64, sing: &[[f64; 2]], depth: u32, f
         }
     }
     if rho >= RHO_ACCEPT || depth == 0 {
-        let n = if rho.is_finite() {
-            ((ORDER_K / rho.ln()).ceil() as usize).clamp(N_MIN, N_MAX)
-        } else {
-            N_MIN
-        };
+        let n = if rho.is_finite() { ((ORDER_K / rho.ln()).ceil() as usize).clamp(N_MIN, N_MAX) } else { N_MIN };
         for (t, w) in gl(n).iter() {
             f(mid + half * t, half * w);
         }
@@ -355,23 +335,12 @@ mod tests {
 
     /// Element 0 of an 8-element CCW unit circle: θ ∈ [0, π/4].
     fn el8() -> ArcElement {
-        ArcElement {
-            centre: [0.0, 0.0],
-            radius: 1.0,
-            theta0: 0.0,
-            theta1: PI / 4.0,
-        }
+        ArcElement { centre: [0.0, 0.0], radius: 1.0, theta0: 0.0, theta1: PI / 4.0 }
     }
 
     /// Brute force: composite Gauss rule, `pieces` equal sub-intervals of ξ ∈ [−1, 1] × `npts` points, kernels
     /// evaluated directly from `el.position`/`el.normal` and `Kelvin::{t, u}` at the given source.
-    fn brute(
-        el: &ArcElement,
-        src: [f64; 2],
-        k: &Kelvin,
-        pieces: usize,
-        npts: usize,
-    ) -> (NodeBlocks, NodeBlocks) {
+    fn brute(el: &ArcElement, src: [f64; 2], k: &Kelvin, pieces: usize, npts: usize) -> (NodeBlocks, NodeBlocks) {
         let rule = gauss_legendre(npts);
         let mut h = [[[0.0; 2]; 2]; 3];
         let mut g = [[[0.0; 2]; 2]; 3];
@@ -430,12 +399,7 @@ mod tests {
             let s: f64 = shape(xi).iter().sum();
             assert!((s - 1.0).abs() < 1e-14);
         }
-        let el = ArcElement {
-            centre: [0.3, -0.2],
-            radius: 2.5,
-            theta0: 1.0,
-            theta1: 0.6,
-        };
+        let el = ArcElement { centre: [0.3, -0.2], radius: 2.5, theta0: 1.0, theta1: 0.6 };
         let w = el.node_weights();
         let arc = 2.5 * 0.4;
         assert!((w.iter().sum::<f64>() - arc).abs() < 1e-15);
@@ -456,12 +420,7 @@ mod tests {
     #[test]
     fn geometry_and_normals() {
         for (t0, t1, sgn) in [(0.2, 0.9, 1.0), (0.9, 0.2, -1.0)] {
-            let el = ArcElement {
-                centre: [1.0, 2.0],
-                radius: 0.7,
-                theta0: t0,
-                theta1: t1,
-            };
+            let el = ArcElement { centre: [1.0, 2.0], radius: 0.7, theta0: t0, theta1: t1 };
             assert!((el.position(-1.0)[0] - (1.0 + 0.7 * f64::cos(t0))).abs() < 1e-15);
             assert!((el.position(1.0)[1] - (2.0 + 0.7 * f64::sin(t1))).abs() < 1e-15);
             for xi in [-0.9, 0.1, 0.8] {
@@ -488,13 +447,8 @@ mod tests {
         let k = kel();
         let el = el8();
         let len = el.length();
-        let neighbour_node = ArcElement {
-            centre: [0.0, 0.0],
-            radius: 1.0,
-            theta0: PI / 4.0,
-            theta1: PI / 2.0,
-        }
-        .nodes()[0];
+        let neighbour_node =
+            ArcElement { centre: [0.0, 0.0], radius: 1.0, theta0: PI / 4.0, theta1: PI / 2.0 }.nodes()[0];
         let cases: [(&str, [f64; 2]); 5] = [
             ("far (3 lengths)", [1.0 + 3.0 * len, 0.1]),
             ("interior point", [0.2, 0.3]),
@@ -523,15 +477,7 @@ mod tests {
     #[test]
     fn off_element_sweep() {
         let k = Kelvin::new(1.0, 0.45);
-        let els = [
-            el8(),
-            ArcElement {
-                centre: [0.5, -0.25],
-                radius: 0.3,
-                theta0: 2.0,
-                theta1: 2.0 - PI / 6.0,
-            },
-        ];
+        let els = [el8(), ArcElement { centre: [0.5, -0.25], radius: 0.3, theta0: 2.0, theta1: 2.0 - PI / 6.0 }];
         let mut worst: f64 = 0.0;
         for el in els {
             let len = el.length();
@@ -539,14 +485,8 @@ mod tests {
                 let p = el.position(xi0);
                 for dist in [0.01, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0] {
                     for side in [-1.0, 1.0] {
-                        let rad = [
-                            (p[0] - el.centre[0]) / el.radius,
-                            (p[1] - el.centre[1]) / el.radius,
-                        ];
-                        let src = [
-                            p[0] + side * dist * len * rad[0],
-                            p[1] + side * dist * len * rad[1],
-                        ];
+                        let rad = [(p[0] - el.centre[0]) / el.radius, (p[1] - el.centre[1]) / el.radius];
+                        let src = [p[0] + side * dist * len * rad[0], p[1] + side * dist * len * rad[1]];
                         let (h, g) = integrate(&el, src, None, &k);
                         let (hr, gr) = brute(&el, src, &k, 1000, 16);
                         let e = rel_err(&h, &hr).max(rel_err(&g, &gr));
@@ -566,15 +506,7 @@ mod tests {
     #[test]
     fn self_case_vs_substitution_reference() {
         let k = kel();
-        let els = [
-            el8(),
-            ArcElement {
-                centre: [0.4, 0.1],
-                radius: 2.0,
-                theta0: 1.0,
-                theta1: 0.2,
-            },
-        ];
+        let els = [el8(), ArcElement { centre: [0.4, 0.1], radius: 2.0, theta0: 1.0, theta1: 0.2 }];
         let rule = gauss_legendre(20);
         let pieces = 200;
         for el in els {
@@ -619,10 +551,7 @@ mod tests {
                     }
                 }
                 let (eh, eg) = (rel_err(&h, &hr), rel_err(&g, &gr));
-                eprintln!(
-                    "self node {i} (R={}): rel err h {eh:.2e}, g {eg:.2e}",
-                    el.radius
-                );
+                eprintln!("self node {i} (R={}): rel err h {eh:.2e}, g {eg:.2e}", el.radius);
                 assert!(eh < 1e-12 && eg < 1e-12, "node {i}: {eh:e} {eg:e}");
             }
         }
@@ -674,11 +603,7 @@ mod tests {
         ];
         for (name, els, src, diag) in cases {
             let s = sum_h(els, src);
-            let err = (s[0][0] - diag)
-                .abs()
-                .max((s[1][1] - diag).abs())
-                .max(s[0][1].abs())
-                .max(s[1][0].abs());
+            let err = (s[0][0] - diag).abs().max((s[1][1] - diag).abs()).max(s[0][1].abs()).max(s[1][0].abs());
             eprintln!("rigid body {name}: sum h = {s:?}, err {err:.2e}");
             assert!(err < 1e-10, "{name}: {s:?}");
         }

@@ -32,10 +32,7 @@ impl Rule {
 
     /// Iterator over `(point, weight)` pairs.
     pub fn iter(&self) -> impl Iterator<Item = (f64, f64)> + '_ {
-        self.points
-            .iter()
-            .copied()
-            .zip(self.weights.iter().copied())
+        self.points.iter().copied().zip(self.weights.iter().copied())
     }
 }
 
@@ -122,20 +119,14 @@ impl Dd {
     }
     fn quick(a: f64, b: f64) -> Dd {
         let s = a + b;
-        Dd {
-            hi: s,
-            lo: b - (s - a),
-        }
+        Dd { hi: s, lo: b - (s - a) }
     }
     fn add(self, o: Dd) -> Dd {
         let s = Dd::two_sum(self.hi, o.hi);
         Dd::quick(s.hi, s.lo + self.lo + o.lo)
     }
     fn sub(self, o: Dd) -> Dd {
-        self.add(Dd {
-            hi: -o.hi,
-            lo: -o.lo,
-        })
+        self.add(Dd { hi: -o.hi, lo: -o.lo })
     }
     fn mul(self, o: Dd) -> Dd {
         let p = self.hi * o.hi;
@@ -167,14 +158,8 @@ pub const LOG_GAUSS_MAX: usize = 20;
 /// # Panics
 /// If `n == 0` or `n > LOG_GAUSS_MAX`.
 pub fn log_gauss(n: usize) -> Rule {
-    assert!(
-        (1..=LOG_GAUSS_MAX).contains(&n),
-        "log_gauss: n = {n} outside the tabulated range 1..={LOG_GAUSS_MAX}"
-    );
-    Rule {
-        points: LOG_GAUSS_NODES[n - 1].to_vec(),
-        weights: LOG_GAUSS_WEIGHTS[n - 1].to_vec(),
-    }
+    assert!((1..=LOG_GAUSS_MAX).contains(&n), "log_gauss: n = {n} outside the tabulated range 1..={LOG_GAUSS_MAX}");
+    Rule { points: LOG_GAUSS_NODES[n - 1].to_vec(), weights: LOG_GAUSS_WEIGHTS[n - 1].to_vec() }
 }
 
 /// Largest n cached by [`gl`].
@@ -188,10 +173,7 @@ static LG_CACHE: [OnceLock<Rule>; LOG_GAUSS_MAX] = [const { OnceLock::new() }; L
 /// # Panics
 /// If `n == 0` or `n > GL_CACHE_MAX`.
 pub fn gl(n: usize) -> &'static Rule {
-    assert!(
-        (1..=GL_CACHE_MAX).contains(&n),
-        "gl: n = {n} outside 1..={GL_CACHE_MAX}"
-    );
+    assert!((1..=GL_CACHE_MAX).contains(&n), "gl: n = {n} outside 1..={GL_CACHE_MAX}");
     GL_CACHE[n - 1].get_or_init(|| gauss_legendre(n))
 }
 
@@ -200,10 +182,7 @@ pub fn gl(n: usize) -> &'static Rule {
 /// # Panics
 /// If `n == 0` or `n > LOG_GAUSS_MAX`.
 pub fn lg(n: usize) -> &'static Rule {
-    assert!(
-        (1..=LOG_GAUSS_MAX).contains(&n),
-        "lg: n = {n} outside 1..={LOG_GAUSS_MAX}"
-    );
+    assert!((1..=LOG_GAUSS_MAX).contains(&n), "lg: n = {n} outside 1..={LOG_GAUSS_MAX}");
     LG_CACHE[n - 1].get_or_init(|| log_gauss(n))
 }
 
@@ -212,19 +191,8 @@ const LOG_GAUSS_NODES: [&[f64]; 20] = [
     &[0.25],
     &[0.11200880616697619, 0.6022769081187381],
     &[0.0638907930873254, 0.36899706371561874, 0.7668803039389415],
-    &[
-        0.04144848019938322,
-        0.24527491432060225,
-        0.5561654535602758,
-        0.8489823945329852,
-    ],
-    &[
-        0.029134472151972055,
-        0.17397721332089763,
-        0.41170252028490206,
-        0.6773141745828204,
-        0.8947713610310083,
-    ],
+    &[0.04144848019938322, 0.24527491432060225, 0.5561654535602758, 0.8489823945329852],
+    &[0.029134472151972055, 0.17397721332089763, 0.41170252028490206, 0.6773141745828204, 0.8947713610310083],
     &[
         0.021634005844116948,
         0.1295833911549508,
@@ -455,19 +423,8 @@ const LOG_GAUSS_WEIGHTS: [&[f64]; 20] = [
     &[1.0],
     &[0.7185393190303845, 0.2814606809696156],
     &[0.5134045522323634, 0.39198004120148755, 0.09461540656614913],
-    &[
-        0.3834640681451351,
-        0.38687531777476264,
-        0.19043512695014242,
-        0.03922548712995983,
-    ],
-    &[
-        0.29789347178289444,
-        0.34977622651322415,
-        0.23448829004405242,
-        0.09893045951663315,
-        0.018911552143195797,
-    ],
+    &[0.3834640681451351, 0.38687531777476264, 0.19043512695014242, 0.03922548712995983],
+    &[0.29789347178289444, 0.34977622651322415, 0.23448829004405242, 0.09893045951663315, 0.018911552143195797],
     &[
         0.23876366257854756,
         0.3082865732739468,
@@ -709,11 +666,7 @@ mod tests {
             let r = gauss_legendre(n);
             assert_eq!(r.len(), n);
             for k in 0..2 * n {
-                let exact = if k % 2 == 0 {
-                    2.0 / (k as f64 + 1.0)
-                } else {
-                    0.0
-                };
+                let exact = if k % 2 == 0 { 2.0 / (k as f64 + 1.0) } else { 0.0 };
                 let s: f64 = r.iter().map(|(x, w)| w * x.powi(k as i32)).sum();
                 let err = (s - exact).abs() / exact.abs().max(2.0 / (2 * n) as f64);
                 worst = worst.max(err / (k as f64 + 1.0));

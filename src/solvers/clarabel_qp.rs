@@ -64,11 +64,7 @@ pub struct QpSettings {
 
 impl Default for QpSettings {
     fn default() -> Self {
-        Self {
-            tolerance: 1e-12,
-            max_iter: 200,
-            polish: true,
-        }
+        Self { tolerance: 1e-12, max_iter: 200, polish: true }
     }
 }
 
@@ -131,14 +127,7 @@ pub struct QpOutcome {
 
 impl QpOutcome {
     fn failed(n: usize, status: QpStatus) -> Self {
-        Self {
-            f: vec![0.0; n],
-            approach: None,
-            iterations: 0,
-            status,
-            polished: false,
-            f_unpolished: vec![0.0; n],
-        }
+        Self { f: vec![0.0; n], approach: None, iterations: 0, status, polished: false, f_unpolished: vec![0.0; n] }
     }
 }
 
@@ -156,13 +145,7 @@ impl QpOutcome {
 /// Never panics: invalid input, setup errors and solver failures are reported in
 /// [`QpOutcome::status`] (with zero forces when nothing could be computed). `n = 0` gives
 /// `Solved` with empty vectors unless a nonzero load is prescribed (`Infeasible`).
-pub fn solve_frictionless(
-    k: &[f64],
-    n: usize,
-    c: &[f64],
-    load: Option<(&[f64], f64)>,
-    s: &QpSettings,
-) -> QpOutcome {
+pub fn solve_frictionless(k: &[f64], n: usize, c: &[f64], load: Option<(&[f64], f64)>, s: &QpSettings) -> QpOutcome {
     // ---- validation -------------------------------------------------------------------
     let nn = match n.checked_mul(n) {
         Some(v) => v,
@@ -180,25 +163,16 @@ pub fn solve_frictionless(
     }
     if let Some((a, _)) = load {
         if a.len() != n {
-            return QpOutcome::failed(
-                n,
-                QpStatus::NumericalError(format!("a.len() = {} but n = {n}", a.len())),
-            );
+            return QpOutcome::failed(n, QpStatus::NumericalError(format!("a.len() = {} but n = {n}", a.len())));
         }
     }
     let all_finite = k.iter().chain(c.iter()).all(|v| v.is_finite())
         && load.is_none_or(|(a, p)| p.is_finite() && a.iter().all(|v| v.is_finite()));
     if !all_finite {
-        return QpOutcome::failed(
-            n,
-            QpStatus::NumericalError("non-finite (NaN/inf) entry in K, c, a or P".into()),
-        );
+        return QpOutcome::failed(n, QpStatus::NumericalError("non-finite (NaN/inf) entry in K, c, a or P".into()));
     }
     if !(s.tolerance.is_finite() && s.tolerance > 0.0) {
-        return QpOutcome::failed(
-            n,
-            QpStatus::NumericalError(format!("invalid tolerance {}", s.tolerance)),
-        );
+        return QpOutcome::failed(n, QpStatus::NumericalError(format!("invalid tolerance {}", s.tolerance)));
     }
     if let Some((a, p)) = load {
         // {f ≥ 0, aᵀf = P} is nonempty iff P = 0 or some a_i has the sign of P.
@@ -214,9 +188,7 @@ pub fn solve_frictionless(
     // ---- scaling: f = alpha * f_hat, g = gamma * g_hat, d = gamma / amax * d_hat ---------
     let kscale = positive_or(k.iter().fold(0.0_f64, |m, v| m.max(v.abs())), 1.0);
     let cscale = c.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-    let amax = load.map_or(1.0, |(a, _)| {
-        positive_or(a.iter().fold(0.0_f64, |m, v| m.max(v.abs())), 1.0)
-    });
+    let amax = load.map_or(1.0, |(a, _)| positive_or(a.iter().fold(0.0_f64, |m, v| m.max(v.abs())), 1.0));
     let (alpha, gamma) = match load {
         Some((a, p)) if p != 0.0 => {
             // average force if the load were spread over all nodes; gap scale from c or from
@@ -282,33 +254,21 @@ pub fn solve_frictionless(
         .build()
     {
         Ok(st) => st,
-        Err(e) => {
-            return QpOutcome::failed(
-                n,
-                QpStatus::NumericalError(format!("clarabel settings: {e}")),
-            )
-        }
+        Err(e) => return QpOutcome::failed(n, QpStatus::NumericalError(format!("clarabel settings: {e}"))),
     };
 
     // Clarabel should not panic on valid finite data; guard anyway so callers never see one.
     let run = catch_unwind(AssertUnwindSafe(|| {
-        let mut solver = DefaultSolver::new(&p_mat, &q, &a_mat, &b, &cones, settings)
-            .map_err(|e| format!("clarabel setup: {e}"))?;
+        let mut solver =
+            DefaultSolver::new(&p_mat, &q, &a_mat, &b, &cones, settings).map_err(|e| format!("clarabel setup: {e}"))?;
         solver.solve();
         let sol = &solver.solution;
-        Ok::<_, String>((
-            sol.x.clone(),
-            sol.z.clone(),
-            sol.status,
-            sol.iterations,
-        ))
+        Ok::<_, String>((sol.x.clone(), sol.z.clone(), sol.status, sol.iterations))
     }));
     let (x, z, cl_status, iterations) = match run {
         Ok(Ok(r)) => r,
         Ok(Err(msg)) => return QpOutcome::failed(n, QpStatus::NumericalError(msg)),
-        Err(_) => {
-            return QpOutcome::failed(n, QpStatus::NumericalError("clarabel panicked".into()))
-        }
+        Err(_) => return QpOutcome::failed(n, QpStatus::NumericalError("clarabel panicked".into())),
     };
 
     let status = match cl_status {
@@ -327,14 +287,8 @@ pub fn solve_frictionless(
     // KKT: K_s f + c + a z_eq - z_nn = 0 with z_nn = g  =>  d = -z_eq (scaled).
     let d_ipm = load.map(|_| -gamma * z[n] / amax);
 
-    let mut out = QpOutcome {
-        f: f_unpolished.clone(),
-        approach: d_ipm,
-        iterations,
-        status,
-        polished: false,
-        f_unpolished,
-    };
+    let mut out =
+        QpOutcome { f: f_unpolished.clone(), approach: d_ipm, iterations, status, polished: false, f_unpolished };
     if matches!(out.status, QpStatus::Infeasible) {
         out.approach = None;
     }
@@ -343,15 +297,7 @@ pub fn solve_frictionless(
         // Initial active set from strict complementarity of the scaled iterate:
         // f_hat_i * g_hat_i ≈ mu, active where the force dominates the gap.
         let active: Vec<bool> = (0..n).map(|i| x[i] > z[i]).collect();
-        let scaled = Scaled {
-            k,
-            n,
-            c,
-            load,
-            alpha,
-            gamma,
-            amax,
-        };
+        let scaled = Scaled { k, n, c, load, alpha, gamma, amax };
         if let Some((f, d)) = polish(&scaled, active, s.tolerance) {
             out.f = f;
             if load.is_some() {
@@ -499,9 +445,7 @@ mod tests {
     /// (gaps): negative forces, negative gaps and complementarity |f_i g_i|/(fs gs).
     fn lcp_violation(f: &[f64], g: &[f64], fs: f64, gs: f64) -> f64 {
         f.iter().zip(g).fold(0.0_f64, |m, (&fi, &gi)| {
-            m.max((-fi / fs).max(0.0))
-                .max((-gi / gs).max(0.0))
-                .max((fi * gi).abs() / (fs * gs))
+            m.max((-fi / fs).max(0.0)).max((-gi / gs).max(0.0)).max((fi * gi).abs() / (fs * gs))
         })
     }
 
@@ -534,12 +478,7 @@ mod tests {
     /// Brute-force LCP solution: try every active set S, solve the equality system of the
     /// (nonsymmetric) K on S, keep the sets that satisfy f ≥ 0, g ≥ 0. Returns all solutions
     /// as (f, d) (d = 0 when not load-driven).
-    fn enumerate(
-        k: &[f64],
-        n: usize,
-        c: &[f64],
-        load: Option<(&[f64], f64)>,
-    ) -> Vec<(Vec<f64>, f64)> {
+    fn enumerate(k: &[f64], n: usize, c: &[f64], load: Option<(&[f64], f64)>) -> Vec<(Vec<f64>, f64)> {
         let mut sols = Vec::new();
         for mask in 0u32..(1 << n) {
             let idx: Vec<usize> = (0..n).filter(|&i| mask & (1 << i) != 0).collect();
@@ -617,10 +556,7 @@ mod tests {
         let fs = max_abs(f_ref);
         let err = max_diff(&out.f, f_ref) / fs;
         let err_unpol = max_diff(&out.f_unpolished, f_ref) / fs;
-        eprintln!(
-            "disp n=5: iters {}, |f-f_enum|/|f| polished {err:.2e}, unpolished {err_unpol:.2e}",
-            out.iterations
-        );
+        eprintln!("disp n=5: iters {}, |f-f_enum|/|f| polished {err:.2e}, unpolished {err_unpol:.2e}", out.iterations);
         assert!(err < 1e-13, "polished vs enumeration: {err:e}");
         // Unpolished solves the symmetrised problem: differs by about the asymmetry (2e-2/5).
         assert!(err_unpol < 1e-2, "unpolished vs enumeration: {err_unpol:e}");
@@ -657,16 +593,8 @@ mod tests {
             let err = max_diff(&out.f, f_ref) / max_abs(f_ref);
             let err_d = (d - d_ref).abs() / d_ref.abs();
             // IPM approach (from the equality multiplier) before polishing:
-            let unpol = solve_frictionless(
-                &k,
-                n,
-                &c,
-                Some((&a, p)),
-                &QpSettings {
-                    polish: false,
-                    ..QpSettings::default()
-                },
-            );
+            let unpol =
+                solve_frictionless(&k, n, &c, Some((&a, p)), &QpSettings { polish: false, ..QpSettings::default() });
             let d_ipm = unpol.approach.expect("approach");
             let err_unpol = max_diff(&unpol.f, f_ref) / max_abs(f_ref);
             eprintln!(
@@ -800,10 +728,7 @@ mod tests {
         assert!(out.f.is_empty());
 
         // Bad tolerance.
-        let bad = QpSettings {
-            tolerance: f64::NAN,
-            ..QpSettings::default()
-        };
+        let bad = QpSettings { tolerance: f64::NAN, ..QpSettings::default() };
         let out = solve_frictionless(&k, n, &c, None, &bad);
         assert!(matches!(out.status, QpStatus::NumericalError(_)));
         assert!(!out.status.to_string().is_empty());
