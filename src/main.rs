@@ -4,7 +4,7 @@
 use clap::{Parser, Subcommand};
 use rollbem::run::{run_scene, write_atomic, Report};
 use rollbem::scene::{Scene, SolverName};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -20,14 +20,18 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Cmd {
-    /// Solve a scene with its solvers, print a table, optionally write the JSON result document.
+    /// Solve scenes with their solvers and print a table per scene; optionally write the JSON result documents.
     Run {
-        /// Scene file (TOML).
-        scene: PathBuf,
-        /// Write the JSON result document here (written only when the run completes).
-        #[arg(long)]
+        /// Scene files (TOML).
+        #[arg(required = true)]
+        scenes: Vec<PathBuf>,
+        /// Write the JSON result document here (one scene only; written only when the run completes).
+        #[arg(long, conflicts_with = "out_dir")]
         json: Option<PathBuf>,
-        /// Override the scene's `[solvers] use` (repeatable): lemke, clarabel, all.
+        /// Write one JSON document per scene into this folder, named after the scene (`NAME.json`).
+        #[arg(long)]
+        out_dir: Option<PathBuf>,
+        /// Override the scenes' `[solvers] use` (repeatable): lemke, clarabel, all.
         #[arg(long = "solver", value_parser = parse_solver)]
         solvers: Vec<SolverName>,
     },
@@ -104,35 +108,57 @@ fn print_report(r: &Report) {
     }
 }
 
+fn run_one(scene: &Path, json: Option<&Path>, solvers: &[SolverName]) -> rollbem::Result<Report> {
+    let mut s = Scene::from_file(scene)?;
+    if !solvers.is_empty() {
+        s.solvers.use_ = solvers.to_vec();
+    }
+    let report = run_scene(&s, scene)?;
+    if let Some(path) = json {
+        let text = serde_json::to_string_pretty(&report).expect("report serialises");
+        write_atomic(path, &text)?;
+    }
+    Ok(report)
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.cmd {
-        Cmd::Run { scene, json, solvers } => {
-            let result = Scene::from_file(&scene).and_then(|mut s| {
-                if !solvers.is_empty() {
-                    s.solvers.use_ = solvers;
-                }
-                let report = run_scene(&s, &scene)?;
-                if let Some(path) = &json {
-                    let text = serde_json::to_string_pretty(&report).expect("report serialises");
-                    write_atomic(path, &text)?;
-                }
-                Ok(report)
-            });
-            match result {
-                Ok(report) => {
-                    print_report(&report);
-                    if report.all_pass() {
-                        ExitCode::SUCCESS
-                    } else {
-                        ExitCode::from(1)
-                    }
-                }
-                Err(e) => {
+        Cmd::Run { scenes, json, out_dir, solvers } => {
+            if json.is_some() && scenes.len() > 1 {
+                eprintln!("error: --json takes one scene; use --out-dir for several");
+                return ExitCode::from(2);
+            }
+            // Validate every scene before running any, so bad input writes nothing.
+            for p in &scenes {
+                if let Err(e) = Scene::from_file(p) {
                     eprintln!("error: {e}");
-                    ExitCode::from(e.exit_code() as u8)
+                    return ExitCode::from(e.exit_code() as u8);
                 }
             }
+            let mut code = 0u8;
+            for (i, p) in scenes.iter().enumerate() {
+                let target = json.clone().or_else(|| {
+                    let name = Scene::from_file(p).map(|s| s.name).unwrap_or_default();
+                    out_dir.as_ref().map(|d| d.join(format!("{name}.json")))
+                });
+                if i > 0 {
+                    println!();
+                }
+                match run_one(p, target.as_deref(), &solvers) {
+                    Ok(report) => {
+                        print_report(&report);
+                        if !report.all_pass() {
+                            code = code.max(1);
+                        }
+                    }
+                    Err(e) => {
+                        eprintln!("error: {e}");
+                        code = code.max(e.exit_code() as u8);
+                    }
+                }
+            }
+            ExitCode::from(code)
         }
     }
 }

@@ -22,60 +22,92 @@ pub fn integrate(
     self_element: bool,
     k: &Kelvin,
 ) -> ([[f64; 2]; 2], [[f64; 2]; 2]) {
-    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-    let len = dx.hypot(dy);
-    let t = [dx / len, dy / len];
-    let n = [t[1], -t[0]];
-    let mut h = [[0.0; 2]; 2];
-    let mut g = [[0.0; 2]; 2];
+    let el = Straight::new(a, b);
     if self_element {
+        return (Default::default(), el.self_g(k));
+    }
+    let ra2 = (a[0] - src[0]).powi(2) + (a[1] - src[1]).powi(2);
+    let rb2 = (b[0] - src[0]).powi(2) + (b[1] - src[1]).powi(2);
+    el.integrate(src, ra2.ln(), rb2.ln(), k)
+}
+
+/// A straight element with its frame precomputed (the assembly's hot loop reuses it for every source).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Straight {
+    /// Start vertex.
+    pub a: [f64; 2],
+    /// End vertex.
+    pub b: [f64; 2],
+    /// Unit tangent from a to b.
+    pub t: [f64; 2],
+    /// Outward normal (t_y, −t_x).
+    pub n: [f64; 2],
+    /// Length.
+    pub len: f64,
+}
+
+impl Straight {
+    /// Frame of the element `a → b`.
+    pub fn new(a: [f64; 2], b: [f64; 2]) -> Straight {
+        let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+        let len = dx.hypot(dy);
+        let t = [dx / len, dy / len];
+        Straight { a, b, t, n: [t[1], -t[0]], len }
+    }
+
+    /// ∫U* over the element for a source at its own midpoint (closed form, REFERENCES.md).
+    #[inline]
+    pub fn self_g(&self, k: &Kelvin) -> [[f64; 2]; 2] {
+        let len = self.len;
         let lnterm = len * (0.5 * len).ln() - len;
+        let mut g = [[0.0; 2]; 2];
         for l in 0..2 {
             for m in 0..2 {
                 let delta = if l == m { 1.0 } else { 0.0 };
-                g[l][m] = k.cu * (-k.a34 * lnterm * delta + len * t[l] * t[m]);
+                g[l][m] = k.cu * (-k.a34 * lnterm * delta + len * self.t[l] * self.t[m]);
             }
         }
-        return (h, g);
+        g
     }
-    let ax = [a[0] - src[0], a[1] - src[1]];
-    let u1 = ax[0] * t[0] + ax[1] * t[1];
-    let u2 = u1 + len;
-    let d = ax[0] * n[0] + ax[1] * n[1];
 
-    // Antiderivatives at u (d fixed).
-    let at = |u: f64| if d != 0.0 { (u / d).atan() } else { 0.0 };
-    let r2 = |u: f64| u * u + d * d;
-    let phi_ln = |u: f64| 0.5 * u * r2(u).ln() - u + d * at(u);
-    let phi_tt = |u: f64| u - d * at(u);
-    let phi_tn = |u: f64| 0.5 * d * r2(u).ln();
-    let phi_nn = |u: f64| d * at(u);
-    let ia = |u: f64| 0.5 * at(u) - 0.5 * d * u / r2(u);
-    let ib = |u: f64| -0.5 * d * d / r2(u);
-    let ic = |u: f64| 0.5 * d * u / r2(u) + 0.5 * at(u);
-    let lam = |u: f64| 0.5 * r2(u).ln();
-
-    let g_ln = phi_ln(u2) - phi_ln(u1);
-    let g_tt = phi_tt(u2) - phi_tt(u1);
-    let g_tn = phi_tn(u2) - phi_tn(u1);
-    let g_nn = phi_nn(u2) - phi_nn(u1);
-    let theta = at(u2) - at(u1);
-    let h_tt = ia(u2) - ia(u1);
-    let h_tn = ib(u2) - ib(u1);
-    let h_nn = ic(u2) - ic(u1);
-    let h_la = lam(u2) - lam(u1);
-    for l in 0..2 {
-        for m in 0..2 {
-            let delta = if l == m { 1.0 } else { 0.0 };
-            let tt = t[l] * t[m];
-            let tn = t[l] * n[m] + n[l] * t[m];
-            let nn = n[l] * n[m];
-            g[l][m] = k.cu * (-k.a34 * delta * g_ln + tt * g_tt + tn * g_tn + nn * g_nn);
-            let anti = t[l] * n[m] - t[m] * n[l];
-            h[l][m] = -k.ct * (k.b12 * delta * theta + 2.0 * (tt * h_tt + tn * h_tn + nn * h_nn) - k.b12 * anti * h_la);
+    /// Closed-form `(h, g)` for a source `src` off the element, given `ln r²` at both vertices (shared between
+    /// neighbouring elements by the caller). With `u₁, u₂, d` as in the module docs, the subtended angle
+    /// `Θ = atan(u₂/d) − atan(u₁/d) = atan2(d L, d² + u₁u₂)` is the only inverse trigonometric function needed.
+    #[inline]
+    pub fn integrate(&self, src: [f64; 2], ln_ra2: f64, ln_rb2: f64, k: &Kelvin) -> ([[f64; 2]; 2], [[f64; 2]; 2]) {
+        let (t, n, len) = (self.t, self.n, self.len);
+        let ax = [self.a[0] - src[0], self.a[1] - src[1]];
+        let u1 = ax[0] * t[0] + ax[1] * t[1];
+        let u2 = u1 + len;
+        let d = ax[0] * n[0] + ax[1] * n[1];
+        let ra2 = u1 * u1 + d * d;
+        let rb2 = u2 * u2 + d * d;
+        let theta = (d * len).atan2(d * d + u1 * u2);
+        let g_ln = 0.5 * (u2 * ln_rb2 - u1 * ln_ra2) - len + d * theta;
+        let g_tt = len - d * theta;
+        let g_tn = 0.5 * d * (ln_rb2 - ln_ra2);
+        let g_nn = d * theta;
+        let w = 0.5 * d * (u2 / rb2 - u1 / ra2);
+        let h_tt = 0.5 * theta - w;
+        let h_tn = -0.5 * d * d * (1.0 / rb2 - 1.0 / ra2);
+        let h_nn = w + 0.5 * theta;
+        let h_la = 0.5 * (ln_rb2 - ln_ra2);
+        let mut h = [[0.0; 2]; 2];
+        let mut g = [[0.0; 2]; 2];
+        for l in 0..2 {
+            for m in 0..2 {
+                let delta = if l == m { 1.0 } else { 0.0 };
+                let tt = t[l] * t[m];
+                let tn = t[l] * n[m] + n[l] * t[m];
+                let nn = n[l] * n[m];
+                g[l][m] = k.cu * (-k.a34 * delta * g_ln + tt * g_tt + tn * g_tn + nn * g_nn);
+                let anti = t[l] * n[m] - t[m] * n[l];
+                h[l][m] =
+                    -k.ct * (k.b12 * delta * theta + 2.0 * (tt * h_tt + tn * h_tn + nn * h_nn) - k.b12 * anti * h_la);
+            }
         }
+        (h, g)
     }
-    (h, g)
 }
 
 #[cfg(test)]

@@ -25,6 +25,10 @@ pub trait BlockSink {
 
 /// Assemble H and G of `mesh` for the material `k` (in the mesh's units), delivering blocks to `sink`.
 pub fn assemble<S: BlockSink>(mesh: &Mesh, k: &Kelvin, sink: &mut S) {
+    if mesh.elements.iter().all(|e| matches!(e.shape, Shape::Straight { .. })) {
+        assemble_straight(mesh, k, sink);
+        return;
+    }
     let zero = [[0.0; 2]; 2];
     for (i, src) in mesh.nodes.iter().enumerate() {
         let mut hsum = [[0.0; 2]; 2];
@@ -33,11 +37,10 @@ pub fn assemble<S: BlockSink>(mesh: &Mesh, k: &Kelvin, sink: &mut S) {
                 Shape::Straight { a, b } => {
                     let own = src.element == e;
                     let (h, g) = constant::integrate(a, b, src.pos, own, k);
-                    let j = el.first_node;
                     if !own {
                         acc(&mut hsum, &h);
                     }
-                    sink.add(i, j, &h, &g);
+                    sink.add(i, el.first_node, &h, &g);
                 }
                 Shape::Arc(arc) => {
                     let own = (src.element == e).then(|| i - el.first_node);
@@ -53,6 +56,51 @@ pub fn assemble<S: BlockSink>(mesh: &Mesh, k: &Kelvin, sink: &mut S) {
             }
         }
         let diag = [[-hsum[0][0], -hsum[0][1]], [-hsum[1][0], -hsum[1][1]]];
+        sink.add(i, i, &diag, &zero);
+    }
+}
+
+/// Constant elements: the closed forms need `ln r²` at both vertices of every element; a vertex shared by two
+/// consecutive elements is evaluated once per source. Elements are the outer loop so that a sink writing into a
+/// column-major matrix writes contiguous columns; H's row sums are kept per source for the diagonal blocks.
+fn assemble_straight<S: BlockSink>(mesh: &Mesh, k: &Kelvin, sink: &mut S) {
+    let els: Vec<constant::Straight> = mesh
+        .elements
+        .iter()
+        .map(|e| match e.shape {
+            Shape::Straight { a, b } => constant::Straight::new(a, b),
+            Shape::Arc(_) => unreachable!("checked by the caller"),
+        })
+        .collect();
+    let nodes = &mesh.nodes;
+    let ln_r2 = |v: [f64; 2], out: &mut Vec<f64>| {
+        out.clear();
+        out.extend(nodes.iter().map(|s| ((v[0] - s.pos[0]).powi(2) + (v[1] - s.pos[1]).powi(2)).ln()));
+    };
+    let zero = [[0.0; 2]; 2];
+    let mut hsum = vec![[[0.0; 2]; 2]; nodes.len()];
+    let (mut la, mut lb) = (Vec::new(), Vec::new());
+    for (e, el) in els.iter().enumerate() {
+        // ln r² at the start vertex: the previous element's end vertex when they coincide bit for bit.
+        if e > 0 && els[e - 1].b == el.a {
+            std::mem::swap(&mut la, &mut lb);
+        } else {
+            ln_r2(el.a, &mut la);
+        }
+        ln_r2(el.b, &mut lb);
+        let j = mesh.elements[e].first_node;
+        for (i, src) in nodes.iter().enumerate() {
+            if src.element == e {
+                sink.add(i, j, &zero, &el.self_g(k));
+                continue;
+            }
+            let (h, g) = el.integrate(src.pos, la[i], lb[i], k);
+            acc(&mut hsum[i], &h);
+            sink.add(i, j, &h, &g);
+        }
+    }
+    for (i, hs) in hsum.iter().enumerate() {
+        let diag = [[-hs[0][0], -hs[0][1]], [-hs[1][0], -hs[1][1]]];
         sink.add(i, i, &diag, &zero);
     }
 }
