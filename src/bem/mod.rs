@@ -29,16 +29,17 @@ pub fn assemble<S: BlockSink>(mesh: &Mesh, k: &Kelvin, sink: &mut S) {
         assemble_straight(mesh, k, sink);
         return;
     }
+    // Elements outer, sources inner: a column-major sink receives contiguous columns.
     let zero = [[0.0; 2]; 2];
-    for (i, src) in mesh.nodes.iter().enumerate() {
-        let mut hsum = [[0.0; 2]; 2];
-        for (e, el) in mesh.elements.iter().enumerate() {
+    let mut hsum = vec![[[0.0; 2]; 2]; mesh.nodes.len()];
+    for (e, el) in mesh.elements.iter().enumerate() {
+        for (i, src) in mesh.nodes.iter().enumerate() {
             match el.shape {
                 Shape::Straight { a, b } => {
                     let own = src.element == e;
                     let (h, g) = constant::integrate(a, b, src.pos, own, k);
                     if !own {
-                        acc(&mut hsum, &h);
+                        acc(&mut hsum[i], &h);
                     }
                     sink.add(i, el.first_node, &h, &g);
                 }
@@ -48,14 +49,16 @@ pub fn assemble<S: BlockSink>(mesh: &Mesh, k: &Kelvin, sink: &mut S) {
                     for (loc, (hj, gj)) in h.iter().zip(g.iter()).enumerate() {
                         let j = el.first_node + loc;
                         if j != i {
-                            acc(&mut hsum, hj);
+                            acc(&mut hsum[i], hj);
                         }
                         sink.add(i, j, hj, gj);
                     }
                 }
             }
         }
-        let diag = [[-hsum[0][0], -hsum[0][1]], [-hsum[1][0], -hsum[1][1]]];
+    }
+    for (i, hs) in hsum.iter().enumerate() {
+        let diag = [[-hs[0][0], -hs[0][1]], [-hs[1][0], -hs[1][1]]];
         sink.add(i, i, &diag, &zero);
     }
 }
