@@ -136,6 +136,12 @@ fn main() -> ExitCode {
                     return ExitCode::from(e.exit_code() as u8);
                 }
             }
+            if let Some(dir) = &out_dir {
+                if let Err(e) = std::fs::create_dir_all(dir) {
+                    eprintln!("error: cannot create {}: {e}", dir.display());
+                    return ExitCode::from(3);
+                }
+            }
             let mut code = 0u8;
             for (i, p) in scenes.iter().enumerate() {
                 let target = json.clone().or_else(|| {
