@@ -32,6 +32,7 @@
 use crate::condense::{Flexibility, Model};
 use crate::scene::{Dof, Scene};
 use crate::solvers::Lcp;
+use faer::linalg::solvers::Solve;
 use faer::Mat;
 
 /// Index of the rigid modes in [`Flexibility::rigid_n`].
@@ -79,14 +80,32 @@ pub enum DriveIssue {
 impl Frictionless {
     /// Build the frictionless problem of `scene` from its flexibility.
     pub fn new(scene: &Scene, model: &Model, flex: &Flexibility) -> Result<Frictionless, DriveIssue> {
+        Self::build(scene, model, flex, None)
+    }
+
+    /// The normal problem at the limit of gross sliding, |Q| = μP with P and Q prescribed: every contact node
+    /// slips, `h = σ μ f` (σ = sgn Q), so the tangential forces are eliminated exactly and only the normal problem
+    /// remains, with `K = (F_NN + σμ F_NT) W⁻¹` (the cross block only with coupling) and the moment row
+    /// `x − σμ y`. The tangential equilibrium Σh = σμP = Q holds by construction; the shift is indeterminate.
+    pub fn sliding_limit(scene: &Scene, model: &Model, flex: &Flexibility, sigma: f64) -> Frictionless {
+        Self::build(scene, model, flex, Some(sigma)).expect("the tangential drive is not used at the sliding limit")
+    }
+
+    fn build(scene: &Scene, model: &Model, flex: &Flexibility, limit: Option<f64>) -> Result<Frictionless, DriveIssue> {
         let n = flex.n();
         let l0 = model.length;
         let e = model.modulus;
-        let k = Mat::from_fn(n, n, |i, j| flex.nn[(i, j)] / flex.weights[j]);
+        let smu = limit.map(|sg| sg * scene.contact.friction).unwrap_or(0.0);
+        let cross = |i: usize, j: usize| match (&flex.nt, limit.is_some() && scene.contact.coupling) {
+            (Some(nt), true) => smu * nt[(i, j)],
+            _ => 0.0,
+        };
+        let k = Mat::from_fn(n, n, |i, j| (flex.nn[(i, j)] + cross(i, j)) / flex.weights[j]);
         let mut rigid_given = [0.0; 3];
         let mut loads = Vec::new();
         match scene.drive.tangential() {
             Dof::Displacement(d) => rigid_given[MODE_SHIFT] = d / l0,
+            _ if limit.is_some() => {}
             Dof::Load(0.0) => {}
             Dof::Load(q) => return Err(DriveIssue::TangentialLoadWithoutFriction(q)),
         }
@@ -98,9 +117,12 @@ impl Frictionless {
         }
         match scene.drive.rotational() {
             Dof::Displacement(phi) => rigid_given[MODE_ROTATION] = phi,
-            Dof::Load(m) => {
-                loads.push(LoadDof { mode: MODE_ROTATION, row: flex.x.clone(), sign: 1.0, load: m / (e * l0 * l0) })
-            }
+            Dof::Load(m) => loads.push(LoadDof {
+                mode: MODE_ROTATION,
+                row: (0..n).map(|i| flex.x[i] - smu * flex.y[i]).collect(),
+                sign: 1.0,
+                load: m / (e * l0 * l0),
+            }),
         }
         let q0: Vec<f64> =
             (0..n).map(|i| flex.g0[i] + (0..3).map(|m| flex.rigid_n[(i, m)] * rigid_given[m]).sum::<f64>()).collect();
@@ -141,5 +163,221 @@ impl Frictionless {
             rigid[ld.mode] = z[n + 2 * b] - z[n + 2 * b + 1];
         }
         (z[..n].to_vec(), rigid)
+    }
+}
+
+/// One load-driven rigid degree of freedom of the frictional problem: its resultant is
+/// `a_Nᵀ f + a_Tᵀ h = L` (f normal, h tangential nodal forces).
+#[derive(Debug, Clone)]
+pub struct FrictionalLoad {
+    /// Rigid mode index (MODE_SHIFT, MODE_APPROACH or MODE_ROTATION).
+    pub mode: usize,
+    /// Row on the normal forces: 1 for P, 0 for Q, x for M.
+    pub row_n: Vec<f64>,
+    /// Row on the tangential forces: 0 for P, 1 for Q, −y for M.
+    pub row_t: Vec<f64>,
+    /// s_m with (R_N, R_T) column of the mode ≈ s_m (a_N, a_T): −1 for the approach, +1 otherwise.
+    pub sign: f64,
+    /// Prescribed resultant (dimensionless).
+    pub load: f64,
+}
+
+/// The frictional contact problem (seed §4), displacement-, load- or mixed-driven, as one LCP.
+///
+/// **Friction law** (seed eqs. 25–31, a two-sided pyramid in 2D): per contact node,
+/// `γ⁺ = μ f − h ≥ 0 ⊥ λ⁺ ≥ 0` and `γ⁻ = μ f + h ≥ 0 ⊥ λ⁻ ≥ 0`, and the slip of the wheel relative to the flat
+/// is `s = u_T = λ⁻ − λ⁺`: friction on the wheel opposes its slip (h = +μf, γ⁺ = 0, goes with s = −λ⁺ ≤ 0).
+///
+/// **Elimination of the tangential forces** (seed eqs. 35–37): from `u_T = K_TN f + K_TT h + R_T ρ = λ⁻ − λ⁺`,
+/// `h = S(λ⁻ − λ⁺ − K_TN f − R_T ρ)` with `S = K_TT⁻¹`. Writing ρ = ρ_D + E ρ_L (given plus load-driven
+/// components) makes h, the gap, γ± and the equilibrium residuals affine functions of
+/// `x = [f; λ⁺; λ⁻; ρ_L]`; the LCP is assembled from those affine maps:
+///
+/// ```text
+///   z = [f; λ⁺; λ⁻; u⁺; u⁻],   w = [g; γ⁺; γ⁻; v⁺; v⁻],   ρ_L = u⁺ − u⁻,
+///   v⁺_m = −s_m (a_Nᵀ f + a_Tᵀ h − L_m),   v⁻_m = s_m (a_Nᵀ f + a_Tᵀ h − L_m).
+/// ```
+///
+/// With no load-driven DOF this is the seed's eq. 38 (rigid-body displacement approach); with all three it is
+/// eq. 49 (rigid-body loading approach), whose printed matrix has typos (G_N for G_Nᵀ, signs in the slack rows):
+/// the blocks here are derived, not copied, and proved by the residuals of the physical conditions.
+/// By Betti's theorem `K_NT ≈ K_TNᵀ` and `S ≈ Sᵀ`, so the f–λ coupling blocks of M are skew and M is copositive
+/// (`zᵀMz = Schur-complement and S quadratic forms + μ(λ⁺ + λ⁻)ᵀf ≥ 0`).
+#[derive(Debug, Clone)]
+pub struct Frictional {
+    /// Friction coefficient μ.
+    pub mu: f64,
+    /// Prescribed rigid motion (shift, approach, rotation); load-driven entries are 0 here.
+    pub rigid_given: [f64; 3],
+    /// Load-driven DOFs.
+    pub loads: Vec<FrictionalLoad>,
+    /// h = h_x x + h_0 with x = [f; λ⁺; λ⁻; ρ_L] (n × (3n + L)).
+    pub h_x: Mat<f64>,
+    /// Constant part of h.
+    pub h_0: Vec<f64>,
+    /// The LCP, size 3n + 2L.
+    pub lcp: Lcp,
+}
+
+impl Frictional {
+    /// Build the frictional problem. `flex` must hold all four blocks ([`crate::condense::Blocks::All`]);
+    /// with `scene.contact.coupling = false` the cross blocks are dropped (K_NT = K_TN = 0).
+    pub fn new(scene: &Scene, model: &Model, flex: &Flexibility) -> Frictional {
+        let n = flex.n();
+        let (l0, e) = (model.length, model.modulus);
+        let mu = scene.contact.friction;
+        let coupling = scene.contact.coupling;
+        let per_force = |m: &Mat<f64>| Mat::from_fn(n, n, |i, j| m[(i, j)] / flex.weights[j]);
+        let k_nn = per_force(&flex.nn);
+        let k_tt = per_force(flex.tt.as_ref().expect("tangential blocks condensed"));
+        let (k_nt, k_tn) = if coupling {
+            (per_force(flex.nt.as_ref().expect("F_NT")), per_force(flex.tn.as_ref().expect("F_TN")))
+        } else {
+            (Mat::zeros(n, n), Mat::zeros(n, n))
+        };
+        let r_n = &flex.rigid_n;
+        let r_t = flex.rigid_t.as_ref().expect("tangential rigid responses");
+
+        let mut rigid_given = [0.0; 3];
+        let mut loads = Vec::new();
+        let zeros = vec![0.0; n];
+        let ones = vec![1.0; n];
+        match scene.drive.tangential() {
+            Dof::Displacement(d) => rigid_given[MODE_SHIFT] = d / l0,
+            Dof::Load(q) => loads.push(FrictionalLoad {
+                mode: MODE_SHIFT,
+                row_n: zeros.clone(),
+                row_t: ones.clone(),
+                sign: 1.0,
+                load: q / (e * l0),
+            }),
+        }
+        match scene.drive.normal() {
+            Dof::Displacement(d) => rigid_given[MODE_APPROACH] = d / l0,
+            Dof::Load(p) => loads.push(FrictionalLoad {
+                mode: MODE_APPROACH,
+                row_n: ones.clone(),
+                row_t: zeros.clone(),
+                sign: -1.0,
+                load: p / (e * l0),
+            }),
+        }
+        match scene.drive.rotational() {
+            Dof::Displacement(phi) => rigid_given[MODE_ROTATION] = phi,
+            Dof::Load(m) => loads.push(FrictionalLoad {
+                mode: MODE_ROTATION,
+                row_n: flex.x.clone(),
+                row_t: flex.y.iter().map(|y| -y).collect(),
+                sign: 1.0,
+                load: m / (e * l0 * l0),
+            }),
+        }
+        let nl = loads.len();
+        let nx = 3 * n + nl;
+        // S = K_TT⁻¹ and the affine map of h.
+        let lu = k_tt.partial_piv_lu();
+        let s = lu.solve(Mat::<f64>::identity(n, n));
+        let sk = &s * &k_tn;
+        let sr = &s * r_t;
+        let mut h_x = Mat::<f64>::zeros(n, nx);
+        let mut h_0 = vec![0.0; n];
+        for i in 0..n {
+            for j in 0..n {
+                h_x[(i, j)] = -sk[(i, j)];
+                h_x[(i, n + j)] = -s[(i, j)];
+                h_x[(i, 2 * n + j)] = s[(i, j)];
+            }
+            for (b, ld) in loads.iter().enumerate() {
+                h_x[(i, 3 * n + b)] = -sr[(i, ld.mode)];
+            }
+            h_0[i] = -(0..3).map(|m| sr[(i, m)] * rigid_given[m]).sum::<f64>();
+        }
+        // g = g0 + R_N (ρ_D + E ρ_L) + K_NN f + K_NT h.
+        let knt_h = &k_nt * &h_x;
+        let mut g_x = knt_h;
+        for i in 0..n {
+            for j in 0..n {
+                g_x[(i, j)] += k_nn[(i, j)];
+            }
+            for (b, ld) in loads.iter().enumerate() {
+                g_x[(i, 3 * n + b)] += r_n[(i, ld.mode)];
+            }
+        }
+        let g_0: Vec<f64> = (0..n)
+            .map(|i| {
+                flex.g0[i]
+                    + (0..3).map(|m| r_n[(i, m)] * rigid_given[m]).sum::<f64>()
+                    + (0..n).map(|j| k_nt[(i, j)] * h_0[j]).sum::<f64>()
+            })
+            .collect();
+        // Equilibrium residuals e_m = a_Nᵀ f + a_Tᵀ h − L_m.
+        let mut e_x = Mat::<f64>::zeros(nl, nx);
+        let mut e_0 = vec![0.0; nl];
+        for (b, ld) in loads.iter().enumerate() {
+            for c in 0..nx {
+                let mut v: f64 = (0..n).map(|i| ld.row_t[i] * h_x[(i, c)]).sum();
+                if c < n {
+                    v += ld.row_n[c];
+                }
+                e_x[(b, c)] = v;
+            }
+            e_0[b] = (0..n).map(|i| ld.row_t[i] * h_0[i]).sum::<f64>() - ld.load;
+        }
+        // Assemble the LCP: columns x → z (ρ_L splits into u⁺, u⁻), rows g, γ⁺, γ⁻, v⁺, v⁻.
+        let size = 3 * n + 2 * nl;
+        let mut m = Mat::<f64>::zeros(size, size);
+        let mut q = vec![0.0; size];
+        let zcol = |c: usize| -> (usize, Option<usize>) {
+            if c < 3 * n {
+                (c, None)
+            } else {
+                let b = c - 3 * n;
+                (3 * n + 2 * b, Some(3 * n + 2 * b + 1))
+            }
+        };
+        let mut put_row = |row: usize, coef: &dyn Fn(usize) -> f64, c0: f64, m: &mut Mat<f64>| {
+            for c in 0..nx {
+                let v = coef(c);
+                let (cp, cm) = zcol(c);
+                m[(row, cp)] = v;
+                if let Some(cm) = cm {
+                    m[(row, cm)] = -v;
+                }
+            }
+            q[row] = c0;
+        };
+        for i in 0..n {
+            put_row(i, &|c| g_x[(i, c)], g_0[i], &mut m);
+            let fmu = |c: usize| if c == i { mu } else { 0.0 };
+            put_row(n + i, &|c| fmu(c) - h_x[(i, c)], -h_0[i], &mut m);
+            put_row(2 * n + i, &|c| fmu(c) + h_x[(i, c)], h_0[i], &mut m);
+        }
+        for (b, ld) in loads.iter().enumerate() {
+            let sg = ld.sign;
+            put_row(3 * n + 2 * b, &|c| -sg * e_x[(b, c)], -sg * e_0[b], &mut m);
+            put_row(3 * n + 2 * b + 1, &|c| sg * e_x[(b, c)], sg * e_0[b], &mut m);
+        }
+        Frictional { mu, rigid_given, loads, h_x, h_0, lcp: Lcp { m, q } }
+    }
+
+    /// Number of contact nodes.
+    pub fn n(&self) -> usize {
+        self.h_0.len()
+    }
+
+    /// Split an LCP solution into normal forces f, tangential forces h and the full rigid motion.
+    pub fn unpack(&self, z: &[f64]) -> (Vec<f64>, Vec<f64>, [f64; 3]) {
+        let n = self.n();
+        let nl = self.loads.len();
+        let mut x = z[..3 * n].to_vec();
+        let mut rigid = self.rigid_given;
+        for (b, ld) in self.loads.iter().enumerate() {
+            let r = z[3 * n + 2 * b] - z[3 * n + 2 * b + 1];
+            x.push(r);
+            rigid[ld.mode] = r;
+        }
+        let h: Vec<f64> =
+            (0..n).map(|i| self.h_0[i] + (0..3 * n + nl).map(|c| self.h_x[(i, c)] * x[c]).sum::<f64>()).collect();
+        (z[..n].to_vec(), h, rigid)
     }
 }

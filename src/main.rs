@@ -65,10 +65,22 @@ fn print_report(r: &Report) {
     if let Some(h) = &r.references.hertz {
         println!("Hertz at P = {:.6e}: a = {:.6e}, p0 = {:.6e}", h.load, h.half_width, h.peak_pressure);
     }
+    let frictional = r.effects.iter().any(|e| e == "friction");
     println!(
-        "{:<9} {:<16} {:>5} {:>8} {:>10} {:>12} {:>12} {:>12} {:>12} {:>10}",
-        "solver", "status", "size", "work", "residual", "P", "a (fit)", "p0 (fit)", "d_N", "time [s]"
+        "{:<9} {:<16} {:>5} {:>9} {:>9} {:>12} {:>12} {:>12} {:>12} {:>12} {:>9}",
+        "solver",
+        "status",
+        "size",
+        "work",
+        "residual",
+        "P",
+        if frictional { "Q" } else { "a (fit)" },
+        if frictional { "peak p" } else { "p0 (fit)" },
+        if frictional { "stick zone" } else { "contact" },
+        "d_N",
+        "time [s]"
     );
+    let opt = |v: Option<f64>| v.map(|v| format!("{v:.5e}")).unwrap_or_else(|| "-".into());
     for run in &r.runs {
         let work = run
             .work
@@ -76,21 +88,44 @@ fn print_report(r: &Report) {
             .map(|p| format!("{p} piv"))
             .or(run.work.iterations.map(|i| format!("{i} it")))
             .unwrap_or_default();
-        let opt = |v: Option<f64>| v.map(|v| format!("{v:.6e}")).unwrap_or_else(|| "-".into());
+        let (Some(res), Some(f), Some(c), Some(rb)) = (&run.residuals, &run.resultants, &run.contact, &run.rigid_body)
+        else {
+            println!(
+                "{:<9} {:<16} {:>5} {:>9} {:>9} {:>12} {:>12} {:>12} {:>12} {:>12} {:>9.4}",
+                run.solver,
+                run.status.name(),
+                run.problem_size,
+                work,
+                "-",
+                "-",
+                "-",
+                "-",
+                "-",
+                "-",
+                run.timing_s.total
+            );
+            println!("          {}", run.message);
+            continue;
+        };
+        let range = |a: Option<f64>, b: Option<f64>| match (a, b) {
+            (Some(a), Some(b)) => format!("[{a:.3e},{b:.3e}]"),
+            _ => "none".into(),
+        };
         println!(
-            "{:<9} {:<16} {:>5} {:>8} {:>10.2e} {:>12.6e} {:>12} {:>12} {:>12.5e} {:>10.4}",
+            "{:<9} {:<16} {:>5} {:>9} {:>9.2e} {:>12.5e} {:>12} {:>12} {:>12} {:>12.5e} {:>9.4}",
             run.solver,
             run.status.name(),
             run.problem_size,
             work,
-            run.residuals.max(),
-            run.resultants.normal,
-            opt(run.contact.fit_half_width),
-            opt(run.contact.fit_peak_pressure),
-            run.rigid_body.normal,
+            res.max(),
+            f.normal,
+            if frictional { format!("{:.5e}", f.tangential) } else { opt(c.fit_half_width) },
+            if frictional { format!("{:.5e}", c.peak_pressure) } else { opt(c.fit_peak_pressure) },
+            if frictional { range(c.stick_x_min, c.stick_x_max) } else { range(c.x_min, c.x_max) },
+            rb.normal,
             run.timing_s.total
         );
-        if run.status != rollbem::solvers::Status::Solved {
+        if run.status != rollbem::solvers::Status::Solved || run.message.contains("sliding limit") {
             println!("          {}", run.message);
         }
     }

@@ -17,6 +17,9 @@ use serde::Serialize;
 /// Relative pressure below which a node counts as separated (of the peak pressure).
 pub const SEPARATED_PRESSURE: f64 = 1e-9;
 
+/// A contact node sticks when |q| < μp (1 − STICK_MARGIN); at |q| = μp to round-off it is at the slip limit.
+pub const STICK_MARGIN: f64 = 1e-9;
+
 /// State of a contact node.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -46,7 +49,7 @@ pub struct NodeResult {
     pub u_y: f64,
     /// Gap g = g₀ + u_y to the flat.
     pub gap: f64,
-    /// Slip of the wheel relative to the flat (u_x; null when not computed).
+    /// Slip of the wheel relative to the flat (u_x at a contact node; null when separated or not computed).
     pub slip: Option<f64>,
     /// Stick / slip / separated.
     pub state: NodeState,
@@ -70,8 +73,8 @@ pub struct Resultants {
 pub struct RigidBody {
     /// Approach d_N (length).
     pub normal: f64,
-    /// Tangential shift d_T (length).
-    pub tangential: f64,
+    /// Tangential shift d_T (length); null when indeterminate (at the sliding limit |Q| = μP).
+    pub tangential: Option<f64>,
     /// Rotation φ (radians, counter-clockwise).
     pub rotation: f64,
 }
@@ -148,27 +151,75 @@ pub struct Evaluation {
     pub residuals: Residuals,
 }
 
-/// Evaluate a frictionless solution: `f` are the dimensionless nodal normal forces, `rigid` the dimensionless rigid
-/// motion (shift, approach, rotation). The reference gap ℓ of the residuals is the largest rigid gap
-/// `|g₀ + R_N ρ|` over the candidate zone: the gap the contact has to close or keep open.
-pub fn evaluate_frictionless(
+/// Slip velocity s_t* of seed eq. 12 at the contact nodes: `s*(x_i) = ξ + sgn(V) (u_T(x_{i+1}) − u_T(x_i)) / h_i`,
+/// the forward difference with the neighbour the seed's formula names (i + 1, towards +x), `h_i = x_{i+1} − x_i`.
+/// At the last candidate node there is no i + 1 and the backward difference with i − 1 is used. The neighbour may be
+/// a separated node: u_T is defined there (the wheel's surface displacement), so the difference stays one-sided
+/// and first order at the contact edge rather than switching schemes. Separated nodes get `None` (no contact, no
+/// slip velocity). `u_t` and `x` in the same (dimensionless) length unit.
+pub fn slip_velocity(x: &[f64], u_t: &[f64], in_contact: &[bool], creepage: f64, direction: i32) -> Vec<Option<f64>> {
+    let n = x.len();
+    (0..n)
+        .map(|i| {
+            if !in_contact[i] || n < 2 {
+                return None;
+            }
+            let (a, b) = if i + 1 < n { (i, i + 1) } else { (i - 1, i) };
+            Some(creepage + direction as f64 * (u_t[b] - u_t[a]) / (x[b] - x[a]))
+        })
+        .collect()
+}
+
+/// Evaluate a solution: `f` the dimensionless nodal normal forces, `h` the tangential ones (`None` when the scene
+/// is frictionless and the tangential problem was not built), `rigid` the dimensionless rigid motion (shift,
+/// approach, rotation), `shift_known = false` when the shift is indeterminate (at the sliding limit).
+///
+/// Residuals (relative, solver-independent): ℓ is the largest rigid gap `|g₀ + R_N ρ|` over the candidate zone
+/// (the gap the contact has to close or keep open); `complementarity` is max |p g| / (p_max ℓ); `friction` the worst
+/// of the Coulomb cone violation max(0, |q| − μp)/(μ p_max), the slip of sticking material |s|(μp − |q|)/(ℓ μ p_max)
+/// and slip along the friction force max(0, s q)/(ℓ μ p_max); `equilibrium` the worst relative error of a
+/// prescribed resultant (Q relative to max(|Q|, μP), M to max(|M|, P R)).
+pub fn evaluate(
     scene: &Scene,
     model: &Model,
     flex: &Flexibility,
     f: &[f64],
+    h: Option<&[f64]>,
     rigid: [f64; 3],
+    shift_known: bool,
 ) -> Evaluation {
     let n = flex.n();
     let (l0, e) = (model.length, model.modulus);
+    let mu = scene.contact.friction;
+    let coupling = scene.contact.coupling;
     let p: Vec<f64> = (0..n).map(|i| f[i] / flex.weights[i]).collect();
-    let rig_gap: Vec<f64> =
-        (0..n).map(|i| flex.g0[i] + (0..3).map(|m| flex.rigid_n[(i, m)] * rigid[m]).sum::<f64>()).collect();
+    let q: Vec<f64> = match h {
+        Some(h) => (0..n).map(|i| h[i] / flex.weights[i]).collect(),
+        None => vec![0.0; n],
+    };
+    let rig = |r: &faer::Mat<f64>, i: usize| (0..3).map(|m| r[(i, m)] * rigid[m]).sum::<f64>();
+    let matvec = |m: &faer::Mat<f64>, v: &[f64], i: usize| (0..n).map(|j| m[(i, j)] * v[j]).sum::<f64>();
+    let rig_gap: Vec<f64> = (0..n).map(|i| flex.g0[i] + rig(&flex.rigid_n, i)).collect();
     let uy: Vec<f64> = (0..n)
         .map(|i| {
-            (0..n).map(|j| flex.nn[(i, j)] * p[j]).sum::<f64>()
-                + (0..3).map(|m| flex.rigid_n[(i, m)] * rigid[m]).sum::<f64>()
+            let cross = match (&flex.nt, h.is_some() && coupling) {
+                (Some(nt), true) => matvec(nt, &q, i),
+                _ => 0.0,
+            };
+            matvec(&flex.nn, &p, i) + cross + rig(&flex.rigid_n, i)
         })
         .collect();
+    let ux: Option<Vec<f64>> = match (&flex.tn, &flex.tt, &flex.rigid_t) {
+        (Some(tn), Some(tt), Some(rt)) => Some(
+            (0..n)
+                .map(|i| {
+                    let cross = if coupling { matvec(tn, &p, i) } else { 0.0 };
+                    cross + matvec(tt, &q, i) + rig(rt, i)
+                })
+                .collect(),
+        ),
+        _ => None,
+    };
     let gap: Vec<f64> = (0..n).map(|i| flex.g0[i] + uy[i]).collect();
     let pmax = p.iter().fold(0.0_f64, |a, &v| a.max(v));
     let ell = rig_gap.iter().fold(0.0_f64, |a, &v| a.max(v.abs())).max(f64::MIN_POSITIVE);
@@ -176,38 +227,67 @@ pub fn evaluate_frictionless(
     let complementarity = (0..n).map(|i| (p[i] * gap[i]).abs()).fold(0.0, f64::max) / (pref * ell);
     let penetration = (-gap.iter().cloned().fold(f64::INFINITY, f64::min)).max(0.0) / ell;
     let tension = (-p.iter().cloned().fold(f64::INFINITY, f64::min)).max(0.0) / pref;
+    let friction = h.map(|_| {
+        let fref = (mu * pref).max(f64::MIN_POSITIVE);
+        let mut worst = 0.0_f64;
+        for i in 0..n {
+            worst = worst.max((q[i].abs() - mu * p[i]).max(0.0) / fref);
+            if let (Some(ux), true) = (&ux, shift_known) {
+                let s = ux[i];
+                worst = worst.max(s.abs() * (mu * p[i] - q[i].abs()).max(0.0) / (ell * fref));
+                worst = worst.max((s * q[i]).max(0.0) / (ell * fref));
+            }
+        }
+        worst
+    });
     let fsum: f64 = f.iter().sum();
-    let msum: f64 = (0..n).map(|i| flex.x[i] * f[i]).sum();
+    let hsum: f64 = h.map(|h| h.iter().sum()).unwrap_or(0.0);
+    let msum: f64 = (0..n).map(|i| flex.x[i] * f[i] - flex.y[i] * h.map(|h| h[i]).unwrap_or(0.0)).sum();
+    let (pr, qr, mr) = (fsum * e * l0, hsum * e * l0, msum * e * l0 * l0);
     let mut eq: Option<f64> = None;
+    let mut worse = |r: f64| eq = Some(eq.unwrap_or(0.0).max(r));
     if let Dof::Load(pl) = scene.drive.normal() {
-        let r = (fsum * e * l0 - pl).abs() / pl.abs();
-        eq = Some(eq.unwrap_or(0.0).max(r));
+        worse((pr - pl).abs() / pl.abs());
+    }
+    if let (Dof::Load(ql), Some(_)) = (scene.drive.tangential(), h) {
+        worse((qr - ql).abs() / ql.abs().max(mu * pr.abs()).max(f64::MIN_POSITIVE));
     }
     if let Dof::Load(ml) = scene.drive.rotational() {
-        let m = msum * e * l0 * l0;
-        // Relative to |M|, or to P·R when the prescribed moment is zero.
-        let scale = ml.abs().max((fsum * e * l0).abs() * scene.wheel.radius).max(f64::MIN_POSITIVE);
-        let r = (m - ml).abs() / scale;
-        eq = Some(eq.unwrap_or(0.0).max(r));
+        worse((mr - ml).abs() / ml.abs().max(pr.abs() * scene.wheel.radius).max(f64::MIN_POSITIVE));
     }
-    let residuals = Residuals { complementarity, penetration, tension, friction: None, equilibrium: eq };
+    let residuals = Residuals { complementarity, penetration, tension, friction, equilibrium: eq };
 
     let cut = SEPARATED_PRESSURE * pmax;
+    let in_contact: Vec<bool> = (0..n).map(|i| pmax > 0.0 && p[i] > cut).collect();
+    let state = |i: usize| {
+        if !in_contact[i] {
+            NodeState::Separated
+        } else if h.is_some() && q[i].abs() < mu * p[i] * (1.0 - STICK_MARGIN) {
+            NodeState::Stick
+        } else {
+            NodeState::Slip
+        }
+    };
+    let sv: Vec<Option<f64>> = match (&scene.rolling, &ux) {
+        (Some(r), Some(ux)) => slip_velocity(&flex.x, ux, &in_contact, r.creepage, r.direction),
+        _ => vec![None; n],
+    };
     let nodes: Vec<NodeResult> = (0..n)
         .map(|i| NodeResult {
             x: flex.x[i] * l0,
             y: flex.y[i] * l0,
             pressure: p[i] * e,
-            shear: 0.0,
-            u_x: None,
+            shear: q[i] * e,
+            u_x: ux.as_ref().filter(|_| shift_known).map(|u| u[i] * l0),
             u_y: uy[i] * l0,
             gap: gap[i] * l0,
-            slip: None,
-            state: if p[i] > cut && pmax > 0.0 { NodeState::Slip } else { NodeState::Separated },
-            slip_velocity: None,
+            slip: ux.as_ref().filter(|_| shift_known && h.is_some() && in_contact[i]).map(|u| u[i] * l0),
+            state: state(i),
+            slip_velocity: sv[i],
         })
         .collect();
     let loaded: Vec<&NodeResult> = nodes.iter().filter(|nd| nd.state != NodeState::Separated).collect();
+    let sticking: Vec<&NodeResult> = nodes.iter().filter(|nd| nd.state == NodeState::Stick).collect();
     let x_min = loaded.first().map(|nd| nd.x);
     let x_max = loaded.last().map(|nd| nd.x);
     let xs: Vec<f64> = nodes.iter().map(|nd| nd.x).collect();
@@ -221,18 +301,18 @@ pub fn evaluate_frictionless(
         peak_pressure: pmax * e,
         fit_half_width: fit.map(|f| f.0),
         fit_peak_pressure: fit.map(|f| f.1),
-        stick_x_min: None,
-        stick_x_max: None,
+        stick_x_min: sticking.first().map(|nd| nd.x),
+        stick_x_max: sticking.last().map(|nd| nd.x),
         nodes_contact: loaded.len(),
-        nodes_stick: 0,
-        nodes_slip: loaded.len(),
+        nodes_stick: sticking.len(),
+        nodes_slip: loaded.len() - sticking.len(),
     };
     Evaluation {
         nodes,
-        resultants: Resultants { normal: fsum * e * l0, tangential: 0.0, moment: msum * e * l0 * l0 },
+        resultants: Resultants { normal: pr, tangential: qr, moment: mr },
         rigid_body: RigidBody {
             normal: rigid[MODE_APPROACH] * l0,
-            tangential: rigid[MODE_SHIFT] * l0,
+            tangential: shift_known.then_some(rigid[MODE_SHIFT] * l0),
             rotation: rigid[MODE_ROTATION],
         },
         contact,

@@ -35,6 +35,28 @@ pub struct Scene {
     /// Which solvers to run.
     #[serde(default)]
     pub solvers: SolverSpec,
+    /// What the scene expects of its runs.
+    #[serde(default)]
+    pub checks: Expect,
+}
+
+/// Expectations a scene declares about its own outcome.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Expect {
+    /// The status every solver should end with (default `solved`; e.g. `infeasible` for a load beyond μP).
+    #[serde(default = "default_status")]
+    pub status: crate::solvers::Status,
+}
+
+fn default_status() -> crate::solvers::Status {
+    crate::solvers::Status::Solved
+}
+
+impl Default for Expect {
+    fn default() -> Self {
+        Expect { status: default_status() }
+    }
 }
 
 /// The wheel: an elastic disk (or annulus) in plane strain.
@@ -281,6 +303,16 @@ impl Scene {
         match w.support {
             Support::Hub { radius } => {
                 positive("wheel.support.radius", radius)?;
+                if nu == 0.5 {
+                    return Err(bad(
+                        "wheel.poisson_ratio",
+                        "ν = 0.5 with a hub support is degenerate for the displacement BIE: in incompressible plane \
+                         strain a uniform radial traction on the clamped hub circle produces no displacement anywhere, \
+                         so the hub pressure is undetermined (the BEM system is singular). Use ν ≤ 0.4999, or the \
+                         top_arc support (an open clamped arc), for which ν = 0.5 is well posed"
+                            .into(),
+                    ));
+                }
                 if radius >= 0.95 * w.radius {
                     return Err(bad(
                         "wheel.support.radius",

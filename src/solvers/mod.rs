@@ -39,7 +39,7 @@ impl Lcp {
 }
 
 /// Outcome of a solver run.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Status {
     /// A solution was found and its solver-independent residuals are small.
