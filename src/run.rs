@@ -208,6 +208,18 @@ enum Problem {
     GrossSliding(String),
 }
 
+/// A solver's answer in the formulation's dimensionless unknowns.
+struct Solution {
+    /// Normal nodal forces.
+    f: Vec<f64>,
+    /// Tangential nodal forces (None when the tangential problem was not built).
+    h: Option<Vec<f64>>,
+    /// Rigid motion (shift, approach, rotation).
+    rigid: [f64; 3],
+    /// False when the shift is indeterminate (sliding limit).
+    shift_known: bool,
+}
+
 /// Relative band around |Q| = μP treated as the sliding limit.
 const SLIDING_LIMIT_BAND: f64 = 1e-9;
 
@@ -288,71 +300,75 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
     for s in solvers {
         let t0 = Instant::now();
         let mut polish_change = None;
-        let (status, message, work, sol): (Status, String, Work, Option<(Vec<f64>, Option<Vec<f64>>, [f64; 3], bool)>) =
-            match (&problem, s) {
-                (Problem::GrossSliding(msg), _) => (Status::Infeasible, msg.clone(), Work::default(), None),
-                (Problem::Frictionless(p), SolverName::Lemke) | (Problem::SlidingLimit(p, _), SolverName::Lemke) => {
-                    let out = lemke::solve(&p.lcp, &LemkeSettings::default());
-                    let (f, rigid) = p.unpack(&out.z);
-                    let limit = matches!(problem, Problem::SlidingLimit(..));
-                    let h = match &problem {
-                        Problem::SlidingLimit(_, sigma) => Some(f.iter().map(|v| sigma * mu * v).collect()),
-                        _ => None,
-                    };
-                    let msg = if limit {
-                        format!(
-                            "sliding limit |Q| = μP: every contact node slips (q = μp sgn Q); the tangential shift is \
+        let (status, message, work, sol): (Status, String, Work, Option<Solution>) = match (&problem, s) {
+            (Problem::GrossSliding(msg), _) => (Status::Infeasible, msg.clone(), Work::default(), None),
+            (Problem::Frictionless(p), SolverName::Lemke) | (Problem::SlidingLimit(p, _), SolverName::Lemke) => {
+                let out = lemke::solve(&p.lcp, &LemkeSettings::default());
+                let (f, rigid) = p.unpack(&out.z);
+                let limit = matches!(problem, Problem::SlidingLimit(..));
+                let h = match &problem {
+                    Problem::SlidingLimit(_, sigma) => Some(f.iter().map(|v| sigma * mu * v).collect()),
+                    _ => None,
+                };
+                let msg = if limit {
+                    format!(
+                        "sliding limit |Q| = μP: every contact node slips (q = μp sgn Q); the tangential shift is \
                              indeterminate (reported null); {}",
-                            out.message
-                        )
-                    } else {
                         out.message
-                    };
-                    let (status, msg) = classify_ray(out.status, msg, scene);
-                    (status, msg, Work { pivots: Some(out.pivots), iterations: None }, Some((f, h, rigid, !limit)))
-                }
-                (Problem::Frictional(p), SolverName::Lemke) => {
-                    let out = lemke::solve(&p.lcp, &LemkeSettings::default());
-                    let (f, h, rigid) = p.unpack(&out.z);
-                    let (status, msg) = classify_ray(out.status, out.message, scene);
-                    (status, msg, Work { pivots: Some(out.pivots), iterations: None }, Some((f, Some(h), rigid, true)))
-                }
-                (Problem::Frictionless(p), SolverName::Clarabel) => {
-                    let n = p.n();
-                    let kcol: Vec<f64> = (0..n * n).map(|idx| p.k[(idx % n, idx / n)]).collect();
-                    let ones = vec![1.0; n];
-                    let load = p.loads.first().map(|l| (ones.as_slice(), l.load));
-                    let out = clarabel_qp::solve_frictionless(&kcol, n, &p.q0, load, &QpSettings::default());
-                    let mut rigid = p.rigid_given;
-                    if let Some(d) = out.approach {
-                        rigid[MODE_APPROACH] = d;
-                    }
-                    let pmax = out.f.iter().zip(&flex.weights).fold(0.0_f64, |a, (f, w)| a.max(f / w));
-                    polish_change = Some(
-                        out.f
-                            .iter()
-                            .zip(&out.f_unpolished)
-                            .zip(&flex.weights)
-                            .fold(0.0_f64, |a, ((f, g), w)| a.max((f - g).abs() / w))
-                            / pmax.max(f64::MIN_POSITIVE),
-                    );
-                    let (status, msg) = match &out.status {
-                        QpStatus::Solved | QpStatus::AlmostSolved => (Status::Solved, format!("{}", out.status)),
-                        QpStatus::MaxIterations => (Status::NotConverged, format!("{}", out.status)),
-                        QpStatus::Infeasible => (Status::Infeasible, format!("{}", out.status)),
-                        QpStatus::NumericalError(m) => (Status::NumericalError, m.clone()),
-                    };
-                    let msg =
-                        format!("{msg}; active-set polish {}", if out.polished { "accepted" } else { "not accepted" });
-                    (
-                        status,
-                        msg,
-                        Work { pivots: None, iterations: Some(out.iterations) },
-                        Some((out.f, None, rigid, true)),
                     )
+                } else {
+                    out.message
+                };
+                let (status, msg) = classify_ray(out.status, msg, scene);
+                (
+                    status,
+                    msg,
+                    Work { pivots: Some(out.pivots), iterations: None },
+                    Some(Solution { f, h, rigid, shift_known: !limit }),
+                )
+            }
+            (Problem::Frictional(p), SolverName::Lemke) => {
+                let out = lemke::solve(&p.lcp, &LemkeSettings::default());
+                let (f, h, rigid) = p.unpack(&out.z);
+                let (status, msg) = classify_ray(out.status, out.message, scene);
+                (
+                    status,
+                    msg,
+                    Work { pivots: Some(out.pivots), iterations: None },
+                    Some(Solution { f, h: Some(h), rigid, shift_known: true }),
+                )
+            }
+            (Problem::Frictionless(p), SolverName::Clarabel) => {
+                let n = p.n();
+                let kcol: Vec<f64> = (0..n * n).map(|idx| p.k[(idx % n, idx / n)]).collect();
+                let ones = vec![1.0; n];
+                let load = p.loads.first().map(|l| (ones.as_slice(), l.load));
+                let out = clarabel_qp::solve_frictionless(&kcol, n, &p.q0, load, &QpSettings::default());
+                let mut rigid = p.rigid_given;
+                if let Some(d) = out.approach {
+                    rigid[MODE_APPROACH] = d;
                 }
-                (_, other) => unreachable!("{other:?} was filtered by resolve_solvers"),
-            };
+                let pmax = out.f.iter().zip(&flex.weights).fold(0.0_f64, |a, (f, w)| a.max(f / w));
+                polish_change = Some(
+                    out.f
+                        .iter()
+                        .zip(&out.f_unpolished)
+                        .zip(&flex.weights)
+                        .fold(0.0_f64, |a, ((f, g), w)| a.max((f - g).abs() / w))
+                        / pmax.max(f64::MIN_POSITIVE),
+                );
+                let (status, msg) = match &out.status {
+                    QpStatus::Solved | QpStatus::AlmostSolved => (Status::Solved, format!("{}", out.status)),
+                    QpStatus::MaxIterations => (Status::NotConverged, format!("{}", out.status)),
+                    QpStatus::Infeasible => (Status::Infeasible, format!("{}", out.status)),
+                    QpStatus::NumericalError(m) => (Status::NumericalError, m.clone()),
+                };
+                let msg =
+                    format!("{msg}; active-set polish {}", if out.polished { "accepted" } else { "not accepted" });
+                (status, msg, Work { pivots: None, iterations: Some(out.iterations) }, Some((out.f, None, rigid, true)))
+            }
+            (_, other) => unreachable!("{other:?} was filtered by resolve_solvers"),
+        };
         let solve_time = t0.elapsed().as_secs_f64();
         let timing = Timing {
             assembly: bem_t.assembly,
@@ -436,14 +452,12 @@ fn finish_run(
     mut status: Status,
     mut message: String,
     work: Work,
-    sol: Option<(Vec<f64>, Option<Vec<f64>>, [f64; 3], bool)>,
+    sol: Option<Solution>,
     timing: Timing,
     polish_change: Option<f64>,
 ) -> SolverRun {
     let ev: Option<Evaluation> = match (&sol, status) {
-        (Some((f, h, rigid, shift_known)), Status::Solved) => {
-            Some(evaluate(scene, model, flex, f, h.as_deref(), *rigid, *shift_known))
-        }
+        (Some(x), Status::Solved) => Some(evaluate(scene, model, flex, &x.f, x.h.as_deref(), x.rigid, x.shift_known)),
         _ => None,
     };
     if let Some(ev) = &ev {
