@@ -365,7 +365,12 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
                 };
                 let msg =
                     format!("{msg}; active-set polish {}", if out.polished { "accepted" } else { "not accepted" });
-                (status, msg, Work { pivots: None, iterations: Some(out.iterations) }, Some((out.f, None, rigid, true)))
+                (
+                    status,
+                    msg,
+                    Work { pivots: None, iterations: Some(out.iterations) },
+                    Some(Solution { f: out.f, h: None, rigid, shift_known: true }),
+                )
             }
             (_, other) => unreachable!("{other:?} was filtered by resolve_solvers"),
         };
