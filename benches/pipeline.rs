@@ -10,7 +10,7 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use rollbem::condense::{assemble_system, condense, solve_system, Blocks, Model};
-use rollbem::formulation::Frictionless;
+use rollbem::formulation::{Frictional, Frictionless};
 use rollbem::run::run_scene;
 use rollbem::scene::{ElementKind, Scene, SolverName};
 use rollbem::solvers::clarabel_qp::{self, QpSettings};
@@ -108,5 +108,40 @@ fn frictionless_solve(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, end_to_end, assembly, condensation, frictionless_solve);
+/// Frictional LCPs (P and Q prescribed, rotation held, μ = 0.3, ν = 0.3) with n contact nodes: 3n + 4 unknowns.
+/// n = 880 gives 2644 unknowns, the size of the 2640-unknown target. Pivot counts go to stderr.
+fn lemke_frictional(c: &mut Criterion) {
+    faer::set_global_parallelism(faer::Par::Seq);
+    let mut g = c.benchmark_group("lemke_frictional");
+    g.sample_size(10);
+    for n in [25usize, 100, 200, 400, 800, 880] {
+        let mut s = seed_scene();
+        s.wheel.poisson_ratio = 0.3;
+        s.wheel.support = rollbem::scene::Support::Hub { radius: 0.25 };
+        s.mesh.contact_arc_deg = 12.0;
+        s.mesh.contact_elements = n;
+        s.mesh.other_elements = 200;
+        s.contact.friction = 0.3;
+        s.drive.normal_load = Some(187.42);
+        s.drive.tangential_load = Some(18.742);
+        s.drive.rotation = Some(0.0);
+        let model = Model::new(&s);
+        let (flex, _) = condense(&model, Blocks::All).unwrap();
+        let prob = Frictional::new(&s, &model, &flex);
+        let m = prob.lcp.size();
+        let probe = lemke::solve(&prob.lcp, &LemkeSettings::default());
+        eprintln!("lemke_frictional/block/{m}: {} pivots, {:?}", probe.pivots, probe.status);
+        g.bench_with_input(BenchmarkId::new("block", m), &prob, |b, p| {
+            b.iter(|| black_box(lemke::solve(&p.lcp, &LemkeSettings::default())))
+        });
+        if n <= 200 {
+            g.bench_with_input(BenchmarkId::new("dense", m), &prob, |b, p| {
+                b.iter(|| black_box(lemke::solve_dense(&p.lcp, &LemkeSettings::default())))
+            });
+        }
+    }
+    g.finish();
+}
+
+criterion_group!(benches, end_to_end, assembly, condensation, frictionless_solve, lemke_frictional);
 criterion_main!(benches);

@@ -55,6 +55,9 @@ pub struct LemkeOutcome {
     pub message: String,
 }
 
+/// z0 counts as zero below this fraction of its initial value (both engines).
+pub(crate) const Z0_NEGLIGIBLE: f64 = 1e-13;
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Var {
     W(usize),
@@ -186,9 +189,70 @@ impl Work<'_> {
     }
 }
 
-/// Solve `w = M z + q ⊥ z ≥ 0` by Lemke's method.
-pub fn solve(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
+/// The scaled problem both engines pivot on, and the way back to the user's variables.
+pub(crate) struct Scaled<'a> {
+    pub(crate) lcp: &'a Lcp,
+    pub(crate) m: Mat<f64>,
+    pub(crate) q: Vec<f64>,
+    pub(crate) dc: Vec<f64>,
+    pub(crate) qscale: f64,
+}
+
+impl Scaled<'_> {
+    /// Unscale z, recompute w = M z + q from the original data, and wrap up.
+    pub(crate) fn finish(&self, z_s: Vec<f64>, status: Status, pivots: usize, message: String) -> LemkeOutcome {
+        let z: Vec<f64> = z_s.iter().zip(&self.dc).map(|(z, d)| z * d).collect();
+        let w = self.lcp.w_of(&z);
+        LemkeOutcome { z, w, status, pivots, message }
+    }
+}
+
+/// Validate and equilibrate; `Err` carries the outcome when there is nothing to pivot (bad data, or q ≥ 0).
+pub(crate) fn prepare(lcp: &Lcp) -> Result<Scaled<'_>, LemkeOutcome> {
     let n = lcp.size();
+    let fail = |msg: String| LemkeOutcome {
+        z: vec![0.0; n],
+        w: lcp.q.clone(),
+        status: Status::NumericalError,
+        pivots: 0,
+        message: msg,
+    };
+    if lcp.m.nrows() != n || lcp.m.ncols() != n {
+        return Err(fail(format!("M is {}×{} but q has {} entries", lcp.m.nrows(), lcp.m.ncols(), n)));
+    }
+    if !lcp.q.iter().all(|v| v.is_finite()) || !lcp.m.col_iter().all(|c| c.iter().all(|v| v.is_finite())) {
+        return Err(fail("M or q has a non-finite entry (NaN or infinity)".into()));
+    }
+    let (dr, dc) = equilibrate(&lcp.m);
+    let m = Mat::from_fn(n, n, |i, j| dr[i] * lcp.m[(i, j)] * dc[j]);
+    let q: Vec<f64> = (0..n).map(|i| dr[i] * lcp.q[i]).collect();
+    let qscale = q.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+    let sc = Scaled { lcp, m, q, dc, qscale };
+    if sc.q.iter().all(|&v| v >= 0.0) {
+        return Err(sc.finish(vec![0.0; n], Status::Solved, 0, "q ≥ 0: z = 0 is the solution".into()));
+    }
+    Ok(sc)
+}
+
+/// Solve `w = M z + q ⊥ z ≥ 0` by Lemke's method: the block-revised engine ([`super::lemke_block`]), which works
+/// on the k × k block of the basis that involves z-columns only.
+pub fn solve(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
+    match prepare(lcp) {
+        Ok(sc) => super::lemke_block::run(&sc, settings),
+        Err(out) => out,
+    }
+}
+
+/// Reference engine: the whole m × m basis inverse kept explicitly and updated by an eta step per pivot, O(m²)
+/// per pivot and O(m³) per refactorisation. Slower than [`solve`], kept as an independent implementation that the
+/// tests compare against.
+pub fn solve_dense(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
+    let sc = match prepare(lcp) {
+        Ok(sc) => sc,
+        Err(out) => return out,
+    };
+    let n = lcp.size();
+    let (ms, qs, qscale) = (&sc.m, &sc.q, sc.qscale);
     let fail = |msg: String, pivots| LemkeOutcome {
         z: vec![0.0; n],
         w: lcp.q.clone(),
@@ -196,26 +260,10 @@ pub fn solve(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
         pivots,
         message: msg,
     };
-    if lcp.m.nrows() != n || lcp.m.ncols() != n {
-        return fail(format!("M is {}×{} but q has {} entries", lcp.m.nrows(), lcp.m.ncols(), n), 0);
-    }
-    if !lcp.q.iter().all(|v| v.is_finite()) || !lcp.m.col_iter().all(|c| c.iter().all(|v| v.is_finite())) {
-        return fail("M or q has a non-finite entry (NaN or infinity)".into(), 0);
-    }
-    let (dr, dc) = equilibrate(&lcp.m);
-    let ms = Mat::from_fn(n, n, |i, j| dr[i] * lcp.m[(i, j)] * dc[j]);
-    let qs: Vec<f64> = (0..n).map(|i| dr[i] * lcp.q[i]).collect();
-    let qscale = qs.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
-    let finish = |z_s: Vec<f64>, status: Status, pivots: usize, message: String| {
-        let z: Vec<f64> = z_s.iter().zip(&dc).map(|(z, d)| z * d).collect();
-        let w = lcp.w_of(&z);
-        LemkeOutcome { z, w, status, pivots, message }
-    };
-    if qs.iter().all(|&v| v >= 0.0) {
-        return finish(vec![0.0; n], Status::Solved, 0, "q ≥ 0: z = 0 is the solution".into());
-    }
+    let finish =
+        |z_s: Vec<f64>, status: Status, pivots: usize, message: String| sc.finish(z_s, status, pivots, message);
     let mut wk = Work {
-        m: &ms,
+        m: ms,
         n,
         basis: (0..n).map(Var::W).collect(),
         binv: {
@@ -226,7 +274,7 @@ pub fn solve(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
             b
         },
         x: qs.clone(),
-        q: &qs,
+        q: qs,
     };
     // Initial pivot: z0 enters, the row of the most negative q leaves (ties: the lexicographic choice with
     // B = I is the largest index).
@@ -241,6 +289,7 @@ pub fn solve(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
     wk.column(Var::Z0, &mut col);
     wk.ftran(&col, &mut d);
     let mut leaving = wk.basis[r0];
+    let z0_start = wk.x[r0] / d[r0];
     wk.pivot(r0, &d, Var::Z0);
     let mut pivots = 1;
     let max_pivots = settings.max_pivots_per_unknown * n + 100;
@@ -262,7 +311,17 @@ pub fn solve(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
                 theta = theta.min(wk.x[i].max(0.0) / d[i]);
             }
         }
+        let z0_row = wk.basis.iter().position(|&v| v == Var::Z0);
+        let z0_value = z0_row.map(|r| wk.x[r]).unwrap_or(0.0);
         if !theta.is_finite() {
+            if z0_value <= Z0_NEGLIGIBLE * z0_start {
+                // z0 already zero to round-off: the current point is complementary (see the block engine).
+                if !wk.refactor() {
+                    return fail("the final basis is numerically singular".into(), pivots);
+                }
+                let z = extract_z(&wk);
+                return finish(z, Status::Solved, pivots, format!("z0 reached zero after {pivots} pivots"));
+            }
             let z = extract_z(&wk);
             return finish(
                 z,
@@ -273,8 +332,11 @@ pub fn solve(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
         }
         let tie = settings.tie_tolerance * (theta.abs() + settings.tie_tolerance * qscale.max(1.0));
         let tied: Vec<usize> = (0..n).filter(|&i| d[i] > tol && wk.x[i].max(0.0) / d[i] <= theta + tie).collect();
+        let z0_drops = z0_row.is_some_and(|r| d[r] > tol && z0_value - theta * d[r] <= Z0_NEGLIGIBLE * z0_start);
         let r = if let Some(&rz) = tied.iter().find(|&&i| wk.basis[i] == Var::Z0) {
             rz
+        } else if z0_drops {
+            z0_row.expect("z0 basic")
         } else {
             let mut best = tied[0];
             for &i in &tied[1..] {

@@ -3,6 +3,7 @@
 
 pub mod clarabel_qp;
 pub mod lemke;
+pub mod lemke_block;
 
 use faer::Mat;
 use serde::Serialize;
