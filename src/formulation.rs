@@ -75,6 +75,8 @@ pub struct Frictionless {
 pub enum DriveIssue {
     /// A nonzero tangential load with no friction: no static solution.
     TangentialLoadWithoutFriction(f64),
+    /// A prescribed moment, which the NORM-TANG split does not carry.
+    MomentLoad,
 }
 
 impl Frictionless {
@@ -379,5 +381,112 @@ impl Frictional {
         let h: Vec<f64> =
             (0..n).map(|i| self.h_0[i] + (0..3 * n + nl).map(|c| self.h_x[(i, c)] * x[c]).sum::<f64>()).collect();
         (z[..n].to_vec(), h, rigid)
+    }
+}
+
+/// The flexibility split into its normal and tangential blocks, for NORM-TANG ([`crate::solvers::normtang`]):
+/// nodal-force matrices (row-major, and K_NN column-major too for the QP inner solver), rigid responses, and the
+/// drive in dimensionless units. The cross blocks are zero when `coupling = false`; the tangential blocks are
+/// empty for a frictionless scene.
+#[derive(Debug, Clone)]
+pub struct Split {
+    /// Contact nodes.
+    pub n: usize,
+    /// Friction coefficient.
+    pub mu: f64,
+    /// Whether K_NT, K_TN are kept.
+    pub coupling: bool,
+    /// K_NN, row-major.
+    pub knn_rows: Vec<f64>,
+    /// K_NN, column-major.
+    pub knn_cols: Vec<f64>,
+    /// K_NT, row-major (empty without friction).
+    pub knt_rows: Vec<f64>,
+    /// K_TN, row-major.
+    pub ktn_rows: Vec<f64>,
+    /// K_TT, row-major.
+    pub ktt_rows: Vec<f64>,
+    /// Initial gaps.
+    pub g0: Vec<f64>,
+    /// Normal rigid responses per node (shift, approach, rotation).
+    pub rn: Vec<[f64; 3]>,
+    /// Tangential rigid responses per node (zeros without the tangential blocks).
+    pub rt: Vec<[f64; 3]>,
+    /// Prescribed rigid motion (load-driven entries 0).
+    pub rigid_given: [f64; 3],
+    /// Normal drive, dimensionless.
+    pub normal: Dof,
+    /// Tangential drive, dimensionless.
+    pub tangential: Dof,
+}
+
+impl Split {
+    /// Build the split problem; a moment load is refused ([`DriveIssue::MomentLoad`]).
+    pub fn new(scene: &Scene, model: &Model, flex: &Flexibility) -> Result<Split, DriveIssue> {
+        let n = flex.n();
+        let (l0, e) = (model.length, model.modulus);
+        let mu = scene.contact.friction;
+        let frictional = mu > 0.0;
+        let coupling = scene.contact.coupling && frictional;
+        let rows = |m: &Mat<f64>| {
+            let mut v = Vec::with_capacity(n * n);
+            for i in 0..n {
+                for j in 0..n {
+                    v.push(m[(i, j)] / flex.weights[j]);
+                }
+            }
+            v
+        };
+        let knn_rows = rows(&flex.nn);
+        let mut knn_cols = vec![0.0; n * n];
+        for i in 0..n {
+            for j in 0..n {
+                knn_cols[i + j * n] = knn_rows[i * n + j];
+            }
+        }
+        let opt = |m: &Option<Mat<f64>>| if frictional { m.as_ref().map(&rows).unwrap_or_default() } else { Vec::new() };
+        let (knt_rows, ktn_rows, ktt_rows) = (opt(&flex.nt), opt(&flex.tn), opt(&flex.tt));
+        let mut rigid_given = [0.0; 3];
+        let normal = match scene.drive.normal() {
+            Dof::Displacement(d) => {
+                rigid_given[MODE_APPROACH] = d / l0;
+                Dof::Displacement(d / l0)
+            }
+            Dof::Load(p) => Dof::Load(p / (e * l0)),
+        };
+        let tangential = match scene.drive.tangential() {
+            Dof::Displacement(d) => {
+                rigid_given[MODE_SHIFT] = d / l0;
+                Dof::Displacement(d / l0)
+            }
+            Dof::Load(0.0) if !frictional => Dof::Displacement(0.0),
+            Dof::Load(q) if !frictional => return Err(DriveIssue::TangentialLoadWithoutFriction(q)),
+            Dof::Load(q) => Dof::Load(q / (e * l0)),
+        };
+        match scene.drive.rotational() {
+            Dof::Displacement(phi) => rigid_given[MODE_ROTATION] = phi,
+            Dof::Load(_) => return Err(DriveIssue::MomentLoad),
+        }
+        let rn = (0..n).map(|i| [flex.rigid_n[(i, 0)], flex.rigid_n[(i, 1)], flex.rigid_n[(i, 2)]]).collect();
+        let rt = match &flex.rigid_t {
+            Some(r) => (0..n).map(|i| [r[(i, 0)], r[(i, 1)], r[(i, 2)]]).collect(),
+            None => vec![[0.0; 3]; n],
+        };
+        Ok(Split {
+            n,
+            mu,
+            coupling,
+            knn_rows,
+            knn_cols,
+            knt_rows,
+            ktn_rows,
+            ktt_rows,
+            g0: flex.g0.clone(),
+            rn,
+            rt,
+            rigid_given,
+            normal,
+            tangential,
+        })
     }
 }

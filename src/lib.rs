@@ -38,10 +38,13 @@ pub mod error;
 pub mod formulation;
 pub mod hertz;
 pub mod mesh;
+pub mod plot;
 pub mod post;
+pub mod references;
 pub mod run;
 pub mod scene;
 pub mod solvers;
+pub mod sweep;
 pub mod tolerances;
 
 pub use error::{Error, Result};

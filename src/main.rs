@@ -31,19 +31,14 @@ enum Cmd {
         /// Write one JSON document per scene into this folder, named after the scene (`NAME.json`).
         #[arg(long)]
         out_dir: Option<PathBuf>,
-        /// Override the scenes' `[solvers] use` (repeatable): lemke, clarabel, all.
+        /// Override the scenes' `[solvers] use` (repeatable): all, lemke, clarabel, pgs, normtang_qp.
         #[arg(long = "solver", value_parser = parse_solver)]
         solvers: Vec<SolverName>,
     },
 }
 
 fn parse_solver(s: &str) -> Result<SolverName, String> {
-    match s {
-        "lemke" => Ok(SolverName::Lemke),
-        "clarabel" => Ok(SolverName::Clarabel),
-        "all" => Ok(SolverName::All),
-        _ => Err(format!("unknown solver `{s}` (expected one of: lemke, clarabel, all)")),
-    }
+    SolverName::parse(s)
 }
 
 fn print_report(r: &Report) {
@@ -82,12 +77,13 @@ fn print_report(r: &Report) {
     );
     let opt = |v: Option<f64>| v.map(|v| format!("{v:.5e}")).unwrap_or_else(|| "-".into());
     for run in &r.runs {
-        let work = run
-            .work
-            .pivots
-            .map(|p| format!("{p} piv"))
-            .or(run.work.iterations.map(|i| format!("{i} it")))
-            .unwrap_or_default();
+        let work = match (run.work.pivots, run.work.sweeps, run.work.iterations, run.work.outer) {
+            (Some(p), ..) => format!("{p} piv"),
+            (_, Some(sw), _, Some(o)) => format!("{sw} sw/{o}"),
+            (_, _, Some(i), Some(o)) => format!("{i} it/{o}"),
+            (_, _, Some(i), None) => format!("{i} it"),
+            _ => String::new(),
+        };
         let (Some(res), Some(f), Some(c), Some(rb)) = (&run.residuals, &run.resultants, &run.contact, &run.rigid_body)
         else {
             println!(

@@ -214,36 +214,66 @@ pub struct Rolling {
     pub direction: i32,
 }
 
-/// A solver name as written in scene files and on the command line.
+/// A solver name as written in scene files and on the command line: the one registry of rollbem's solvers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum SolverName {
     /// Every solver valid for the scene.
     All,
-    /// Lemke's complementary pivoting on the scene's LCP.
+    /// Lemke's complementary pivoting on the scene's LCP (every scene).
     Lemke,
-    /// The clarabel interior-point solver on the frictionless QP.
+    /// The clarabel interior-point solver on the frictionless QP (frictionless scenes, no moment load).
     Clarabel,
+    /// NORM-TANG with projected Gauss–Seidel inner sweeps (no moment load).
+    Pgs,
+    /// NORM-TANG with clarabel QPs as inner solver (no moment load).
+    NormtangQp,
 }
 
 impl SolverName {
+    /// Every solver, in registry order (without `all`).
+    pub const SOLVERS: [SolverName; 4] = [SolverName::Lemke, SolverName::Clarabel, SolverName::Pgs, SolverName::NormtangQp];
+
     /// Name as written in scene files and reports.
     pub fn name(self) -> &'static str {
         match self {
             SolverName::All => "all",
             SolverName::Lemke => "lemke",
             SolverName::Clarabel => "clarabel",
+            SolverName::Pgs => "pgs",
+            SolverName::NormtangQp => "normtang_qp",
         }
+    }
+
+    /// Parse a name (as on the command line); the error lists the valid names.
+    pub fn parse(s: &str) -> std::result::Result<SolverName, String> {
+        std::iter::once(SolverName::All)
+            .chain(SolverName::SOLVERS)
+            .find(|n| n.name() == s)
+            .ok_or_else(|| format!("unknown solver `{s}` (expected one of: all, lemke, clarabel, pgs, normtang_qp)"))
     }
 }
 
-/// Which solvers to run, with their settings.
+/// Which solvers to run, with their settings (`[solvers.lemke]`, `[solvers.clarabel]`, `[solvers.pgs]`,
+/// `[solvers.normtang_qp]`; documented defaults when absent).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SolverSpec {
     /// Solver names; `["all"]` runs every solver valid for the scene.
     #[serde(rename = "use", default = "default_use")]
     pub use_: Vec<SolverName>,
+    /// Lemke settings.
+    #[serde(default)]
+    pub lemke: crate::solvers::lemke::LemkeSettings,
+    /// clarabel settings (frictionless QP).
+    #[serde(default)]
+    pub clarabel: crate::solvers::clarabel_qp::QpSettings,
+    /// NORM-TANG with PGS settings.
+    #[serde(default)]
+    pub pgs: crate::solvers::normtang::PgsSettings,
+    /// NORM-TANG with clarabel settings.
+    #[serde(default)]
+    pub normtang_qp: crate::solvers::normtang::NormTangQpSettings,
 }
 
 fn default_use() -> Vec<SolverName> {
@@ -252,7 +282,13 @@ fn default_use() -> Vec<SolverName> {
 
 impl Default for SolverSpec {
     fn default() -> Self {
-        SolverSpec { use_: default_use() }
+        SolverSpec {
+            use_: default_use(),
+            lemke: Default::default(),
+            clarabel: Default::default(),
+            pgs: Default::default(),
+            normtang_qp: Default::default(),
+        }
     }
 }
 
@@ -389,6 +425,34 @@ impl Scene {
         if self.solvers.use_.is_empty() {
             return Err(bad("solvers.use", "must name at least one solver (or \"all\")".into()));
         }
+        let sv = &self.solvers;
+        let tol = |field: &str, v: f64| -> Result<()> {
+            if !v.is_finite() || v <= 0.0 || v >= 1.0 {
+                return Err(bad(field, format!("must lie in (0, 1) (got {v})")));
+            }
+            Ok(())
+        };
+        let count = |field: &str, v: usize| -> Result<()> {
+            if v == 0 {
+                return Err(bad(field, "must be at least 1".into()));
+            }
+            Ok(())
+        };
+        tol("solvers.lemke.pivot_tolerance", sv.lemke.pivot_tolerance)?;
+        tol("solvers.lemke.tie_tolerance", sv.lemke.tie_tolerance)?;
+        count("solvers.lemke.max_pivots_per_unknown", sv.lemke.max_pivots_per_unknown)?;
+        count("solvers.lemke.refactor_every", sv.lemke.refactor_every)?;
+        tol("solvers.clarabel.tolerance", sv.clarabel.tolerance)?;
+        count("solvers.clarabel.max_iter", sv.clarabel.max_iter as usize)?;
+        tol("solvers.pgs.tolerance", sv.pgs.tolerance)?;
+        count("solvers.pgs.max_sweeps", sv.pgs.max_sweeps)?;
+        count("solvers.pgs.max_outer", sv.pgs.max_outer)?;
+        if !(sv.pgs.relaxation > 0.0 && sv.pgs.relaxation < 2.0) {
+            return Err(bad("solvers.pgs.relaxation", format!("must lie in (0, 2) (got {})", sv.pgs.relaxation)));
+        }
+        tol("solvers.normtang_qp.tolerance", sv.normtang_qp.tolerance)?;
+        count("solvers.normtang_qp.max_outer", sv.normtang_qp.max_outer)?;
+        tol("solvers.normtang_qp.qp.tolerance", sv.normtang_qp.qp.tolerance)?;
         Ok(())
     }
 

@@ -32,3 +32,8 @@ pub const SOLVER_AGREEMENT: f64 = 1e-6;
 
 /// Unit invariance: the same scene in different units gives pressures equal to this relative error (issue 2).
 pub const UNIT_INVARIANCE: f64 = 1e-9;
+
+/// An iterative solver (NORM-TANG) stopped at a relative tolerance τ is held to residuals of at most this many τ
+/// (and never less than [`RESIDUAL_DIRECT`] / [`RESIDUAL_REFUSE`]): its claim is "converged to τ", so a residual
+/// of order τ is honest, and one far above it is refused.
+pub const ITERATIVE_RESIDUAL_FACTOR: f64 = 100.0;

@@ -54,7 +54,7 @@ const STATIC_REGULARIZATION: f64 = 1e-12;
 ///
 /// Defaults: `tolerance = 1e-12`, `max_iter = 200`, `polish = true`.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(default)]
+#[serde(default, deny_unknown_fields)]
 pub struct QpSettings {
     /// Relative/absolute tolerance (dimensionless, applied to the internally scaled problem)
     /// passed to Clarabel as `tol_gap_abs`, `tol_gap_rel` and `tol_feas`; also the relative

@@ -1,9 +1,11 @@
 //! Contact solvers. A solver consumes a formulation (plain data: an [`Lcp`] or a QP) and returns a solution and a
 //! [`Status`]. Non-convergence, ray termination and infeasibility are outcomes, never panics.
 
+pub mod clarabel_box;
 pub mod clarabel_qp;
 pub mod lemke;
 pub mod lemke_block;
+pub mod normtang;
 
 use faer::Mat;
 use serde::Serialize;

@@ -1,0 +1,636 @@
+//! Sweeps: a grid of scene variants, run in parallel, one CSV row per (case, solver run) (`DESIGN.md`, "Scaling
+//! out").
+//!
+//! A sweep spec is a TOML file:
+//!
+//! ```toml
+//! name = "hertz-accuracy"
+//! description = "..."
+//! base = "../scenes/hertz-hub-fine.toml"     # relative to the spec file (or absolute)
+//!
+//! [[grid]]                                    # a union of cartesian products: one [[grid]] table each
+//! "mesh.element" = ["constant"]
+//! "mesh.contact_elements" = [20, 40, 80]
+//! "solvers.use" = [["lemke"], ["clarabel"]]
+//! ```
+//!
+//! Each key of a `[[grid]]` table is a dotted path into the base scene's TOML document and its value the array of
+//! values to try (an unquoted dotted key, `mesh.element = [...]`, means the same as the quoted one). Cases are
+//! numbered from 0: grids in file order, within a grid the cartesian product with the keys in sorted order and the
+//! last key varying fastest. Every variant goes through [`Scene::from_toml`], so it is validated like a scene file.
+//!
+//! A sweep can be cut into shards (`k/n`: the cases with `index % n == k − 1`) that run on different machines;
+//! [`merge`] joins the shards' CSVs into the CSV the unsharded sweep writes (up to the [`TIMING_COLUMNS`]).
+
+use crate::error::{Error, Result};
+use crate::references::metrics;
+use crate::run::{run_scene, write_atomic, SolverRun};
+use crate::scene::Scene;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use rayon::prelude::*;
+use std::collections::{BTreeSet, HashSet};
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use toml::{Table, Value};
+
+/// A sweep specification, as read from its TOML file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepSpec {
+    /// Short identifier of the sweep.
+    pub name: String,
+    /// What the sweep measures.
+    pub description: String,
+    /// The base scene file, as written in the spec (relative paths are relative to the spec file's folder).
+    pub base: PathBuf,
+    /// The grids: each maps a dotted scene key to the (non-empty) array of values to try. Nested tables in the
+    /// file are flattened to dotted keys.
+    pub grid: Vec<Table>,
+}
+
+/// One variant of the base scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Case {
+    /// Position in the sweep's enumeration, from 0 (the `case` column of the CSV).
+    pub index: usize,
+    /// The swept keys of this case's grid with the values set, in sorted key order. Strings are given bare,
+    /// other values in TOML syntax (e.g. `40`, `0.001`, `["lemke"]`).
+    pub params: Vec<(String, String)>,
+    /// The validated scene.
+    pub scene: Scene,
+}
+
+/// One shard of a sweep: `k` of `n` (1-based), the cases with `index % n == k − 1`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Shard {
+    /// Which shard, 1 ≤ k ≤ n.
+    pub k: usize,
+    /// Number of shards, n ≥ 1.
+    pub n: usize,
+}
+
+impl Shard {
+    /// Whether the case numbered `index` belongs to this shard.
+    pub fn contains(&self, index: usize) -> bool {
+        index % self.n == self.k - 1
+    }
+}
+
+impl std::str::FromStr for Shard {
+    type Err = String;
+
+    /// Parse `k/n`, e.g. `2/8`, with 1 ≤ k ≤ n.
+    fn from_str(s: &str) -> std::result::Result<Shard, String> {
+        let bad = |why: &str| format!("invalid shard `{s}`: {why} (expected k/n with 1 ≤ k ≤ n, e.g. 2/8)");
+        let (k, n) = s.split_once('/').ok_or_else(|| bad("no `/`"))?;
+        let k: usize = k.trim().parse().map_err(|_| bad("k is not a positive integer"))?;
+        let n: usize = n.trim().parse().map_err(|_| bad("n is not a positive integer"))?;
+        if n == 0 {
+            return Err(bad("n must be at least 1"));
+        }
+        if k == 0 || k > n {
+            return Err(bad("k must lie in 1..=n"));
+        }
+        Ok(Shard { k, n })
+    }
+}
+
+impl std::fmt::Display for Shard {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}/{}", self.k, self.n)
+    }
+}
+
+/// The names of the timing columns of a sweep CSV: wall-clock times, which differ from run to run (exclude them
+/// when comparing CSVs).
+pub const TIMING_COLUMNS: &[&str] = &["t_assembly", "t_condensation", "t_formulation", "t_solve", "t_total"];
+
+/// The columns after the swept keys, up to the timings.
+const RESULT_COLUMNS: &[&str] = &[
+    "scene",
+    "element",
+    "contact_elements",
+    "contact_nodes",
+    "solver",
+    "formulation",
+    "status",
+    "problem_size",
+    "pivots",
+    "iterations",
+    "sweeps",
+    "outer",
+    "residual",
+    "normal_load",
+    "tangential_load",
+    "half_width_fit",
+    "peak_pressure_fit",
+    "hertz_a_err",
+    "hertz_p0_err",
+    "hertz_l2_err",
+    "cm_c_over_a",
+    "cm_c_over_a_exact",
+    "cm_c_err_elements",
+    "cm_centre_elements",
+    "cm_shear_err",
+];
+
+/// The status written for a case that could not be built or run.
+const ERROR_STATUS: &str = "error";
+
+fn invalid(path: &Path, field: &str, message: impl Into<String>) -> Error {
+    Error::Invalid { path: path.to_path_buf(), field: field.to_string(), message: message.into() }
+}
+
+/// A value as written in `Case::params` and the CSV: strings bare, everything else in TOML syntax.
+fn show(v: &Value) -> String {
+    match v {
+        Value::String(s) => s.clone(),
+        v => v.to_string(),
+    }
+}
+
+/// Flatten nested tables of a grid into dotted keys; every leaf must be a non-empty array.
+fn flatten(path: &Path, prefix: &str, table: &Table, out: &mut Table) -> Result<()> {
+    for (k, v) in table {
+        let key = if prefix.is_empty() { k.clone() } else { format!("{prefix}.{k}") };
+        if key.split('.').any(|s| s.trim().is_empty()) {
+            return Err(invalid(path, &format!("grid.{key}"), "a dotted key with an empty component"));
+        }
+        match v {
+            Value::Table(t) => flatten(path, &key, t, out)?,
+            Value::Array(a) if a.is_empty() => {
+                return Err(invalid(path, &format!("grid.{key}"), "empty array: give at least one value to try"))
+            }
+            Value::Array(_) => {
+                if out.insert(key.clone(), v.clone()).is_some() {
+                    return Err(invalid(path, &format!("grid.{key}"), "key given twice in the same grid"));
+                }
+            }
+            other => {
+                return Err(invalid(
+                    path,
+                    &format!("grid.{key}"),
+                    format!(
+                        "must be an array of the values to try, e.g. [{}] (got {} `{}`)",
+                        other,
+                        other.type_str(),
+                        other
+                    ),
+                ))
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Set the dotted `key` of a TOML document, creating missing intermediate tables.
+fn set_dotted(doc: &mut Table, key: &str, value: Value) -> std::result::Result<(), String> {
+    let parts: Vec<&str> = key.split('.').collect();
+    let (last, inner) = parts.split_last().expect("split yields at least one part");
+    let mut t = doc;
+    for (i, p) in inner.iter().enumerate() {
+        let entry = t.entry(p.to_string()).or_insert_with(|| Value::Table(Table::new()));
+        t = match entry {
+            Value::Table(t) => t,
+            other => {
+                return Err(format!(
+                    "`{}` is a {} in the base scene, not a table: cannot set `{key}`",
+                    parts[..=i].join("."),
+                    other.type_str()
+                ))
+            }
+        };
+    }
+    t.insert(last.to_string(), value);
+    Ok(())
+}
+
+/// A variant before validation: the case number, its parameters, the TOML document and the parsed scene.
+struct Variant {
+    index: usize,
+    params: Vec<(String, String)>,
+    doc: Table,
+    scene: Result<Scene>,
+}
+
+impl SweepSpec {
+    /// Read and check a sweep spec file. Unknown top-level keys, a missing or empty grid, and grid values that are
+    /// not non-empty arrays are [`Error::Invalid`] naming the key.
+    pub fn from_file(path: &Path) -> Result<SweepSpec> {
+        let text = std::fs::read_to_string(path).map_err(|source| Error::Io { path: path.to_path_buf(), source })?;
+        let doc: Table = toml::from_str(&text)
+            .map_err(|e| Error::Parse { path: path.to_path_buf(), message: e.to_string().trim_end().to_string() })?;
+        for key in doc.keys() {
+            if !["name", "description", "base", "grid"].contains(&key.as_str()) {
+                return Err(invalid(
+                    path,
+                    key,
+                    "unknown key in a sweep spec (expected `name`, `description`, `base` and `[[grid]]` tables)",
+                ));
+            }
+        }
+        let string = |key: &str, required: bool| -> Result<String> {
+            match doc.get(key) {
+                Some(Value::String(s)) => Ok(s.clone()),
+                Some(other) => Err(invalid(path, key, format!("must be a string (got {})", other.type_str()))),
+                None if required => Err(invalid(path, key, "missing")),
+                None => Ok(String::new()),
+            }
+        };
+        let name = string("name", true)?;
+        if name.trim().is_empty() {
+            return Err(invalid(path, "name", "must not be empty"));
+        }
+        let description = string("description", false)?;
+        let base = PathBuf::from(string("base", true)?);
+        let grids = match doc.get("grid") {
+            Some(Value::Array(a)) if !a.is_empty() => a,
+            Some(Value::Array(_)) | None => {
+                return Err(invalid(path, "grid", "give at least one [[grid]] table of keys and values to try"))
+            }
+            Some(other) => {
+                return Err(invalid(
+                    path,
+                    "grid",
+                    format!("must be an array of tables ([[grid]]), got {}", other.type_str()),
+                ))
+            }
+        };
+        let mut grid = Vec::with_capacity(grids.len());
+        for (i, g) in grids.iter().enumerate() {
+            let Value::Table(t) = g else {
+                return Err(invalid(path, "grid", format!("grid {} is a {}, not a table", i + 1, g.type_str())));
+            };
+            let mut flat = Table::new();
+            flatten(path, "", t, &mut flat)?;
+            if flat.is_empty() {
+                return Err(invalid(path, "grid", format!("grid {} is empty: give at least one key to sweep", i + 1)));
+            }
+            grid.push(flat);
+        }
+        Ok(SweepSpec { name, description, base, grid })
+    }
+
+    /// The base scene file's path, resolved against the spec file's folder.
+    pub fn base_path(&self, spec_path: &Path) -> PathBuf {
+        if self.base.is_absolute() {
+            self.base.clone()
+        } else {
+            spec_path.parent().unwrap_or(Path::new("")).join(&self.base)
+        }
+    }
+
+    /// Every swept key of every grid, sorted (the parameter columns of the CSV).
+    pub fn keys(&self) -> Vec<String> {
+        let keys: BTreeSet<&String> = self.grid.iter().flat_map(|g| g.keys()).collect();
+        keys.into_iter().cloned().collect()
+    }
+
+    /// Number of cases: the sum over the grids of the products of their arrays' lengths.
+    pub fn len(&self) -> usize {
+        self.grid.iter().map(|g| g.values().map(|v| v.as_array().map_or(1, Vec::len)).product::<usize>()).sum()
+    }
+
+    /// Whether the sweep has no case (never, for a spec read by [`SweepSpec::from_file`]).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Build every variant; the scene of each is parsed and validated but errors are kept per variant.
+    fn variants(&self, spec_path: &Path) -> Result<Vec<Variant>> {
+        let base_path = self.base_path(spec_path);
+        let text = std::fs::read_to_string(&base_path).map_err(|e| {
+            invalid(spec_path, "base", format!("cannot read the base scene {}: {e}", base_path.display()))
+        })?;
+        let base: Table = toml::from_str(&text).map_err(|e| {
+            invalid(spec_path, "base", format!("the base scene {} is not valid TOML: {e}", base_path.display()))
+        })?;
+        let mut out = Vec::with_capacity(self.len());
+        for g in &self.grid {
+            let entries: Vec<(&String, &Vec<Value>)> =
+                g.iter().map(|(k, v)| (k, v.as_array().expect("grid values are arrays"))).collect();
+            let total: usize = entries.iter().map(|(_, a)| a.len()).product();
+            for m in 0..total {
+                // Mixed-radix digits of m, the last key varying fastest.
+                let mut rest = m;
+                let mut picks = vec![0; entries.len()];
+                for (j, (_, a)) in entries.iter().enumerate().rev() {
+                    picks[j] = rest % a.len();
+                    rest /= a.len();
+                }
+                let index = out.len();
+                let mut doc = base.clone();
+                let mut params = Vec::with_capacity(entries.len());
+                let mut set_err = None;
+                for ((key, a), &p) in entries.iter().zip(&picks) {
+                    let v = a[p].clone();
+                    params.push((key.to_string(), show(&v)));
+                    if let Err(e) = set_dotted(&mut doc, key, v) {
+                        set_err.get_or_insert((key.to_string(), e));
+                    }
+                }
+                let label = describe(index, &params);
+                let scene = match set_err {
+                    Some((key, e)) => Err(invalid(spec_path, &key, format!("{label}: {e}"))),
+                    None => build_scene(&doc, spec_path, &base_path, &label),
+                };
+                out.push(Variant { index, params, doc, scene });
+            }
+        }
+        Ok(out)
+    }
+
+    /// Every case of the sweep, in enumeration order. A variant that does not parse or validate is an error naming
+    /// the spec file, the case's parameters and the offending field.
+    pub fn cases(&self, spec_path: &Path) -> Result<Vec<Case>> {
+        self.variants(spec_path)?
+            .into_iter()
+            .map(|v| v.scene.map(|scene| Case { index: v.index, params: v.params, scene }))
+            .collect()
+    }
+}
+
+/// `case 3 (mesh.contact_elements = 40, solvers.use = ["lemke"])`.
+fn describe(index: usize, params: &[(String, String)]) -> String {
+    let p: Vec<String> = params.iter().map(|(k, v)| format!("{k} = {v}")).collect();
+    format!("case {index} ({})", p.join(", "))
+}
+
+/// Serialize a variant's document and parse it as a scene; errors are re-addressed to the spec file.
+fn build_scene(doc: &Table, spec_path: &Path, base_path: &Path, label: &str) -> Result<Scene> {
+    let text = toml::to_string(doc).map_err(|e| invalid(spec_path, "base", format!("{label}: {e}")))?;
+    Scene::from_toml(&text, base_path).map_err(|e| match e {
+        Error::Invalid { field, message, .. } => {
+            invalid(spec_path, &field, format!("{label}: in the variant of {}: {message}", base_path.display()))
+        }
+        Error::Parse { message, .. } => Error::Parse {
+            path: spec_path.to_path_buf(),
+            message: format!(
+                "{label}: the variant of {} is not a valid scene: {}",
+                base_path.display(),
+                message.replace('\n', " ")
+            ),
+        },
+        other => other,
+    })
+}
+
+/// The full CSV header for a spec's swept keys.
+fn header(keys: &[String]) -> Vec<String> {
+    let mut h = vec!["case".to_string()];
+    h.extend(keys.iter().cloned());
+    h.extend(RESULT_COLUMNS.iter().map(|s| s.to_string()));
+    h.extend(TIMING_COLUMNS.iter().map(|s| s.to_string()));
+    h.push("message".into());
+    h
+}
+
+fn float(v: Option<f64>) -> String {
+    v.map(|v| format!("{v:e}")).unwrap_or_default()
+}
+
+fn int<T: ToString>(v: Option<T>) -> String {
+    v.map(|v| v.to_string()).unwrap_or_default()
+}
+
+/// One CSV row (before the case-specific prefix): the solver name (for sorting) and the cells.
+struct Row {
+    case: usize,
+    solver: String,
+    cells: Vec<String>,
+}
+
+/// The swept-parameter cells of a case (empty where its grid does not set a key).
+fn param_cells(keys: &[String], params: &[(String, String)]) -> Vec<String> {
+    keys.iter().map(|k| params.iter().find(|(p, _)| p == k).map(|(_, v)| v.clone()).unwrap_or_default()).collect()
+}
+
+fn run_row(case: &Variant, keys: &[String], scene: &Scene, contact_nodes: usize, r: &SolverRun) -> Row {
+    let m = metrics(scene, r);
+    let c = r.contact.as_ref();
+    let mut cells = vec![case.index.to_string()];
+    cells.extend(param_cells(keys, &case.params));
+    cells.extend([
+        scene.name.clone(),
+        scene.mesh.element.name().to_string(),
+        scene.mesh.contact_elements.to_string(),
+        contact_nodes.to_string(),
+        r.solver.clone(),
+        r.formulation.clone(),
+        r.status.name().to_string(),
+        r.problem_size.to_string(),
+        int(r.work.pivots),
+        int(r.work.iterations),
+        int(r.work.sweeps),
+        int(r.work.outer),
+        float(r.residuals.map(|x| x.max())),
+        float(r.resultants.map(|x| x.normal)),
+        float(r.resultants.map(|x| x.tangential)),
+        float(c.and_then(|c| c.fit_half_width)),
+        float(c.and_then(|c| c.fit_peak_pressure)),
+        float(m.hertz_a_err),
+        float(m.hertz_p0_err),
+        float(m.hertz_l2_err),
+        float(m.cm_c_over_a),
+        float(m.cm_c_over_a_exact),
+        float(m.cm_c_err_elements),
+        float(m.cm_centre_elements),
+        float(m.cm_shear_err),
+    ]);
+    let t = &r.timing_s;
+    cells.extend([t.assembly, t.condensation, t.formulation, t.solve, t.total].map(|v| float(Some(v))));
+    cells.push(r.message.clone());
+    Row { case: case.index, solver: r.solver.clone(), cells }
+}
+
+/// Rows for a case that could not be built or run: one per solver it names (read from the variant's document, so
+/// this works for solver names this build does not know), status `error`, the message last.
+fn error_rows(case: &Variant, keys: &[String], err: &Error) -> Vec<Row> {
+    let get = |path: &[&str]| -> Option<&Value> {
+        let mut v = case.doc.get(path[0])?;
+        for p in &path[1..] {
+            v = v.as_table()?.get(*p)?;
+        }
+        Some(v)
+    };
+    let text = |path: &[&str]| get(path).map(show).unwrap_or_default();
+    let solvers: Vec<String> = match get(&["solvers", "use"]) {
+        Some(Value::Array(a)) if !a.is_empty() => a.iter().map(show).collect(),
+        Some(other) => vec![show(other)],
+        None => vec!["all".into()],
+    };
+    let mut solvers: Vec<String> = solvers.into_iter().collect::<BTreeSet<_>>().into_iter().collect();
+    solvers.sort();
+    let message = err.to_string().replace('\n', " ");
+    solvers
+        .into_iter()
+        .map(|solver| {
+            let mut cells = vec![case.index.to_string()];
+            cells.extend(param_cells(keys, &case.params));
+            let mut rest = vec![String::new(); RESULT_COLUMNS.len() + TIMING_COLUMNS.len()];
+            let at = |name: &str| RESULT_COLUMNS.iter().position(|c| *c == name).expect("a result column");
+            rest[at("scene")] = text(&["name"]);
+            rest[at("element")] = text(&["mesh", "element"]);
+            rest[at("contact_elements")] = text(&["mesh", "contact_elements"]);
+            rest[at("solver")] = solver.clone();
+            rest[at("status")] = ERROR_STATUS.to_string();
+            cells.extend(rest);
+            cells.push(message.clone());
+            Row { case: case.index, solver, cells }
+        })
+        .collect()
+}
+
+fn run_case(case: &Variant, keys: &[String], spec_path: &Path) -> Vec<Row> {
+    let scene = match &case.scene {
+        Ok(s) => s,
+        Err(e) => return error_rows(case, keys, e),
+    };
+    let path = PathBuf::from(format!("{} [case {}]", spec_path.display(), case.index));
+    // A panic in one case (a bug) must not lose the others' rows.
+    let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run_scene(scene, &path)));
+    match result {
+        Ok(Ok(report)) => {
+            report.runs.iter().map(|r| run_row(case, keys, scene, report.mesh.contact_nodes, r)).collect()
+        }
+        Ok(Err(e)) => error_rows(case, keys, &e),
+        Err(panic) => {
+            let what = panic
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
+                .unwrap_or_default();
+            let e = Error::Numerical { stage: "sweep", message: format!("panic: {what}") };
+            error_rows(case, keys, &e)
+        }
+    }
+}
+
+fn sort_rows(rows: &mut [Row]) {
+    rows.sort_by(|a, b| (a.case, &a.solver).cmp(&(b.case, &b.solver)));
+}
+
+fn write_csv(out_csv: &Path, header: &[String], rows: &[Vec<String>]) -> Result<()> {
+    let werr = |e: csv::Error| Error::Write { path: out_csv.to_path_buf(), source: std::io::Error::other(e) };
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record(header).map_err(werr)?;
+    for r in rows {
+        w.write_record(r).map_err(werr)?;
+    }
+    let bytes = w.into_inner().map_err(|e| Error::Write { path: out_csv.to_path_buf(), source: e.into_error() })?;
+    let text = String::from_utf8(bytes).expect("CSV of UTF-8 cells is UTF-8");
+    write_atomic(out_csv, &text)
+}
+
+/// Run the cases of this shard (all cases without one) in parallel with rayon, with an indicatif progress bar
+/// (hidden when `progress` is false or stderr is not a terminal), and write the CSV atomically: one row per
+/// (case, solver run), sorted by case then solver name. Returns the number of rows written.
+///
+/// The spec and the base scene must read; a variant with a value out of range ([`Error::Invalid`]) stops the sweep
+/// before anything runs. A variant this build cannot parse (e.g. a solver or settings table it does not know yet)
+/// or cannot run (e.g. [`Error::Unsupported`]) does not: its rows get status `error` and the message in the last
+/// column, `message` (which holds the solver's message for the runs that did run).
+///
+/// Sets faer's global parallelism to sequential: the cases are the parallel unit.
+pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progress: bool) -> Result<usize> {
+    let spec = SweepSpec::from_file(spec_path)?;
+    let variants = spec.variants(spec_path)?;
+    if let Some(e) = variants.iter().find_map(|v| match &v.scene {
+        Err(e @ Error::Invalid { .. }) => Some(e),
+        _ => None,
+    }) {
+        // Re-raise the first out-of-range variant (Error is not Clone).
+        let Error::Invalid { path, field, message } = e else { unreachable!() };
+        return Err(Error::Invalid { path: path.clone(), field: field.clone(), message: message.clone() });
+    }
+    let mine: Vec<&Variant> = variants.iter().filter(|v| shard.is_none_or(|s| s.contains(v.index))).collect();
+    let keys = spec.keys();
+
+    faer::set_global_parallelism(faer::Par::Seq);
+    let bar = if progress && std::io::stderr().is_terminal() {
+        ProgressBar::with_draw_target(Some(mine.len() as u64), ProgressDrawTarget::stderr())
+    } else {
+        ProgressBar::hidden()
+    };
+    bar.set_style(
+        ProgressStyle::with_template("{prefix} [{elapsed_precise}] {wide_bar} {pos}/{len} cases (eta {eta})")
+            .expect("valid template"),
+    );
+    bar.set_prefix(match shard {
+        Some(s) => format!("{} {s}", spec.name),
+        None => spec.name.clone(),
+    });
+    let mut rows: Vec<Row> = mine
+        .par_iter()
+        .flat_map_iter(|v| {
+            let rows = run_case(v, &keys, spec_path);
+            bar.inc(1);
+            rows
+        })
+        .collect();
+    bar.finish_and_clear();
+    sort_rows(&mut rows);
+    let cells: Vec<Vec<String>> = rows.into_iter().map(|r| r.cells).collect();
+    write_csv(out_csv, &header(&keys), &cells)?;
+    Ok(cells.len())
+}
+
+/// Join shard CSVs (the same header required, else an error) into one CSV sorted by (case, solver) — identical to
+/// the unsharded sweep's CSV except for the [`TIMING_COLUMNS`]. A (case, solver) pair present twice (the same
+/// shard given twice) is an error. Returns the number of rows written.
+pub fn merge(inputs: &[PathBuf], out_csv: &Path) -> Result<usize> {
+    let Some(first) = inputs.first() else {
+        return Err(invalid(out_csv, "inputs", "no shard CSV to merge"));
+    };
+    let mut header: Option<Vec<String>> = None;
+    let mut rows: Vec<Row> = Vec::new();
+    let mut seen = HashSet::new();
+    for path in inputs {
+        let perr = |e: csv::Error| Error::Parse { path: path.clone(), message: e.to_string() };
+        let mut r = csv::Reader::from_path(path).map_err(|e| match e.into_kind() {
+            csv::ErrorKind::Io(source) => Error::Io { path: path.clone(), source },
+            other => Error::Parse { path: path.clone(), message: format!("{other:?}") },
+        })?;
+        let h: Vec<String> = r.headers().map_err(perr)?.iter().map(str::to_string).collect();
+        let (case_col, solver_col) = match (h.first(), h.iter().position(|c| c == "solver")) {
+            (Some(c), Some(s)) if c == "case" => (0, s),
+            _ => return Err(invalid(path, "header", "not a sweep CSV: expected a `case` column first and `solver`")),
+        };
+        match &header {
+            None => header = Some(h),
+            Some(h0) if *h0 != h => {
+                return Err(invalid(
+                    path,
+                    "header",
+                    format!(
+                        "its header differs from that of {}: the CSVs come from different sweeps (or \
+                         versions)\n  {}\n  {}",
+                        first.display(),
+                        h0.join(","),
+                        h.join(",")
+                    ),
+                ))
+            }
+            Some(_) => {}
+        }
+        for (line, rec) in r.records().enumerate() {
+            let rec = rec.map_err(perr)?;
+            let cells: Vec<String> = rec.iter().map(str::to_string).collect();
+            let case: usize = cells[case_col].parse().map_err(|_| {
+                invalid(path, "case", format!("row {}: case `{}` is not an integer", line + 1, cells[case_col]))
+            })?;
+            let solver = cells[solver_col].clone();
+            if !seen.insert((case, solver.clone())) {
+                return Err(invalid(
+                    path,
+                    "case",
+                    format!("case {case}, solver {solver} appears twice: is a shard given twice?"),
+                ));
+            }
+            rows.push(Row { case, solver, cells });
+        }
+    }
+    sort_rows(&mut rows);
+    let cells: Vec<Vec<String>> = rows.into_iter().map(|r| r.cells).collect();
+    write_csv(out_csv, header.as_deref().unwrap_or_default(), &cells)?;
+    Ok(cells.len())
+}

@@ -1,0 +1,340 @@
+//! Sweeps: expansion of the grids, sharding and merging, bad specs.
+
+use rollbem::scene::ElementKind;
+use rollbem::sweep::{merge, run_sweep, Shard, SweepSpec, TIMING_COLUMNS};
+use rollbem::Error;
+use std::path::{Path, PathBuf};
+
+fn scene(name: &str) -> String {
+    format!("{}/reference/scenes/{name}", env!("CARGO_MANIFEST_DIR"))
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+/// Header and rows of a CSV.
+fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
+    let mut r = csv::Reader::from_path(path).unwrap();
+    let h = r.headers().unwrap().iter().map(str::to_string).collect();
+    let rows = r.records().map(|x| x.unwrap().iter().map(str::to_string).collect()).collect();
+    (h, rows)
+}
+
+/// The rows with the timing columns blanked.
+fn without_timing(header: &[String], rows: &[Vec<String>]) -> Vec<Vec<String>> {
+    rows.iter()
+        .map(|r| {
+            r.iter()
+                .zip(header)
+                .map(|(c, h)| if TIMING_COLUMNS.contains(&h.as_str()) { "" } else { c }.into())
+                .collect()
+        })
+        .collect()
+}
+
+#[test]
+fn expansion_order_and_params() {
+    let dir = tempfile::tempdir().unwrap();
+    let spec = write(
+        dir.path(),
+        "s.toml",
+        &format!(
+            r#"
+name = "expansion"
+description = "test"
+base = '{}'
+
+[[grid]]
+"wheel.poisson_ratio" = [0.2, 0.3]
+"mesh.contact_elements" = [10, 20, 30]
+
+[[grid]]
+contact.friction = [0.1, 0.2]     # unquoted dotted key: a nested table, same meaning
+"solvers.pgs.tolerance" = [1e-3]  # creates the missing table (parsed later; cases() checks only this grid's scenes)
+"#,
+            scene("seed-fig6-constant.toml")
+        ),
+    );
+    let s = SweepSpec::from_file(&spec).unwrap();
+    assert_eq!(s.name, "expansion");
+    assert_eq!(s.grid.len(), 2);
+    assert_eq!(s.len(), 2 * 3 + 2);
+    assert_eq!(s.keys(), ["contact.friction", "mesh.contact_elements", "solvers.pgs.tolerance", "wheel.poisson_ratio"]);
+
+    // The second grid names a settings table this build may not know: enumerate the first grid alone too.
+    let first = SweepSpec { grid: vec![s.grid[0].clone()], ..s.clone() };
+    let cases = first.cases(&spec).unwrap();
+    assert_eq!(cases.len(), 6);
+    // Keys sorted ("mesh..." < "wheel..."), the last varying fastest.
+    let expect = [("10", "0.2"), ("10", "0.3"), ("20", "0.2"), ("20", "0.3"), ("30", "0.2"), ("30", "0.3")];
+    for (i, (c, (n, nu))) in cases.iter().zip(expect).enumerate() {
+        assert_eq!(c.index, i);
+        assert_eq!(
+            c.params,
+            vec![("mesh.contact_elements".to_string(), n.to_string()), ("wheel.poisson_ratio".into(), nu.into())]
+        );
+        assert_eq!(c.scene.mesh.contact_elements, n.parse::<usize>().unwrap());
+        assert_eq!(c.scene.wheel.poisson_ratio, nu.parse::<f64>().unwrap());
+        assert_eq!(c.scene.mesh.element, ElementKind::Constant);
+        assert_eq!(c.scene.name, "seed-fig6-constant");
+    }
+
+    // A grid of known keys only: cases numbered on after the first grid.
+    let spec2 = write(
+        dir.path(),
+        "s2.toml",
+        &format!(
+            r#"
+name = "expansion2"
+base = '{}'
+[[grid]]
+"mesh.element" = ["quadratic"]
+"mesh.contact_elements" = [4, 8]
+[[grid]]
+"contact.friction" = [0.1, 0.2, 0.4]
+"solvers.use" = [["lemke"]]
+"#,
+            scene("seed-fig6-constant.toml")
+        ),
+    );
+    let cases = SweepSpec::from_file(&spec2).unwrap().cases(&spec2).unwrap();
+    assert_eq!(cases.len(), 2 + 3);
+    assert_eq!(cases.iter().map(|c| c.index).collect::<Vec<_>>(), [0, 1, 2, 3, 4]);
+    assert_eq!(cases[1].scene.mesh.element, ElementKind::Quadratic);
+    assert_eq!(cases[1].scene.mesh.contact_elements, 8);
+    assert_eq!(cases[4].scene.contact.friction, 0.4);
+    assert_eq!(cases[4].params[1], ("solvers.use".to_string(), r#"["lemke"]"#.to_string()));
+    assert_eq!(cases[4].scene.mesh.element, ElementKind::Constant, "the second grid keeps the base's element");
+}
+
+/// A small sweep: frictionless and frictional cases, constant and quadratic elements, an error case
+/// (clarabel named on a frictional scene: unsupported) and a solver this build may not know.
+fn small_spec(dir: &Path) -> PathBuf {
+    write(
+        dir,
+        "small.toml",
+        &format!(
+            r#"
+name = "small"
+base = '{}'
+
+[[grid]]
+"mesh.element" = ["constant", "quadratic"]
+"mesh.contact_elements" = [6, 12]
+"solvers.use" = [["lemke", "clarabel"]]
+
+[[grid]]
+"mesh.contact_elements" = [8, 16]
+"contact.friction" = [0.2, 0.5]
+"solvers.use" = [["lemke"], ["clarabel"]]
+
+[[grid]]
+"mesh.contact_elements" = [8]
+"solvers.use" = [["nosuchsolver"]]
+"#,
+            scene("seed-fig6-constant.toml")
+        ),
+    )
+}
+
+#[test]
+fn shards_merge_to_the_unsharded_sweep() {
+    let dir = tempfile::tempdir().unwrap();
+    let spec = small_spec(dir.path());
+    let whole = dir.path().join("whole.csv");
+    let n_rows = run_sweep(&spec, None, &whole, false).unwrap();
+    let (header, rows) = read_csv(&whole);
+    assert_eq!(rows.len(), n_rows);
+
+    let mut expect_header = vec!["case", "contact.friction", "mesh.contact_elements", "mesh.element", "solvers.use"];
+    expect_header.extend([
+        "scene",
+        "element",
+        "contact_elements",
+        "contact_nodes",
+        "solver",
+        "formulation",
+        "status",
+        "problem_size",
+        "pivots",
+        "iterations",
+        "sweeps",
+        "outer",
+        "residual",
+        "normal_load",
+        "tangential_load",
+        "half_width_fit",
+        "peak_pressure_fit",
+        "hertz_a_err",
+        "hertz_p0_err",
+        "hertz_l2_err",
+        "cm_c_over_a",
+        "cm_c_over_a_exact",
+        "cm_c_err_elements",
+        "cm_centre_elements",
+        "cm_shear_err",
+        "t_assembly",
+        "t_condensation",
+        "t_formulation",
+        "t_solve",
+        "t_total",
+        "message",
+    ]);
+    assert_eq!(header, expect_header);
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    // 4 frictionless cases × (lemke, clarabel) + 8 frictional cases × 1 row + 1 unknown-solver case.
+    assert_eq!(rows.len(), 4 * 2 + 8 + 1);
+    // Sorted by case, then solver.
+    let keys: Vec<(usize, String)> = rows.iter().map(|r| (r[0].parse().unwrap(), r[col("solver")].clone())).collect();
+    let mut sorted = keys.clone();
+    sorted.sort();
+    assert_eq!(keys, sorted);
+    // Frictionless lemke rows solved, with Hertz figures; empty cells where a grid does not set a key.
+    let r0 = &rows[1];
+    assert_eq!((r0[0].as_str(), r0[col("solver")].as_str(), r0[col("status")].as_str()), ("0", "lemke", "solved"));
+    assert_eq!(r0[col("contact.friction")], "");
+    assert!(r0[col("hertz_l2_err")].parse::<f64>().is_ok(), "{r0:?}");
+    if std::env::var_os("SWEEP_TEST_SHOW").is_some() {
+        eprintln!("{}", std::fs::read_to_string(&whole).unwrap());
+    }
+    // Frictional clarabel: unsupported, written as an error row, not an abort.
+    let errs: Vec<&Vec<String>> = rows.iter().filter(|r| r[col("status")] == "error").collect();
+    assert!(errs.iter().any(|r| r[col("solver")] == "clarabel" && r[col("message")].contains("clarabel")));
+    assert!(errs.iter().any(|r| r[col("solver")] == "nosuchsolver" && r[col("message")].contains("nosuchsolver")));
+    // Frictional lemke rows carry the swept value (in TOML syntax) and solve.
+    assert!(rows
+        .iter()
+        .any(|r| r[col("solver")] == "lemke" && r[col("contact.friction")] == "0.2" && r[col("status")] == "solved"));
+
+    // Shards 1/3, 2/3, 3/3 then merge: the same rows except for the timings.
+    let mut parts = Vec::new();
+    let mut total = 0;
+    for k in 1..=3 {
+        let p = dir.path().join(format!("shard{k}.csv"));
+        total += run_sweep(&spec, Some(Shard { k, n: 3 }), &p, false).unwrap();
+        let (h, shard_rows) = read_csv(&p);
+        assert_eq!(h, header);
+        assert!(shard_rows.iter().all(|r| r[0].parse::<usize>().unwrap() % 3 == k - 1));
+        parts.push(p);
+    }
+    assert_eq!(total, n_rows);
+    // Merge in a scrambled order.
+    parts.reverse();
+    let merged = dir.path().join("merged.csv");
+    assert_eq!(merge(&parts, &merged).unwrap(), n_rows);
+    let (mh, mrows) = read_csv(&merged);
+    assert_eq!(mh, header);
+    assert_eq!(without_timing(&mh, &mrows), without_timing(&header, &rows));
+
+    // The same shard twice is refused.
+    let twice = [parts[0].clone(), parts[0].clone()];
+    assert!(merge(&twice, &dir.path().join("twice.csv")).is_err());
+}
+
+#[test]
+fn bad_specs_are_errors_naming_the_key() {
+    let dir = tempfile::tempdir().unwrap();
+    let base = scene("seed-fig6-constant.toml");
+    let field_of = |text: &str| -> (String, String) {
+        let p = write(dir.path(), "bad.toml", text);
+        let e = SweepSpec::from_file(&p).and_then(|s| s.cases(&p).map(|_| ())).unwrap_err();
+        match e {
+            Error::Invalid { ref field, .. } => (field.clone(), e.to_string()),
+            other => panic!("expected Error::Invalid, got {other}"),
+        }
+    };
+    let (f, _) =
+        field_of(&format!("name = 'x'\nbase = '{base}'\nbogus = 1\n[[grid]]\n'mesh.contact_elements' = [4]\n"));
+    assert_eq!(f, "bogus");
+    let (f, m) = field_of(&format!("name = 'x'\nbase = '{base}'\n[[grid]]\n'mesh.contact_elements' = 4\n"));
+    assert_eq!(f, "grid.mesh.contact_elements");
+    assert!(m.contains("array"), "{m}");
+    let (f, _) = field_of(&format!("name = 'x'\nbase = '{base}'\n[[grid]]\n'mesh.contact_elements' = []\n"));
+    assert_eq!(f, "grid.mesh.contact_elements");
+    let (f, _) = field_of(&format!("name = 'x'\nbase = '{base}'\n"));
+    assert_eq!(f, "grid");
+    let (f, _) = field_of(&format!("name = 'x'\nbase = '{base}'\ngrid = []\n"));
+    assert_eq!(f, "grid");
+    let (f, _) = field_of(&format!("name = 'x'\nbase = '{base}'\n[[grid]]\n"));
+    assert_eq!(f, "grid");
+    let (f, m) = field_of("name = 'x'\nbase = 'no/such/scene.toml'\n[[grid]]\n'mesh.contact_elements' = [4]\n");
+    assert_eq!(f, "base");
+    assert!(m.contains("no/such/scene.toml"), "{m}");
+    // An out-of-range value in a variant: names the spec, the case's parameters and the scene field.
+    let text =
+        format!("name = 'x'\nbase = '{base}'\n[[grid]]\n'wheel.radius' = [1.0, -2.0]\n'mesh.contact_elements' = [4]\n");
+    let (f, m) = field_of(&text);
+    assert_eq!(f, "wheel.radius");
+    assert!(m.contains("bad.toml") && m.contains("case 1") && m.contains("wheel.radius = -2.0"), "{m}");
+    // run_sweep refuses it before running anything.
+    let p = write(dir.path(), "bad.toml", &text);
+    let out = dir.path().join("out.csv");
+    assert!(matches!(run_sweep(&p, None, &out, false), Err(Error::Invalid { .. })));
+    assert!(!out.exists());
+    // A dotted path through a value that is not a table.
+    let (f, _) = field_of(&format!("name = 'x'\nbase = '{base}'\n[[grid]]\n'wheel.radius.x' = [1.0]\n"));
+    assert_eq!(f, "wheel.radius.x");
+
+    for s in ["0/3", "4/3", "x", "1/0", "1/", "/3", "-1/3", "1/3/4"] {
+        assert!(s.parse::<Shard>().is_err(), "{s} should not parse");
+    }
+    assert_eq!("2/3".parse::<Shard>().unwrap(), Shard { k: 2, n: 3 });
+    assert_eq!("1/1".parse::<Shard>().unwrap(), Shard { k: 1, n: 1 });
+    let e = "4/3".parse::<Shard>().unwrap_err();
+    assert!(e.contains("4/3"), "{e}");
+}
+
+#[test]
+fn merge_refuses_different_headers() {
+    let dir = tempfile::tempdir().unwrap();
+    let a = write(dir.path(), "a.csv", "case,x,solver,t_total\n0,1,lemke,1e0\n");
+    let b = write(dir.path(), "b.csv", "case,y,solver,t_total\n1,1,lemke,1e0\n");
+    let c = write(dir.path(), "c.csv", "case,x,solver,t_total\n1,2,clarabel,2e0\n1,2,lemke,2e0\n");
+    let out = dir.path().join("out.csv");
+    let e = merge(&[a.clone(), b.clone()], &out).unwrap_err();
+    assert!(matches!(e, Error::Invalid { ref field, .. } if field == "header"), "{e}");
+    assert!(!out.exists());
+    assert_eq!(merge(&[c, a], &out).unwrap(), 3);
+    let (_, rows) = read_csv(&out);
+    assert_eq!(
+        rows.iter().map(|r| (r[0].as_str(), r[2].as_str())).collect::<Vec<_>>(),
+        [("0", "lemke"), ("1", "clarabel"), ("1", "lemke")]
+    );
+    assert!(merge(&[], &out).is_err());
+}
+
+/// The reference sweeps (`reference/sweeps/*.toml`) run end to end; slow (about a minute each in release on two
+/// cores), so ignored by default: `cargo test --release --test sweep -- --ignored --nocapture`. Set
+/// `ROLLBEM_SWEEP_OUT=DIR` to keep the CSVs.
+#[test]
+#[ignore]
+fn reference_sweeps_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let out_dir = std::env::var_os("ROLLBEM_SWEEP_OUT").map(PathBuf::from).unwrap_or_else(|| dir.path().into());
+    for name in ["hertz-accuracy", "cattaneo-accuracy"] {
+        let spec = PathBuf::from(format!("{}/reference/sweeps/{name}.toml", env!("CARGO_MANIFEST_DIR")));
+        let n_cases = SweepSpec::from_file(&spec).unwrap().len();
+        let out = out_dir.join(format!("{name}.csv"));
+        let t = std::time::Instant::now();
+        let rows = run_sweep(&spec, None, &out, true).unwrap();
+        eprintln!("{name}: {n_cases} cases, {rows} rows in {:.1} s -> {}", t.elapsed().as_secs_f64(), out.display());
+        let (h, rows) = read_csv(&out);
+        let col = |c: &str| h.iter().position(|x| x == c).unwrap();
+        let mut statuses = std::collections::BTreeMap::new();
+        for r in &rows {
+            *statuses.entry((r[col("solver")].clone(), r[col("status")].clone())).or_insert(0) += 1;
+        }
+        eprintln!("{name}: (solver, status) counts {statuses:?}");
+        // Every case builds and runs (a loose PGS tolerance may legitimately fail the residual check: that is a
+        // finding of the sweep, not an error of it); the direct solvers solve everything.
+        let bad: Vec<String> = rows
+            .iter()
+            .filter(|r| r[col("status")] == "error" || (r[col("solver")] != "pgs" && r[col("status")] != "solved"))
+            .map(|r| format!("case {} {}: {} {}", r[0], r[col("solver")], r[col("status")], r[col("message")]))
+            .collect();
+        assert!(bad.is_empty(), "{name}: runs not solved:\n{}", bad.join("\n"));
+    }
+}
