@@ -444,7 +444,8 @@ impl Split {
                 knn_cols[i + j * n] = knn_rows[i * n + j];
             }
         }
-        let opt = |m: &Option<Mat<f64>>| if frictional { m.as_ref().map(&rows).unwrap_or_default() } else { Vec::new() };
+        let opt =
+            |m: &Option<Mat<f64>>| if frictional { m.as_ref().map(&rows).unwrap_or_default() } else { Vec::new() };
         let (knt_rows, ktn_rows, ktt_rows) = (opt(&flex.nt), opt(&flex.tn), opt(&flex.tt));
         let mut rigid_given = [0.0; 3];
         let normal = match scene.drive.normal() {

@@ -35,6 +35,16 @@ enum Cmd {
         #[arg(long = "solver", value_parser = parse_solver)]
         solvers: Vec<SolverName>,
     },
+    /// Run every requested solver on each scene and check them against theory, against each other and against
+    /// the scene's declared expectations; print a pass/fail table; exit 1 if any check fails.
+    Check {
+        /// Scene files (TOML).
+        #[arg(required = true)]
+        scenes: Vec<PathBuf>,
+        /// Override the scenes' `[solvers] use` (repeatable).
+        #[arg(long = "solver", value_parser = parse_solver)]
+        solvers: Vec<SolverName>,
+    },
 }
 
 fn parse_solver(s: &str) -> Result<SolverName, String> {
@@ -152,9 +162,60 @@ fn run_one(scene: &Path, json: Option<&Path>, solvers: &[SolverName]) -> rollbem
     Ok(report)
 }
 
+/// `rollbem check`: one table of checks per scene, a closing count line, exit 1 on any failure.
+fn check(scenes: &[PathBuf], solvers: &[SolverName]) -> ExitCode {
+    for p in scenes {
+        if let Err(e) = Scene::from_file(p) {
+            eprintln!("error: {e}");
+            return ExitCode::from(e.exit_code() as u8);
+        }
+    }
+    let (mut passed, mut failed) = (0usize, 0usize);
+    let mut code = 0u8;
+    for p in scenes {
+        match run_one(p, None, solvers) {
+            Ok(r) => {
+                let bad = r.checks.iter().filter(|c| !c.pass).count();
+                println!(
+                    "{} {} ({} checks, {} failed; solvers: {})",
+                    if bad == 0 { "PASS" } else { "FAIL" },
+                    r.scene.name,
+                    r.checks.len(),
+                    bad,
+                    r.runs.iter().map(|x| format!("{} {}", x.solver, x.status)).collect::<Vec<_>>().join(", ")
+                );
+                for c in &r.checks {
+                    if !c.pass {
+                        println!(
+                            "    FAIL {}: measured {:.6e}, reference {:.6e}, error {:.3e} > tolerance {:.1e}",
+                            c.name, c.measured, c.reference, c.error, c.tolerance
+                        );
+                    }
+                }
+                for run in r.runs.iter().filter(|x| !x.message.is_empty() && x.status != r.scene.checks.status) {
+                    println!("    {}: {}", run.solver, run.message);
+                }
+                passed += r.checks.len() - bad;
+                failed += bad;
+                if bad > 0 {
+                    code = code.max(1);
+                }
+            }
+            Err(e) => {
+                println!("FAIL {}: {e}", p.display());
+                failed += 1;
+                code = code.max(e.exit_code() as u8);
+            }
+        }
+    }
+    println!("checks: {passed} passed, {failed} failed");
+    ExitCode::from(code)
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.cmd {
+        Cmd::Check { scenes, solvers } => check(&scenes, &solvers),
         Cmd::Run { scenes, json, out_dir, solvers } => {
             if json.is_some() && scenes.len() > 1 {
                 eprintln!("error: --json takes one scene; use --out-dir for several");

@@ -249,18 +249,16 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
 
     let tf = Instant::now();
     let problem = if !frictional {
-        Problem::Frictionless(Frictionless::new(scene, &model, &flex).map_err(
-            |issue| Error::Unsupported {
-                path: path.to_path_buf(),
-                message: match issue {
-                    DriveIssue::TangentialLoadWithoutFriction(q) => format!(
-                        "drive.tangential_load = {q}: a frictionless contact carries no tangential load (gross \
+        Problem::Frictionless(Frictionless::new(scene, &model, &flex).map_err(|issue| Error::Unsupported {
+            path: path.to_path_buf(),
+            message: match issue {
+                DriveIssue::TangentialLoadWithoutFriction(q) => format!(
+                    "drive.tangential_load = {q}: a frictionless contact carries no tangential load (gross \
                          sliding); use tangential_load = 0 or friction > 0"
-                    ),
-                    DriveIssue::MomentLoad => "a prescribed moment is not carried by this formulation".into(),
-                },
+                ),
+                DriveIssue::MomentLoad => "a prescribed moment is not carried by this formulation".into(),
             },
-        )?)
+        })?)
     } else {
         match (scene.drive.normal(), scene.drive.tangential()) {
             (Dof::Load(p), Dof::Load(q)) if q.abs() > mu * p * (1.0 + SLIDING_LIMIT_BAND) => {
@@ -521,8 +519,9 @@ fn finish_run(
         let refuse = residual_bounds(scene, solver.name()).1;
         if worst.is_nan() || worst > refuse {
             status = Status::NumericalError;
-            message =
-                format!("solver reported success but the independent residual is {worst:.3e} > {refuse:.0e}; {message}");
+            message = format!(
+                "solver reported success but the independent residual is {worst:.3e} > {refuse:.0e}; {message}"
+            );
         }
     }
     let ev = ev.filter(|_| status == Status::Solved);
@@ -574,7 +573,7 @@ fn make_checks(scene: &Scene, model: &Model, runs: &[SolverRun], hertz: Option<&
         let (Some(res), Some(resultants), Some(contact)) = (&r.residuals, &r.resultants, &r.contact) else {
             continue;
         };
-        let bound = residual_bounds(scene, &r.solver).0;
+        let bound = scene.checks.residual.unwrap_or(residual_bounds(scene, &r.solver).0);
         out.push(Check {
             name: format!("{}: largest residual (absolute)", r.solver),
             measured: res.max(),
@@ -597,15 +596,51 @@ fn make_checks(scene: &Scene, model: &Model, runs: &[SolverRun], hertz: Option<&
             let across = 2.0 * h.half_width / hmesh;
             let applies =
                 across >= tol::HERTZ_MIN_ELEMENTS && h.half_width / scene.wheel.radius <= tol::HERTZ_MAX_A_OVER_R;
-            let t = match model.mesh.kind {
+            let t = scene.checks.hertz.unwrap_or(match model.mesh.kind {
                 ElementKind::Constant => tol::HERTZ_CONSTANT,
                 ElementKind::Quadratic => tol::HERTZ_QUADRATIC,
-            };
+            });
             if applies {
                 if let (Some(a), Some(p0)) = (contact.fit_half_width, contact.fit_peak_pressure) {
                     out.push(check(format!("{}: Hertz half-width a (fit)", r.solver), a, h.half_width, t));
                     out.push(check(format!("{}: Hertz peak pressure p0 (fit)", r.solver), p0, h.peak_pressure, t));
                 }
+            }
+        }
+    }
+    // Cattaneo–Mindlin where it applies.
+    if crate::references::cattaneo_applies(scene) {
+        let t = scene.checks.cattaneo_elements.unwrap_or(tol::CATTANEO_ELEMENTS);
+        for r in runs.iter().filter(|r| r.contact.is_some()) {
+            let m = crate::references::metrics(scene, r);
+            if let (Some(c), Some(ce), Some(err), Some(centre)) =
+                (m.cm_c_over_a, m.cm_c_over_a_exact, m.cm_c_err_elements, m.cm_centre_elements)
+            {
+                out.push(Check {
+                    name: format!("{}: Cattaneo–Mindlin c/a (error in elements)", r.solver),
+                    measured: c,
+                    reference: ce,
+                    error: err.abs(),
+                    tolerance: t,
+                    pass: err.abs() <= t,
+                });
+                out.push(Check {
+                    name: format!("{}: Cattaneo–Mindlin stick-zone centre (elements)", r.solver),
+                    measured: centre,
+                    reference: 0.0,
+                    error: centre.abs(),
+                    tolerance: t,
+                    pass: centre.abs() <= t,
+                });
+            } else {
+                out.push(Check {
+                    name: format!("{}: Cattaneo–Mindlin stick zone exists", r.solver),
+                    measured: 0.0,
+                    reference: 1.0,
+                    error: 1.0,
+                    tolerance: 0.0,
+                    pass: false,
+                });
             }
         }
     }
@@ -621,13 +656,30 @@ fn make_checks(scene: &Scene, model: &Model, runs: &[SolverRun], hertz: Option<&
                 .zip(&b.nodes)
                 .fold(0.0_f64, |m, (x, y)| m.max((x.pressure - y.pressure).abs()).max((x.shear - y.shear).abs()))
                 / p0;
+            let t = scene.checks.agreement.unwrap_or(tol::SOLVER_AGREEMENT);
             out.push(Check {
                 name: format!("{} vs {}: max |Δp|, |Δq| / p_max", a.solver, b.solver),
                 measured: d,
                 reference: 0.0,
                 error: d,
-                tolerance: tol::SOLVER_AGREEMENT,
-                pass: d <= tol::SOLVER_AGREEMENT,
+                tolerance: t,
+                pass: d <= t,
+            });
+            // Active sets: nodes both solvers call decisively but differently.
+            let mu = scene.contact.friction;
+            let decisive = |n: &NodeResult| {
+                let pm = p0 * tol::STATE_MARGIN;
+                (n.pressure <= 0.0 || n.pressure > pm) && (n.shear.abs() - mu * n.pressure).abs() > mu * pm
+            };
+            let mismatched =
+                a.nodes.iter().zip(&b.nodes).filter(|(x, y)| x.state != y.state && decisive(x) && decisive(y)).count();
+            out.push(Check {
+                name: format!("{} vs {}: nodes in different states (stick/slip/separated)", a.solver, b.solver),
+                measured: mismatched as f64,
+                reference: 0.0,
+                error: mismatched as f64,
+                tolerance: 0.0,
+                pass: mismatched == 0,
             });
         }
     }

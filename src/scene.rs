@@ -40,13 +40,26 @@ pub struct Scene {
     pub checks: Expect,
 }
 
-/// Expectations a scene declares about its own outcome.
+/// Expectations a scene declares about its own outcome (`[checks]`): the status, and tolerances that override
+/// the defaults of [`crate::tolerances`] for this scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Expect {
     /// The status every solver should end with (default `solved`; e.g. `infeasible` for a load beyond μP).
     #[serde(default = "default_status")]
     pub status: crate::solvers::Status,
+    /// Relative tolerance on Hertz's a and p0 (default: 1.5 % constant, 1 % quadratic elements).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub hertz: Option<f64>,
+    /// Agreement between solvers, max |Δp|, |Δq| over p_max (default 1e-6).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub agreement: Option<f64>,
+    /// Largest solver-independent residual (default: round-off for direct solvers, 100 τ for iterative ones).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub residual: Option<f64>,
+    /// Cattaneo–Mindlin stick-zone half-width and centre, in contact elements (default 1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub cattaneo_elements: Option<f64>,
 }
 
 fn default_status() -> crate::solvers::Status {
@@ -55,7 +68,7 @@ fn default_status() -> crate::solvers::Status {
 
 impl Default for Expect {
     fn default() -> Self {
-        Expect { status: default_status() }
+        Expect { status: default_status(), hertz: None, agreement: None, residual: None, cattaneo_elements: None }
     }
 }
 
@@ -232,7 +245,8 @@ pub enum SolverName {
 
 impl SolverName {
     /// Every solver, in registry order (without `all`).
-    pub const SOLVERS: [SolverName; 4] = [SolverName::Lemke, SolverName::Clarabel, SolverName::Pgs, SolverName::NormtangQp];
+    pub const SOLVERS: [SolverName; 4] =
+        [SolverName::Lemke, SolverName::Clarabel, SolverName::Pgs, SolverName::NormtangQp];
 
     /// Name as written in scene files and reports.
     pub fn name(self) -> &'static str {
@@ -453,6 +467,17 @@ impl Scene {
         tol("solvers.normtang_qp.tolerance", sv.normtang_qp.tolerance)?;
         count("solvers.normtang_qp.max_outer", sv.normtang_qp.max_outer)?;
         tol("solvers.normtang_qp.qp.tolerance", sv.normtang_qp.qp.tolerance)?;
+        let ck = &self.checks;
+        for (field, v) in [
+            ("checks.hertz", ck.hertz),
+            ("checks.agreement", ck.agreement),
+            ("checks.residual", ck.residual),
+            ("checks.cattaneo_elements", ck.cattaneo_elements),
+        ] {
+            if let Some(v) = v {
+                positive(field, v)?;
+            }
+        }
         Ok(())
     }
 

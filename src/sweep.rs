@@ -295,8 +295,10 @@ impl SweepSpec {
         self.len() == 0
     }
 
-    /// Build every variant; the scene of each is parsed and validated but errors are kept per variant.
-    fn variants(&self, spec_path: &Path) -> Result<Vec<Variant>> {
+    /// Build every variant; the scene of each is parsed and validated but errors are kept per variant. The
+    /// variants' errors name `label` as their file (the spec's path, or its bare file name for CSV cells that must
+    /// not depend on where a shard ran) and the base scene as written in the spec.
+    fn variants(&self, spec_path: &Path, label: &Path) -> Result<Vec<Variant>> {
         let base_path = self.base_path(spec_path);
         let text = std::fs::read_to_string(&base_path).map_err(|e| {
             invalid(spec_path, "base", format!("cannot read the base scene {}: {e}", base_path.display()))
@@ -328,10 +330,10 @@ impl SweepSpec {
                         set_err.get_or_insert((key.to_string(), e));
                     }
                 }
-                let label = describe(index, &params);
+                let what = describe(index, &params);
                 let scene = match set_err {
-                    Some((key, e)) => Err(invalid(spec_path, &key, format!("{label}: {e}"))),
-                    None => build_scene(&doc, spec_path, &base_path, &label),
+                    Some((key, e)) => Err(invalid(label, &key, format!("{what}: {e}"))),
+                    None => build_scene(&doc, label, &self.base, &what),
                 };
                 out.push(Variant { index, params, doc, scene });
             }
@@ -342,7 +344,7 @@ impl SweepSpec {
     /// Every case of the sweep, in enumeration order. A variant that does not parse or validate is an error naming
     /// the spec file, the case's parameters and the offending field.
     pub fn cases(&self, spec_path: &Path) -> Result<Vec<Case>> {
-        self.variants(spec_path)?
+        self.variants(spec_path, spec_path)?
             .into_iter()
             .map(|v| v.scene.map(|scene| Case { index: v.index, params: v.params, scene }))
             .collect()
@@ -355,19 +357,20 @@ fn describe(index: usize, params: &[(String, String)]) -> String {
     format!("case {index} ({})", p.join(", "))
 }
 
-/// Serialize a variant's document and parse it as a scene; errors are re-addressed to the spec file.
-fn build_scene(doc: &Table, spec_path: &Path, base_path: &Path, label: &str) -> Result<Scene> {
-    let text = toml::to_string(doc).map_err(|e| invalid(spec_path, "base", format!("{label}: {e}")))?;
-    Scene::from_toml(&text, base_path).map_err(|e| match e {
+/// Serialize a variant's document and parse it as a scene; errors are re-addressed to the spec (`spec_label`), name
+/// the case (`what`) and the base scene as written in the spec (`base`).
+fn build_scene(doc: &Table, spec_label: &Path, base: &Path, what: &str) -> Result<Scene> {
+    let text = toml::to_string(doc).map_err(|e| invalid(spec_label, "base", format!("{what}: {e}")))?;
+    Scene::from_toml(&text, base).map_err(|e| match e {
         Error::Invalid { field, message, .. } => {
-            invalid(spec_path, &field, format!("{label}: in the variant of {}: {message}", base_path.display()))
+            invalid(spec_label, &field, format!("{what}: in the variant of {}: {message}", base.display()))
         }
         Error::Parse { message, .. } => Error::Parse {
-            path: spec_path.to_path_buf(),
+            path: spec_label.to_path_buf(),
             message: format!(
-                "{label}: the variant of {} is not a valid scene: {}",
-                base_path.display(),
-                message.replace('\n', " ")
+                "{what}: the variant of {} is not a valid scene: {}",
+                base.display(),
+                message.split_whitespace().collect::<Vec<_>>().join(" ")
             ),
         },
         other => other,
@@ -458,8 +461,8 @@ fn error_rows(case: &Variant, keys: &[String], err: &Error) -> Vec<Row> {
         Some(other) => vec![show(other)],
         None => vec!["all".into()],
     };
-    let mut solvers: Vec<String> = solvers.into_iter().collect::<BTreeSet<_>>().into_iter().collect();
-    solvers.sort();
+    // Sorted and deduplicated, as the rows of a case that ran.
+    let solvers: BTreeSet<String> = solvers.into_iter().collect();
     let message = err.to_string().replace('\n', " ");
     solvers
         .into_iter()
@@ -480,12 +483,13 @@ fn error_rows(case: &Variant, keys: &[String], err: &Error) -> Vec<Row> {
         .collect()
 }
 
-fn run_case(case: &Variant, keys: &[String], spec_path: &Path) -> Vec<Row> {
+/// Run one case; `label` names the spec in error messages.
+fn run_case(case: &Variant, keys: &[String], label: &Path) -> Vec<Row> {
     let scene = match &case.scene {
         Ok(s) => s,
         Err(e) => return error_rows(case, keys, e),
     };
-    let path = PathBuf::from(format!("{} [case {}]", spec_path.display(), case.index));
+    let path = PathBuf::from(format!("{} [case {}]", label.display(), case.index));
     // A panic in one case (a bug) must not lose the others' rows.
     let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run_scene(scene, &path)));
     match result {
@@ -533,14 +537,16 @@ fn write_csv(out_csv: &Path, header: &[String], rows: &[Vec<String>]) -> Result<
 /// Sets faer's global parallelism to sequential: the cases are the parallel unit.
 pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progress: bool) -> Result<usize> {
     let spec = SweepSpec::from_file(spec_path)?;
-    let variants = spec.variants(spec_path)?;
+    // Per-case messages name the spec by its file name only: the CSV must not depend on where a shard ran.
+    let label = PathBuf::from(spec_path.file_name().unwrap_or(spec_path.as_os_str()));
+    let variants = spec.variants(spec_path, &label)?;
     if let Some(e) = variants.iter().find_map(|v| match &v.scene {
         Err(e @ Error::Invalid { .. }) => Some(e),
         _ => None,
     }) {
         // Re-raise the first out-of-range variant (Error is not Clone).
-        let Error::Invalid { path, field, message } = e else { unreachable!() };
-        return Err(Error::Invalid { path: path.clone(), field: field.clone(), message: message.clone() });
+        let Error::Invalid { field, message, .. } = e else { unreachable!() };
+        return Err(invalid(spec_path, field, message.clone()));
     }
     let mine: Vec<&Variant> = variants.iter().filter(|v| shard.is_none_or(|s| s.contains(v.index))).collect();
     let keys = spec.keys();
@@ -562,7 +568,7 @@ pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progres
     let mut rows: Vec<Row> = mine
         .par_iter()
         .flat_map_iter(|v| {
-            let rows = run_case(v, &keys, spec_path);
+            let rows = run_case(v, &keys, &label);
             bar.inc(1);
             rows
         })

@@ -37,3 +37,12 @@ pub const UNIT_INVARIANCE: f64 = 1e-9;
 /// (and never less than [`RESIDUAL_DIRECT`] / [`RESIDUAL_REFUSE`]): its claim is "converged to τ", so a residual
 /// of order τ is honest, and one far above it is refused.
 pub const ITERATIVE_RESIDUAL_FACTOR: f64 = 100.0;
+
+/// Cattaneo–Mindlin: stick-zone half-width and centre within this many contact elements (issue 3: "within about
+/// one element"; the stick edge lies somewhere inside the element between a sticking and a slipping node).
+pub const CATTANEO_ELEMENTS: f64 = 1.0;
+
+/// Node states of two solvers are compared only where both are decisive: pressure above this fraction of p_max
+/// and | |q| − μp | above this fraction of μ p_max (a node at the stick/slip boundary to within an iterative
+/// solver's tolerance may legitimately be called either).
+pub const STATE_MARGIN: f64 = 1e-6;

@@ -272,7 +272,13 @@ fn bad_specs_are_errors_naming_the_key() {
     // run_sweep refuses it before running anything.
     let p = write(dir.path(), "bad.toml", &text);
     let out = dir.path().join("out.csv");
-    assert!(matches!(run_sweep(&p, None, &out, false), Err(Error::Invalid { .. })));
+    match run_sweep(&p, None, &out, false) {
+        Err(Error::Invalid { path, field, message }) => {
+            assert_eq!((path, field.as_str()), (p.clone(), "wheel.radius"));
+            assert!(message.contains("case 1"), "{message}");
+        }
+        other => panic!("expected Error::Invalid, got {other:?}"),
+    }
     assert!(!out.exists());
     // A dotted path through a value that is not a table.
     let (f, _) = field_of(&format!("name = 'x'\nbase = '{base}'\n[[grid]]\n'wheel.radius.x' = [1.0]\n"));

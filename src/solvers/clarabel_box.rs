@@ -202,8 +202,17 @@ fn polish(
 ) -> Result<(Vec<f64>, Option<f64>), Option<Fix>> {
     let idx: Vec<usize> = (0..n).filter(|&i| free[i]).collect();
     // Bound variables stay where the interior point put them (snapped to the nearer bound).
-    let mut x: Vec<f64> =
-        (0..n).map(|i| if free[i] { 0.0 } else if x0[i] - lo[i] < hi[i] - x0[i] { lo[i] } else { hi[i] }).collect();
+    let mut x: Vec<f64> = (0..n)
+        .map(|i| {
+            if free[i] {
+                0.0
+            } else if x0[i] - lo[i] < hi[i] - x0[i] {
+                lo[i]
+            } else {
+                hi[i]
+            }
+        })
+        .collect();
     let nf = idx.len();
     let ne = usize::from(eq.is_some());
     let dim = nf + ne;
@@ -252,9 +261,8 @@ fn polish(
             }
             continue;
         }
-        let g: f64 = c[i]
-            + (0..n).map(|j| k[i + j * n] * x[j]).sum::<f64>()
-            + nu.unwrap_or(0.0) * eq.map_or(0.0, |(a, _)| a[i]);
+        let g: f64 =
+            c[i] + (0..n).map(|j| k[i + j * n] * x[j]).sum::<f64>() + nu.unwrap_or(0.0) * eq.map_or(0.0, |(a, _)| a[i]);
         let at_lo = x[i] == lo[i] && lo[i] < hi[i];
         let at_hi = x[i] == hi[i] && lo[i] < hi[i];
         if (at_lo && g < -tol * gscale) || (at_hi && g > tol * gscale) {
@@ -294,7 +302,7 @@ mod tests {
         let n = 5;
         let k: Vec<f64> = (0..n * n)
             .map(|idx| {
-                let (i, j) = (idx % n, idx / n);
+                let (i, j): (usize, usize) = (idx % n, idx / n);
                 if i == j {
                     4.0
                 } else if i.abs_diff(j) == 1 {

@@ -223,8 +223,8 @@ pub fn solve(p: &Split, inner: &Inner) -> Outcome {
             }
         }
         let scale = f.iter().fold(0.0_f64, |m, v| m.max(v.abs())).max(f64::MIN_POSITIVE);
-        change = f.iter().zip(&f_prev).chain(h.iter().zip(&h_prev)).fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()))
-            / scale;
+        change =
+            f.iter().zip(&f_prev).chain(h.iter().zip(&h_prev)).fold(0.0_f64, |m, (a, b)| m.max((a - b).abs())) / scale;
         if !frictional || change <= tolerance || f.iter().all(|&v| v == 0.0) {
             break Ok(());
         }
@@ -241,7 +241,10 @@ pub fn solve(p: &Split, inner: &Inner) -> Outcome {
     let (status, message) = match result {
         Ok(()) => (
             Status::Solved,
-            format!("converged in {outer} outer iteration(s), last change {:.3e}", if change.is_finite() { change } else { 0.0 }),
+            format!(
+                "converged in {outer} outer iteration(s), last change {:.3e}",
+                if change.is_finite() { change } else { 0.0 }
+            ),
         ),
         Err(Failure(st, msg)) => (st, msg),
     };
@@ -274,8 +277,7 @@ fn norm(
         Inner::Pgs(s) => {
             let mut solve_at = |d: f64, f: &mut Vec<f64>| -> Result<f64, Failure> {
                 let q: Vec<f64> = (0..n).map(|i| q0[i] + c[i] * d).collect();
-                let (sw, ok) =
-                    pgs_box(&p.knn_rows, n, &q, &lo, &hi, f, s.relaxation, 0.1 * s.tolerance, s.max_sweeps);
+                let (sw, ok) = pgs_box(&p.knn_rows, n, &q, &lo, &hi, f, s.relaxation, 0.1 * s.tolerance, s.max_sweeps);
                 *sweeps += sw;
                 if !ok {
                     return Err(Failure(
@@ -328,7 +330,7 @@ fn tang(
     p: &Split,
     inner: &Inner,
     f: &[f64],
-    h: &mut Vec<f64>,
+    h: &mut [f64],
     rigid: &mut [f64; 3],
     sweeps: &mut usize,
     qp_iterations: &mut u32,
