@@ -5,6 +5,9 @@
 //! - `condensation/constant/N` and `dense_lu/N`: one LU + the flexibility solves, against a bare faer LU of the
 //!   same size (the condensation target is within 2× of it).
 //! - `frictionless_solve/{lemke,clarabel}/n`: the frictionless load-driven problem with n contact nodes.
+//! - `lemke_frictional/{block,dense}/m`: Lemke on frictional LCPs of m = 3n + 4 unknowns (pivots to stderr).
+//! - `formulation_and_normtang/{frictional_lcp,pgs,normtang_qp}/n`: building the frictional LCP, and the two
+//!   NORM-TANG solvers, with n contact nodes.
 //!
 //! Run one group with e.g. `cargo bench --bench pipeline -- assembly --quick`.
 
@@ -143,5 +146,43 @@ fn lemke_frictional(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, end_to_end, assembly, condensation, frictionless_solve, lemke_frictional);
+/// The formulation stage (building the frictional LCP from F: K_TT⁻¹ and the affine elimination) and the
+/// NORM-TANG solvers (PGS and clarabel-QP inner) on the Cattaneo scene family, n contact nodes.
+fn formulation_and_normtang(c: &mut Criterion) {
+    faer::set_global_parallelism(faer::Par::Seq);
+    let mut g = c.benchmark_group("formulation_and_normtang");
+    g.sample_size(10);
+    for n in [30usize, 60, 120, 240] {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/scenes/cattaneo-decoupled.toml");
+        let mut s = Scene::from_file(&path).unwrap();
+        s.contact.coupling = true;
+        s.wheel.poisson_ratio = 0.45;
+        s.mesh.contact_elements = n;
+        let model = Model::new(&s);
+        let (flex, _) = condense(&model, Blocks::All).unwrap();
+        g.bench_with_input(BenchmarkId::new("frictional_lcp", n), &flex, |b, f| {
+            b.iter(|| black_box(Frictional::new(&s, &model, f)))
+        });
+        let split = rollbem::formulation::Split::new(&s, &model, &flex).unwrap();
+        let pgs = rollbem::solvers::normtang::Inner::Pgs(Default::default());
+        let qp = rollbem::solvers::normtang::Inner::Qp(Default::default());
+        g.bench_with_input(BenchmarkId::new("pgs", n), &split, |b, sp| {
+            b.iter(|| black_box(rollbem::solvers::normtang::solve(sp, &pgs)))
+        });
+        g.bench_with_input(BenchmarkId::new("normtang_qp", n), &split, |b, sp| {
+            b.iter(|| black_box(rollbem::solvers::normtang::solve(sp, &qp)))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(
+    benches,
+    end_to_end,
+    assembly,
+    condensation,
+    frictionless_solve,
+    lemke_frictional,
+    formulation_and_normtang
+);
 criterion_main!(benches);

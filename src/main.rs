@@ -35,6 +35,34 @@ enum Cmd {
         #[arg(long = "solver", value_parser = parse_solver)]
         solvers: Vec<SolverName>,
     },
+    /// Run a sweep (a grid of scene variants × solvers) in parallel and write one CSV row per solver run.
+    Sweep {
+        /// Sweep specification (TOML; see reference/sweeps/).
+        spec: PathBuf,
+        /// Run only shard k of n (1-based), for a batch scheduler; join the shards with `sweep-merge`.
+        #[arg(long)]
+        shard: Option<rollbem::sweep::Shard>,
+        /// Output CSV (default: next to the spec, SPEC.csv or SPEC.shard-K-of-N.csv).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+    /// Join shard CSVs into the CSV of the whole sweep (rows sorted by case and solver).
+    SweepMerge {
+        /// Output CSV.
+        out: PathBuf,
+        /// Shard CSVs.
+        #[arg(required = true)]
+        inputs: Vec<PathBuf>,
+    },
+    /// Regenerate reports/ from the reference scenes and sweeps: JSON runs, CSVs, SVG plots, README.md.
+    Report {
+        /// Folder with scenes/ and sweeps/.
+        #[arg(long, default_value = "reference")]
+        reference: PathBuf,
+        /// Output folder.
+        #[arg(long, default_value = "reports")]
+        out: PathBuf,
+    },
     /// Run every requested solver on each scene and check them against theory, against each other and against
     /// the scene's declared expectations; print a pass/fail table; exit 1 if any check fails.
     Check {
@@ -216,6 +244,45 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.cmd {
         Cmd::Check { scenes, solvers } => check(&scenes, &solvers),
+        Cmd::Sweep { spec, shard, out } => {
+            let out = out.unwrap_or_else(|| match &shard {
+                Some(s) => spec.with_extension(format!("shard-{}-of-{}.csv", s.k, s.n)),
+                None => spec.with_extension("csv"),
+            });
+            match rollbem::sweep::run_sweep(&spec, shard, &out, true) {
+                Ok(rows) => {
+                    println!("{rows} rows written to {}", out.display());
+                    ExitCode::SUCCESS
+                }
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    ExitCode::from(e.exit_code() as u8)
+                }
+            }
+        }
+        Cmd::SweepMerge { out, inputs } => match rollbem::sweep::merge(&inputs, &out) {
+            Ok(rows) => {
+                println!("{rows} rows written to {}", out.display());
+                ExitCode::SUCCESS
+            }
+            Err(e) => {
+                eprintln!("error: {e}");
+                ExitCode::from(e.exit_code() as u8)
+            }
+        },
+        Cmd::Report { reference, out } => {
+            let opts = rollbem::report::ReportOptions { reference, out, progress: true };
+            match rollbem::report::generate(&opts) {
+                Ok(path) => {
+                    println!("report written: {}", path.display());
+                    ExitCode::SUCCESS
+                }
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    ExitCode::from(e.exit_code() as u8)
+                }
+            }
+        }
         Cmd::Run { scenes, json, out_dir, solvers } => {
             if json.is_some() && scenes.len() > 1 {
                 eprintln!("error: --json takes one scene; use --out-dir for several");
