@@ -17,7 +17,7 @@
 //! 0              storage type: dense
 //! 2              size0
 //! 2              size1
-//! 2	2          size0 size1 (again)
+//! 2 2            size0 size1 (again; Siconos writes a tab between them)
 //! 2 1            column 0 of M: M00 M10
 //! 1 2            column 1 of M: M01 M11
 //! -5 -6          q
@@ -96,10 +96,11 @@ pub fn parse_with_remark(text: &str, path: &Path) -> Result<(Lcp, String)> {
     }
     let remark = tok.rest();
     if let Some(first) = remark.split_whitespace().next() {
-        if first.parse::<f64>().is_ok() {
-            let extra = remark.split_whitespace().take_while(|t| t.parse::<f64>().is_ok()).count();
+        if looks_numeric(first) {
+            let extra = remark.split_whitespace().take_while(|t| looks_numeric(t)).count();
+            let line = tok.next_line();
             return Err(tok.error_at(
-                tok.next_line(),
+                line,
                 format!(
                     "{extra} extra number(s) after the {n} entries of q: M or q has the wrong size \
                      (a trailing remark must start with text)"
@@ -154,6 +155,11 @@ pub fn to_string_with_remark(lcp: &Lcp, remark: &str) -> String {
         }
     }
     s
+}
+
+/// A token that is a number written as such (so a remark may start with a word like `Infinitely`).
+fn looks_numeric(t: &str) -> bool {
+    t.starts_with(|c: char| c.is_ascii_digit() || matches!(c, '+' | '-' | '.')) && t.parse::<f64>().is_ok()
 }
 
 /// Whitespace-separated tokens with their line numbers.
@@ -280,6 +286,8 @@ mod tests {
         assert!(msg("2\n0\n2\n2\n2 2\n1 2\n3 4\n-1\n").contains("end of file after 11 number(s): expected q[2]"));
         assert!(msg("2\n0\n2\n2\n2 2\n1 2\n3 4\n-1 -1\n\n7 8\n").contains("line 10: 2 extra number(s)"));
         assert!(matches!(parse("2\n1\n2\n2\n", p()), Err(Error::Unsupported { .. })));
+        // A remark may start with a word that Rust would parse as a float.
+        assert!(parse("1\n0\n1\n1\n1 1\n2\n-1\nInfinity of solutions? no.\n", p()).is_ok());
     }
 
     #[test]

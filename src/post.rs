@@ -90,6 +90,9 @@ pub struct ContactSummary {
     pub half_width: Option<f64>,
     /// Largest nodal pressure.
     pub peak_pressure: f64,
+    /// Pressure scale of the relative residuals and comparisons: the peak pressure, floored by E·ℓ/L0 (ℓ the rigid
+    /// gap scale), so that a run without contact is compared on a meaningful scale.
+    pub pressure_scale: f64,
     /// a from the elliptic fit p² = p0²(1 − x²/a²) (meaningful for Hertz-like pressure; null if the fit fails).
     pub fit_half_width: Option<f64>,
     /// p0 from the same fit.
@@ -175,7 +178,7 @@ pub fn slip_velocity(x: &[f64], u_t: &[f64], in_contact: &[bool], creepage: f64,
 /// approach, rotation), `shift_known = false` when the shift is indeterminate (at the sliding limit).
 ///
 /// Residuals (relative, solver-independent): ℓ is the largest rigid gap `|g₀ + R_N ρ|` over the candidate zone
-/// (the gap the contact has to close or keep open); `complementarity` is max |p g| / (p_max ℓ); `friction` the worst
+/// (the gap the contact has to close or keep open), and `p_max` below is floored by E·ℓ/L0; `complementarity` is max |p g| / (p_max ℓ); `friction` the worst
 /// of the Coulomb cone violation max(0, |q| − μp)/(μ p_max), the slip of sticking material |s|(μp − |q|)/(ℓ μ p_max)
 /// and slip along the friction force max(0, s q)/(ℓ μ p_max); `equilibrium` the worst relative error of a
 /// prescribed resultant (Q relative to max(|Q|, μP), M to max(|M|, P R)).
@@ -223,7 +226,9 @@ pub fn evaluate(
     let gap: Vec<f64> = (0..n).map(|i| flex.g0[i] + uy[i]).collect();
     let pmax = p.iter().fold(0.0_f64, |a, &v| a.max(v));
     let ell = rig_gap.iter().fold(0.0_f64, |a, &v| a.max(v.abs())).max(f64::MIN_POSITIVE);
-    let pref = pmax.max(f64::MIN_POSITIVE);
+    // Pressure scale of the residuals: the peak pressure, floored by the stress a strain ℓ/L0 would cause (E = 1
+    // in these units), so a solution without contact is not divided by zero.
+    let pref = pmax.max(ell);
     let complementarity = (0..n).map(|i| (p[i] * gap[i]).abs()).fold(0.0, f64::max) / (pref * ell);
     let penetration = (-gap.iter().cloned().fold(f64::INFINITY, f64::min)).max(0.0) / ell;
     let tension = (-p.iter().cloned().fold(f64::INFINITY, f64::min)).max(0.0) / pref;
@@ -299,6 +304,7 @@ pub fn evaluate(
         x_max,
         half_width: x_min.zip(x_max).map(|(a, b)| 0.5 * (b - a)),
         peak_pressure: pmax * e,
+        pressure_scale: pref * e,
         fit_half_width: fit.map(|f| f.0),
         fit_peak_pressure: fit.map(|f| f.1),
         stick_x_min: sticking.first().map(|nd| nd.x),

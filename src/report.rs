@@ -168,7 +168,7 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
         for run in &r.runs {
             let (d, mism) = match (lemke, &run.contact) {
                 (Some(l), Some(_)) if l.contact.is_some() && run.solver != "lemke" => {
-                    let p0 = l.contact.as_ref().unwrap().peak_pressure.max(f64::MIN_POSITIVE);
+                    let p0 = l.contact.as_ref().unwrap().pressure_scale.max(f64::MIN_POSITIVE);
                     let d = l.nodes.iter().zip(&run.nodes).fold(0.0_f64, |m, (a, b)| {
                         m.max((a.pressure - b.pressure).abs()).max((a.shear - b.shear).abs())
                     }) / p0;

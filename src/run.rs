@@ -559,8 +559,8 @@ fn check(name: String, measured: f64, reference: f64, tolerance: f64) -> Check {
 
 fn make_checks(scene: &Scene, model: &Model, runs: &[SolverRun], hertz: Option<&Hertz>) -> Vec<Check> {
     let mut out = Vec::new();
-    let expected = scene.checks.status;
     for r in runs {
+        let expected = scene.checks.status_for(&r.solver);
         let ok = r.status == expected;
         out.push(Check {
             name: format!("{}: status {} (expected {})", r.solver, r.status, expected),
@@ -649,7 +649,7 @@ fn make_checks(scene: &Scene, model: &Model, runs: &[SolverRun], hertz: Option<&
     for i in 0..solved.len() {
         for j in i + 1..solved.len() {
             let (a, b) = (solved[i], solved[j]);
-            let p0 = a.contact.as_ref().map(|c| c.peak_pressure).unwrap_or(0.0).max(f64::MIN_POSITIVE);
+            let p0 = a.contact.as_ref().map(|c| c.pressure_scale).unwrap_or(0.0).max(f64::MIN_POSITIVE);
             let d = a
                 .nodes
                 .iter()

@@ -48,6 +48,10 @@ pub struct Expect {
     /// The status every solver should end with (default `solved`; e.g. `infeasible` for a load beyond μP).
     #[serde(default = "default_status")]
     pub status: crate::solvers::Status,
+    /// Per-solver expected statuses overriding `status` (e.g. `{ pgs = "not_converged" }` where the NORM-TANG
+    /// split is known not to converge).
+    #[serde(default, skip_serializing_if = "std::collections::BTreeMap::is_empty")]
+    pub solver_status: std::collections::BTreeMap<SolverName, crate::solvers::Status>,
     /// Relative tolerance on Hertz's a and p0 (default: 1.5 % constant, 1 % quadratic elements).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub hertz: Option<f64>,
@@ -68,7 +72,14 @@ fn default_status() -> crate::solvers::Status {
 
 impl Default for Expect {
     fn default() -> Self {
-        Expect { status: default_status(), hertz: None, agreement: None, residual: None, cattaneo_elements: None }
+        Expect {
+            status: default_status(),
+            solver_status: Default::default(),
+            hertz: None,
+            agreement: None,
+            residual: None,
+            cattaneo_elements: None,
+        }
     }
 }
 
@@ -484,5 +495,12 @@ impl Scene {
     /// Path placeholder for scenes built in code.
     pub fn code_path() -> PathBuf {
         PathBuf::from("<scene>")
+    }
+}
+
+impl Expect {
+    /// The status expected of `solver` (by its registry name).
+    pub fn status_for(&self, solver: &str) -> crate::solvers::Status {
+        self.solver_status.iter().find(|(k, _)| k.name() == solver).map(|(_, v)| *v).unwrap_or(self.status)
     }
 }

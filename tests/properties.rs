@@ -200,19 +200,21 @@ impl SceneParams {
 /// Random valid scenes never panic and never return a silent wrong answer.
 #[test]
 fn random_valid_scenes_are_solved_or_refused_cleanly() {
-    check(48, 0x5EED_0001, scene_params(), |params| {
+    check(400, 0x5EED_0001, scene_params(), |params| {
         let scene = params.scene();
         let path = Path::new("<property>");
         scene.validate(path).map_err(|e| TestCaseError::fail(format!("generator made an invalid scene: {e}")))?;
         let report = match run_scene(&scene, path) {
             Ok(r) => r,
             Err(e) => {
+                eprintln!("DBG ERR {e}");
                 // A clean refusal (e.g. a singular BEM system) must say why.
                 prop_assert!(!e.to_string().trim().is_empty(), "empty error message");
                 return Ok(());
             }
         };
         prop_assert!(!report.runs.is_empty(), "no solver ran");
+        eprintln!("CASE {}", report.runs.iter().map(|r| format!("{}={}", r.solver, r.status)).collect::<Vec<_>>().join(" "));
         for run in &report.runs {
             // The five statuses are the enum's variants; match them all so a new one is noticed here.
             let solved = match run.status {
@@ -350,7 +352,7 @@ fn both(p: &Problem) -> (LemkeOutcome, LemkeOutcome) {
 
 #[test]
 fn lemke_solves_p_matrix_lcps_and_engines_agree() {
-    check(512, 0x5EED_0002, p_matrix_problem(), |p| {
+    check(2000, 0x5EED_0002, p_matrix_problem(), |p| {
         let (a, b) = both(&p);
         for (name, out) in [("block", &a), ("dense", &b)] {
             prop_assert_eq!(out.status, Status::Solved, "{} engine: {}", name, out.message);
@@ -408,7 +410,7 @@ fn int_vec(len: usize, lo: i32, hi: i32) -> impl Strategy<Value = Vec<f64>> {
 /// and xᵀMx = 0 ⇒ Ax = 0 ⇒ (M + Mᵀ)x = 2AᵀAx = 0), or strictly copositive (PSD plus a matrix with every entry
 /// ≥ 1: xᵀMx ≥ (Σx)² > 0 for x ≥ 0, x ≠ 0), which is copositive-plus vacuously.
 fn copositive_plus_problem() -> impl Strategy<Value = (Problem, bool)> {
-    (1usize..=6).prop_flat_map(|n| {
+    (1usize..=8).prop_flat_map(|n| {
         (Just(n), 0usize..=n, int_vec(n * n, -2, 2), int_vec(n * n, -2, 2), int_vec(n * n, 1, 3), any::<bool>())
             .prop_flat_map(move |(n, r, a, s, pos, strict)| {
                 let mut m = gram(&a[..r * n], r, n);
@@ -432,7 +434,7 @@ fn copositive_plus_problem() -> impl Strategy<Value = (Problem, bool)> {
 /// LCP is solvable for every q, so a ray is never allowed for them.
 #[test]
 fn lemke_on_copositive_plus_solves_or_proves_infeasible() {
-    check(384, 0x5EED_0003, copositive_plus_problem(), |(p, strict)| {
+    check(1500, 0x5EED_0003, copositive_plus_problem(), |(p, strict)| {
         let (a, b) = both(&p);
         let exists = brute_force_solution(&p);
         for (name, out) in [("block", &a), ("dense", &b)] {
@@ -500,7 +502,7 @@ fn lemke_on_copositive_never_panics_and_solved_is_valid() {
             }
         }
     }
-    check(384, 0x5EED_0004, copositive_problem(), |p| {
+    check(2000, 0x5EED_0004, copositive_problem(), |p| {
         let (a, b) = both(&p);
         for (name, out) in [("block", &a), ("dense", &b)] {
             prop_assert!(
@@ -680,12 +682,12 @@ fn inserted_line() -> impl Strategy<Value = String> {
 
 fn mutation() -> impl Strategy<Value = Mutation> {
     prop_oneof![
-        any::<usize>().prop_map(Mutation::DeleteLine),
-        any::<usize>().prop_map(Mutation::DuplicateLine),
+        1 => any::<usize>().prop_map(Mutation::DeleteLine),
+        1 => any::<usize>().prop_map(Mutation::DuplicateLine),
         3 => (any::<usize>(), any::<usize>()).prop_map(|(k, r)| Mutation::ReplaceNumber(k, r)),
-        any::<usize>().prop_map(Mutation::Truncate),
-        (any::<usize>(), inserted_line()).prop_map(|(k, l)| Mutation::InsertLine(k, l)),
-        (any::<usize>(), any::<usize>()).prop_map(|(a, b)| Mutation::SwapLines(a, b)),
+        1 => any::<usize>().prop_map(Mutation::Truncate),
+        1 => (any::<usize>(), inserted_line()).prop_map(|(k, l)| Mutation::InsertLine(k, l)),
+        1 => (any::<usize>(), any::<usize>()).prop_map(|(a, b)| Mutation::SwapLines(a, b)),
     ]
 }
 
