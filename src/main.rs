@@ -71,6 +71,11 @@ enum Cmd {
         #[arg(long, default_value = "reports")]
         out: PathBuf,
     },
+    /// LCP files in the plain format of Siconos numerics' LCP test collection.
+    Lcp {
+        #[command(subcommand)]
+        cmd: LcpCmd,
+    },
     /// Run every requested solver on each scene and check them against theory, against each other and against
     /// the scene's declared expectations; print a pass/fail table; exit 1 if any check fails.
     Check {
@@ -81,6 +86,75 @@ enum Cmd {
         #[arg(long = "solver", value_parser = parse_solver)]
         solvers: Vec<SolverName>,
     },
+}
+
+#[derive(Subcommand)]
+enum LcpCmd {
+    /// Write the LCP (w = M z + q) that Lemke solves for a scene.
+    Export {
+        /// Scene file (TOML).
+        scene: PathBuf,
+        /// Output file (default: the scene's name with `.lcp.dat`).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+    /// Solve an LCP file and print the outcome; optionally write z and w as JSON.
+    Solve {
+        /// LCP file (Siconos format).
+        file: PathBuf,
+        /// `lemke` (block-revised engine) or `lemke_dense` (the reference engine).
+        #[arg(long, default_value = "lemke")]
+        solver: String,
+        /// Write {status, pivots, z, w, residuals} here.
+        #[arg(long)]
+        json: Option<PathBuf>,
+    },
+}
+
+fn lcp_cmd(cmd: LcpCmd) -> rollbem::Result<i32> {
+    use rollbem::solvers::lemke::{solve, solve_dense, LemkeSettings};
+    match cmd {
+        LcpCmd::Export { scene, out } => {
+            let s = Scene::from_file(&scene)?;
+            let lcp = rollbem::run::scene_lcp(&s, &scene)?;
+            let out = out.unwrap_or_else(|| scene.with_extension("lcp.dat"));
+            rollbem::lcp_io::write(&lcp, &out)?;
+            say!("LCP of size {} written to {}", lcp.size(), out.display());
+            Ok(0)
+        }
+        LcpCmd::Solve { file, solver, json } => {
+            let lcp = rollbem::lcp_io::read(&file)?;
+            let st = LemkeSettings::default();
+            let out = match solver.as_str() {
+                "lemke" => solve(&lcp, &st),
+                "lemke_dense" => solve_dense(&lcp, &st),
+                other => {
+                    return Err(rollbem::Error::Invalid {
+                        path: file.clone(),
+                        field: "--solver".into(),
+                        message: format!("unknown LCP solver `{other}` (expected lemke or lemke_dense)"),
+                    })
+                }
+            };
+            let n = lcp.size();
+            let zmax = out.z.iter().fold(0.0_f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
+            let wmax = out.w.iter().fold(0.0_f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
+            let comp = (0..n).map(|i| (out.w[i] * out.z[i]).abs()).fold(0.0, f64::max) / (zmax * wmax);
+            let neg_w = (-out.w.iter().cloned().fold(f64::INFINITY, f64::min)).max(0.0) / wmax;
+            say!("status {}  pivots {}  size {}", out.status, out.pivots, n);
+            say!("complementarity max|w z|/(|w| |z|) {comp:.3e}, max(0, −w)/|w| {neg_w:.3e}");
+            say!("{}", out.message);
+            if let Some(path) = json {
+                let doc = serde_json::json!({
+                    "status": out.status, "pivots": out.pivots, "message": out.message,
+                    "z": out.z, "w": out.w,
+                    "residuals": { "complementarity": comp, "negative_w": neg_w },
+                });
+                rollbem::run::write_atomic(&path, &serde_json::to_string_pretty(&doc).expect("json"))?;
+            }
+            Ok(if out.status == rollbem::solvers::Status::Solved { 0 } else { 1 })
+        }
+    }
 }
 
 fn parse_solver(s: &str) -> Result<SolverName, String> {
@@ -259,6 +333,13 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.cmd {
         Cmd::Check { scenes, solvers } => check(&scenes, &solvers),
+        Cmd::Lcp { cmd } => match lcp_cmd(cmd) {
+            Ok(code) => ExitCode::from(code as u8),
+            Err(e) => {
+                eprintln!("error: {e}");
+                ExitCode::from(e.exit_code() as u8)
+            }
+        },
         Cmd::Sweep { spec, shard, out } => {
             let out = out.unwrap_or_else(|| match &shard {
                 Some(s) => spec.with_extension(format!("shard-{}-of-{}.csv", s.k, s.n)),

@@ -225,6 +225,30 @@ struct Solution {
     shift_known: bool,
 }
 
+/// The LCP that `run_scene` hands to Lemke for this scene (for `rollbem lcp export`): frictionless, frictional
+/// (displacement, loading or mixed) or the sliding-limit problem. A scene beyond gross sliding has no LCP.
+pub fn scene_lcp(scene: &Scene, path: &Path) -> Result<crate::solvers::Lcp> {
+    let mu = scene.contact.friction;
+    let blocks = if mu > 0.0 || scene.rolling.is_some() { Blocks::All } else { Blocks::Normal };
+    let model = Model::new(scene);
+    let (flex, _) = condense(&model, blocks)?;
+    let unsupported = |message: String| Error::Unsupported { path: path.to_path_buf(), message };
+    if mu == 0.0 {
+        return Frictionless::new(scene, &model, &flex)
+            .map(|p| p.lcp)
+            .map_err(|_| unsupported("a frictionless contact carries no tangential load".into()));
+    }
+    match (scene.drive.normal(), scene.drive.tangential()) {
+        (Dof::Load(p), Dof::Load(q)) if q.abs() > mu * p * (1.0 + SLIDING_LIMIT_BAND) => {
+            Err(unsupported(format!("|Q| > μP: gross sliding, no static problem to export (μP = {:.6e})", mu * p)))
+        }
+        (Dof::Load(p), Dof::Load(q)) if q.abs() >= mu * p * (1.0 - SLIDING_LIMIT_BAND) => {
+            Ok(Frictionless::sliding_limit(scene, &model, &flex, q.signum()).lcp)
+        }
+        _ => Ok(Frictional::new(scene, &model, &flex).lcp),
+    }
+}
+
 /// Relative band around |Q| = μP treated as the sliding limit.
 const SLIDING_LIMIT_BAND: f64 = 1e-9;
 

@@ -214,7 +214,23 @@ fn random_valid_scenes_are_solved_or_refused_cleanly() {
             }
         };
         prop_assert!(!report.runs.is_empty(), "no solver ran");
-        eprintln!("CASE {}", report.runs.iter().map(|r| format!("{}={}", r.solver, r.status)).collect::<Vec<_>>().join(" "));
+        if report.runs.iter().any(|r| r.status == Status::Infeasible)
+            && report.runs.iter().any(|r| r.status == Status::Solved)
+        {
+            eprintln!(
+                "ODD {params:?}\n{}",
+                report
+                    .runs
+                    .iter()
+                    .map(|r| format!("{} {} {} {:?}", r.solver, r.status, r.message, r.residuals))
+                    .collect::<Vec<_>>()
+                    .join("\n")
+            );
+        }
+        eprintln!(
+            "CASE {}",
+            report.runs.iter().map(|r| format!("{}={}", r.solver, r.status)).collect::<Vec<_>>().join(" ")
+        );
         for run in &report.runs {
             // The five statuses are the enum's variants; match them all so a new one is noticed here.
             let solved = match run.status {
