@@ -92,6 +92,8 @@ pub struct Flexibility {
     pub system_size: usize,
     /// Ratio of the largest to the smallest |U_ii| of A's LU factors: a cheap lower bound of A's condition number.
     pub pivot_ratio: f64,
+    /// Estimated 1-norm condition number of the rearranged BEM system A ([`crate::condition`]).
+    pub system_condition: f64,
 }
 
 impl Flexibility {
@@ -223,6 +225,7 @@ pub fn solve_system(model: &Model, sys: &System) -> Result<Flexibility> {
         });
     }
     let sol = lu.solve(&sys.rhs);
+    let system_condition = crate::condition::cond1(&sys.a, &lu);
     let rows = |comp: usize, col0: usize, ncol: usize| {
         Mat::from_fn(nc, ncol, |r, c| sol[(2 * mesh.contact_nodes[r] + comp, col0 + c)])
     };
@@ -240,6 +243,7 @@ pub fn solve_system(model: &Model, sys: &System) -> Result<Flexibility> {
         weights: mesh.contact_nodes.iter().map(|&i| mesh.nodes[i].weight).collect(),
         system_size: 2 * nn,
         pivot_ratio,
+        system_condition,
     })
 }
 

@@ -34,6 +34,7 @@
 
 pub mod bem;
 pub mod condense;
+pub mod condition;
 pub mod error;
 pub mod formulation;
 pub mod hertz;

@@ -173,11 +173,17 @@ fn print_report(r: &Report) {
         r.mesh.system_size,
         r.effects.join(", ")
     );
+    let d = &r.diagnostics;
     say!(
-        "health: BEM LU pivot ratio {:.2e}, flexibility asymmetry {:.2e}",
-        r.diagnostics.bem_pivot_ratio,
-        r.diagnostics.flexibility_asymmetry
+        "health: κ₁(BEM system) ≈ {:.2e}, κ₁(K_NN) ≈ {:.2e}{}, flexibility asymmetry {:.2e}",
+        d.bem_condition,
+        d.flexibility_condition,
+        d.tangential_condition.map(|k| format!(", κ₁(K_TT) ≈ {k:.2e}")).unwrap_or_default(),
+        d.flexibility_asymmetry
     );
+    for w in &d.warnings {
+        say!("WARNING: {w}");
+    }
     if let Some(h) = &r.references.hertz {
         say!("Hertz at P = {:.6e}: a = {:.6e}, p0 = {:.6e}", h.load, h.half_width, h.peak_pressure);
     }

@@ -103,13 +103,63 @@ pub struct MeshInfo {
     pub contact_element_length: f64,
 }
 
-/// Numerical health of the condensation.
+/// Numerical health of the condensation and of the contact flexibility.
 #[derive(Debug, Clone, Serialize)]
 pub struct Diagnostics {
     /// Largest/smallest |U_ii| of the BEM system's LU (a lower bound of its condition number).
     pub bem_pivot_ratio: f64,
+    /// Estimated 1-norm condition number of the rearranged BEM system.
+    pub bem_condition: f64,
+    /// Estimated 1-norm condition number of the normal flexibility K_NN (nodal forces to gaps).
+    pub flexibility_condition: f64,
+    /// Same for the tangential block K_TT (null when the tangential problem is not built).
+    pub tangential_condition: Option<f64>,
     /// ‖K − Kᵀ‖_F / ‖K‖_F of the normal flexibility in nodal forces (collocation asymmetry).
     pub flexibility_asymmetry: f64,
+    /// Warnings when a figure above exceeds its threshold in [`crate::tolerances`].
+    pub warnings: Vec<String>,
+}
+
+fn diagnostics(flex: &Flexibility, asymmetry: f64) -> Diagnostics {
+    let n = flex.n();
+    let cond = |m: &faer::Mat<f64>| {
+        let k = faer::Mat::from_fn(n, n, |i, j| m[(i, j)] / flex.weights[j]);
+        crate::condition::cond1(&k, &k.partial_piv_lu())
+    };
+    let flexibility_condition = if n > 0 { cond(&flex.nn) } else { 0.0 };
+    let tangential_condition = flex.tt.as_ref().filter(|_| n > 0).map(cond);
+    let mut warnings = Vec::new();
+    if !(flex.system_condition <= tol::BEM_CONDITION_WARN) {
+        warnings.push(format!(
+            "the BEM system is poorly conditioned (κ₁ ≈ {:.2e} > {:.0e}): expect fewer than {} correct digits in F",
+            flex.system_condition,
+            tol::BEM_CONDITION_WARN,
+            (16.0 - flex.system_condition.log10()).max(0.0).floor()
+        ));
+    }
+    for (name, k) in [("normal", Some(flexibility_condition)), ("tangential", tangential_condition)] {
+        if let Some(k) = k.filter(|k| !(*k <= tol::FLEXIBILITY_CONDITION_WARN)) {
+            warnings.push(format!(
+                "the {name} contact flexibility is poorly conditioned (κ₁ ≈ {k:.2e} > {:.0e})",
+                tol::FLEXIBILITY_CONDITION_WARN
+            ));
+        }
+    }
+    if asymmetry > tol::ASYMMETRY_WARN {
+        warnings.push(format!(
+            "the flexibility is far from symmetric (‖K − Kᵀ‖/‖K‖ = {asymmetry:.2e} > {:.0e}): the QP and PGS solvers \
+             assume near symmetry; refine the mesh",
+            tol::ASYMMETRY_WARN
+        ));
+    }
+    Diagnostics {
+        bem_pivot_ratio: flex.pivot_ratio,
+        bem_condition: flex.system_condition,
+        flexibility_condition,
+        tangential_condition,
+        flexibility_asymmetry: asymmetry,
+        warnings,
+    }
 }
 
 /// Analytic references that apply to the scene.
@@ -474,7 +524,7 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
             contact_element_length: scene.wheel.radius * scene.mesh.contact_arc_deg.to_radians()
                 / scene.mesh.contact_elements as f64,
         },
-        diagnostics: Diagnostics { bem_pivot_ratio: flex.pivot_ratio, flexibility_asymmetry: asym },
+        diagnostics: diagnostics(&flex, asym),
         references: References { hertz },
         runs,
         checks,

@@ -46,3 +46,14 @@ pub const CATTANEO_ELEMENTS: f64 = 1.0;
 /// and | |q| − μp | above this fraction of μ p_max (a node at the stick/slip boundary to within an iterative
 /// solver's tolerance may legitimately be called either).
 pub const STATE_MARGIN: f64 = 1e-6;
+
+/// Warn when the estimated condition number of the rearranged BEM system exceeds this: with double precision the
+/// flexibility then carries fewer than about 6 correct digits (ε·κ ≈ 1e-6), the accuracy the checks demand.
+pub const BEM_CONDITION_WARN: f64 = 1e10;
+
+/// Warn when the estimated condition number of the contact flexibility (normal or tangential block) exceeds this.
+pub const FLEXIBILITY_CONDITION_WARN: f64 = 1e10;
+
+/// Warn when the relative asymmetry ‖K − Kᵀ‖/‖K‖ of the normal flexibility exceeds this: the symmetric QP solved by
+/// clarabel (before its polish) and the PGS convergence theory assume near symmetry.
+pub const ASYMMETRY_WARN: f64 = 1e-2;
