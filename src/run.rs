@@ -129,7 +129,7 @@ fn diagnostics(flex: &Flexibility, asymmetry: f64) -> Diagnostics {
     let flexibility_condition = if n > 0 { cond(&flex.nn) } else { 0.0 };
     let tangential_condition = flex.tt.as_ref().filter(|_| n > 0).map(cond);
     let mut warnings = Vec::new();
-    if !(flex.system_condition <= tol::BEM_CONDITION_WARN) {
+    if flex.system_condition.is_nan() || flex.system_condition > tol::BEM_CONDITION_WARN {
         warnings.push(format!(
             "the BEM system is poorly conditioned (κ₁ ≈ {:.2e} > {:.0e}): expect fewer than {} correct digits in F",
             flex.system_condition,
@@ -138,7 +138,7 @@ fn diagnostics(flex: &Flexibility, asymmetry: f64) -> Diagnostics {
         ));
     }
     for (name, k) in [("normal", Some(flexibility_condition)), ("tangential", tangential_condition)] {
-        if let Some(k) = k.filter(|k| !(*k <= tol::FLEXIBILITY_CONDITION_WARN)) {
+        if let Some(k) = k.filter(|k| k.is_nan() || *k > tol::FLEXIBILITY_CONDITION_WARN) {
             warnings.push(format!(
                 "the {name} contact flexibility is poorly conditioned (κ₁ ≈ {k:.2e} > {:.0e})",
                 tol::FLEXIBILITY_CONDITION_WARN
