@@ -168,6 +168,10 @@ impl Frictionless {
     }
 }
 
+/// Default slack-row signs of the frictional loading LCP, by rigid mode (shift, approach, rotation): see
+/// [`Frictional::with_signs`].
+pub const DEFAULT_SIGNS: [f64; 3] = [1.0, -1.0, 1.0];
+
 /// One load-driven rigid degree of freedom of the frictional problem: its resultant is
 /// `a_Nᵀ f + a_Tᵀ h = L` (f normal, h tangential nodal forces).
 #[derive(Debug, Clone)]
@@ -178,7 +182,7 @@ pub struct FrictionalLoad {
     pub row_n: Vec<f64>,
     /// Row on the tangential forces: 0 for P, 1 for Q, −y for M.
     pub row_t: Vec<f64>,
-    /// s_m with (R_N, R_T) column of the mode ≈ s_m (a_N, a_T): −1 for the approach, +1 otherwise.
+    /// Sign s_m of the slack rows (see [`Frictional::with_signs`]).
     pub sign: f64,
     /// Prescribed resultant (dimensionless).
     pub load: f64,
@@ -204,7 +208,8 @@ pub struct FrictionalLoad {
 /// eq. 49 (rigid-body loading approach), whose printed matrix has typos (G_N for G_Nᵀ, signs in the slack rows):
 /// the blocks here are derived, not copied, and proved by the residuals of the physical conditions.
 /// By Betti's theorem `K_NT ≈ K_TNᵀ` and `S ≈ Sᵀ`, so the f–λ coupling blocks of M are skew and M is copositive
-/// (`zᵀMz = Schur-complement and S quadratic forms + μ(λ⁺ + λ⁻)ᵀf ≥ 0`).
+/// (`zᵀMz = Schur-complement and S quadratic forms + μ(λ⁺ + λ⁻)ᵀf ≥ 0`) but not copositive-plus (see
+/// [`Frictional::with_signs`]): Lemke's ray on it is not a proof of infeasibility.
 #[derive(Debug, Clone)]
 pub struct Frictional {
     /// Friction coefficient μ.
@@ -225,6 +230,17 @@ impl Frictional {
     /// Build the frictional problem. `flex` must hold all four blocks ([`crate::condense::Blocks::All`]);
     /// with `scene.contact.coupling = false` the cross blocks are dropped (K_NT = K_TN = 0).
     pub fn new(scene: &Scene, model: &Model, flex: &Flexibility) -> Frictional {
+        Self::with_signs(scene, model, flex, DEFAULT_SIGNS)
+    }
+
+    /// Build with chosen slack-row signs `s_m` (indexed by rigid mode: shift, approach, rotation). Any signs give the
+    /// same solution set — at a solution both slacks vanish — but they change Lemke's path. No choice makes the
+    /// frictional LCP copositive-plus (with f = 0 and λ⁺ = λ⁻ one has zᵀMz = 0 but (M + Mᵀ)z = 2μλ ≠ 0), so
+    /// Lemke's success here rests on experience, not on the copositive-plus theorem: the defaults
+    /// ([`DEFAULT_SIGNS`]) are those that solved every case tried, and the caller retries the other sign patterns
+    /// when Lemke ends on a ray ([`crate::run`]). A ray is then reported as undecided unless a bound proves the drive
+    /// infeasible.
+    pub fn with_signs(scene: &Scene, model: &Model, flex: &Flexibility, signs: [f64; 3]) -> Frictional {
         let n = flex.n();
         let (l0, e) = (model.length, model.modulus);
         let mu = scene.contact.friction;
@@ -250,7 +266,7 @@ impl Frictional {
                 mode: MODE_SHIFT,
                 row_n: zeros.clone(),
                 row_t: ones.clone(),
-                sign: 1.0,
+                sign: signs[MODE_SHIFT],
                 load: q / (e * l0),
             }),
         }
@@ -260,7 +276,7 @@ impl Frictional {
                 mode: MODE_APPROACH,
                 row_n: ones.clone(),
                 row_t: zeros.clone(),
-                sign: -1.0,
+                sign: signs[MODE_APPROACH],
                 load: p / (e * l0),
             }),
         }
@@ -270,7 +286,7 @@ impl Frictional {
                 mode: MODE_ROTATION,
                 row_n: flex.x.clone(),
                 row_t: flex.y.iter().map(|y| -y).collect(),
-                sign: 1.0,
+                sign: signs[MODE_ROTATION],
                 load: m / (e * l0 * l0),
             }),
         }

