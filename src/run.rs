@@ -145,7 +145,7 @@ fn diagnostics(flex: &Flexibility, asymmetry: f64) -> Diagnostics {
             ));
         }
     }
-    if let Some(i) = (0..n).find(|&i| !(flex.nn[(i, i)] > 0.0)) {
+    if let Some(i) = (0..n).find(|&i| flex.nn[(i, i)].is_nan() || flex.nn[(i, i)] <= 0.0) {
         warnings.push(format!(
             "the normal flexibility is not positive definite (non-positive diagonal at contact node {i}): the mesh is \
              too coarse or distorted to represent the wheel; refine other_elements / contact_elements"

@@ -136,7 +136,7 @@ pub fn pgs_box(
 /// Gauss–Seidel needs a positive diagonal; a collocation flexibility on a very coarse or distorted mesh can lack
 /// one (it is only nearly symmetric positive definite).
 fn check_diagonal(k: &[f64], n: usize, which: &str) -> Result<(), Failure> {
-    match (0..n).find(|&i| !(k[i * n + i] > 0.0)) {
+    match (0..n).find(|&i| k[i * n + i].is_nan() || k[i * n + i] <= 0.0) {
         Some(i) => Err(Failure(
             Status::NumericalError,
             format!(
