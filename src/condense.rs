@@ -115,6 +115,39 @@ struct CondSink<'a> {
 }
 
 impl BlockSink for CondSink<'_> {
+    fn add_column(&mut self, col: usize, blocks: &[crate::bem::Block]) {
+        let node = self.mesh.nodes[col];
+        let nr = 2 * blocks.len();
+        match node.bc {
+            Bc::Support => {
+                for (i, (h, g)) in blocks.iter().enumerate() {
+                    self.add(i, col, h, g);
+                }
+            }
+            Bc::Free | Bc::Contact => {
+                for m in 0..2 {
+                    let a = self.a.col_mut(2 * col + m).try_as_col_major_mut().expect("contiguous").as_slice_mut();
+                    for (i, (h, _)) in blocks.iter().enumerate() {
+                        a[2 * i] += h[0][m];
+                        a[2 * i + 1] += h[1][m];
+                    }
+                }
+                if node.bc == Bc::Contact {
+                    let c = self.contact_index[col].expect("contact node has an index");
+                    let targets = [Some((c, 1usize)), self.store_tx.then_some((self.n_contact + c, 0usize))];
+                    for (rc, comp) in targets.into_iter().flatten() {
+                        let r = self.rhs.col_mut(rc).try_as_col_major_mut().expect("contiguous").as_slice_mut();
+                        debug_assert_eq!(r.len(), nr);
+                        for (i, (_, g)) in blocks.iter().enumerate() {
+                            r[2 * i] += g[0][comp];
+                            r[2 * i + 1] += g[1][comp];
+                        }
+                    }
+                }
+            }
+        }
+    }
+
     #[inline]
     fn add(&mut self, row: usize, col: usize, h: &[[f64; 2]; 2], g: &[[f64; 2]; 2]) {
         let node = &self.mesh.nodes[col];

@@ -21,7 +21,18 @@ use kelvin::Kelvin;
 pub trait BlockSink {
     /// Add one pair of 2×2 blocks.
     fn add(&mut self, row: usize, col: usize, h: &[[f64; 2]; 2], g: &[[f64; 2]; 2]);
+
+    /// Add a whole block column: `blocks[row]` for every source node `row` (default: one `add` per block; a sink
+    /// writing into a column-major matrix can do better).
+    fn add_column(&mut self, col: usize, blocks: &[Block]) {
+        for (row, (h, g)) in blocks.iter().enumerate() {
+            self.add(row, col, h, g);
+        }
+    }
 }
+
+/// A pair of 2×2 blocks (h, g).
+pub type Block = ([[f64; 2]; 2], [[f64; 2]; 2]);
 
 /// Assemble H and G of `mesh` for the material `k` (in the mesh's units), delivering blocks to `sink`.
 pub fn assemble<S: BlockSink>(mesh: &Mesh, k: &Kelvin, sink: &mut S) {
@@ -83,6 +94,7 @@ fn assemble_straight<S: BlockSink>(mesh: &Mesh, k: &Kelvin, sink: &mut S) {
     let zero = [[0.0; 2]; 2];
     let mut hsum = vec![[[0.0; 2]; 2]; nodes.len()];
     let (mut la, mut lb) = (Vec::new(), Vec::new());
+    let mut col: Vec<Block> = vec![(zero, zero); nodes.len()];
     for (e, el) in els.iter().enumerate() {
         // ln r² at the start vertex: the previous element's end vertex when they coincide bit for bit.
         if e > 0 && els[e - 1].b == el.a {
@@ -92,15 +104,15 @@ fn assemble_straight<S: BlockSink>(mesh: &Mesh, k: &Kelvin, sink: &mut S) {
         }
         ln_r2(el.b, &mut lb);
         let j = mesh.elements[e].first_node;
-        for (i, src) in nodes.iter().enumerate() {
+        for (i, (src, c)) in nodes.iter().zip(col.iter_mut()).enumerate() {
             if src.element == e {
-                sink.add(i, j, &zero, &el.self_g(k));
+                *c = (zero, el.self_g(k));
                 continue;
             }
-            let (h, g) = el.integrate(src.pos, la[i], lb[i], k);
-            acc(&mut hsum[i], &h);
-            sink.add(i, j, &h, &g);
+            *c = el.integrate(src.pos, la[i], lb[i], k);
+            acc(&mut hsum[i], &c.0);
         }
+        sink.add_column(j, &col);
     }
     for (i, hs) in hsum.iter().enumerate() {
         let diag = [[-hs[0][0], -hs[0][1]], [-hs[1][0], -hs[1][1]]];
