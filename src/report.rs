@@ -337,7 +337,7 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
          solvers (Lemke, clarabel with polish) are exact to round-off on the discrete problem; PGS at tolerance τ \
          adds an error of order τ. An error against theory mixes discretisation, the finite wheel's departure from \
          the half-space, and solver error: a loose PGS tolerance can land closer to Hertz by chance, not by merit — \
-         read solver error against Lemke (solver comparison below). Timings are medians of nothing: single runs, \
+         read solver error against Lemke (solver comparison below). Times here are single runs, with \
          cases in parallel on 2 vCPUs; criterion benchmarks (`cargo bench`) give the stable figures. A configuration \
          enters a Pareto front only if it lowers the error by at least 2 %.\n"
     )
