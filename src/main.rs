@@ -335,16 +335,19 @@ fn check(scenes: &[PathBuf], solvers: &[SolverName]) -> ExitCode {
     ExitCode::from(code)
 }
 
+/// Print an error and turn it into the process exit code.
+fn fail(e: &rollbem::Error) -> ExitCode {
+    eprintln!("error: {e}");
+    ExitCode::from(e.exit_code() as u8)
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.cmd {
         Cmd::Check { scenes, solvers } => check(&scenes, &solvers),
         Cmd::Lcp { cmd } => match lcp_cmd(cmd) {
             Ok(code) => ExitCode::from(code as u8),
-            Err(e) => {
-                eprintln!("error: {e}");
-                ExitCode::from(e.exit_code() as u8)
-            }
+            Err(e) => fail(&e),
         },
         Cmd::Sweep { spec, shard, out } => {
             let out = out.unwrap_or_else(|| match &shard {
@@ -356,10 +359,7 @@ fn main() -> ExitCode {
                     say!("{rows} rows written to {}", out.display());
                     ExitCode::SUCCESS
                 }
-                Err(e) => {
-                    eprintln!("error: {e}");
-                    ExitCode::from(e.exit_code() as u8)
-                }
+                Err(e) => fail(&e),
             }
         }
         Cmd::SweepMerge { out, inputs } => match rollbem::sweep::merge(&inputs, &out) {
@@ -367,10 +367,7 @@ fn main() -> ExitCode {
                 say!("{rows} rows written to {}", out.display());
                 ExitCode::SUCCESS
             }
-            Err(e) => {
-                eprintln!("error: {e}");
-                ExitCode::from(e.exit_code() as u8)
-            }
+            Err(e) => fail(&e),
         },
         Cmd::Report { reference, out } => {
             let opts = rollbem::report::ReportOptions { reference, out, progress: true };
@@ -379,10 +376,7 @@ fn main() -> ExitCode {
                     say!("report written: {}", path.display());
                     ExitCode::SUCCESS
                 }
-                Err(e) => {
-                    eprintln!("error: {e}");
-                    ExitCode::from(e.exit_code() as u8)
-                }
+                Err(e) => fail(&e),
             }
         }
         Cmd::Run { scenes, json, out_dir, solvers } => {

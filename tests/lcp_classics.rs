@@ -282,32 +282,11 @@ fn textbook_lemke(p: &Lcp, d: &[f64]) -> (bool, Vec<f64>, usize) {
     }
 }
 
-/// The row factors D_r of the Ruiz equilibration in `src/solvers/lemke.rs` (8 sweeps, each dividing every row and
-/// column by the square root of its largest scaled entry), replicated so that the engines' pivot counts can be
-/// compared with textbook Lemke on the covering vector they effectively use, d = D_r⁻¹e
+/// The row factors D_r of the Ruiz equilibration both engines use (`rollbem::solvers::lemke::equilibrate`), so that
+/// their pivot counts can be compared with textbook Lemke on the covering vector they effectively use, d = D_r⁻¹e
 /// (`D_r w = D_r M D_c z' + D_r q + e z₀` is `w = M z + q + D_r⁻¹e z₀`).
 fn ruiz_rows(m: &Mat<f64>) -> Vec<f64> {
-    let n = m.nrows();
-    let (mut dr, mut dc) = (vec![1.0; n], vec![1.0; n]);
-    for _ in 0..8 {
-        let (mut rmax, mut cmax) = (vec![0.0_f64; n], vec![0.0_f64; n]);
-        for j in 0..n {
-            for i in 0..n {
-                let v = (dr[i] * m[(i, j)] * dc[j]).abs();
-                rmax[i] = rmax[i].max(v);
-                cmax[j] = cmax[j].max(v);
-            }
-        }
-        for i in 0..n {
-            if rmax[i] > 0.0 {
-                dr[i] /= rmax[i].sqrt();
-            }
-            if cmax[i] > 0.0 {
-                dc[i] /= cmax[i].sqrt();
-            }
-        }
-    }
-    dr
+    rollbem::solvers::lemke::equilibrate(m).0
 }
 
 /// Small deterministic generator (SplitMix64), so that the "random" problems are fixed.

@@ -12,10 +12,10 @@
 //! the detected free set and keeps it if every bound and sign condition holds (else the interior-point answer is
 //! kept and `polished = false`). The harness reports the polish's effect.
 
-use super::clarabel_qp::{QpSettings, QpStatus};
+use super::clarabel_qp::{clarabel_settings, map_status, QpSettings, QpStatus};
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{
-    DefaultSettingsBuilder, DefaultSolver, IPSolver, SolverStatus,
+    DefaultSolver, IPSolver,
     SupportedConeT::{NonnegativeConeT, ZeroConeT},
 };
 use faer::linalg::solvers::Solve;
@@ -118,18 +118,9 @@ pub fn solve_box(
         cones.push(ZeroConeT(1));
     }
     cones.push(NonnegativeConeT(2 * n));
-    let settings = match DefaultSettingsBuilder::default()
-        .verbose(false)
-        .max_iter(s.max_iter)
-        .tol_gap_abs(s.tolerance)
-        .tol_gap_rel(s.tolerance)
-        .tol_feas(s.tolerance)
-        .tol_ktratio(1e-10)
-        .static_regularization_constant(1e-12)
-        .build()
-    {
+    let settings = match clarabel_settings(s) {
         Ok(st) => st,
-        Err(e) => return fail(QpStatus::NumericalError(format!("clarabel settings: {e}"))),
+        Err(e) => return fail(QpStatus::NumericalError(e)),
     };
     let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
         let mut solver = DefaultSolver::new(&p, &q, &amat, &b, &cones, settings).map_err(|e| format!("{e}"))?;
@@ -142,16 +133,7 @@ pub fn solve_box(
         Ok(Err(m)) => return fail(QpStatus::NumericalError(format!("clarabel setup: {m}"))),
         Err(_) => return fail(QpStatus::NumericalError("clarabel panicked".into())),
     };
-    let status = match st {
-        SolverStatus::Solved => QpStatus::Solved,
-        SolverStatus::AlmostSolved => QpStatus::AlmostSolved,
-        SolverStatus::MaxIterations | SolverStatus::MaxTime => QpStatus::MaxIterations,
-        SolverStatus::PrimalInfeasible
-        | SolverStatus::DualInfeasible
-        | SolverStatus::AlmostPrimalInfeasible
-        | SolverStatus::AlmostDualInfeasible => QpStatus::Infeasible,
-        other => QpStatus::NumericalError(format!("clarabel status {other:?}")),
-    };
+    let status = map_status(st);
     let xs: Vec<f64> = (0..n).map(|i| (alpha * x[i]).clamp(lo[i], hi[i])).collect();
     // KKT: K x + c + Aᵀ z = 0 with A's equality row a/amax: ν = z_eq · γ / (α amax) in the unscaled gradient.
     let nu = eq.map(|_| z[0] * gamma / (alpha * amax));

@@ -249,18 +249,9 @@ pub fn solve_frictionless(k: &[f64], n: usize, c: &[f64], load: Option<(&[f64], 
         cones.push(ZeroConeT(1));
     }
 
-    let settings = match DefaultSettingsBuilder::default()
-        .verbose(false)
-        .max_iter(s.max_iter)
-        .tol_gap_abs(s.tolerance)
-        .tol_gap_rel(s.tolerance)
-        .tol_feas(s.tolerance)
-        .tol_ktratio(1e-10)
-        .static_regularization_constant(STATIC_REGULARIZATION)
-        .build()
-    {
+    let settings = match clarabel_settings(s) {
         Ok(st) => st,
-        Err(e) => return QpOutcome::failed(n, QpStatus::NumericalError(format!("clarabel settings: {e}"))),
+        Err(e) => return QpOutcome::failed(n, QpStatus::NumericalError(e)),
     };
 
     // Clarabel should not panic on valid finite data; guard anyway so callers never see one.
@@ -277,16 +268,7 @@ pub fn solve_frictionless(k: &[f64], n: usize, c: &[f64], load: Option<(&[f64], 
         Err(_) => return QpOutcome::failed(n, QpStatus::NumericalError("clarabel panicked".into())),
     };
 
-    let status = match cl_status {
-        SolverStatus::Solved => QpStatus::Solved,
-        SolverStatus::AlmostSolved => QpStatus::AlmostSolved,
-        SolverStatus::MaxIterations | SolverStatus::MaxTime => QpStatus::MaxIterations,
-        SolverStatus::PrimalInfeasible
-        | SolverStatus::DualInfeasible
-        | SolverStatus::AlmostPrimalInfeasible
-        | SolverStatus::AlmostDualInfeasible => QpStatus::Infeasible,
-        other => QpStatus::NumericalError(format!("clarabel status {other:?}")),
-    };
+    let status = map_status(cl_status);
 
     // Unscale. f >= 0 is enforced only up to the interior-point tolerance: clip round-off.
     let f_unpolished: Vec<f64> = x.iter().map(|&v| alpha * v.max(0.0)).collect();
@@ -431,6 +413,35 @@ fn solve_active(p: &Scaled<'_>, idx: &[usize]) -> Option<(Vec<f64>, f64)> {
     }
     let d_hat = if p.load.is_some() { v[ms] } else { 0.0 };
     Some((v[..ms].to_vec(), d_hat))
+}
+
+/// clarabel's status as a [`QpStatus`] (shared by the QP wrappers).
+pub(crate) fn map_status(st: SolverStatus) -> QpStatus {
+    match st {
+        SolverStatus::Solved => QpStatus::Solved,
+        SolverStatus::AlmostSolved => QpStatus::AlmostSolved,
+        SolverStatus::MaxIterations | SolverStatus::MaxTime => QpStatus::MaxIterations,
+        SolverStatus::PrimalInfeasible
+        | SolverStatus::DualInfeasible
+        | SolverStatus::AlmostPrimalInfeasible
+        | SolverStatus::AlmostDualInfeasible => QpStatus::Infeasible,
+        other => QpStatus::NumericalError(format!("clarabel status {other:?}")),
+    }
+}
+
+/// clarabel settings for verification-grade answers (shared by the QP wrappers): tolerances from `s`, quiet, and
+/// the static regularisation that avoids stalls on log-kernel flexibilities (see [`STATIC_REGULARIZATION`]).
+pub(crate) fn clarabel_settings(s: &QpSettings) -> Result<clarabel::solver::DefaultSettings<f64>, String> {
+    DefaultSettingsBuilder::default()
+        .verbose(false)
+        .max_iter(s.max_iter)
+        .tol_gap_abs(s.tolerance)
+        .tol_gap_rel(s.tolerance)
+        .tol_feas(s.tolerance)
+        .tol_ktratio(1e-10)
+        .static_regularization_constant(STATIC_REGULARIZATION)
+        .build()
+        .map_err(|e| format!("clarabel settings: {e}"))
 }
 
 #[cfg(test)]

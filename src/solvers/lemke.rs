@@ -65,8 +65,9 @@ enum Var {
     Z0,
 }
 
-/// Ruiz equilibration: returns (D_r, D_c) with max |D_r M D_c| ≈ 1 in every nonzero row and column.
-fn equilibrate(m: &Mat<f64>) -> (Vec<f64>, Vec<f64>) {
+/// Ruiz equilibration (8 sweeps): returns (D_r, D_c) with max |D_r M D_c| ≈ 1 in every nonzero row and column.
+/// Both Lemke engines pivot on `D_r M D_c`; with covering vector e this is Lemke on M with covering vector D_r⁻¹e.
+pub fn equilibrate(m: &Mat<f64>) -> (Vec<f64>, Vec<f64>) {
     let n = m.nrows();
     let mut dr = vec![1.0; n];
     let mut dc = vec![1.0; n];
