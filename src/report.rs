@@ -421,6 +421,21 @@ fn seed_figures(reports: &BTreeMap<String, Report>, dir: &Path) -> Result<Vec<(S
         let mut any = false;
         for (k, (name, label)) in members.iter().enumerate() {
             let Some(l) = lemke_of(reports, name) else { continue };
+            if !any {
+                // Hertz's pressure at this scene's load, the analytic curve the seed compares its tractions with.
+                let sc = &reports[*name].scene;
+                if let Some(res) = l.resultants.filter(|r| r.normal > 0.0) {
+                    let w = &sc.wheel;
+                    let h = crate::hertz::Hertz::new(w.radius, w.youngs_modulus, w.poisson_ratio, res.normal);
+                    let xs: Vec<f64> =
+                        (0..=200).map(|i| -1.5 * h.half_width + 3.0 * h.half_width * i as f64 / 200.0).collect();
+                    tr = tr.add(Series::new(
+                        format!("Hertz p at P = {:.4e}", res.normal),
+                        xs.iter().map(|&x| (x, h.pressure(x))).collect(),
+                        Style::Dashed,
+                    ));
+                }
+            }
             any = true;
             if k == 0 || gi > 0 {
                 tr = tr.add(Series::new(

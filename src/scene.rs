@@ -11,6 +11,10 @@ use crate::error::{Error, Result};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
+/// Largest number of boundary nodes (collocation points) a scene may have: the dense BEM system (2N)² and its LU
+/// then need about 2 GiB.
+pub const MAX_NODES: usize = 8000;
+
 /// A whole scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -411,8 +415,27 @@ impl Scene {
         if m.other_elements < 4 {
             return Err(bad("mesh.other_elements", format!("must be at least 4 (got {})", m.other_elements)));
         }
-        if m.contact_elements + m.other_elements > 20_000 {
-            return Err(bad("mesh", "more than 20000 elements: the dense BEM system would not fit in memory".into()));
+        // The dense BEM system holds (2N)² doubles for N nodes (plus its LU copy): bound N so that it fits in a few
+        // GiB instead of failing to allocate (an abort, not an error).
+        let per = match m.element {
+            ElementKind::Constant => 1,
+            ElementKind::Quadratic => 3,
+        };
+        let outer_nodes = m.contact_elements.saturating_add(m.other_elements).saturating_mul(per);
+        let hub_nodes = match w.support {
+            Support::Hub { radius } => ((outer_nodes as f64) * radius / w.radius).ceil() as usize + 12 * per,
+            Support::TopArc { .. } => 0,
+        };
+        let nodes = outer_nodes.saturating_add(hub_nodes);
+        if nodes > MAX_NODES {
+            let gib = (2.0 * nodes as f64).powi(2) * 8.0 * 2.0 / (1u64 << 30) as f64;
+            return Err(bad(
+                "mesh",
+                format!(
+                    "about {nodes} boundary nodes: the dense BEM system and its LU would need about {gib:.1} GiB; \
+                     rollbem allows at most {MAX_NODES} nodes (use fewer elements, or constant elements)"
+                ),
+            ));
         }
         let mu = self.contact.friction;
         if !mu.is_finite() || mu < 0.0 {

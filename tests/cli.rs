@@ -104,6 +104,7 @@ fn bad_cases() -> Vec<(&'static str, String, &'static str)> {
         ("unknown support", r("kind = \"top_arc\"", "kind = \"axle\""), "axle"),
         ("negative load", r("normal_load = 749.70", "normal_load = -5.0"), "drive.normal_load"),
         ("infinite approach", r("normal_load = 749.70", "normal_approach = inf"), "drive.normal_approach"),
+        ("mesh too large for memory", r("other_elements = 32", "other_elements = 9000"), "GiB"),
     ]
 }
 
