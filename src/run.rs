@@ -284,30 +284,61 @@ struct Solution {
 /// The LCP that `run_scene` hands to Lemke for this scene (for `rollbem lcp export`): frictionless, frictional
 /// (displacement, loading or mixed) or the sliding-limit problem. A scene beyond gross sliding has no LCP.
 pub fn scene_lcp(scene: &Scene, path: &Path) -> Result<crate::solvers::Lcp> {
-    let mu = scene.contact.friction;
-    let blocks = if mu > 0.0 || scene.rolling.is_some() { Blocks::All } else { Blocks::Normal };
     let model = Model::new(scene);
-    let (flex, _) = condense(&model, blocks)?;
-    let unsupported = |message: String| Error::Unsupported { path: path.to_path_buf(), message };
-    if mu == 0.0 {
-        return Frictionless::new(scene, &model, &flex)
-            .map(|p| p.lcp)
-            .map_err(|_| unsupported("a frictionless contact carries no tangential load".into()));
-    }
-    match (scene.drive.normal(), scene.drive.tangential()) {
-        (Dof::Load(p), Dof::Load(q)) if q.abs() > mu * p * (1.0 + SLIDING_LIMIT_BAND) => {
-            Err(unsupported(format!("|Q| > μP: gross sliding, no static problem to export (μP = {:.6e})", mu * p)))
+    let (flex, _) = condense(&model, blocks_for(scene))?;
+    match build_problem(scene, &model, &flex, path)? {
+        Problem::Frictionless(p) | Problem::SlidingLimit(p, _) => Ok(p.lcp),
+        Problem::GrossSliding(msg) => {
+            Err(Error::Unsupported { path: path.to_path_buf(), message: format!("no static problem to export: {msg}") })
         }
-        (Dof::Load(p), Dof::Load(q)) if q.abs() >= mu * p * (1.0 - SLIDING_LIMIT_BAND) => {
-            Ok(Frictionless::sliding_limit(scene, &model, &flex, q.signum()).lcp)
-        }
-        _ => {
+        Problem::Frictional(p) => {
             // The LCP Lemke actually solves: with the slack signs of the attempt that succeeded.
-            let p = Frictional::new(scene, &model, &flex);
             let (solved_by, _) = lemke_frictional(scene, &model, &flex, &p);
             Ok(solved_by.unwrap_or(p).lcp)
         }
     }
+}
+
+/// Which flexibility blocks the scene needs: the tangential columns only with friction or rolling.
+fn blocks_for(scene: &Scene) -> Blocks {
+    if scene.contact.friction > 0.0 || scene.rolling.is_some() {
+        Blocks::All
+    } else {
+        Blocks::Normal
+    }
+}
+
+/// Choose and build the scene's formulation (shared by `run_scene` and `scene_lcp`).
+fn build_problem(scene: &Scene, model: &Model, flex: &Flexibility, path: &Path) -> Result<Problem> {
+    let mu = scene.contact.friction;
+    if mu == 0.0 {
+        return Ok(Problem::Frictionless(Frictionless::new(scene, model, flex).map_err(|issue| {
+            Error::Unsupported {
+                path: path.to_path_buf(),
+                message: match issue {
+                    DriveIssue::TangentialLoadWithoutFriction(q) => format!(
+                        "drive.tangential_load = {q}: a frictionless contact carries no tangential load (gross \
+                         sliding); use tangential_load = 0 or friction > 0"
+                    ),
+                    DriveIssue::MomentLoad => "a prescribed moment is not carried by this formulation".into(),
+                },
+            }
+        })?));
+    }
+    Ok(match (scene.drive.normal(), scene.drive.tangential()) {
+        (Dof::Load(p), Dof::Load(q)) if q.abs() > mu * p * (1.0 + SLIDING_LIMIT_BAND) => {
+            Problem::GrossSliding(format!(
+                "gross sliding: the tangential load |Q| = {:.6e} exceeds the friction limit μP = {:.6e} (μ = {mu}, \
+             P = {p:.6e}); no static solution exists",
+                q.abs(),
+                mu * p
+            ))
+        }
+        (Dof::Load(p), Dof::Load(q)) if q.abs() >= mu * p * (1.0 - SLIDING_LIMIT_BAND) => {
+            Problem::SlidingLimit(Frictionless::sliding_limit(scene, model, flex, q.signum()), q.signum())
+        }
+        _ => Problem::Frictional(Frictional::new(scene, model, flex)),
+    })
 }
 
 /// Relative band around |Q| = μP treated as the sliding limit.
@@ -328,38 +359,11 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
         effects.push("rolling".into());
     }
     // Only what the scene calls for: the tangential columns of F are condensed only with friction or rolling.
-    let blocks = if frictional || scene.rolling.is_some() { Blocks::All } else { Blocks::Normal };
     let model = Model::new(scene);
-    let (flex, bem_t) = condense(&model, blocks)?;
+    let (flex, bem_t) = condense(&model, blocks_for(scene))?;
 
     let tf = Instant::now();
-    let problem = if !frictional {
-        Problem::Frictionless(Frictionless::new(scene, &model, &flex).map_err(|issue| Error::Unsupported {
-            path: path.to_path_buf(),
-            message: match issue {
-                DriveIssue::TangentialLoadWithoutFriction(q) => format!(
-                    "drive.tangential_load = {q}: a frictionless contact carries no tangential load (gross \
-                         sliding); use tangential_load = 0 or friction > 0"
-                ),
-                DriveIssue::MomentLoad => "a prescribed moment is not carried by this formulation".into(),
-            },
-        })?)
-    } else {
-        match (scene.drive.normal(), scene.drive.tangential()) {
-            (Dof::Load(p), Dof::Load(q)) if q.abs() > mu * p * (1.0 + SLIDING_LIMIT_BAND) => {
-                Problem::GrossSliding(format!(
-                "gross sliding: the tangential load |Q| = {:.6e} exceeds the friction limit μP = {:.6e} (μ = {mu}, \
-                 P = {p:.6e}); no static solution exists",
-                q.abs(),
-                mu * p
-            ))
-            }
-            (Dof::Load(p), Dof::Load(q)) if q.abs() >= mu * p * (1.0 - SLIDING_LIMIT_BAND) => {
-                Problem::SlidingLimit(Frictionless::sliding_limit(scene, &model, &flex, q.signum()), q.signum())
-            }
-            _ => Problem::Frictional(Frictional::new(scene, &model, &flex)),
-        }
-    };
+    let problem = build_problem(scene, &model, &flex, path)?;
     let formulation_time = tf.elapsed().as_secs_f64();
     let moment_load = matches!(scene.drive.rotational(), Dof::Load(_));
     let (formulation, problem_size, asym) = match &problem {
