@@ -12,12 +12,13 @@
 //! Run one group with e.g. `cargo bench --bench pipeline -- assembly --quick`.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
-use rollbem::condense::{assemble_system, condense, solve_system, Blocks, Model};
-use rollbem::formulation::{Frictional, Frictionless};
-use rollbem::run::run_scene;
-use rollbem::scene::{ElementKind, Scene, SolverName};
+use rollbem::formulation::lcp::frictional_lcp;
+use rollbem::run::{build_problem, run_scene};
+use rollbem::scene::{ElementKind, Scene};
 use rollbem::solvers::clarabel_qp::{self, QpSettings};
 use rollbem::solvers::lemke::{self, LemkeSettings};
+use rollbem::source::bem_wheel::{assemble_system, condense, solve_system, Model};
+use rollbem::source::Blocks;
 use std::hint::black_box;
 use std::path::Path;
 
@@ -41,7 +42,7 @@ fn scene_with(n: usize, kind: ElementKind) -> Scene {
 fn end_to_end(c: &mut Criterion) {
     faer::set_global_parallelism(faer::Par::Seq);
     let mut s = seed_scene();
-    s.solvers.use_ = vec![SolverName::Lemke];
+    s.solvers.use_ = vec!["lemke".into()];
     let p = Path::new("seed");
     c.bench_function("seed_end_to_end/lemke", |b| b.iter(|| black_box(run_scene(&s, p).unwrap())));
 }
@@ -86,25 +87,20 @@ fn frictionless_solve(c: &mut Criterion) {
     g.sample_size(10);
     for n in [56, 250, 1000] {
         let s = scene_with(n, ElementKind::Constant);
-        let model = Model::new(&s);
-        let (flex, _) = condense(&model, Blocks::Normal).unwrap();
-        let prob = Frictionless::new(&s, &model, &flex).unwrap();
+        let (flex, _, _) = condense(&Model::new(&s), Blocks::Normal).unwrap();
+        let prob = build_problem(&s, &flex, Path::new("bench")).unwrap();
         let nc = flex.n();
-        g.bench_with_input(BenchmarkId::new("lemke", nc), &prob, |b, p| {
-            b.iter(|| black_box(lemke::solve(&p.lcp, &LemkeSettings::default())))
+        let lcp = prob.lcp.clone().unwrap();
+        g.bench_with_input(BenchmarkId::new("lemke", nc), &lcp, |b, l| {
+            b.iter(|| black_box(lemke::solve(l, &LemkeSettings::default())))
         });
-        let kcol: Vec<f64> = (0..nc * nc).map(|i| prob.k[(i % nc, i / nc)]).collect();
+        let np = prob.normal.as_ref().unwrap();
+        let kcol: Vec<f64> = (0..nc * nc).map(|i| np.k[(i % nc, i / nc)]).collect();
         let ones = vec![1.0; nc];
-        let load = prob.loads[0].load;
-        g.bench_with_input(BenchmarkId::new("clarabel", nc), &prob, |b, p| {
+        let load = prob.load_dofs().next().unwrap().drive.load().unwrap();
+        g.bench_with_input(BenchmarkId::new("clarabel", nc), &np.q0, |b, q0| {
             b.iter(|| {
-                black_box(clarabel_qp::solve_frictionless(
-                    &kcol,
-                    nc,
-                    &p.q0,
-                    Some((&ones, load)),
-                    &QpSettings::default(),
-                ))
+                black_box(clarabel_qp::solve_frictionless(&kcol, nc, q0, Some((&ones, load)), &QpSettings::default()))
             })
         });
     }
@@ -128,18 +124,17 @@ fn lemke_frictional(c: &mut Criterion) {
         s.drive.normal_load = Some(187.42);
         s.drive.tangential_load = Some(18.742);
         s.drive.rotation = Some(0.0);
-        let model = Model::new(&s);
-        let (flex, _) = condense(&model, Blocks::All).unwrap();
-        let prob = Frictional::new(&s, &model, &flex);
-        let m = prob.lcp.size();
-        let probe = lemke::solve(&prob.lcp, &LemkeSettings::default());
+        let (flex, _, _) = condense(&Model::new(&s), Blocks::All).unwrap();
+        let lcp = build_problem(&s, &flex, Path::new("bench")).unwrap().lcp.unwrap();
+        let m = lcp.size();
+        let probe = lemke::solve(&lcp, &LemkeSettings::default());
         eprintln!("lemke_frictional/block/{m}: {} pivots, {:?}", probe.pivots, probe.status);
-        g.bench_with_input(BenchmarkId::new("block", m), &prob, |b, p| {
-            b.iter(|| black_box(lemke::solve(&p.lcp, &LemkeSettings::default())))
+        g.bench_with_input(BenchmarkId::new("block", m), &lcp, |b, l| {
+            b.iter(|| black_box(lemke::solve(l, &LemkeSettings::default())))
         });
         if n <= 200 {
-            g.bench_with_input(BenchmarkId::new("dense", m), &prob, |b, p| {
-                b.iter(|| black_box(lemke::solve_dense(&p.lcp, &LemkeSettings::default())))
+            g.bench_with_input(BenchmarkId::new("dense", m), &lcp, |b, l| {
+                b.iter(|| black_box(rollbem::solvers::lemke::dense::solve_dense(l, &LemkeSettings::default())))
             });
         }
     }
@@ -158,12 +153,13 @@ fn formulation_and_normtang(c: &mut Criterion) {
         s.contact.coupling = true;
         s.wheel.poisson_ratio = 0.45;
         s.mesh.contact_elements = n;
-        let model = Model::new(&s);
-        let (flex, _) = condense(&model, Blocks::All).unwrap();
-        g.bench_with_input(BenchmarkId::new("frictional_lcp", n), &flex, |b, f| {
-            b.iter(|| black_box(Frictional::new(&s, &model, f)))
+        let (flex, _, _) = condense(&Model::new(&s), Blocks::All).unwrap();
+        let prob = build_problem(&s, &flex, Path::new("bench")).unwrap();
+        let signs: Vec<f64> = prob.load_dofs().map(|d| d.default_sign()).collect();
+        g.bench_with_input(BenchmarkId::new("frictional_lcp", n), &prob, |b, p| {
+            b.iter(|| black_box(frictional_lcp(p, &signs)))
         });
-        let split = rollbem::formulation::Split::new(&s, &model, &flex).unwrap();
+        let split = rollbem::solvers::normtang::Split::from_problem(&prob);
         let pgs = rollbem::solvers::normtang::Inner::Pgs(Default::default());
         let qp = rollbem::solvers::normtang::Inner::Qp(Default::default());
         g.bench_with_input(BenchmarkId::new("pgs", n), &split, |b, sp| {

@@ -48,6 +48,14 @@ pub enum Error {
         /// The I/O error.
         source: std::io::Error,
     },
+    /// An output (a plot, a table of a report) could not be produced from its inputs.
+    #[error("cannot produce {what}: {message}")]
+    Output {
+        /// What was being produced, e.g. `reports/figures/x.svg`.
+        what: String,
+        /// Why.
+        message: String,
+    },
     /// The BEM system is singular or not finite (a degenerate mesh or support).
     #[error("numerical failure in {stage}: {message}")]
     Numerical {
@@ -59,11 +67,12 @@ pub enum Error {
 }
 
 impl Error {
-    /// Process exit code for this error: 2 for bad input (the user's to fix), 3 for I/O, 4 for numerical failure.
+    /// Process exit code for this error: 2 for bad input (the user's to fix), 3 for an output that could not be
+    /// written or produced, 4 for numerical failure of the BEM system.
     pub fn exit_code(&self) -> i32 {
         match self {
             Error::Io { .. } | Error::Parse { .. } | Error::Invalid { .. } | Error::Unsupported { .. } => 2,
-            Error::Write { .. } => 3,
+            Error::Write { .. } | Error::Output { .. } => 3,
             Error::Numerical { .. } => 4,
         }
     }

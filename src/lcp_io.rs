@@ -114,7 +114,7 @@ pub fn parse_with_remark(text: &str, path: &Path) -> Result<(Lcp, String)> {
 
 /// Write in the same format, full round-trip precision, atomically (a temporary file renamed into place).
 pub fn write(lcp: &Lcp, path: &Path) -> Result<()> {
-    crate::run::write_atomic(path, &to_string(lcp))
+    crate::io::write_atomic(path, &to_string(lcp))
 }
 
 /// The file text of an LCP: Siconos' dense layout, one column of M per line, then q; every number in Rust's

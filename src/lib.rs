@@ -18,9 +18,11 @@
 //! or, as a QP, by the clarabel interior-point solver.
 //!
 //! ## Pipeline (one module per stage)
-//! [`scene`] → [`mesh`] → [`bem`] (assembly) → [`condense`] (flexibility) → [`formulation`] (LCP / QP) →
-//! [`solvers`] → [`post`] (residuals, resultants, states) → [`run`] (checks against [`hertz`] and between solvers,
-//! JSON report).
+//! [`scene`] → [`source`] (the flexibility: [`mesh`] → [`bem`] assembly → condensation, [`source::bem_wheel`]) →
+//! [`flexibility`] → [`formulation`] (the contact problem: LCP / QP, slip operator) → [`solvers`] (one trait, one
+//! registry) → [`post`] (residuals, resultants, states) → [`checks`] (against [`references`], [`hertz`] and between
+//! solvers) → [`results`] (the JSON document). [`run`] is the pipeline for one scene; [`sweep`] and [`report`] run
+//! many.
 //!
 //! ## Conventions
 //! Per unit thickness, plane strain. x horizontal, y up, wheel centre at the origin, the flat is y = −R. Tractions
@@ -33,20 +35,26 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod bem;
-pub mod condense;
+pub mod checks;
 pub mod condition;
+pub mod diagnostics;
 pub mod error;
+pub mod flexibility;
 pub mod formulation;
 pub mod hertz;
+pub mod io;
 pub mod lcp_io;
 pub mod mesh;
 pub mod plot;
 pub mod post;
 pub mod references;
 pub mod report;
+pub mod results;
 pub mod run;
 pub mod scene;
 pub mod solvers;
+pub mod source;
+pub mod status;
 pub mod sweep;
 pub mod tolerances;
 

@@ -2,8 +2,10 @@
 //! solve, 2 bad input, 3 an output file could not be written, 4 numerical failure of the BEM system.
 
 use clap::{Parser, Subcommand};
-use rollbem::run::{run_scene, write_atomic, Report};
-use rollbem::scene::{Scene, SolverName};
+use rollbem::io::write_atomic;
+use rollbem::results::Report;
+use rollbem::run::run_scene;
+use rollbem::scene::Scene;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -39,10 +41,12 @@ enum Cmd {
         /// Write one JSON document per scene into this folder, named after the scene (`NAME.json`).
         #[arg(long)]
         out_dir: Option<PathBuf>,
-        /// Override the scenes' `[solvers] use` (repeatable): all, lemke, clarabel, pgs, normtang_qp.
+        /// Override the scenes' `[solvers] use` (repeatable): `all` or a registered solver (see `rollbem solvers`).
         #[arg(long = "solver", value_parser = parse_solver)]
-        solvers: Vec<SolverName>,
+        solvers: Vec<String>,
     },
+    /// List the registered solvers.
+    Solvers,
     /// Run a sweep (a grid of scene variants × solvers) in parallel and write one CSV row per solver run.
     Sweep {
         /// Sweep specification (TOML; see reference/sweeps/).
@@ -84,7 +88,7 @@ enum Cmd {
         scenes: Vec<PathBuf>,
         /// Override the scenes' `[solvers] use` (repeatable).
         #[arg(long = "solver", value_parser = parse_solver)]
-        solvers: Vec<SolverName>,
+        solvers: Vec<String>,
     },
 }
 
@@ -102,7 +106,8 @@ enum LcpCmd {
     Solve {
         /// LCP file (Siconos format).
         file: PathBuf,
-        /// `lemke` (block-revised engine) or `lemke_dense` (the reference engine).
+        /// A registered solver that works on bare LCPs: `lemke` (block-revised engine) or `lemke_dense` (the
+        /// reference engine).
         #[arg(long, default_value = "lemke")]
         solver: String,
         /// Write {status, pivots, z, w, residuals} here.
@@ -112,7 +117,6 @@ enum LcpCmd {
 }
 
 fn lcp_cmd(cmd: LcpCmd) -> rollbem::Result<i32> {
-    use rollbem::solvers::lemke::{solve, solve_dense, LemkeSettings};
     match cmd {
         LcpCmd::Export { scene, out } => {
             let s = Scene::from_file(&scene)?;
@@ -124,18 +128,18 @@ fn lcp_cmd(cmd: LcpCmd) -> rollbem::Result<i32> {
         }
         LcpCmd::Solve { file, solver, json } => {
             let lcp = rollbem::lcp_io::read(&file)?;
-            let st = LemkeSettings::default();
-            let out = match solver.as_str() {
-                "lemke" => solve(&lcp, &st),
-                "lemke_dense" => solve_dense(&lcp, &st),
-                other => {
-                    return Err(rollbem::Error::Invalid {
-                        path: file.clone(),
-                        field: "--solver".into(),
-                        message: format!("unknown LCP solver `{other}` (expected lemke or lemke_dense)"),
-                    })
-                }
+            let lcp_solvers: Vec<&str> = rollbem::solvers::REGISTRY
+                .iter()
+                .filter(|e| (e.build)(None).is_ok_and(|s| s.solves_lcp()))
+                .map(|e| e.name)
+                .collect();
+            let bad = || rollbem::Error::Invalid {
+                path: file.clone(),
+                field: "--solver".into(),
+                message: format!("`{solver}` does not solve LCP files (expected one of: {})", lcp_solvers.join(", ")),
             };
+            let built = rollbem::solvers::build(&solver, None).map_err(|_| bad())?;
+            let out = built.solve_lcp(&lcp).ok_or_else(bad)?;
             let n = lcp.size();
             let zmax = out.z.iter().fold(0.0_f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
             let wmax = out.w.iter().fold(0.0_f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
@@ -150,33 +154,36 @@ fn lcp_cmd(cmd: LcpCmd) -> rollbem::Result<i32> {
                     "z": out.z, "w": out.w,
                     "residuals": { "complementarity": comp, "negative_w": neg_w },
                 });
-                rollbem::run::write_atomic(&path, &serde_json::to_string_pretty(&doc).expect("json"))?;
+                write_atomic(&path, &serde_json::to_string_pretty(&doc).expect("json"))?;
             }
             Ok(if out.status == rollbem::solvers::Status::Solved { 0 } else { 1 })
         }
     }
 }
 
-fn parse_solver(s: &str) -> Result<SolverName, String> {
-    SolverName::parse(s)
+fn parse_solver(s: &str) -> Result<String, String> {
+    if s == "all" || rollbem::solvers::entry(s).is_some() {
+        Ok(s.to_string())
+    } else {
+        Err(format!("unknown solver `{s}` (expected one of: all, {})", rollbem::solvers::names()))
+    }
 }
 
 fn print_report(r: &Report) {
     say!("scene {} — {}", r.scene.name, r.scene.description);
     say!(
-        "mesh: {} {} elements, {} nodes, {} contact nodes, BEM system {}×{}; effects: {}",
+        "mesh: {} {} elements, {} nodes, {} contact nodes{}; effects: {}",
         r.mesh.elements,
         r.mesh.element.name(),
         r.mesh.nodes,
         r.mesh.contact_nodes,
-        r.mesh.system_size,
-        r.mesh.system_size,
+        r.mesh.system_size.map(|n| format!(", BEM system {n}×{n}")).unwrap_or_default(),
         r.effects.join(", ")
     );
     let d = &r.diagnostics;
     say!(
-        "health: κ₁(BEM system) ≈ {:.2e}, κ₁(K_NN) ≈ {:.2e}{}, flexibility asymmetry {:.2e}",
-        d.bem_condition,
+        "health: {}κ₁(K_NN) ≈ {:.2e}{}, flexibility asymmetry {:.2e}",
+        d.bem_condition.map(|k| format!("κ₁(BEM system) ≈ {k:.2e}, ")).unwrap_or_default(),
         d.flexibility_condition,
         d.tangential_condition.map(|k| format!(", κ₁(K_TT) ≈ {k:.2e}")).unwrap_or_default(),
         d.flexibility_asymmetry
@@ -204,13 +211,7 @@ fn print_report(r: &Report) {
     );
     let opt = |v: Option<f64>| v.map(|v| format!("{v:.5e}")).unwrap_or_else(|| "-".into());
     for run in &r.runs {
-        let work = match (run.work.pivots, run.work.sweeps, run.work.iterations, run.work.outer) {
-            (Some(p), ..) => format!("{p} piv"),
-            (_, Some(sw), _, Some(o)) => format!("{sw} sw/{o}"),
-            (_, _, Some(i), Some(o)) => format!("{i} it/{o}"),
-            (_, _, Some(i), None) => format!("{i} it"),
-            _ => String::new(),
-        };
+        let work = run.work.short();
         let (Some(res), Some(f), Some(c), Some(rb)) = (&run.residuals, &run.resultants, &run.contact, &run.rigid_body)
         else {
             say!(
@@ -266,7 +267,7 @@ fn print_report(r: &Report) {
     }
 }
 
-fn run_one(scene: &Path, json: Option<&Path>, solvers: &[SolverName]) -> rollbem::Result<Report> {
+fn run_one(scene: &Path, json: Option<&Path>, solvers: &[String]) -> rollbem::Result<Report> {
     let mut s = Scene::from_file(scene)?;
     if !solvers.is_empty() {
         s.solvers.use_ = solvers.to_vec();
@@ -280,7 +281,7 @@ fn run_one(scene: &Path, json: Option<&Path>, solvers: &[SolverName]) -> rollbem
 }
 
 /// `rollbem check`: one table of checks per scene, a closing count line, exit 1 on any failure.
-fn check(scenes: &[PathBuf], solvers: &[SolverName]) -> ExitCode {
+fn check(scenes: &[PathBuf], solvers: &[String]) -> ExitCode {
     for p in scenes {
         if let Err(e) = Scene::from_file(p) {
             eprintln!("error: {e}");
@@ -314,7 +315,7 @@ fn check(scenes: &[PathBuf], solvers: &[SolverName]) -> ExitCode {
                     }
                 }
                 for run in
-                    r.runs.iter().filter(|x| !x.message.is_empty() && x.status != r.scene.checks.status_for(&x.solver))
+                    r.runs.iter().filter(|x| !x.message.is_empty() && x.status != r.scene.checks.status_for(x.solver.0))
                 {
                     say!("    {}: {}", run.solver, run.message);
                 }
@@ -345,6 +346,12 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.cmd {
         Cmd::Check { scenes, solvers } => check(&scenes, &solvers),
+        Cmd::Solvers => {
+            for e in rollbem::solvers::REGISTRY {
+                say!("{:<12} {}{}", e.name, e.summary, if e.in_all { "" } else { " (not in `all`)" });
+            }
+            ExitCode::SUCCESS
+        }
         Cmd::Lcp { cmd } => match lcp_cmd(cmd) {
             Ok(code) => ExitCode::from(code as u8),
             Err(e) => fail(&e),

@@ -11,9 +11,99 @@
 //! chord's midpoint. Quadratic elements follow the exact circular arc, with three nodes at ξ = −2/3, 0, 2/3
 //! ([`crate::bem::quadratic`]).
 
-use crate::bem::quadratic::{ArcElement, XI_NODES};
 use crate::scene::{ElementKind, MeshSpec, Support};
 use std::f64::consts::PI;
+
+/// Collocation points in the element's intrinsic coordinate ξ ∈ [−1, 1] (discontinuous quadratic element: the
+/// nodes are interior, so no node is shared between elements).
+pub const XI_NODES: [f64; 3] = [-2.0 / 3.0, 0.0, 2.0 / 3.0];
+
+/// A circular-arc boundary element: position(ξ) = centre + radius·(cos θ, sin θ), θ(ξ) = θm + ξ·(theta1 − theta0)/2,
+/// θm = (theta0 + theta1)/2, ξ ∈ [−1, 1]. It is traversed from `theta0` to `theta1`: theta1 > theta0 is
+/// counter-clockwise (outer boundary of a disk), theta1 < theta0 clockwise (e.g. the hole of an annulus). Angles in
+/// radians, lengths in the caller's (dimensionless) length unit.
+///
+/// The outward normal of the body is n = (t_y, −t_x), t = dx/ds the unit tangent in the traversal direction, i.e.
+/// n = +(cos θ, sin θ) for a CCW element and −(cos θ, sin θ) for a CW one (body to the left of the traversal).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ArcElement {
+    /// Centre of the circle carrying the arc.
+    pub centre: [f64; 2],
+    /// Radius of the circle (> 0).
+    pub radius: f64,
+    /// Angle at ξ = −1 (radians).
+    pub theta0: f64,
+    /// Angle at ξ = +1 (radians).
+    pub theta1: f64,
+}
+
+impl ArcElement {
+    /// Mid angle θm = (theta0 + theta1)/2.
+    #[inline]
+    pub fn theta_mid(&self) -> f64 {
+        0.5 * (self.theta0 + self.theta1)
+    }
+
+    /// Signed half angle h = (theta1 − theta0)/2, so θ(ξ) = θm + h ξ.
+    #[inline]
+    pub fn half_angle(&self) -> f64 {
+        0.5 * (self.theta1 - self.theta0)
+    }
+
+    /// Angle θ(ξ) at intrinsic coordinate `xi`.
+    #[inline]
+    pub fn theta(&self, xi: f64) -> f64 {
+        self.theta_mid() + xi * self.half_angle()
+    }
+
+    /// Point on the arc at intrinsic coordinate `xi` ∈ [−1, 1].
+    #[inline]
+    pub fn position(&self, xi: f64) -> [f64; 2] {
+        let (s, c) = self.theta(xi).sin_cos();
+        [self.centre[0] + self.radius * c, self.centre[1] + self.radius * s]
+    }
+
+    /// Outward unit normal of the body at `xi`: +(cos θ, sin θ) if CCW, −(cos θ, sin θ) if CW.
+    #[inline]
+    pub fn normal(&self, xi: f64) -> [f64; 2] {
+        let (s, c) = self.theta(xi).sin_cos();
+        let sg = self.orientation();
+        [sg * c, sg * s]
+    }
+
+    /// +1 for a counter-clockwise element (theta1 > theta0), −1 for a clockwise one.
+    #[inline]
+    pub fn orientation(&self) -> f64 {
+        if self.theta1 >= self.theta0 {
+            1.0
+        } else {
+            -1.0
+        }
+    }
+
+    /// Jacobian ds/dξ = radius·|theta1 − theta0|/2 (constant along the element); the arc length is 2·jacobian.
+    #[inline]
+    pub fn jacobian(&self) -> f64 {
+        self.radius * self.half_angle().abs()
+    }
+
+    /// Arc length of the element, radius·|theta1 − theta0|.
+    #[inline]
+    pub fn length(&self) -> f64 {
+        2.0 * self.jacobian()
+    }
+
+    /// Positions of the three collocation nodes (at [`XI_NODES`]).
+    pub fn nodes(&self) -> [[f64; 2]; 3] {
+        XI_NODES.map(|xi| self.position(xi))
+    }
+
+    /// ∫ N_j ds over the element for the three nodes: (0.75, 0.5, 0.75) × jacobian; they sum to the arc length.
+    pub fn node_weights(&self) -> [f64; 3] {
+        let j = self.jacobian();
+        [0.75 * j, 0.5 * j, 0.75 * j]
+    }
+}
 
 /// Boundary condition class of an element (and of its nodes).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -1,24 +1,19 @@
 //! Post-processing: per-node results, resultants, contact extent and the solver-independent residuals.
 //!
 //! Every quantity here is recomputed from the flexibility and the solver's nodal forces and rigid motion, never
-//! taken from the solver's own bookkeeping: the gap is `g = g₀ + F_NN p + R_N ρ`, the residuals measure the
-//! *physical* conditions (no penetration, no tension, complementarity of gap and pressure, equilibrium with the
+//! taken from the solver's own bookkeeping: the gap is `g = g₀ + K_NN f + K_NT h + Σ r_m ρ_m`, the slip comes from
+//! the problem's slip operator ([`crate::formulation::slip`]), and the residuals measure the *physical* conditions
+//! (no penetration, no tension, complementarity of gap and pressure, Coulomb's law on the slip, equilibrium with the
 //! drive loads). Values are returned in the user's units.
 //!
 //! Node states: `separated` when the pressure is zero, else `slip` when |q| = μp (always the case without
 //! friction, where q = μp = 0: the node slides freely), else `stick`.
 
-use crate::condense::{Flexibility, Model};
-use crate::formulation::{MODE_APPROACH, MODE_ROTATION, MODE_SHIFT};
+use crate::flexibility::ModeKind;
+use crate::formulation::{ContactProblem, Dof, Solution};
 use crate::hertz;
-use crate::scene::{Dof, Scene};
+use crate::tolerances::{SEPARATED_PRESSURE, STICK_MARGIN};
 use serde::Serialize;
-
-/// Relative pressure below which a node counts as separated (of the peak pressure).
-pub const SEPARATED_PRESSURE: f64 = 1e-9;
-
-/// A contact node sticks when |q| < μp (1 − STICK_MARGIN); at |q| = μp to round-off it is at the slip limit.
-pub const STICK_MARGIN: f64 = 1e-9;
 
 /// State of a contact node.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -173,107 +168,45 @@ pub fn slip_velocity(x: &[f64], u_t: &[f64], in_contact: &[bool], creepage: f64,
         .collect()
 }
 
-/// Evaluate a solution: `f` the dimensionless nodal normal forces, `h` the tangential ones (`None` when the scene
-/// is frictionless and the tangential problem was not built), `rigid` the dimensionless rigid motion (shift,
-/// approach, rotation), `shift_known = false` when the shift is indeterminate (at the sliding limit).
-///
-/// Residuals (relative, solver-independent): ℓ is the largest rigid gap `|g₀ + R_N ρ|` over the candidate zone
-/// (the gap the contact has to close or keep open), and `p_max` below is floored by E·ℓ/L0; `complementarity` is max |p g| / (p_max ℓ); `friction` the worst
-/// of the Coulomb cone violation max(0, |q| − μp)/(μ p_max), the slip of sticking material |s|(μp − |q|)/(ℓ μ p_max)
-/// and slip along the friction force max(0, s q)/(ℓ μ p_max); `equilibrium` the worst relative error of a
-/// prescribed resultant (Q relative to max(|Q|, μP), M to max(|M|, P R)).
-pub fn evaluate(
-    scene: &Scene,
-    model: &Model,
-    flex: &Flexibility,
-    f: &[f64],
-    h: Option<&[f64]>,
-    rigid: [f64; 3],
-    shift_known: bool,
-) -> Evaluation {
-    let n = flex.n();
-    let (l0, e) = (model.length, model.modulus);
-    let mu = scene.contact.friction;
-    let coupling = scene.contact.coupling;
-    let p: Vec<f64> = (0..n).map(|i| f[i] / flex.weights[i]).collect();
-    let q: Vec<f64> = match h {
-        Some(h) => (0..n).map(|i| h[i] / flex.weights[i]).collect(),
-        None => vec![0.0; n],
-    };
-    let rig = |r: &faer::Mat<f64>, i: usize| (0..3).map(|m| r[(i, m)] * rigid[m]).sum::<f64>();
-    let matvec = |m: &faer::Mat<f64>, v: &[f64], i: usize| (0..n).map(|j| m[(i, j)] * v[j]).sum::<f64>();
-    let rig_gap: Vec<f64> = (0..n).map(|i| flex.g0[i] + rig(&flex.rigid_n, i)).collect();
-    let uy: Vec<f64> = (0..n)
-        .map(|i| {
-            let cross = match (&flex.nt, h.is_some() && coupling) {
-                (Some(nt), true) => matvec(nt, &q, i),
-                _ => 0.0,
-            };
-            matvec(&flex.nn, &p, i) + cross + rig(&flex.rigid_n, i)
-        })
-        .collect();
-    let ux: Option<Vec<f64>> = match (&flex.tn, &flex.tt, &flex.rigid_t) {
-        (Some(tn), Some(tt), Some(rt)) => Some(
-            (0..n)
-                .map(|i| {
-                    let cross = if coupling { matvec(tn, &p, i) } else { 0.0 };
-                    cross + matvec(tt, &q, i) + rig(rt, i)
-                })
-                .collect(),
-        ),
-        _ => None,
-    };
-    let gap: Vec<f64> = (0..n).map(|i| flex.g0[i] + uy[i]).collect();
-    let pmax = p.iter().fold(0.0_f64, |a, &v| a.max(v));
-    let ell = rig_gap.iter().fold(0.0_f64, |a, &v| a.max(v.abs())).max(f64::MIN_POSITIVE);
-    // Pressure scale of the residuals: the peak pressure, floored by the stress a strain ℓ/L0 would cause (E = 1
-    // in these units), so a solution without contact is not divided by zero.
-    let pref = pmax.max(ell);
-    let complementarity = (0..n).map(|i| (p[i] * gap[i]).abs()).fold(0.0, f64::max) / (pref * ell);
-    let penetration = (-gap.iter().cloned().fold(f64::INFINITY, f64::min)).max(0.0) / ell;
-    let tension = (-p.iter().cloned().fold(f64::INFINITY, f64::min)).max(0.0) / pref;
-    let friction = h.map(|_| {
-        let fref = (mu * pref).max(f64::MIN_POSITIVE);
-        let mut worst = 0.0_f64;
-        for i in 0..n {
-            worst = worst.max((q[i].abs() - mu * p[i]).max(0.0) / fref);
-            if let (Some(ux), true) = (&ux, shift_known) {
-                let s = ux[i];
-                worst = worst.max(s.abs() * (mu * p[i] - q[i].abs()).max(0.0) / (ell * fref));
-                worst = worst.max((s * q[i]).max(0.0) / (ell * fref));
-            }
-        }
-        worst
-    });
-    let fsum: f64 = f.iter().sum();
-    let hsum: f64 = h.map(|h| h.iter().sum()).unwrap_or(0.0);
-    let msum: f64 = (0..n).map(|i| flex.x[i] * f[i] - flex.y[i] * h.map(|h| h[i]).unwrap_or(0.0)).sum();
-    let (pr, qr, mr) = (fsum * e * l0, hsum * e * l0, msum * e * l0 * l0);
-    let mut eq: Option<f64> = None;
-    let mut worse = |r: f64| eq = Some(eq.unwrap_or(0.0).max(r));
-    if let Dof::Load(pl) = scene.drive.normal() {
-        worse((pr - pl).abs() / pl.abs());
-    }
-    if let (Dof::Load(ql), Some(_)) = (scene.drive.tangential(), h) {
-        worse((qr - ql).abs() / ql.abs().max(mu * pr.abs()).max(f64::MIN_POSITIVE));
-    }
-    if let Dof::Load(ml) = scene.drive.rotational() {
-        worse((mr - ml).abs() / ml.abs().max(pr.abs() * scene.wheel.radius).max(f64::MIN_POSITIVE));
-    }
-    let residuals = Residuals { complementarity, penetration, tension, friction, equilibrium: eq };
+/// Seed eq. 12 post-processing of a static solution: the rolling direction and creepage.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SeedRolling {
+    /// Creepage ξ.
+    pub creepage: f64,
+    /// sgn(V).
+    pub direction: i32,
+}
 
+/// Evaluate a solution of `problem` (with the seed's eq. 12 slip velocity when `rolling` is given).
+///
+/// Residuals (relative, solver-independent): ℓ is the largest rigid gap `|g₀ + Σ r_m ρ_m|` over the candidate zone
+/// (the gap the contact has to close or keep open), and `p_max` below is floored by E·ℓ/L0; `complementarity` is
+/// max |p g| / (p_max ℓ); `friction` the worst of the Coulomb cone violation max(0, |q| − μp)/(μ p_max), the slip of
+/// sticking material |s|(μp − |q|)/(ℓ μ p_max) and slip along the friction force max(0, s q)/(ℓ μ p_max) (the slip
+/// terms only where the tangential rigid motion is known); `equilibrium` the worst relative error of a prescribed
+/// resultant (Q relative to max(|Q|, μP), M to max(|M|, P R)).
+pub fn evaluate(problem: &ContactProblem, sol: &Solution, rolling: Option<SeedRolling>) -> Evaluation {
+    let flex = problem.flex;
+    let n = flex.n();
+    let (l0, e) = (flex.scales.length, flex.scales.modulus);
+    let mu = problem.law.friction;
+    let h = sol.h.as_deref();
+    let shift_known = sol.tangential_known;
+    let k = Kinematics::of(problem, sol);
+    let residuals = residuals(problem, sol, &k);
+    let pmax = k.p.iter().fold(0.0_f64, |a, &v| a.max(v));
     let cut = SEPARATED_PRESSURE * pmax;
-    let in_contact: Vec<bool> = (0..n).map(|i| pmax > 0.0 && p[i] > cut).collect();
+    let in_contact: Vec<bool> = (0..n).map(|i| pmax > 0.0 && k.p[i] > cut).collect();
     let state = |i: usize| {
         if !in_contact[i] {
             NodeState::Separated
-        } else if h.is_some() && q[i].abs() < mu * p[i] * (1.0 - STICK_MARGIN) {
+        } else if h.is_some() && k.q[i].abs() < mu * k.p[i] * (1.0 - STICK_MARGIN) {
             NodeState::Stick
         } else {
             NodeState::Slip
         }
     };
-    let sv: Vec<Option<f64>> = match (&scene.rolling, &ux) {
+    let sv: Vec<Option<f64>> = match (rolling, &k.ux) {
         (Some(r), Some(ux)) => slip_velocity(&flex.x, ux, &in_contact, r.creepage, r.direction),
         _ => vec![None; n],
     };
@@ -281,16 +214,154 @@ pub fn evaluate(
         .map(|i| NodeResult {
             x: flex.x[i] * l0,
             y: flex.y[i] * l0,
-            pressure: p[i] * e,
-            shear: q[i] * e,
-            u_x: ux.as_ref().filter(|_| shift_known).map(|u| u[i] * l0),
-            u_y: uy[i] * l0,
-            gap: gap[i] * l0,
-            slip: ux.as_ref().filter(|_| shift_known && h.is_some() && in_contact[i]).map(|u| u[i] * l0),
+            pressure: k.p[i] * e,
+            shear: k.q[i] * e,
+            u_x: k.ux.as_ref().filter(|_| shift_known).map(|u| u[i] * l0),
+            u_y: k.uy[i] * l0,
+            gap: k.gap[i] * l0,
+            slip: k.slip.as_ref().filter(|_| shift_known && h.is_some() && in_contact[i]).map(|s| s[i] * l0),
             state: state(i),
             slip_velocity: sv[i],
         })
         .collect();
+    let contact = summary(&nodes, pmax * e, pmax.max(k.ell) * e);
+    let rigid = |kind: ModeKind| problem.rigid_value(sol, kind);
+    Evaluation {
+        nodes,
+        resultants: resultants(problem, sol),
+        rigid_body: RigidBody {
+            normal: rigid(ModeKind::Approach) * l0,
+            tangential: shift_known.then_some(rigid(ModeKind::Shift) * l0),
+            rotation: rigid(ModeKind::Rotation),
+        },
+        contact,
+        residuals,
+    }
+}
+
+/// Tractions, displacements, gaps and slips of a solution at the contact nodes (dimensionless).
+struct Kinematics {
+    /// Pressures p = f / w.
+    p: Vec<f64>,
+    /// Shears q = h / w (zeros without the tangential problem).
+    q: Vec<f64>,
+    /// u_y, rigid motion included.
+    uy: Vec<f64>,
+    /// u_x, rigid motion included (when the tangential blocks exist).
+    ux: Option<Vec<f64>>,
+    /// The slip s = D u_x + c of the problem's slip operator.
+    slip: Option<Vec<f64>>,
+    /// Gaps g = g₀ + u_y.
+    gap: Vec<f64>,
+    /// The gap scale ℓ: the largest rigid gap |g₀ + Σ r_m ρ_m| (floored at the smallest positive number).
+    ell: f64,
+}
+
+impl Kinematics {
+    fn of(problem: &ContactProblem, sol: &Solution) -> Kinematics {
+        let flex = problem.flex;
+        let n = flex.n();
+        let coupling = problem.law.coupling;
+        let (f, h) = (&sol.f, sol.h.as_deref());
+        let p: Vec<f64> = (0..n).map(|i| f[i] / flex.weights[i]).collect();
+        let q: Vec<f64> = match h {
+            Some(h) => (0..n).map(|i| h[i] / flex.weights[i]).collect(),
+            None => vec![0.0; n],
+        };
+        let matvec = |m: &faer::Mat<f64>, v: &[f64], i: usize| (0..n).map(|j| m[(i, j)] * v[j]).sum::<f64>();
+        let rig = |i: usize, tangential: bool| -> f64 {
+            flex.modes
+                .iter()
+                .map(|m| {
+                    let r = if tangential { m.tangential.as_ref().map_or(0.0, |t| t[i]) } else { m.normal[i] };
+                    r * problem.rigid_value(sol, m.kind)
+                })
+                .sum()
+        };
+        let uy: Vec<f64> = (0..n)
+            .map(|i| {
+                let cross = match (&flex.k_nt, h) {
+                    (Some(nt), Some(h)) if coupling => matvec(nt, h, i),
+                    _ => 0.0,
+                };
+                matvec(&flex.k_nn, f, i) + cross + rig(i, false)
+            })
+            .collect();
+        let ux: Option<Vec<f64>> = match (&flex.k_tn, &flex.k_tt) {
+            (Some(tn), Some(tt)) => Some(
+                (0..n)
+                    .map(|i| {
+                        let cross = if coupling { matvec(tn, f, i) } else { 0.0 };
+                        cross + h.map_or(0.0, |h| matvec(tt, h, i)) + rig(i, true)
+                    })
+                    .collect(),
+            ),
+            _ => None,
+        };
+        let slip = ux.as_ref().map(|u| problem.slip.slip(u));
+        let gap: Vec<f64> = (0..n).map(|i| flex.g0[i] + uy[i]).collect();
+        let ell =
+            (0..n).map(|i| flex.g0[i] + rig(i, false)).fold(0.0_f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
+        Kinematics { p, q, uy, ux, slip, gap, ell }
+    }
+}
+
+/// The resultants of a solution's tractions (user's units).
+fn resultants(problem: &ContactProblem, sol: &Solution) -> Resultants {
+    let flex = problem.flex;
+    let (f, h) = (&sol.f, sol.h.as_deref());
+    let sc = flex.scales;
+    let fsum: f64 = f.iter().sum();
+    let hsum: f64 = h.map(|h| h.iter().sum()).unwrap_or(0.0);
+    let msum: f64 = (0..flex.n()).map(|i| flex.x[i] * f[i] - flex.y[i] * h.map(|h| h[i]).unwrap_or(0.0)).sum();
+    let (e, l0) = (sc.modulus, sc.length);
+    Resultants { normal: fsum * e * l0, tangential: hsum * e * l0, moment: msum * e * l0 * l0 }
+}
+
+/// The solver-independent residuals of a solution (see [`evaluate`]).
+fn residuals(problem: &ContactProblem, sol: &Solution, k: &Kinematics) -> Residuals {
+    let n = problem.n();
+    let mu = problem.law.friction;
+    let (p, q, ell) = (&k.p, &k.q, k.ell);
+    let pmax = p.iter().fold(0.0_f64, |a, &v| a.max(v));
+    // Pressure scale of the residuals: the peak pressure, floored by the stress a strain ℓ/L0 would cause (E = 1
+    // in these units), so a solution without contact is not divided by zero.
+    let pref = pmax.max(ell);
+    let complementarity = (0..n).map(|i| (p[i] * k.gap[i]).abs()).fold(0.0, f64::max) / (pref * ell);
+    let penetration = (-k.gap.iter().cloned().fold(f64::INFINITY, f64::min)).max(0.0) / ell;
+    let tension = (-p.iter().cloned().fold(f64::INFINITY, f64::min)).max(0.0) / pref;
+    let friction = sol.h.as_ref().map(|_| {
+        let fref = (mu * pref).max(f64::MIN_POSITIVE);
+        let mut worst = 0.0_f64;
+        for i in 0..n {
+            worst = worst.max((q[i].abs() - mu * p[i]).max(0.0) / fref);
+            if let (Some(s), true) = (&k.slip, sol.tangential_known) {
+                let s = s[i];
+                worst = worst.max(s.abs() * (mu * p[i] - q[i].abs()).max(0.0) / (ell * fref));
+                worst = worst.max((s * q[i]).max(0.0) / (ell * fref));
+            }
+        }
+        worst
+    });
+    let r = resultants(problem, sol);
+    let (pr, qr, mr) = (r.normal, r.tangential, r.moment);
+    let mut eq: Option<f64> = None;
+    let mut worse = |r: f64| eq = Some(eq.unwrap_or(0.0).max(r));
+    let drive = &problem.drive;
+    if let Dof::Load(pl) = drive.normal {
+        worse((pr - pl).abs() / pl.abs());
+    }
+    if let (Dof::Load(ql), Some(_)) = (drive.tangential, &sol.h) {
+        worse((qr - ql).abs() / ql.abs().max(mu * pr.abs()).max(f64::MIN_POSITIVE));
+    }
+    if let Dof::Load(ml) = drive.rotational {
+        worse((mr - ml).abs() / ml.abs().max(pr.abs() * problem.flex.scales.radius()).max(f64::MIN_POSITIVE));
+    }
+    Residuals { complementarity, penetration, tension, friction, equilibrium: eq }
+}
+
+/// Contact extent, peak and fitted Hertz figures, stick zone, from the nodal results (user's units).
+fn summary(nodes: &[NodeResult], peak_pressure: f64, pressure_scale: f64) -> ContactSummary {
     let loaded: Vec<&NodeResult> = nodes.iter().filter(|nd| nd.state != NodeState::Separated).collect();
     let sticking: Vec<&NodeResult> = nodes.iter().filter(|nd| nd.state == NodeState::Stick).collect();
     let x_min = loaded.first().map(|nd| nd.x);
@@ -299,12 +370,12 @@ pub fn evaluate(
     let ps: Vec<f64> =
         nodes.iter().map(|nd| if nd.state == NodeState::Separated { 0.0 } else { nd.pressure }).collect();
     let fit = hertz::fit_ellipse(&xs, &ps);
-    let contact = ContactSummary {
+    ContactSummary {
         x_min,
         x_max,
         half_width: x_min.zip(x_max).map(|(a, b)| 0.5 * (b - a)),
-        peak_pressure: pmax * e,
-        pressure_scale: pref * e,
+        peak_pressure,
+        pressure_scale,
         fit_half_width: fit.map(|f| f.0),
         fit_peak_pressure: fit.map(|f| f.1),
         stick_x_min: sticking.first().map(|nd| nd.x),
@@ -312,16 +383,5 @@ pub fn evaluate(
         nodes_contact: loaded.len(),
         nodes_stick: sticking.len(),
         nodes_slip: loaded.len() - sticking.len(),
-    };
-    Evaluation {
-        nodes,
-        resultants: Resultants { normal: pr, tangential: qr, moment: mr },
-        rigid_body: RigidBody {
-            normal: rigid[MODE_APPROACH] * l0,
-            tangential: shift_known.then_some(rigid[MODE_SHIFT] * l0),
-            rotation: rigid[MODE_ROTATION],
-        },
-        contact,
-        residuals,
     }
 }

@@ -13,8 +13,9 @@
 
 use crate::hertz::Hertz;
 use crate::post::NodeState;
-use crate::run::SolverRun;
+use crate::results::SolverRun;
 use crate::scene::{Dof, Scene};
+use crate::tolerances::{CATTANEO_EDGE_ELEMENTS, CATTANEO_MAX_A_OVER_R_AT_NU_HALF};
 use serde::Serialize;
 
 /// Error figures of one run against the references that apply (null where one does not apply).
@@ -48,14 +49,9 @@ pub fn hertz_for(scene: &Scene, run: &SolverRun) -> Option<Hertz> {
     (p > 0.0).then(|| Hertz::new(w.radius, w.youngs_modulus, w.poisson_ratio, p))
 }
 
-/// Largest a/R at which Cattaneo–Mindlin is a fair reference for a coupled wheel at ν = 0.5: a finite wheel keeps
-/// a normal–tangential coupling of order a/R through its curvature and bending even where Dundurs' β = 0.
-/// Measured (top-arc wheel, μ = 0.5, Q/P = 0.3): the stick zone is off-centre by −0.16a at a/R = 0.0087, −0.08a at
-/// 0.0044 and 0 at 0.0022; 0.01 keeps the offset under one element at the meshes used.
-pub const CATTANEO_MAX_A_OVER_R_AT_NU_HALF: f64 = 0.01;
-
 /// Whether Cattaneo–Mindlin applies: β = 0 (coupling switched off, or ν = 0.5 with a/R ≤
-/// [`CATTANEO_MAX_A_OVER_R_AT_NU_HALF`]), P and Q prescribed with the rotation held, 0 < |Q| < μP.
+/// [`CATTANEO_MAX_A_OVER_R_AT_NU_HALF`]: a finite wheel keeps a coupling of order a/R), P and Q prescribed with the
+/// rotation held, 0 < |Q| < μP.
 pub fn cattaneo_applies(scene: &Scene) -> bool {
     let mu = scene.contact.friction;
     match (scene.drive.normal(), scene.drive.tangential(), scene.drive.rotational()) {
@@ -118,7 +114,8 @@ pub fn metrics(scene: &Scene, run: &SolverRun) -> Metrics {
                 m.cm_centre_elements = Some(centre / elem);
             }
             let sg = q.signum();
-            let away = |x: f64| x.abs() <= h.half_width - 1.5 * elem && (x.abs() - ce).abs() >= 1.5 * elem;
+            let edge = CATTANEO_EDGE_ELEMENTS * elem;
+            let away = |x: f64| x.abs() <= h.half_width - edge && (x.abs() - ce).abs() >= edge;
             let mut worst = 0.0_f64;
             for n in nodes.iter().filter(|n| away(n.x)) {
                 let pa = h.pressure(n.x);

@@ -13,9 +13,11 @@
 //! noisy, sweeps run cases in parallel, so read times as ratios.
 
 use crate::error::{Error, Result};
+use crate::io::write_atomic;
 use crate::plot::{Chart, Series, Style};
 use crate::post::NodeState;
-use crate::run::{run_scene, write_atomic, Report, SolverRun};
+use crate::results::{Report, SolverRun};
+use crate::run::run_scene;
 use crate::scene::Scene;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -33,7 +35,7 @@ pub struct ReportOptions {
 }
 
 fn plot_err(e: crate::plot::PlotError) -> Error {
-    Error::Numerical { stage: "report", message: format!("plot: {e}") }
+    Error::Output { what: "a report plot".into(), message: e.to_string() }
 }
 
 fn toml_files(dir: &Path) -> Result<Vec<PathBuf>> {
@@ -152,180 +154,9 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
          times as ratios between methods.\n"
     )
     .unwrap();
-
-    // ---- reference scenes: JSON, solver comparison, seed figures -----------------------------------------------
-    let mut reports: BTreeMap<String, Report> = BTreeMap::new();
-    let mut cmp = String::from(
-        "scene,solver,formulation,status,problem_size,pivots,sweeps,iterations,outer,residual,max_dtraction_vs_lemke,\
-         state_mismatches_vs_lemke,symmetrisation_effect,flexibility_asymmetry,t_solve,t_total\n",
-    );
-    let mut cmp_md = String::from(
-        "| scene | solver | status | size | work | residual | Δ vs Lemke (/p0) | state mismatches | QP symmetrisation effect | solve time [s] |\n\
-         |---|---|---|---|---|---|---|---|---|---|\n",
-    );
-    for p in toml_files(&opts.reference.join("scenes"))? {
-        let s = Scene::from_file(&p)?;
-        let r = run_scene(&s, &p)?;
-        let text = serde_json::to_string_pretty(&r).expect("report serialises");
-        write_atomic(&out.join("runs").join(format!("{}.json", s.name)), &text)?;
-        let lemke = r.runs.iter().find(|x| x.solver == "lemke");
-        for run in &r.runs {
-            let (d, mism) = match (lemke, &run.contact) {
-                (Some(l), Some(_)) if l.contact.is_some() && run.solver != "lemke" => {
-                    let p0 = l.contact.as_ref().unwrap().pressure_scale.max(f64::MIN_POSITIVE);
-                    let d = l.nodes.iter().zip(&run.nodes).fold(0.0_f64, |m, (a, b)| {
-                        m.max((a.pressure - b.pressure).abs()).max((a.shear - b.shear).abs())
-                    }) / p0;
-                    let mm = l.nodes.iter().zip(&run.nodes).filter(|(a, b)| a.state != b.state).count();
-                    (Some(d), Some(mm))
-                }
-                _ => (None, None),
-            };
-            let w = &run.work;
-            let opt = |v: Option<usize>| v.map(|v| v.to_string()).unwrap_or_default();
-            writeln!(
-                cmp,
-                "{},{},{},{},{},{},{},{},{},{},{},{},{},{:e},{:e},{:e}",
-                s.name,
-                run.solver,
-                run.formulation,
-                run.status,
-                run.problem_size,
-                opt(w.pivots),
-                opt(w.sweeps),
-                w.iterations.map(|v| v.to_string()).unwrap_or_default(),
-                opt(w.outer),
-                run.residuals.map(|x| format!("{:e}", x.max())).unwrap_or_default(),
-                d.map(|v| format!("{v:e}")).unwrap_or_default(),
-                opt(mism),
-                run.polish_change.map(|v| format!("{v:e}")).unwrap_or_default(),
-                r.diagnostics.flexibility_asymmetry,
-                run.timing_s.solve,
-                run.timing_s.total
-            )
-            .unwrap();
-            let work = match (w.pivots, w.sweeps, w.iterations, w.outer) {
-                (Some(p), ..) => format!("{p} pivots"),
-                (_, Some(sw), _, Some(o)) => format!("{sw} sweeps, {o} outer"),
-                (_, _, Some(i), Some(o)) => format!("{i} IPM it., {o} outer"),
-                (_, _, Some(i), None) => format!("{i} IPM it."),
-                _ => "–".into(),
-            };
-            writeln!(
-                cmp_md,
-                "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.4} |",
-                s.name,
-                run.solver,
-                run.status,
-                run.problem_size,
-                work,
-                fmt_e(run.residuals.map(|x| x.max())),
-                fmt_e(d),
-                mism.map(|m| m.to_string()).unwrap_or_else(|| "–".into()),
-                fmt_e(run.polish_change),
-                run.timing_s.solve
-            )
-            .unwrap();
-        }
-        reports.insert(s.name.clone(), r);
-    }
-    write_atomic(&out.join("solver-comparison.csv"), &cmp)?;
+    let (reports, cmp_md) = reference_scenes(opts)?;
     let figures = seed_figures(&reports, &out.join("figures"))?;
-
-    // ---- sweeps ----------------------------------------------------------------------------------------------
-    let mut sweep_md = String::new();
-    let mut plots: Vec<(String, String)> = Vec::new();
-    for spec in toml_files(&opts.reference.join("sweeps"))? {
-        let name = spec.file_stem().unwrap().to_string_lossy().into_owned();
-        let csv_path = out.join("sweeps").join(format!("{name}.csv"));
-        crate::sweep::run_sweep(&spec, None, &csv_path, opts.progress)?;
-        let t = Table::read(&csv_path)?;
-        let solved: Vec<&BTreeMap<String, String>> = t.rows.iter().filter(|r| cell(r, "status") == "solved").collect();
-        writeln!(sweep_md, "\n### Sweep `{name}` ([CSV](sweeps/{name}.csv), {} rows)\n", t.rows.len()).unwrap();
-        let errs: Vec<(&str, &str)> = if solved.iter().any(|r| num(r, "hertz_l2_err").is_some()) {
-            vec![
-                ("hertz_l2_err", "L2 pressure error vs Hertz"),
-                ("hertz_a_err", "half-width error vs Hertz"),
-                ("hertz_p0_err", "peak-pressure error vs Hertz"),
-            ]
-        } else {
-            vec![("cm_shear_err", "shear error vs Cattaneo–Mindlin (/μp0, away from ±a, ±c)")]
-        };
-        for (err, label) in &errs {
-            // Accuracy against time.
-            let mut chart =
-                Chart::new(format!("{name}: {label} against total time"), "total time [s]", *label).log_x().log_y();
-            for (k, pts) in grouped(&solved, "t_total", err) {
-                chart = chart.add(Series::new(k, pts, Style::LineMarkers));
-            }
-            let file = format!("figures/{name}-{err}-vs-time.svg");
-            chart.write(&out.join(&file)).map_err(plot_err)?;
-            plots.push((format!("{name}: {label} against time"), file.clone()));
-            writeln!(sweep_md, "![{label} against time]({file})\n").unwrap();
-            // Pareto front and cheapest configurations.
-            let front = pareto(&solved, err);
-            writeln!(sweep_md, "Pareto front ({label} against total time): ").unwrap();
-            writeln!(sweep_md, "\n| configuration | contact elements | error | total time [s] |\n|---|---|---|---|")
-                .unwrap();
-            for r in &front {
-                writeln!(
-                    sweep_md,
-                    "| {} | {} | {:.2e} | {:.4} |",
-                    config(r),
-                    cell(r, "contact_elements"),
-                    num(r, err).unwrap(),
-                    num(r, "t_total").unwrap()
-                )
-                .unwrap();
-            }
-            writeln!(sweep_md, "\nCheapest configuration reaching each accuracy ({label}):\n").unwrap();
-            writeln!(
-                sweep_md,
-                "| target | configuration | contact elements | error | total time [s] |\n|---|---|---|---|---|"
-            )
-            .unwrap();
-            for target in [1e-2, 1e-3, 1e-4] {
-                let best = front.iter().find(|r| num(r, err).unwrap() <= target);
-                match best {
-                    Some(r) => writeln!(
-                        sweep_md,
-                        "| {:.0e} | {} | {} | {:.2e} | {:.4} |",
-                        target,
-                        config(r),
-                        cell(r, "contact_elements"),
-                        num(r, err).unwrap(),
-                        num(r, "t_total").unwrap()
-                    ),
-                    None => writeln!(
-                        sweep_md,
-                        "| {target:.0e} | not reached by any configuration of this sweep (smallest error {:.2e}) | | | |",
-                        front.last().map(|r| num(r, err).unwrap()).unwrap_or(f64::NAN)
-                    ),
-                }
-                .unwrap();
-            }
-            writeln!(sweep_md).unwrap();
-        }
-        // Convergence under refinement, with observed orders (direct solvers, or the tightest tolerance).
-        let (err, label) = errs[0];
-        let mut chart = Chart::new(format!("{name}: {label} against mesh"), "contact elements", label).log_x().log_y();
-        writeln!(sweep_md, "Observed orders of convergence ({label}, from the two finest meshes):\n").unwrap();
-        writeln!(sweep_md, "| configuration | order | finest error |\n|---|---|---|").unwrap();
-        for (k, pts) in grouped(&solved, "contact_elements", err) {
-            writeln!(
-                sweep_md,
-                "| {k} | {} | {} |",
-                fmt_e(order(&pts)).replace("e0", ""),
-                fmt_e(pts.last().map(|p| p.1))
-            )
-            .unwrap();
-            chart = chart.add(Series::new(k, pts, Style::LineMarkers));
-        }
-        let file = format!("figures/{name}-{err}-vs-mesh.svg");
-        chart.write(&out.join(&file)).map_err(plot_err)?;
-        plots.push((format!("{name}: {label} against mesh"), file.clone()));
-        writeln!(sweep_md, "\n![{label} against mesh]({file})").unwrap();
-    }
+    let (sweep_md, plots) = sweeps(opts)?;
 
     // ---- Markdown ----------------------------------------------------------------------------------------------
     writeln!(md, "## Which method for which accuracy\n").unwrap();
@@ -367,6 +198,187 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
     let path = out.join("README.md");
     write_atomic(&path, &md)?;
     Ok(path)
+}
+
+/// Run every reference scene: its JSON, `solver-comparison.csv`, and the comparison table (Markdown).
+fn reference_scenes(opts: &ReportOptions) -> Result<(BTreeMap<String, Report>, String)> {
+    let out = &opts.out;
+    // ---- reference scenes: JSON, solver comparison, seed figures -----------------------------------------------
+    let mut reports: BTreeMap<String, Report> = BTreeMap::new();
+    let mut cmp = String::from(
+        "scene,solver,formulation,status,problem_size,pivots,sweeps,iterations,outer,residual,max_dtraction_vs_lemke,\
+         state_mismatches_vs_lemke,symmetrisation_effect,flexibility_asymmetry,t_solve,t_total\n",
+    );
+    let mut cmp_md = String::from(
+        "| scene | solver | status | size | work | residual | Δ vs Lemke (/p0) | state mismatches | QP symmetrisation effect | solve time [s] |\n\
+         |---|---|---|---|---|---|---|---|---|---|\n",
+    );
+    for p in toml_files(&opts.reference.join("scenes"))? {
+        let s = Scene::from_file(&p)?;
+        let r = run_scene(&s, &p)?;
+        let text = serde_json::to_string_pretty(&r).expect("report serialises");
+        write_atomic(&out.join("runs").join(format!("{}.json", s.name)), &text)?;
+        let lemke = r.runs.iter().find(|x| x.solver == "lemke");
+        for run in &r.runs {
+            let cmp_lemke = match (lemke, &run.contact) {
+                (Some(l), Some(_)) if l.contact.is_some() && run.solver != "lemke" => {
+                    Some(crate::checks::compare(l, run, s.contact.friction))
+                }
+                _ => None,
+            };
+            let (d, mism) = (cmp_lemke.map(|c| c.max_dtraction), cmp_lemke.map(|c| c.state_mismatches));
+            let w = &run.work;
+            let opt = |v: Option<u64>| v.map(|v| v.to_string()).unwrap_or_default();
+            writeln!(
+                cmp,
+                "{},{},{},{},{},{},{},{},{},{},{},{},{},{:e},{:e},{:e}",
+                s.name,
+                run.solver,
+                run.formulation,
+                run.status,
+                run.problem_size,
+                opt(w.get("pivots")),
+                opt(w.get("sweeps")),
+                opt(w.get("iterations")),
+                opt(w.get("outer")),
+                run.residuals.map(|x| format!("{:e}", x.max())).unwrap_or_default(),
+                d.map(|v| format!("{v:e}")).unwrap_or_default(),
+                mism.map(|m| m.to_string()).unwrap_or_default(),
+                run.polish_change.map(|v| format!("{v:e}")).unwrap_or_default(),
+                r.diagnostics.flexibility_asymmetry,
+                run.timing_s.solve,
+                run.timing_s.total
+            )
+            .unwrap();
+            writeln!(
+                cmp_md,
+                "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.4} |",
+                s.name,
+                run.solver,
+                run.status,
+                run.problem_size,
+                w.long(),
+                fmt_e(run.residuals.map(|x| x.max())),
+                fmt_e(d),
+                mism.map(|m| m.to_string()).unwrap_or_else(|| "–".into()),
+                fmt_e(run.polish_change),
+                run.timing_s.solve
+            )
+            .unwrap();
+        }
+        reports.insert(s.name.clone(), r);
+    }
+    write_atomic(&out.join("solver-comparison.csv"), &cmp)?;
+    Ok((reports, cmp_md))
+}
+
+/// Accuracy against time for one error measure of a sweep: the plot, the Pareto front and the cheapest
+/// configuration per accuracy target, appended to `md`.
+fn accuracy_section(
+    name: &str,
+    err: &str,
+    label: &str,
+    solved: &[&BTreeMap<String, String>],
+    out: &Path,
+    md: &mut String,
+    plots: &mut Vec<(String, String)>,
+) -> Result<()> {
+    // Accuracy against time.
+    let mut chart = Chart::new(format!("{name}: {label} against total time"), "total time [s]", label).log_x().log_y();
+    for (k, pts) in grouped(solved, "t_total", err) {
+        chart = chart.add(Series::new(k, pts, Style::LineMarkers));
+    }
+    let file = format!("figures/{name}-{err}-vs-time.svg");
+    chart.write(&out.join(&file)).map_err(plot_err)?;
+    plots.push((format!("{name}: {label} against time"), file.clone()));
+    writeln!(md, "![{label} against time]({file})\n").unwrap();
+    // Pareto front and cheapest configurations.
+    let front = pareto(solved, err);
+    writeln!(md, "Pareto front ({label} against total time): ").unwrap();
+    writeln!(md, "\n| configuration | contact elements | error | total time [s] |\n|---|---|---|---|").unwrap();
+    for r in &front {
+        writeln!(
+            md,
+            "| {} | {} | {:.2e} | {:.4} |",
+            config(r),
+            cell(r, "contact_elements"),
+            num(r, err).unwrap(),
+            num(r, "t_total").unwrap()
+        )
+        .unwrap();
+    }
+    writeln!(md, "\nCheapest configuration reaching each accuracy ({label}):\n").unwrap();
+    writeln!(md, "| target | configuration | contact elements | error | total time [s] |\n|---|---|---|---|---|")
+        .unwrap();
+    for target in [1e-2, 1e-3, 1e-4] {
+        let best = front.iter().find(|r| num(r, err).unwrap() <= target);
+        match best {
+            Some(r) => writeln!(
+                md,
+                "| {:.0e} | {} | {} | {:.2e} | {:.4} |",
+                target,
+                config(r),
+                cell(r, "contact_elements"),
+                num(r, err).unwrap(),
+                num(r, "t_total").unwrap()
+            ),
+            None => writeln!(
+                md,
+                "| {target:.0e} | not reached by any configuration of this sweep (smallest error {:.2e}) | | | |",
+                front.last().map(|r| num(r, err).unwrap()).unwrap_or(f64::NAN)
+            ),
+        }
+        .unwrap();
+    }
+    writeln!(md).unwrap();
+    Ok(())
+}
+
+/// Run every reference sweep: CSVs, plots and the Markdown sections. Returns (Markdown, plots as (title, file)).
+fn sweeps(opts: &ReportOptions) -> Result<(String, Vec<(String, String)>)> {
+    let out = &opts.out;
+    let mut sweep_md = String::new();
+    let mut plots: Vec<(String, String)> = Vec::new();
+    for spec in toml_files(&opts.reference.join("sweeps"))? {
+        let name = spec.file_stem().unwrap().to_string_lossy().into_owned();
+        let csv_path = out.join("sweeps").join(format!("{name}.csv"));
+        crate::sweep::run_sweep(&spec, None, &csv_path, opts.progress)?;
+        let t = Table::read(&csv_path)?;
+        let solved: Vec<&BTreeMap<String, String>> = t.rows.iter().filter(|r| cell(r, "status") == "solved").collect();
+        writeln!(sweep_md, "\n### Sweep `{name}` ([CSV](sweeps/{name}.csv), {} rows)\n", t.rows.len()).unwrap();
+        let errs: Vec<(&str, &str)> = if solved.iter().any(|r| num(r, "hertz_l2_err").is_some()) {
+            vec![
+                ("hertz_l2_err", "L2 pressure error vs Hertz"),
+                ("hertz_a_err", "half-width error vs Hertz"),
+                ("hertz_p0_err", "peak-pressure error vs Hertz"),
+            ]
+        } else {
+            vec![("cm_shear_err", "shear error vs Cattaneo–Mindlin (/μp0, away from ±a, ±c)")]
+        };
+        for (err, label) in &errs {
+            accuracy_section(&name, err, label, &solved, out, &mut sweep_md, &mut plots)?;
+        }
+        // Convergence under refinement, with observed orders (direct solvers, or the tightest tolerance).
+        let (err, label) = errs[0];
+        let mut chart = Chart::new(format!("{name}: {label} against mesh"), "contact elements", label).log_x().log_y();
+        writeln!(sweep_md, "Observed orders of convergence ({label}, from the two finest meshes):\n").unwrap();
+        writeln!(sweep_md, "| configuration | order | finest error |\n|---|---|---|").unwrap();
+        for (k, pts) in grouped(&solved, "contact_elements", err) {
+            writeln!(
+                sweep_md,
+                "| {k} | {} | {} |",
+                fmt_e(order(&pts)).replace("e0", ""),
+                fmt_e(pts.last().map(|p| p.1))
+            )
+            .unwrap();
+            chart = chart.add(Series::new(k, pts, Style::LineMarkers));
+        }
+        let file = format!("figures/{name}-{err}-vs-mesh.svg");
+        chart.write(&out.join(&file)).map_err(plot_err)?;
+        plots.push((format!("{name}: {label} against mesh"), file.clone()));
+        writeln!(sweep_md, "\n![{label} against mesh]({file})").unwrap();
+    }
+    Ok((sweep_md, plots))
 }
 
 fn lemke_of<'a>(reports: &'a BTreeMap<String, Report>, name: &str) -> Option<&'a SolverRun> {

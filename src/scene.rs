@@ -8,7 +8,11 @@
 //! (`normal_load` = P = ∫p dx > 0 compressive).
 
 use crate::error::{Error, Result};
+pub use crate::formulation::Dof;
+use crate::formulation::{ContactLaw, Drive as DriveDofs};
+use crate::status::Status;
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// Largest number of boundary nodes (collocation points) a scene may have: the dense BEM system (2N)² and its LU
@@ -51,11 +55,11 @@ pub struct Scene {
 pub struct Expect {
     /// The status every solver should end with (default `solved`; e.g. `infeasible` for a load beyond μP).
     #[serde(default = "default_status")]
-    pub status: crate::solvers::Status,
+    pub status: Status,
     /// Per-solver expected statuses overriding `status` (e.g. `{ pgs = "not_converged" }` where the NORM-TANG
-    /// split is known not to converge).
-    #[serde(default, skip_serializing_if = "std::collections::BTreeMap::is_empty")]
-    pub solver_status: std::collections::BTreeMap<SolverName, crate::solvers::Status>,
+    /// split is known not to converge); keys are registry names ([`crate::solvers::REGISTRY`]).
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub solver_status: BTreeMap<String, Status>,
     /// Relative tolerance on Hertz's a and p0 (default: 1.5 % constant, 1 % quadratic elements).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub hertz: Option<f64>,
@@ -70,8 +74,8 @@ pub struct Expect {
     pub cattaneo_elements: Option<f64>,
 }
 
-fn default_status() -> crate::solvers::Status {
-    crate::solvers::Status::Solved
+fn default_status() -> Status {
+    Status::Solved
 }
 
 impl Default for Expect {
@@ -198,15 +202,6 @@ pub struct Drive {
     pub moment: Option<f64>,
 }
 
-/// One rigid degree of freedom's drive, after validation.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Dof {
-    /// Prescribed rigid displacement (or rotation).
-    Displacement(f64),
-    /// Prescribed resultant (force or moment); the rigid motion is an unknown.
-    Load(f64),
-}
-
 impl Drive {
     /// The normal drive (d_N or P).
     pub fn normal(&self) -> Dof {
@@ -242,83 +237,157 @@ pub struct Rolling {
     pub direction: i32,
 }
 
-/// A solver name as written in scene files and on the command line: the one registry of rollbem's solvers.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SolverName {
-    /// Every solver valid for the scene.
-    All,
-    /// Lemke's complementary pivoting on the scene's LCP (every scene).
-    Lemke,
-    /// The clarabel interior-point solver on the frictionless QP (frictionless scenes, no moment load).
-    Clarabel,
-    /// NORM-TANG with projected Gauss–Seidel inner sweeps (no moment load).
-    Pgs,
-    /// NORM-TANG with clarabel QPs as inner solver (no moment load).
-    NormtangQp,
+/// Range checks of scene values; every error names the file and the dotted key.
+struct Checker<'a> {
+    path: &'a Path,
 }
 
-impl SolverName {
-    /// Every solver, in registry order (without `all`).
-    pub const SOLVERS: [SolverName; 4] =
-        [SolverName::Lemke, SolverName::Clarabel, SolverName::Pgs, SolverName::NormtangQp];
+impl Checker<'_> {
+    fn bad(&self, field: &str, message: String) -> Error {
+        Error::Invalid { path: self.path.to_path_buf(), field: field.to_string(), message }
+    }
 
-    /// Name as written in scene files and reports.
-    pub fn name(self) -> &'static str {
-        match self {
-            SolverName::All => "all",
-            SolverName::Lemke => "lemke",
-            SolverName::Clarabel => "clarabel",
-            SolverName::Pgs => "pgs",
-            SolverName::NormtangQp => "normtang_qp",
+    fn positive(&self, field: &str, v: f64) -> Result<()> {
+        if !v.is_finite() || v <= 0.0 {
+            return Err(self.bad(field, format!("must be a finite number > 0 (got {v})")));
         }
+        Ok(())
     }
 
-    /// Parse a name (as on the command line); the error lists the valid names.
-    pub fn parse(s: &str) -> std::result::Result<SolverName, String> {
-        std::iter::once(SolverName::All)
-            .chain(SolverName::SOLVERS)
-            .find(|n| n.name() == s)
-            .ok_or_else(|| format!("unknown solver `{s}` (expected one of: all, lemke, clarabel, pgs, normtang_qp)"))
+    fn finite(&self, field: &str, v: f64) -> Result<()> {
+        if !v.is_finite() {
+            return Err(self.bad(field, format!("must be a finite number (got {v})")));
+        }
+        Ok(())
     }
 }
 
-/// Which solvers to run, with their settings (`[solvers.lemke]`, `[solvers.clarabel]`, `[solvers.pgs]`,
-/// `[solvers.normtang_qp]`; documented defaults when absent).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+/// Which solvers to run (`[solvers] use = [...]`, registry names or `"all"`), with their settings tables
+/// (`[solvers.NAME]`, validated by each solver: [`crate::solvers::Validate`]). After [`Scene::from_toml`] (or
+/// [`SolverSpec::default`]) `settings` holds every registered solver's settings with the defaults filled in.
+#[derive(Debug, Clone, PartialEq)]
 pub struct SolverSpec {
-    /// Solver names; `["all"]` runs every solver valid for the scene.
-    #[serde(rename = "use", default = "default_use")]
-    pub use_: Vec<SolverName>,
-    /// Lemke settings.
-    #[serde(default)]
-    pub lemke: crate::solvers::lemke::LemkeSettings,
-    /// clarabel settings (frictionless QP).
-    #[serde(default)]
-    pub clarabel: crate::solvers::clarabel_qp::QpSettings,
-    /// NORM-TANG with PGS settings.
-    #[serde(default)]
-    pub pgs: crate::solvers::normtang::PgsSettings,
-    /// NORM-TANG with clarabel settings.
-    #[serde(default)]
-    pub normtang_qp: crate::solvers::normtang::NormTangQpSettings,
-}
-
-fn default_use() -> Vec<SolverName> {
-    vec![SolverName::All]
+    /// Solver names; `["all"]` runs every solver of the registry's `all` set that applies to the scene.
+    pub use_: Vec<String>,
+    /// Settings table per registered solver name.
+    pub settings: BTreeMap<String, toml::Value>,
 }
 
 impl Default for SolverSpec {
     fn default() -> Self {
-        SolverSpec {
-            use_: default_use(),
-            lemke: Default::default(),
-            clarabel: Default::default(),
-            pgs: Default::default(),
-            normtang_qp: Default::default(),
+        let mut s = SolverSpec { use_: vec!["all".into()], settings: BTreeMap::new() };
+        s.normalize().expect("default settings are valid");
+        s
+    }
+}
+
+impl SolverSpec {
+    /// Solvers by name (`"all"` included).
+    pub fn using(names: &[&str]) -> SolverSpec {
+        SolverSpec { use_: names.iter().map(|s| s.to_string()).collect(), ..SolverSpec::default() }
+    }
+
+    /// Set one setting of one solver (e.g. `set("pgs", "max_outer", 1)`, or a dotted key into a nested table:
+    /// `set("normtang_qp", "qp.max_iter", 50)`); checked when the solver is built.
+    pub fn set(&mut self, solver: &str, key: &str, value: impl Into<toml::Value>) {
+        let mut t = self.settings.entry(solver.to_string()).or_insert_with(|| toml::Value::Table(Default::default()));
+        let parts: Vec<&str> = key.split('.').collect();
+        for p in &parts[..parts.len() - 1] {
+            let toml::Value::Table(tab) = t else { return };
+            t = tab.entry(p.to_string()).or_insert_with(|| toml::Value::Table(Default::default()));
+        }
+        if let toml::Value::Table(tab) = t {
+            tab.insert(parts[parts.len() - 1].to_string(), value.into());
         }
     }
+
+    /// One setting of one solver (a dotted key reaches into nested tables), if present.
+    pub fn get(&self, solver: &str, key: &str) -> Option<&toml::Value> {
+        let mut v = self.settings.get(solver)?;
+        for p in key.split('.') {
+            v = v.as_table()?.get(p)?;
+        }
+        Some(v)
+    }
+
+    /// Build a registered solver with this spec's settings (an input error names the key).
+    pub fn build(
+        &self,
+        name: &str,
+    ) -> std::result::Result<Box<dyn crate::solvers::Solver>, crate::solvers::SettingsError> {
+        crate::solvers::build(name, self.settings.get(name))
+    }
+
+    /// Check the names and every settings table, and fill in the defaults of every registered solver.
+    pub fn normalize(&mut self) -> std::result::Result<(), crate::solvers::SettingsError> {
+        use crate::solvers::{SettingsError, REGISTRY};
+        if self.use_.is_empty() {
+            return Err(SettingsError {
+                field: "solvers.use".into(),
+                message: "must name at least one solver (or \"all\")".into(),
+                unknown: false,
+            });
+        }
+        for name in &self.use_ {
+            if name != "all" && crate::solvers::entry(name).is_none() {
+                return Err(SettingsError {
+                    field: "solvers.use".into(),
+                    message: format!("unknown solver `{name}` (expected one of: all, {})", crate::solvers::names()),
+                    unknown: true,
+                });
+            }
+        }
+        if let Some(k) = self.settings.keys().find(|k| crate::solvers::entry(k).is_none()) {
+            return Err(SettingsError {
+                field: format!("solvers.{k}"),
+                message: format!("unknown solver settings table (solvers are: {})", crate::solvers::names()),
+                unknown: true,
+            });
+        }
+        let mut settings = BTreeMap::new();
+        for e in REGISTRY {
+            let solver = (e.build)(self.settings.get(e.name))?;
+            settings.insert(e.name.to_string(), solver.settings());
+        }
+        self.settings = settings;
+        Ok(())
+    }
+}
+
+impl Serialize for SolverSpec {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut m = s.serialize_map(Some(1 + self.settings.len()))?;
+        m.serialize_entry("use", &self.use_)?;
+        // Registry order first (as reported), then anything else.
+        for e in crate::solvers::REGISTRY {
+            if let Some(v) = self.settings.get(e.name) {
+                m.serialize_entry(e.name, v)?;
+            }
+        }
+        for (k, v) in self.settings.iter().filter(|(k, _)| crate::solvers::entry(k).is_none()) {
+            m.serialize_entry(k, v)?;
+        }
+        m.end()
+    }
+}
+
+impl<'de> Deserialize<'de> for SolverSpec {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        #[derive(Deserialize)]
+        struct Raw {
+            #[serde(rename = "use", default = "default_use")]
+            use_: Vec<String>,
+            #[serde(flatten)]
+            settings: BTreeMap<String, toml::Value>,
+        }
+        let raw = Raw::deserialize(d)?;
+        Ok(SolverSpec { use_: raw.use_, settings: raw.settings })
+    }
+}
+
+fn default_use() -> Vec<String> {
+    vec!["all".into()]
 }
 
 impl Scene {
@@ -328,48 +397,77 @@ impl Scene {
         Scene::from_toml(&text, path)
     }
 
-    /// Parse and validate scene text; `path` is used in error messages only.
+    /// Parse and validate scene text; `path` is used in error messages only. The solvers' settings come back with
+    /// their defaults filled in.
     pub fn from_toml(text: &str, path: &Path) -> Result<Scene> {
-        let scene: Scene = toml::from_str(text)
+        let mut scene: Scene = toml::from_str(text)
             .map_err(|e| Error::Parse { path: path.to_path_buf(), message: e.to_string().trim_end().to_string() })?;
         scene.validate(path)?;
+        scene.solvers.normalize().map_err(|e| e.into_error(path))?;
         Ok(scene)
+    }
+
+    /// The drive of the three rigid degrees of freedom (user's units).
+    pub fn drive_dofs(&self) -> DriveDofs {
+        DriveDofs {
+            normal: self.drive.normal(),
+            tangential: self.drive.tangential(),
+            rotational: self.drive.rotational(),
+        }
+    }
+
+    /// The contact law.
+    pub fn law(&self) -> ContactLaw {
+        ContactLaw { friction: self.contact.friction, coupling: self.contact.coupling }
     }
 
     /// Check every value's range; the error names the dotted key.
     pub fn validate(&self, path: &Path) -> Result<()> {
-        let bad = |field: &str, message: String| Error::Invalid {
-            path: path.to_path_buf(),
-            field: field.to_string(),
-            message,
-        };
-        let positive = |field: &str, v: f64| -> Result<()> {
-            if !v.is_finite() || v <= 0.0 {
-                return Err(bad(field, format!("must be a finite number > 0 (got {v})")));
-            }
-            Ok(())
-        };
-        let finite = |field: &str, v: f64| -> Result<()> {
-            if !v.is_finite() {
-                return Err(bad(field, format!("must be a finite number (got {v})")));
-            }
-            Ok(())
-        };
+        let c = Checker { path };
         if self.name.trim().is_empty() {
-            return Err(bad("name", "must not be empty".into()));
+            return Err(c.bad("name", "must not be empty".into()));
         }
+        self.validate_wheel(&c)?;
+        self.validate_mesh(&c)?;
+        let mu = self.contact.friction;
+        if !mu.is_finite() || mu < 0.0 {
+            return Err(c.bad("contact.friction", format!("must be a finite number ≥ 0 (got {mu})")));
+        }
+        self.validate_drive(&c)?;
+        self.solvers.clone().normalize().map_err(|e| e.into_error(path))?;
+        if let Some(k) = self.checks.solver_status.keys().find(|k| crate::solvers::entry(k).is_none()) {
+            return Err(Error::Parse {
+                path: path.to_path_buf(),
+                message: format!("checks.solver_status.{k}: unknown solver (solvers are: {})", crate::solvers::names()),
+            });
+        }
+        let ck = &self.checks;
+        for (field, v) in [
+            ("checks.hertz", ck.hertz),
+            ("checks.agreement", ck.agreement),
+            ("checks.residual", ck.residual),
+            ("checks.cattaneo_elements", ck.cattaneo_elements),
+        ] {
+            if let Some(v) = v {
+                c.positive(field, v)?;
+            }
+        }
+        Ok(())
+    }
+
+    fn validate_wheel(&self, c: &Checker) -> Result<()> {
         let w = &self.wheel;
-        positive("wheel.radius", w.radius)?;
-        positive("wheel.youngs_modulus", w.youngs_modulus)?;
+        c.positive("wheel.radius", w.radius)?;
+        c.positive("wheel.youngs_modulus", w.youngs_modulus)?;
         let nu = w.poisson_ratio;
         if !nu.is_finite() || !(0.0..=0.5).contains(&nu) {
-            return Err(bad("wheel.poisson_ratio", format!("must lie in [0, 0.5] (got {nu})")));
+            return Err(c.bad("wheel.poisson_ratio", format!("must lie in [0, 0.5] (got {nu})")));
         }
         match w.support {
             Support::Hub { radius } => {
-                positive("wheel.support.radius", radius)?;
+                c.positive("wheel.support.radius", radius)?;
                 if nu == 0.5 {
-                    return Err(bad(
+                    return Err(c.bad(
                         "wheel.poisson_ratio",
                         "ν = 0.5 with a hub support is degenerate for the displacement BIE: in incompressible plane \
                          strain a uniform radial traction on the clamped hub circle produces no displacement anywhere, \
@@ -379,7 +477,7 @@ impl Scene {
                     ));
                 }
                 if radius >= 0.95 * w.radius {
-                    return Err(bad(
+                    return Err(c.bad(
                         "wheel.support.radius",
                         format!("hub radius {radius} must be below 0.95 × wheel.radius = {}", 0.95 * w.radius),
                     ));
@@ -387,33 +485,36 @@ impl Scene {
             }
             Support::TopArc { angle_deg } => {
                 if !angle_deg.is_finite() || angle_deg <= 0.0 || angle_deg >= 180.0 {
-                    return Err(bad(
-                        "wheel.support.angle_deg",
-                        format!("must lie in (0, 180) degrees (got {angle_deg})"),
-                    ));
+                    return Err(
+                        c.bad("wheel.support.angle_deg", format!("must lie in (0, 180) degrees (got {angle_deg})"))
+                    );
                 }
             }
         }
+        Ok(())
+    }
+
+    fn validate_mesh(&self, c: &Checker) -> Result<()> {
+        let w = &self.wheel;
         let m = &self.mesh;
         if !m.contact_arc_deg.is_finite() || m.contact_arc_deg <= 0.0 || m.contact_arc_deg >= 180.0 {
-            return Err(bad(
-                "mesh.contact_arc_deg",
-                format!("must lie in (0, 180) degrees (got {})", m.contact_arc_deg),
-            ));
+            return Err(
+                c.bad("mesh.contact_arc_deg", format!("must lie in (0, 180) degrees (got {})", m.contact_arc_deg))
+            );
         }
         if let Support::TopArc { angle_deg } = w.support {
             if m.contact_arc_deg + angle_deg >= 300.0 {
-                return Err(bad(
+                return Err(c.bad(
                     "wheel.support.angle_deg",
                     "the clamped top arc and the contact arc overlap or leave no free boundary".into(),
                 ));
             }
         }
         if m.contact_elements < 1 {
-            return Err(bad("mesh.contact_elements", "must be at least 1".into()));
+            return Err(c.bad("mesh.contact_elements", "must be at least 1".into()));
         }
         if m.other_elements < 4 {
-            return Err(bad("mesh.other_elements", format!("must be at least 4 (got {})", m.other_elements)));
+            return Err(c.bad("mesh.other_elements", format!("must be at least 4 (got {})", m.other_elements)));
         }
         // The dense BEM system holds (2N)² doubles for N nodes (plus its LU copy): bound N so that it fits in a few
         // GiB instead of failing to allocate (an abort, not an error).
@@ -429,7 +530,7 @@ impl Scene {
         let nodes = outer_nodes.saturating_add(hub_nodes);
         if nodes > MAX_NODES {
             let gib = (2.0 * nodes as f64).powi(2) * 8.0 * 2.0 / (1u64 << 30) as f64;
-            return Err(bad(
+            return Err(c.bad(
                 "mesh",
                 format!(
                     "about {nodes} boundary nodes: the dense BEM system and its LU would need about {gib:.1} GiB; \
@@ -437,10 +538,10 @@ impl Scene {
                 ),
             ));
         }
-        let mu = self.contact.friction;
-        if !mu.is_finite() || mu < 0.0 {
-            return Err(bad("contact.friction", format!("must be a finite number ≥ 0 (got {mu})")));
-        }
+        Ok(())
+    }
+
+    fn validate_drive(&self, c: &Checker) -> Result<()> {
         let d = &self.drive;
         let pairs = [
             ("drive.normal_approach", d.normal_approach, "drive.normal_load", d.normal_load),
@@ -449,67 +550,25 @@ impl Scene {
         ];
         for (a, va, b, vb) in pairs {
             if va.is_some() && vb.is_some() {
-                return Err(bad(a, format!("give either `{a}` or `{b}`, not both")));
+                return Err(c.bad(a, format!("give either `{a}` or `{b}`, not both")));
             }
             if let Some(v) = va {
-                finite(a, v)?;
+                c.finite(a, v)?;
             }
             if let Some(v) = vb {
-                finite(b, v)?;
+                c.finite(b, v)?;
             }
         }
         if d.normal_approach.is_none() && d.normal_load.is_none() {
-            return Err(bad("drive", "give `normal_approach` or `normal_load`".into()));
+            return Err(c.bad("drive", "give `normal_approach` or `normal_load`".into()));
         }
         if let Some(p) = d.normal_load {
-            positive("drive.normal_load", p)?;
+            c.positive("drive.normal_load", p)?;
         }
         if let Some(r) = &self.rolling {
-            finite("rolling.creepage", r.creepage)?;
+            c.finite("rolling.creepage", r.creepage)?;
             if r.direction != 1 && r.direction != -1 {
-                return Err(bad("rolling.direction", format!("must be 1 or -1 (got {})", r.direction)));
-            }
-        }
-        if self.solvers.use_.is_empty() {
-            return Err(bad("solvers.use", "must name at least one solver (or \"all\")".into()));
-        }
-        let sv = &self.solvers;
-        let tol = |field: &str, v: f64| -> Result<()> {
-            if !v.is_finite() || v <= 0.0 || v >= 1.0 {
-                return Err(bad(field, format!("must lie in (0, 1) (got {v})")));
-            }
-            Ok(())
-        };
-        let count = |field: &str, v: usize| -> Result<()> {
-            if v == 0 {
-                return Err(bad(field, "must be at least 1".into()));
-            }
-            Ok(())
-        };
-        tol("solvers.lemke.pivot_tolerance", sv.lemke.pivot_tolerance)?;
-        tol("solvers.lemke.tie_tolerance", sv.lemke.tie_tolerance)?;
-        count("solvers.lemke.max_pivots_per_unknown", sv.lemke.max_pivots_per_unknown)?;
-        count("solvers.lemke.refactor_every", sv.lemke.refactor_every)?;
-        tol("solvers.clarabel.tolerance", sv.clarabel.tolerance)?;
-        count("solvers.clarabel.max_iter", sv.clarabel.max_iter as usize)?;
-        tol("solvers.pgs.tolerance", sv.pgs.tolerance)?;
-        count("solvers.pgs.max_sweeps", sv.pgs.max_sweeps)?;
-        count("solvers.pgs.max_outer", sv.pgs.max_outer)?;
-        if !(sv.pgs.relaxation > 0.0 && sv.pgs.relaxation < 2.0) {
-            return Err(bad("solvers.pgs.relaxation", format!("must lie in (0, 2) (got {})", sv.pgs.relaxation)));
-        }
-        tol("solvers.normtang_qp.tolerance", sv.normtang_qp.tolerance)?;
-        count("solvers.normtang_qp.max_outer", sv.normtang_qp.max_outer)?;
-        tol("solvers.normtang_qp.qp.tolerance", sv.normtang_qp.qp.tolerance)?;
-        let ck = &self.checks;
-        for (field, v) in [
-            ("checks.hertz", ck.hertz),
-            ("checks.agreement", ck.agreement),
-            ("checks.residual", ck.residual),
-            ("checks.cattaneo_elements", ck.cattaneo_elements),
-        ] {
-            if let Some(v) = v {
-                positive(field, v)?;
+                return Err(c.bad("rolling.direction", format!("must be 1 or -1 (got {})", r.direction)));
             }
         }
         Ok(())
@@ -523,7 +582,7 @@ impl Scene {
 
 impl Expect {
     /// The status expected of `solver` (by its registry name).
-    pub fn status_for(&self, solver: &str) -> crate::solvers::Status {
-        self.solver_status.iter().find(|(k, _)| k.name() == solver).map(|(_, v)| *v).unwrap_or(self.status)
+    pub fn status_for(&self, solver: &str) -> Status {
+        self.solver_status.get(solver).copied().unwrap_or(self.status)
     }
 }

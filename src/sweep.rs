@@ -23,8 +23,10 @@
 //! [`merge`] joins the shards' CSVs into the CSV the unsharded sweep writes (up to the [`TIMING_COLUMNS`]).
 
 use crate::error::{Error, Result};
+use crate::io::write_atomic;
 use crate::references::metrics;
-use crate::run::{run_scene, write_atomic, SolverRun};
+use crate::results::SolverRun;
+use crate::run::run_scene;
 use crate::scene::Scene;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
@@ -104,20 +106,12 @@ impl std::fmt::Display for Shard {
 /// when comparing CSVs).
 pub const TIMING_COLUMNS: &[&str] = &["t_assembly", "t_condensation", "t_formulation", "t_solve", "t_total"];
 
-/// The columns after the swept keys, up to the timings.
-const RESULT_COLUMNS: &[&str] = &[
-    "scene",
-    "element",
-    "contact_elements",
-    "contact_nodes",
-    "solver",
-    "formulation",
-    "status",
-    "problem_size",
-    "pivots",
-    "iterations",
-    "sweeps",
-    "outer",
+/// The columns after the swept keys and before the work counters.
+const RESULT_COLUMNS_HEAD: &[&str] =
+    &["scene", "element", "contact_elements", "contact_nodes", "solver", "formulation", "status", "problem_size"];
+
+/// The columns after the work counters ([`crate::solvers::work_columns`]), up to the timings.
+const RESULT_COLUMNS_TAIL: &[&str] = &[
     "residual",
     "normal_load",
     "tangential_load",
@@ -132,6 +126,14 @@ const RESULT_COLUMNS: &[&str] = &[
     "cm_centre_elements",
     "cm_shear_err",
 ];
+
+/// The columns after the swept keys, up to the timings: the head, the registry's work counters, the tail.
+fn result_columns() -> Vec<&'static str> {
+    let mut c = RESULT_COLUMNS_HEAD.to_vec();
+    c.extend(crate::solvers::work_columns());
+    c.extend(RESULT_COLUMNS_TAIL);
+    c
+}
 
 /// The status written for a case that could not be built or run.
 const ERROR_STATUS: &str = "error";
@@ -381,7 +383,7 @@ fn build_scene(doc: &Table, spec_label: &Path, base: &Path, what: &str) -> Resul
 fn header(keys: &[String]) -> Vec<String> {
     let mut h = vec!["case".to_string()];
     h.extend(keys.iter().cloned());
-    h.extend(RESULT_COLUMNS.iter().map(|s| s.to_string()));
+    h.extend(result_columns().iter().map(|s| s.to_string()));
     h.extend(TIMING_COLUMNS.iter().map(|s| s.to_string()));
     h.push("message".into());
     h
@@ -417,14 +419,13 @@ fn run_row(case: &Variant, keys: &[String], scene: &Scene, contact_nodes: usize,
         scene.mesh.element.name().to_string(),
         scene.mesh.contact_elements.to_string(),
         contact_nodes.to_string(),
-        r.solver.clone(),
-        r.formulation.clone(),
+        r.solver.to_string(),
+        r.formulation.to_string(),
         r.status.name().to_string(),
         r.problem_size.to_string(),
-        int(r.work.pivots),
-        int(r.work.iterations),
-        int(r.work.sweeps),
-        int(r.work.outer),
+    ]);
+    cells.extend(crate::solvers::work_columns().into_iter().map(|c| int(r.work.get(c))));
+    cells.extend([
         float(r.residuals.map(|x| x.max())),
         float(r.resultants.map(|x| x.normal)),
         float(r.resultants.map(|x| x.tangential)),
@@ -442,7 +443,7 @@ fn run_row(case: &Variant, keys: &[String], scene: &Scene, contact_nodes: usize,
     let t = &r.timing_s;
     cells.extend([t.assembly, t.condensation, t.formulation, t.solve, t.total].map(|v| float(Some(v))));
     cells.push(r.message.clone());
-    Row { case: case.index, solver: r.solver.clone(), cells }
+    Row { case: case.index, solver: r.solver.to_string(), cells }
 }
 
 /// Rows for a case that could not be built or run: one per solver it names (read from the variant's document, so
@@ -469,8 +470,9 @@ fn error_rows(case: &Variant, keys: &[String], err: &Error) -> Vec<Row> {
         .map(|solver| {
             let mut cells = vec![case.index.to_string()];
             cells.extend(param_cells(keys, &case.params));
-            let mut rest = vec![String::new(); RESULT_COLUMNS.len() + TIMING_COLUMNS.len()];
-            let at = |name: &str| RESULT_COLUMNS.iter().position(|c| *c == name).expect("a result column");
+            let columns = result_columns();
+            let mut rest = vec![String::new(); columns.len() + TIMING_COLUMNS.len()];
+            let at = |name: &str| columns.iter().position(|c| *c == name).expect("a result column");
             rest[at("scene")] = text(&["name"]);
             rest[at("element")] = text(&["mesh", "element"]);
             rest[at("contact_elements")] = text(&["mesh", "contact_elements"]);

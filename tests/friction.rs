@@ -4,11 +4,12 @@
 
 use faer::linalg::solvers::Solve;
 use faer::Mat;
-use rollbem::condense::{condense, Blocks, Model};
 use rollbem::post::NodeState;
-use rollbem::run::{run_scene, Report, SolverRun};
+use rollbem::results::{Report, SolverRun};
+use rollbem::run::run_scene;
 use rollbem::scene::{Scene, Support};
 use rollbem::solvers::Status;
+use rollbem::source::{self, Blocks};
 use std::path::Path;
 
 fn scene(text: &str) -> Scene {
@@ -262,22 +263,21 @@ fn rolling_slip_velocity_only_when_asked() {
 /// the flexibility, no LCP, no multipliers), and keep the assignments whose inequalities hold. Returns the
 /// (f, h) of every admissible assignment (dimensionless nodal forces).
 fn oracle(s: &Scene) -> Vec<(Vec<f64>, Vec<f64>)> {
-    let model = Model::new(s);
-    let (fl, _) = condense(&model, Blocks::All).unwrap();
+    let fl = source::build(s, Blocks::All).unwrap().flex;
     let n = fl.n();
     let mu = s.contact.friction;
-    let l0 = model.length;
-    let kk = |m: &Mat<f64>| Mat::from_fn(n, n, |i, j| m[(i, j)] / fl.weights[j]);
+    let l0 = fl.scales.length;
     let (knn, knt, ktn, ktt) =
-        (kk(&fl.nn), kk(fl.nt.as_ref().unwrap()), kk(fl.tn.as_ref().unwrap()), kk(fl.tt.as_ref().unwrap()));
+        (&fl.k_nn, fl.k_nt.as_ref().unwrap(), fl.k_tn.as_ref().unwrap(), fl.k_tt.as_ref().unwrap());
+    // The rigid modes in the order shift, approach, rotation.
     let d = [
         s.drive.tangential_shift.unwrap_or(0.0) / l0,
         s.drive.normal_approach.unwrap() / l0,
         s.drive.rotation.unwrap_or(0.0),
     ];
-    let gr: Vec<f64> = (0..n).map(|i| fl.g0[i] + (0..3).map(|m| fl.rigid_n[(i, m)] * d[m]).sum::<f64>()).collect();
+    let gr: Vec<f64> = (0..n).map(|i| fl.g0[i] + (0..3).map(|m| fl.modes[m].normal[i] * d[m]).sum::<f64>()).collect();
     let tr: Vec<f64> =
-        (0..n).map(|i| (0..3).map(|m| fl.rigid_t.as_ref().unwrap()[(i, m)] * d[m]).sum::<f64>()).collect();
+        (0..n).map(|i| (0..3).map(|m| fl.modes[m].tangential.as_ref().unwrap()[i] * d[m]).sum::<f64>()).collect();
     let mut found = Vec::new();
     for code in 0..4usize.pow(n as u32) {
         let st: Vec<usize> = (0..n).map(|i| (code / 4usize.pow(i as u32)) % 4).collect();
@@ -388,8 +388,7 @@ use = ["lemke"]
         let r = run(&s);
         let l = lemke(&r);
         assert_eq!(l.status, Status::Solved, "case {case}: {}", l.message);
-        let model = Model::new(&s);
-        let (fl, _) = condense(&model, Blocks::Normal).unwrap();
+        let fl = source::build(&s, Blocks::Normal).unwrap().flex;
         let scale = 1000.0 * 2.0; // E · L0: nodal force unit
         let fmax = sols[0].0.iter().fold(0.0_f64, |a, v| a.max(v.abs())).max(1e-300);
         for (f, h) in &sols {
@@ -429,8 +428,8 @@ fn mixed_drive_p_and_q_with_rotation_held() {
 fn block_and_dense_lemke_engines_agree() {
     // Two independent implementations of Lemke's method (block-revised C⁻¹ updates vs the full basis inverse) on
     // the frictional LCPs of several scenes and on random small LCPs: the same status and the same z.
-    use rollbem::formulation::Frictional;
-    use rollbem::solvers::lemke::{solve, solve_dense, LemkeSettings};
+    use rollbem::solvers::lemke::dense::solve_dense;
+    use rollbem::solvers::lemke::{solve, LemkeSettings};
     use rollbem::solvers::Lcp;
     let st = LemkeSettings::default();
     for s in [
@@ -438,10 +437,10 @@ fn block_and_dense_lemke_engines_agree() {
         base(0.3, 0.3, "normal_load = 187.42\ntangential_load = 40.0\nrotation = 0.0", ""),
         base(0.0, 1.2, "normal_approach = 0.004\ntangential_shift = 0.0003\nrotation = 0.00001", ""),
     ] {
-        let model = Model::new(&s);
-        let (fl, _) = condense(&model, Blocks::All).unwrap();
-        let p = Frictional::new(&s, &model, &fl);
-        let (a, b) = (solve(&p.lcp, &st), solve_dense(&p.lcp, &st));
+        let fl = source::build(&s, Blocks::All).unwrap().flex;
+        let p = rollbem::run::build_problem(&s, &fl, Path::new("<test>")).unwrap();
+        let lcp = p.lcp.as_ref().unwrap();
+        let (a, b) = (solve(lcp, &st), solve_dense(lcp, &st));
         assert_eq!(a.status, Status::Solved, "{}", a.message);
         assert_eq!(b.status, Status::Solved, "{}", b.message);
         let zmax = b.z.iter().fold(0.0_f64, |m, v| m.max(v.abs()));

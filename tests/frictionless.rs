@@ -2,11 +2,11 @@
 //! problem sizes and unit invariance. Expected values: Hertz's formulas (REFERENCES.md, `rollbem::hertz`), the
 //! prescribed load, and the peer solver.
 
-use rollbem::condense::{condense, Blocks, Model};
-use rollbem::formulation::Frictionless;
-use rollbem::run::{run_scene, Report, SolverRun};
+use rollbem::results::{Report, SolverRun};
+use rollbem::run::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
+use rollbem::source::{self, Blocks};
 use rollbem::tolerances as tol;
 use std::path::Path;
 
@@ -106,11 +106,11 @@ fn frictionless_scene_builds_and_solves_only_the_normal_problem() {
     let mut s = scene(1.0, 94500.0, 0.1, 0.2, 0.05, "constant", 24, 32);
     s.drive.normal_load = None;
     s.drive.normal_approach = Some(0.004);
-    let model = Model::new(&s);
-    let (flex, _) = condense(&model, Blocks::Normal).unwrap();
-    assert!(flex.nt.is_none() && flex.tn.is_none() && flex.tt.is_none() && flex.rigid_t.is_none());
-    let prob = Frictionless::new(&s, &model, &flex).unwrap();
-    assert_eq!(prob.lcp.size(), flex.n());
+    let flex = source::build(&s, Blocks::Normal).unwrap().flex;
+    assert!(flex.k_nt.is_none() && flex.k_tn.is_none() && flex.k_tt.is_none());
+    assert!(flex.modes.iter().all(|m| m.tangential.is_none()));
+    let prob = rollbem::run::build_problem(&s, &flex, std::path::Path::new("<test>")).unwrap();
+    assert_eq!(prob.lcp.as_ref().unwrap().size(), flex.n());
     let rep = run(&s);
     assert_eq!(rep.effects, vec!["normal".to_string()]);
     for run in &rep.runs {
@@ -172,7 +172,7 @@ fn a_negative_approach_gives_no_contact_and_zero_load() {
     let mut s = scene(1.0, 94500.0, 0.1, 0.2, 0.05, "constant", 24, 32);
     s.drive.normal_load = None;
     s.drive.normal_approach = Some(-0.001);
-    s.solvers.use_ = vec![rollbem::scene::SolverName::Lemke];
+    s.solvers.use_ = vec!["lemke".into()];
     let rep = run(&s);
     let l = solver(&rep, "lemke");
     assert_eq!(l.status, Status::Solved);

@@ -2,7 +2,8 @@
 //! with the residual bound, or the named diagnosis — and passes its checks against theory and peer solvers.
 
 use rollbem::post::NodeState;
-use rollbem::run::{run_scene, Report};
+use rollbem::results::Report;
+use rollbem::run::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use std::path::{Path, PathBuf};
@@ -31,7 +32,7 @@ fn every_hard_case_meets_its_stated_expectation() {
         let failed: Vec<String> = r.checks.iter().filter(|c| !c.pass).map(|c| c.name.clone()).collect();
         assert!(failed.is_empty(), "{n}: {failed:?}");
         for run in &r.runs {
-            assert_eq!(run.status, s.checks.status_for(&run.solver), "{n} {}: {}", run.solver, run.message);
+            assert_eq!(run.status, s.checks.status_for(run.solver.0), "{n} {}: {}", run.solver, run.message);
             assert!(!run.message.is_empty());
         }
     }

@@ -2,7 +2,7 @@
 //! solver's claimed success with a large solver-independent residual is refused (`numerical_error`).
 
 use rollbem::run::run_scene;
-use rollbem::scene::{Scene, SolverName};
+use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use std::path::Path;
 
@@ -15,11 +15,9 @@ fn conditioning_is_reported_and_moderate_on_the_reference_scenes() {
     for rel in ["scenes/hertz-hub-fine.toml", "scenes/seed-fig17-mu07.toml", "scenes/seed-fig6-quadratic.toml"] {
         let r = run_scene(&load(rel), Path::new(rel)).unwrap();
         let d = &r.diagnostics;
-        assert!(d.bem_condition.is_finite() && d.bem_condition >= 1.0, "{rel}: {d:?}");
-        assert!(
-            d.bem_condition >= d.bem_pivot_ratio / 10.0,
-            "{rel}: the estimate should not be far below the pivot ratio"
-        );
+        let (bem_condition, bem_pivot_ratio) = (d.bem_condition.unwrap(), d.bem_pivot_ratio.unwrap());
+        assert!(bem_condition.is_finite() && bem_condition >= 1.0, "{rel}: {d:?}");
+        assert!(bem_condition >= bem_pivot_ratio / 10.0, "{rel}: the estimate should not be far below the pivot ratio");
         assert!(d.flexibility_condition.is_finite() && d.flexibility_condition >= 1.0);
         if rel.contains("quadratic") {
             // The seed's coarse 56-element quadratic mesh: ‖K − Kᵀ‖/‖K‖ = 1.2 % (vs 0.3 % with constant elements on
@@ -36,10 +34,10 @@ fn the_incompressible_limit_on_a_hub_is_warned_about() {
     // ν → 0.5 with a clamped hub approaches the degenerate case refused at ν = 0.5 (a uniform hub pressure produces
     // no displacement): κ grows like 1/(0.5 − ν). Reference: that scaling, measured κ ≈ 4e5 at ν = 0.4999.
     let mut s = load("hard/nu-04999-hub.toml");
-    let k4 = run_scene(&s, Path::new("x")).unwrap().diagnostics.bem_condition;
+    let k4 = run_scene(&s, Path::new("x")).unwrap().diagnostics.bem_condition.unwrap();
     s.wheel.poisson_ratio = 0.5 - 1e-7;
     let r = run_scene(&s, Path::new("x")).unwrap();
-    let k7 = r.diagnostics.bem_condition;
+    let k7 = r.diagnostics.bem_condition.unwrap();
     assert!(k7 > 100.0 * k4, "κ at 0.5−1e-7 ({k7:e}) should be ≫ κ at 0.4999 ({k4:e})");
     s.wheel.poisson_ratio = 0.5 - 1e-11;
     let r = run_scene(&s, Path::new("x")).unwrap();
@@ -55,9 +53,9 @@ fn a_claimed_success_with_a_large_independent_residual_is_refused() {
     // clarabel stopped at tolerance 1e-3 without its polish: it reports success, but the physical residual of its
     // answer is far above the refusal bound (1e-8 for a direct solver), so the harness says numerical_error.
     let mut s = load("scenes/hertz-hub-fine.toml");
-    s.solvers.use_ = vec![SolverName::Clarabel];
-    s.solvers.clarabel.tolerance = 1e-3;
-    s.solvers.clarabel.polish = false;
+    s.solvers.use_ = vec!["clarabel".to_string()];
+    s.solvers.set("clarabel", "tolerance", 1e-3);
+    s.solvers.set("clarabel", "polish", false);
     let r = run_scene(&s, Path::new("x")).unwrap();
     let c = &r.runs[0];
     assert_eq!(c.status, Status::NumericalError, "{}", c.message);

@@ -160,7 +160,7 @@ fn assert_is_enumerated(out: &LemkeOutcome, sols: &[Vec<f64>], what: &str) {
 
 fn both(p: &Lcp) -> [(&'static str, LemkeOutcome); 2] {
     let s = LemkeSettings::default();
-    [("block", lemke::solve(p, &s)), ("dense", lemke::solve_dense(p, &s))]
+    [("block", lemke::solve(p, &s)), ("dense", rollbem::solvers::lemke::dense::solve_dense(p, &s))]
 }
 
 /// Every principal minor positive (the definition of a P-matrix; CPS Def. 3.3.1), by LU of each principal block.
@@ -363,7 +363,7 @@ fn murty_exponential_example() {
             assert_is_enumerated(&blk, &sols, &format!("Murty n={n}"));
             assert_is_enumerated(&dns, &sols, &format!("Murty n={n}"));
         }
-        // Both engines follow the same pivot path (src/solvers/lemke_block.rs docs), and that path is the textbook
+        // Both engines follow the same pivot path (src/solvers/lemke/block.rs docs), and that path is the textbook
         // one for the covering vector D_r⁻¹e of their row equilibration (replicated by `ruiz_rows`).
         assert_eq!(blk.pivots, dns.pivots, "Murty n={n}: engines disagree on the pivot path");
         let d: Vec<f64> = ruiz_rows(&p.m).iter().map(|r| 1.0 / r).collect();
@@ -656,7 +656,7 @@ fn write_then_read_is_identical_and_solves_identically() {
             }
         }
         assert!(back.q.iter().zip(&p.q).all(|(a, b)| a.to_bits() == b.to_bits()), "problem {k}: q");
-        for solve in [lemke::solve, lemke::solve_dense] {
+        for solve in [lemke::solve, rollbem::solvers::lemke::dense::solve_dense] {
             let s = LemkeSettings::default();
             let (a, b) = (solve(p, &s), solve(&back, &s));
             assert_eq!(a.status, b.status);

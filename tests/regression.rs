@@ -40,7 +40,7 @@ fn figures() -> BTreeMap<String, Vec<String>> {
     let mut out = BTreeMap::new();
     for p in paths {
         let mut s = Scene::from_file(&p).unwrap();
-        s.solvers.use_ = vec![rollbem::scene::SolverName::Lemke];
+        s.solvers.use_ = vec!["lemke".to_string()];
         let r = run_scene(&s, &p).unwrap();
         let l = &r.runs[0];
         let f = |v: Option<f64>| v.map(|v| format!("{v:e}")).unwrap_or_default();

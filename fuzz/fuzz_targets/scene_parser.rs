@@ -22,16 +22,22 @@ fuzz_target!(|data: &[u8]| {
     // Iterative solvers' budgets are user settings: cap them so a hostile scene cannot stall the fuzzer.
     let mut scene = scene;
     let s = &mut scene.solvers;
-    s.pgs.max_sweeps = s.pgs.max_sweeps.min(2_000);
-    s.pgs.max_outer = s.pgs.max_outer.min(50);
-    s.normtang_qp.max_outer = s.normtang_qp.max_outer.min(50);
-    s.clarabel.max_iter = s.clarabel.max_iter.min(200);
-    s.normtang_qp.qp.max_iter = s.normtang_qp.qp.max_iter.min(200);
+    for (solver, key, cap) in [
+        ("pgs", "max_sweeps", 2_000),
+        ("pgs", "max_outer", 50),
+        ("normtang_qp", "max_outer", 50),
+        ("clarabel", "max_iter", 200),
+        ("normtang_qp", "qp.max_iter", 200),
+    ] {
+        if let Some(v) = s.get(solver, key).and_then(|v| v.as_integer()) {
+            s.set(solver, key, v.min(cap));
+        }
+    }
     let Ok(report) = run_scene(&scene, path) else { return };
     for run in &report.runs {
         if run.status == Status::Solved {
             let res = run.residuals.expect("a solved run carries residuals");
-            let bound = residual_bounds(&scene, &run.solver).1;
+            let bound = residual_bounds(&scene, run.solver.0).1;
             assert!(res.max() <= bound, "{}: solved with residual {:e} > {bound:e}", run.solver, res.max());
         } else {
             assert!(run.residuals.is_none() && run.resultants.is_none(), "{}: unsolved run with results", run.solver);

@@ -13,7 +13,7 @@
 //! `c_lk u_k(ξ) + ∫ T*_lk u_k ds = ∫ U*_lk t_k ds`.
 //!
 //! rollbem evaluates these kernels in dimensionless units (lengths divided by the reference length of
-//! [`crate::bem::LengthScale`], moduli divided by Young's modulus), so that `ln r` never depends on the user's unit
+//! [`crate::source::bem_wheel::Model`], moduli divided by Young's modulus), so that `ln r` never depends on the user's unit
 //! of length.
 
 /// Material constants of the Kelvin kernels, dimensionless (Young's modulus scaled to 1 by the caller or not).

@@ -2,7 +2,7 @@
 //!
 //! Assembly visits every (source node, element) pair once and hands the 2×2 blocks of H and G to a
 //! [`BlockSink`], so a caller can build the full matrices (tests, small problems) or write directly into the
-//! rearranged system of the condensation ([`crate::condense`]) without storing H and G.
+//! rearranged system of the condensation ([`crate::source::bem_wheel`]) without storing H and G.
 //!
 //! H's diagonal blocks come from the rigid-body condition: a rigid translation of a bounded body produces no
 //! traction, so each block row of H sums to zero: `H_ii = −Σ_{j≠i} H_ij` (Brebbia & Dominguez §5). This absorbs
@@ -148,7 +148,7 @@ impl BlockSink for FullSystem {
     }
 }
 
-/// Assemble the full H and G (for tests and small problems; the contact pipeline uses [`crate::condense`]).
+/// Assemble the full H and G (for tests and small problems; the contact pipeline uses [`crate::source::bem_wheel`]).
 pub fn assemble_full(mesh: &Mesh, k: &Kelvin) -> FullSystem {
     let n = 2 * mesh.n_nodes();
     let mut s = FullSystem { h: faer::Mat::zeros(n, n), g: faer::Mat::zeros(n, n) };

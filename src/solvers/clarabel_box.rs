@@ -13,6 +13,7 @@
 //! kept and `polished = false`). The harness reports the polish's effect.
 
 use super::clarabel_qp::{clarabel_settings, map_status, QpSettings, QpStatus};
+use crate::tolerances::{BOX_FREE_FRACTION, BOX_POLISH_ACCEPT};
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{
     DefaultSolver, IPSolver,
@@ -47,29 +48,8 @@ pub fn solve_box(
     s: &QpSettings,
 ) -> BoxOutcome {
     let fail = |st: QpStatus| BoxOutcome { x: vec![0.0; n], nu: None, iterations: 0, status: st, polished: false };
-    if k.len() != n * n || c.len() != n || lo.len() != n || hi.len() != n || eq.is_some_and(|(a, _)| a.len() != n) {
-        return fail(QpStatus::NumericalError("inconsistent sizes".into()));
-    }
-    let finite = k.iter().chain(c).chain(lo).chain(hi).all(|v| v.is_finite())
-        && eq.is_none_or(|(a, b)| b.is_finite() && a.iter().all(|v| v.is_finite()));
-    if !finite {
-        return fail(QpStatus::NumericalError("non-finite entry in the box QP".into()));
-    }
-    if (0..n).any(|i| lo[i] > hi[i]) {
-        return fail(QpStatus::Infeasible);
-    }
-    if let Some((a, b)) = eq {
-        let (mut mn, mut mx) = (0.0, 0.0);
-        for i in 0..n {
-            mn += (a[i] * lo[i]).min(a[i] * hi[i]);
-            mx += (a[i] * lo[i]).max(a[i] * hi[i]);
-        }
-        if b < mn || b > mx {
-            return fail(QpStatus::Infeasible);
-        }
-    }
-    if n == 0 {
-        return BoxOutcome { x: vec![], nu: eq.map(|_| 0.0), iterations: 0, status: QpStatus::Solved, polished: false };
+    if let Err(out) = check_box_input(k, n, c, lo, hi, eq) {
+        return out;
     }
     // Scaling: x = α x̂, objective / γ with γ = scale of the gradient.
     let kmax = k.iter().fold(0.0_f64, |m, v| m.max(v.abs())).max(f64::MIN_POSITIVE);
@@ -139,35 +119,95 @@ pub fn solve_box(
     let nu = eq.map(|_| z[0] * gamma / (alpha * amax));
     let mut out = BoxOutcome { x: xs, nu, iterations, status, polished: false };
     if s.polish && out.status.is_solved() {
-        let width = |i: usize| (hi[i] - lo[i]).max(f64::MIN_POSITIVE);
-        let free: Vec<bool> =
-            (0..n).map(|i| out.x[i] - lo[i] > 1e-7 * width(i) && hi[i] - out.x[i] > 1e-7 * width(i)).collect();
-        // The free set of the symmetrised problem can differ from the nonsymmetric one's near the transition:
-        // correct it for a few rounds (pin overshooting free nodes, release bound nodes pushed the wrong way).
-        let mut free = free;
-        let mut x0 = out.x.clone();
-        for _ in 0..20 {
-            match polish(k, n, c, lo, hi, eq, &x0, &free) {
-                Ok((xp, nup)) => {
-                    out.x = xp;
-                    out.nu = nup;
-                    out.polished = true;
-                    break;
-                }
-                Err(Some((pin, release))) => {
-                    for (i, bound) in pin {
-                        free[i] = false;
-                        x0[i] = bound;
-                    }
-                    for i in release {
-                        free[i] = true;
-                    }
-                }
-                Err(None) => break,
-            }
-        }
+        polish_rounds(k, n, c, lo, hi, eq, &mut out);
     }
     out
+}
+
+/// Check the inputs of [`solve_box`]; `Err` carries the outcome to return (bad data, a provably infeasible box or
+/// equality, or the trivial `n = 0` solution).
+fn check_box_input(
+    k: &[f64],
+    n: usize,
+    c: &[f64],
+    lo: &[f64],
+    hi: &[f64],
+    eq: Option<(&[f64], f64)>,
+) -> Result<(), BoxOutcome> {
+    let fail = |st: QpStatus| Err(BoxOutcome { x: vec![0.0; n], nu: None, iterations: 0, status: st, polished: false });
+    if k.len() != n * n || c.len() != n || lo.len() != n || hi.len() != n || eq.is_some_and(|(a, _)| a.len() != n) {
+        return fail(QpStatus::NumericalError("inconsistent sizes".into()));
+    }
+    let finite = k.iter().chain(c).chain(lo).chain(hi).all(|v| v.is_finite())
+        && eq.is_none_or(|(a, b)| b.is_finite() && a.iter().all(|v| v.is_finite()));
+    if !finite {
+        return fail(QpStatus::NumericalError("non-finite entry in the box QP".into()));
+    }
+    if (0..n).any(|i| lo[i] > hi[i]) {
+        return fail(QpStatus::Infeasible);
+    }
+    if let Some((a, b)) = eq {
+        let (mut mn, mut mx) = (0.0, 0.0);
+        for i in 0..n {
+            mn += (a[i] * lo[i]).min(a[i] * hi[i]);
+            mx += (a[i] * lo[i]).max(a[i] * hi[i]);
+        }
+        if b < mn || b > mx {
+            return fail(QpStatus::Infeasible);
+        }
+    }
+    if n == 0 {
+        return Err(BoxOutcome {
+            x: vec![],
+            nu: eq.map(|_| 0.0),
+            iterations: 0,
+            status: QpStatus::Solved,
+            polished: false,
+        });
+    }
+    Ok(())
+}
+
+/// The active-set polish of a box-QP answer with the nonsymmetric K: the free set of the symmetrised problem can
+/// differ from the nonsymmetric one's near the transition, so it is corrected for a few rounds (pin overshooting
+/// free nodes, release bound nodes pushed the wrong way) until a polished answer is accepted.
+fn polish_rounds(
+    k: &[f64],
+    n: usize,
+    c: &[f64],
+    lo: &[f64],
+    hi: &[f64],
+    eq: Option<(&[f64], f64)>,
+    out: &mut BoxOutcome,
+) {
+    let width = |i: usize| (hi[i] - lo[i]).max(f64::MIN_POSITIVE);
+    let free: Vec<bool> = (0..n)
+        .map(|i| out.x[i] - lo[i] > BOX_FREE_FRACTION * width(i) && hi[i] - out.x[i] > BOX_FREE_FRACTION * width(i))
+        .collect();
+    // The free set of the symmetrised problem can differ from the nonsymmetric one's near the transition:
+    // correct it for a few rounds (pin overshooting free nodes, release bound nodes pushed the wrong way).
+    let mut free = free;
+    let mut x0 = out.x.clone();
+    for _ in 0..20 {
+        match polish(k, n, c, lo, hi, eq, &x0, &free) {
+            Ok((xp, nup)) => {
+                out.x = xp;
+                out.nu = nup;
+                out.polished = true;
+                break;
+            }
+            Err(Some((pin, release))) => {
+                for (i, bound) in pin {
+                    free[i] = false;
+                    x0[i] = bound;
+                }
+                for i in release {
+                    free[i] = true;
+                }
+            }
+            Err(None) => break,
+        }
+    }
 }
 
 /// Solve the nonsymmetric equality system on the free set and accept it if it is a box-LCP solution.
@@ -232,7 +272,7 @@ fn polish(
     let scale = lo.iter().chain(hi).fold(0.0_f64, |m, v| m.max(v.abs())).max(f64::MIN_POSITIVE);
     let kmax = k.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
     let gscale = (kmax * scale).max(c.iter().fold(0.0_f64, |m, v| m.max(v.abs()))).max(f64::MIN_POSITIVE);
-    let tol = 1e-9;
+    let tol = BOX_POLISH_ACCEPT;
     let (mut pin, mut release) = (Vec::new(), Vec::new());
     for i in 0..n {
         if free[i] {

@@ -91,6 +91,27 @@ pub enum QpStatus {
     NumericalError(String),
 }
 
+impl crate::solvers::Validate for QpSettings {
+    fn validate(&self) -> Result<(), (&'static str, String)> {
+        crate::solvers::check_tolerance("tolerance", self.tolerance)?;
+        crate::solvers::check_count("max_iter", self.max_iter as usize)
+    }
+}
+
+/// The one mapping of clarabel's outcome to rollbem's [`crate::status::Status`] (used by every solver that calls
+/// clarabel).
+impl From<&QpStatus> for crate::status::Status {
+    fn from(s: &QpStatus) -> Self {
+        use crate::status::Status;
+        match s {
+            QpStatus::Solved | QpStatus::AlmostSolved => Status::Solved,
+            QpStatus::MaxIterations => Status::NotConverged,
+            QpStatus::Infeasible => Status::Infeasible,
+            QpStatus::NumericalError(_) => Status::NumericalError,
+        }
+    }
+}
+
 impl QpStatus {
     /// `true` for [`QpStatus::Solved`] and [`QpStatus::AlmostSolved`].
     pub fn is_solved(&self) -> bool {
@@ -151,45 +172,9 @@ impl QpOutcome {
 /// [`QpOutcome::status`] (with zero forces when nothing could be computed). `n = 0` gives
 /// `Solved` with empty vectors unless a nonzero load is prescribed (`Infeasible`).
 pub fn solve_frictionless(k: &[f64], n: usize, c: &[f64], load: Option<(&[f64], f64)>, s: &QpSettings) -> QpOutcome {
-    // ---- validation -------------------------------------------------------------------
-    let nn = match n.checked_mul(n) {
-        Some(v) => v,
-        None => return QpOutcome::failed(0, QpStatus::NumericalError("n*n overflows".into())),
-    };
-    if k.len() != nn || c.len() != n {
-        return QpOutcome::failed(
-            n.min(c.len()),
-            QpStatus::NumericalError(format!(
-                "inconsistent sizes: n = {n}, k.len() = {}, c.len() = {}",
-                k.len(),
-                c.len()
-            )),
-        );
+    if let Err(out) = validate_input(k, n, c, load, s) {
+        return out;
     }
-    if let Some((a, _)) = load {
-        if a.len() != n {
-            return QpOutcome::failed(n, QpStatus::NumericalError(format!("a.len() = {} but n = {n}", a.len())));
-        }
-    }
-    let all_finite = k.iter().chain(c.iter()).all(|v| v.is_finite())
-        && load.is_none_or(|(a, p)| p.is_finite() && a.iter().all(|v| v.is_finite()));
-    if !all_finite {
-        return QpOutcome::failed(n, QpStatus::NumericalError("non-finite (NaN/inf) entry in K, c, a or P".into()));
-    }
-    if !(s.tolerance.is_finite() && s.tolerance > 0.0) {
-        return QpOutcome::failed(n, QpStatus::NumericalError(format!("invalid tolerance {}", s.tolerance)));
-    }
-    if let Some((a, p)) = load {
-        // {f ≥ 0, aᵀf = P} is nonempty iff P = 0 or some a_i has the sign of P.
-        let feasible = p == 0.0 || a.iter().any(|&ai| ai * p > 0.0);
-        if !feasible {
-            return QpOutcome::failed(n, QpStatus::Infeasible);
-        }
-    }
-    if n == 0 {
-        return QpOutcome::failed(0, QpStatus::Solved);
-    }
-
     // ---- scaling: f = alpha * f_hat, g = gamma * g_hat, d = gamma / amax * d_hat ---------
     let kscale = positive_or(k.iter().fold(0.0_f64, |m, v| m.max(v.abs())), 1.0);
     let cscale = c.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
@@ -208,46 +193,7 @@ pub fn solve_frictionless(k: &[f64], n: usize, c: &[f64], load: Option<(&[f64], 
             (gamma / kscale, gamma)
         }
     };
-    let kf = alpha / gamma; // scaled flexibility factor
-
-    // ---- Clarabel data ----------------------------------------------------------------
-    // P: upper triangle of K_s * alpha/gamma, column by column.
-    let mut colptr = Vec::with_capacity(n + 1);
-    let mut rowval = Vec::with_capacity(n * (n + 1) / 2);
-    let mut nzval = Vec::with_capacity(n * (n + 1) / 2);
-    colptr.push(0);
-    for j in 0..n {
-        for i in 0..=j {
-            rowval.push(i);
-            nzval.push(0.5 * (k[i + j * n] + k[j + i * n]) * kf);
-        }
-        colptr.push(rowval.len());
-    }
-    let p_mat = CscMatrix::new(n, n, colptr, rowval, nzval);
-    let q: Vec<f64> = c.iter().map(|v| v / gamma).collect();
-
-    // A = [-I; a_hat^T], b = [0; P_hat], cones = [Nonneg(n), Zero(1)].
-    let m = n + usize::from(load.is_some());
-    let mut colptr = Vec::with_capacity(n + 1);
-    let mut rowval = Vec::with_capacity(2 * n);
-    let mut nzval = Vec::with_capacity(2 * n);
-    colptr.push(0);
-    for j in 0..n {
-        rowval.push(j);
-        nzval.push(-1.0);
-        if let Some((a, _)) = load {
-            rowval.push(n);
-            nzval.push(a[j] / amax);
-        }
-        colptr.push(rowval.len());
-    }
-    let a_mat = CscMatrix::new(m, n, colptr, rowval, nzval);
-    let mut b = vec![0.0; m];
-    let mut cones = vec![NonnegativeConeT(n)];
-    if let Some((_, p)) = load {
-        b[n] = p / (alpha * amax);
-        cones.push(ZeroConeT(1));
-    }
+    let (p_mat, q, a_mat, b, cones) = clarabel_data(k, n, c, load, alpha, gamma, amax);
 
     let settings = match clarabel_settings(s) {
         Ok(st) => st,
@@ -295,6 +241,110 @@ pub fn solve_frictionless(k: &[f64], n: usize, c: &[f64], load: Option<(&[f64], 
         }
     }
     out
+}
+
+/// Check the inputs of [`solve_frictionless`]; `Err` carries the outcome to return (including the trivial
+/// `n = 0` solution and a provably infeasible load).
+fn validate_input(
+    k: &[f64],
+    n: usize,
+    c: &[f64],
+    load: Option<(&[f64], f64)>,
+    s: &QpSettings,
+) -> Result<(), QpOutcome> {
+    let nn = match n.checked_mul(n) {
+        Some(v) => v,
+        None => return Err(QpOutcome::failed(0, QpStatus::NumericalError("n*n overflows".into()))),
+    };
+    if k.len() != nn || c.len() != n {
+        return Err(QpOutcome::failed(
+            n.min(c.len()),
+            QpStatus::NumericalError(format!(
+                "inconsistent sizes: n = {n}, k.len() = {}, c.len() = {}",
+                k.len(),
+                c.len()
+            )),
+        ));
+    }
+    if let Some((a, _)) = load {
+        if a.len() != n {
+            return Err(QpOutcome::failed(n, QpStatus::NumericalError(format!("a.len() = {} but n = {n}", a.len()))));
+        }
+    }
+    let all_finite = k.iter().chain(c.iter()).all(|v| v.is_finite())
+        && load.is_none_or(|(a, p)| p.is_finite() && a.iter().all(|v| v.is_finite()));
+    if !all_finite {
+        return Err(QpOutcome::failed(
+            n,
+            QpStatus::NumericalError("non-finite (NaN/inf) entry in K, c, a or P".into()),
+        ));
+    }
+    if !(s.tolerance.is_finite() && s.tolerance > 0.0) {
+        return Err(QpOutcome::failed(n, QpStatus::NumericalError(format!("invalid tolerance {}", s.tolerance))));
+    }
+    if let Some((a, p)) = load {
+        // {f ≥ 0, aᵀf = P} is nonempty iff P = 0 or some a_i has the sign of P.
+        let feasible = p == 0.0 || a.iter().any(|&ai| ai * p > 0.0);
+        if !feasible {
+            return Err(QpOutcome::failed(n, QpStatus::Infeasible));
+        }
+    }
+    if n == 0 {
+        return Err(QpOutcome::failed(0, QpStatus::Solved));
+    }
+    Ok(())
+}
+
+/// Clarabel's data for the scaled QP: P (upper triangle of K_s α/γ), q, A = [−I; âᵀ], b = [0; P̂], cones.
+#[allow(clippy::type_complexity)]
+fn clarabel_data(
+    k: &[f64],
+    n: usize,
+    c: &[f64],
+    load: Option<(&[f64], f64)>,
+    alpha: f64,
+    gamma: f64,
+    amax: f64,
+) -> (CscMatrix<f64>, Vec<f64>, CscMatrix<f64>, Vec<f64>, Vec<clarabel::solver::SupportedConeT<f64>>) {
+    let kf = alpha / gamma; // scaled flexibility factor
+                            // P: upper triangle of K_s * alpha/gamma, column by column.
+    let mut colptr = Vec::with_capacity(n + 1);
+    let mut rowval = Vec::with_capacity(n * (n + 1) / 2);
+    let mut nzval = Vec::with_capacity(n * (n + 1) / 2);
+    colptr.push(0);
+    for j in 0..n {
+        for i in 0..=j {
+            rowval.push(i);
+            nzval.push(0.5 * (k[i + j * n] + k[j + i * n]) * kf);
+        }
+        colptr.push(rowval.len());
+    }
+    let p_mat = CscMatrix::new(n, n, colptr, rowval, nzval);
+    let q: Vec<f64> = c.iter().map(|v| v / gamma).collect();
+
+    // A = [-I; a_hat^T], b = [0; P_hat], cones = [Nonneg(n), Zero(1)].
+    let m = n + usize::from(load.is_some());
+    let mut colptr = Vec::with_capacity(n + 1);
+    let mut rowval = Vec::with_capacity(2 * n);
+    let mut nzval = Vec::with_capacity(2 * n);
+    colptr.push(0);
+    for j in 0..n {
+        rowval.push(j);
+        nzval.push(-1.0);
+        if let Some((a, _)) = load {
+            rowval.push(n);
+            nzval.push(a[j] / amax);
+        }
+        colptr.push(rowval.len());
+    }
+    let a_mat = CscMatrix::new(m, n, colptr, rowval, nzval);
+    let mut b = vec![0.0; m];
+    let mut cones = vec![NonnegativeConeT(n)];
+    if let Some((_, p)) = load {
+        b[n] = p / (alpha * amax);
+        cones.push(ZeroConeT(1));
+    }
+    (p_mat, q, a_mat, b, cones)
 }
 
 fn positive_or(v: f64, fallback: f64) -> f64 {

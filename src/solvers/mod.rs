@@ -1,78 +1,262 @@
-//! Contact solvers. A solver consumes a formulation (plain data: an [`Lcp`] or a QP) and returns a solution and a
-//! [`Status`]. Non-convergence, ray termination and infeasibility are outcomes, never panics.
+//! Contact solvers behind one small trait ([`Solver`]), chosen by name in one registry ([`REGISTRY`]): the only
+//! place solver names are listed. Scenes (`[solvers] use`, `[solvers.NAME]` settings tables), `--solver`,
+//! `rollbem lcp solve`, sweeps and reports all read it.
+//!
+//! A solver consumes a [`ContactProblem`] (plain data) and returns one [`Outcome`]: the solution in the problem's
+//! one solution shape, a [`Status`], a message and its work as named counters. Non-convergence, ray termination
+//! and infeasibility are statuses, never panics; a bad setting is an input error ([`SettingsError`]) raised when the
+//! solver is built, before anything runs. Each back end's own status maps to [`Status`] in one place (its file).
+//!
+//! Adding a solver: one file with its settings (serde, `validate`), its [`Solver`] impl and an [`Entry`], plus one
+//! line in [`REGISTRY`].
 
+pub mod clarabel;
 pub mod clarabel_box;
 pub mod clarabel_qp;
 pub mod lemke;
-pub mod lemke_block;
 pub mod normtang;
 
-use faer::Mat;
+pub use crate::formulation::Lcp;
+pub use crate::status::Status;
+
+use crate::formulation::{ContactProblem, Solution};
+use crate::tolerances as tol;
+use serde::de::DeserializeOwned;
 use serde::Serialize;
 
-/// A linear complementarity problem in the convention `w = M z + q`, `w ≥ 0`, `z ≥ 0`, `wᵀz = 0`
-/// (the seed's eq. 50 writes `w − M z = b`: `q = b`).
-#[derive(Debug, Clone)]
-pub struct Lcp {
-    /// The square matrix M (m × m).
-    pub m: Mat<f64>,
-    /// The vector q (length m).
-    pub q: Vec<f64>,
+/// The registry: every solver rollbem has, in the order runs are reported.
+pub static REGISTRY: &[Entry] =
+    &[lemke::ENTRY, clarabel::ENTRY, normtang::PGS_ENTRY, normtang::NORMTANG_QP_ENTRY, lemke::dense::ENTRY];
+
+/// Builds a solver from its settings table (`None`: the documented defaults).
+pub type Builder = fn(Option<&toml::Value>) -> Result<Box<dyn Solver>, SettingsError>;
+
+/// One registered solver.
+pub struct Entry {
+    /// Name in scene files, on the command line and in results.
+    pub name: &'static str,
+    /// One line: what it is and what it applies to.
+    pub summary: &'static str,
+    /// Whether `use = ["all"]` runs it (a slower reference engine is run by name only).
+    pub in_all: bool,
+    /// The work counters it reports, in display order (the sweep CSV's work columns are their union).
+    pub counters: &'static [&'static str],
+    /// Build the solver from its settings table (`[solvers.NAME]`, `None`: the documented defaults).
+    pub build: Builder,
 }
 
-impl Lcp {
-    /// Problem size m.
-    pub fn size(&self) -> usize {
-        self.q.len()
+/// A contact solver (see the module docs).
+pub trait Solver: Send + Sync {
+    /// Its registry name.
+    fn name(&self) -> &'static str;
+
+    /// Whether it applies to a problem; `Err` says why not.
+    fn applies(&self, problem: &ContactProblem) -> Result<(), String>;
+
+    /// Solve. Called only when [`Solver::applies`] is `Ok` and the problem has a static solution to look for.
+    fn solve(&self, problem: &ContactProblem) -> Outcome;
+
+    /// Its settings with the defaults filled in (as written in the scene's `[solvers.NAME]` table).
+    fn settings(&self) -> toml::Value;
+
+    /// The relative tolerance it stops at, for an iterative solver (`None` for a direct one).
+    fn tolerance(&self) -> Option<f64> {
+        None
     }
 
-    /// `w = M z + q` for a given `z`.
-    pub fn w_of(&self, z: &[f64]) -> Vec<f64> {
-        let m = self.size();
-        let mut w = self.q.clone();
-        for (j, &zj) in z.iter().enumerate() {
-            if zj != 0.0 {
-                for (i, wi) in w.iter_mut().enumerate().take(m) {
-                    *wi += self.m[(i, j)] * zj;
-                }
+    /// Whether the solver works on bare LCPs (`rollbem lcp solve`).
+    fn solves_lcp(&self) -> bool {
+        false
+    }
+
+    /// Solve a bare LCP, if the solver works on LCPs ([`Solver::solves_lcp`]).
+    fn solve_lcp(&self, _lcp: &Lcp) -> Option<lemke::LemkeOutcome> {
+        None
+    }
+}
+
+/// (check bound, refusal bound) on a run's largest solver-independent residual: direct solvers are held to
+/// round-off, an iterative solver stopped at τ to [`tol::ITERATIVE_RESIDUAL_FACTOR`] τ.
+pub fn residual_bounds(solver: &dyn Solver) -> (f64, f64) {
+    let f = tol::ITERATIVE_RESIDUAL_FACTOR * solver.tolerance().unwrap_or(0.0);
+    (tol::RESIDUAL_DIRECT.max(f), tol::RESIDUAL_REFUSE.max(f))
+}
+
+/// Named work counters of a run (pivots, sweeps, iterations, outer iterations, ...), in the solver's order.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Work(pub Vec<(&'static str, u64)>);
+
+impl Work {
+    /// One counter.
+    pub fn one(name: &'static str, value: u64) -> Work {
+        Work(vec![(name, value)])
+    }
+
+    /// The value of a counter.
+    pub fn get(&self, name: &str) -> Option<u64> {
+        self.0.iter().find(|(k, _)| *k == name).map(|(_, v)| *v)
+    }
+
+    /// Short text, e.g. `28 piv`, `120 sw/4`, `11 it`.
+    pub fn short(&self) -> String {
+        fn abbrev(k: &'static str) -> &'static str {
+            match k {
+                "pivots" => "piv",
+                "sweeps" => "sw",
+                "iterations" => "it",
+                other => other,
             }
         }
-        w
+        match self.0.as_slice() {
+            [] => String::new(),
+            [(k, v)] => format!("{v} {}", abbrev(k)),
+            [(k, v), rest @ ..] => {
+                let tail: Vec<String> = rest.iter().map(|(_, v)| v.to_string()).collect();
+                format!("{v} {}/{}", abbrev(k), tail.join("/"))
+            }
+        }
+    }
+
+    /// Long text, e.g. `28 pivots`, `120 sweeps, 4 outer`.
+    pub fn long(&self) -> String {
+        if self.0.is_empty() {
+            return "–".into();
+        }
+        self.0.iter().map(|(k, v)| format!("{v} {k}")).collect::<Vec<_>>().join(", ")
     }
 }
 
-/// Outcome of a solver run.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Status {
-    /// A solution was found and its solver-independent residuals are small.
-    Solved,
-    /// Lemke's algorithm ended on a secondary ray: the LCP has no solution (for the problems rollbem builds, which
-    /// are copositive-plus, this proves infeasibility).
-    RayTermination,
-    /// The iteration limit was reached before the tolerance.
-    NotConverged,
-    /// The problem has no solution (e.g. a load the contact cannot carry).
-    Infeasible,
-    /// The solver failed numerically, or claimed success with a large independent residual.
-    NumericalError,
+impl Serialize for Work {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut m = s.serialize_map(Some(self.0.len()))?;
+        for (k, v) in &self.0 {
+            m.serialize_entry(k, v)?;
+        }
+        m.end()
+    }
 }
 
-impl Status {
-    /// Name used in reports and JSON.
-    pub fn name(self) -> &'static str {
-        match self {
-            Status::Solved => "solved",
-            Status::RayTermination => "ray_termination",
-            Status::NotConverged => "not_converged",
-            Status::Infeasible => "infeasible",
-            Status::NumericalError => "numerical_error",
+/// What a solver run produced.
+#[derive(Debug, Clone)]
+pub struct Outcome {
+    /// The solution in the problem's unknowns (`None` when nothing was computed).
+    pub solution: Option<Solution>,
+    /// The solver's status (the harness may still refuse a `solved` claim on the independent residuals).
+    pub status: Status,
+    /// Detail.
+    pub message: String,
+    /// Work counters.
+    pub work: Work,
+    /// For clarabel: max |p − p_unpolished| / p_max, the effect of solving the symmetrised QP before the
+    /// active-set polish with the nonsymmetric flexibility.
+    pub polish_change: Option<f64>,
+}
+
+/// A solver setting out of range or unknown: an input error naming the dotted key.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SettingsError {
+    /// Dotted key, e.g. `solvers.pgs.relaxation`.
+    pub field: String,
+    /// What is wrong and what is expected.
+    pub message: String,
+    /// True when a name or key is not known at all (a schema error, like an unknown key in the scene file), false
+    /// when a known value is out of range.
+    pub unknown: bool,
+}
+
+impl SettingsError {
+    /// The scene error this is, for a scene file at `path`: an unknown name or key is a parse (schema) error, a
+    /// value out of range an invalid value; both name the key.
+    pub fn into_error(self, path: &std::path::Path) -> crate::error::Error {
+        if self.unknown {
+            crate::error::Error::Parse {
+                path: path.to_path_buf(),
+                message: format!("{}: {}", self.field, self.message),
+            }
+        } else {
+            crate::error::Error::Invalid { path: path.to_path_buf(), field: self.field, message: self.message }
         }
     }
 }
 
-impl std::fmt::Display for Status {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.name())
+/// Settings that check their own ranges.
+pub trait Validate {
+    /// `Err((key, message))` for the first value out of range (the key relative to the settings table).
+    fn validate(&self) -> Result<(), (&'static str, String)>;
+}
+
+/// Parse and validate a solver's settings table (`None`: the defaults). Errors name `solvers.NAME.KEY`.
+pub fn parse_settings<T>(name: &str, raw: Option<&toml::Value>) -> Result<T, SettingsError>
+where
+    T: DeserializeOwned + Default + Validate,
+{
+    let settings: T = match raw {
+        None => T::default(),
+        Some(v) => T::deserialize(v.clone()).map_err(|e| SettingsError {
+            field: format!("solvers.{name}"),
+            message: e.to_string(),
+            unknown: true,
+        })?,
+    };
+    settings.validate().map_err(|(key, message)| SettingsError {
+        field: format!("solvers.{name}.{key}"),
+        message,
+        unknown: false,
+    })?;
+    Ok(settings)
+}
+
+/// A settings struct as a TOML table (for the scene as parsed, with defaults filled in).
+pub fn settings_value<T: Serialize>(t: &T) -> toml::Value {
+    toml::Value::try_from(t).expect("solver settings serialise to a TOML table")
+}
+
+/// The registry entry of a name.
+pub fn entry(name: &str) -> Option<&'static Entry> {
+    REGISTRY.iter().find(|e| e.name == name)
+}
+
+/// The union of the registry's work counters, in registry order (the work columns of a sweep CSV).
+pub fn work_columns() -> Vec<&'static str> {
+    let mut out: Vec<&'static str> = Vec::new();
+    for c in REGISTRY.iter().flat_map(|e| e.counters) {
+        if !out.contains(c) {
+            out.push(c);
+        }
     }
+    out
+}
+
+/// Every registered name, comma-separated (for error messages and help).
+pub fn names() -> String {
+    REGISTRY.iter().map(|e| e.name).collect::<Vec<_>>().join(", ")
+}
+
+/// Build a registered solver from its settings table; an unknown name is an error listing the valid ones.
+pub fn build(name: &str, raw: Option<&toml::Value>) -> Result<Box<dyn Solver>, SettingsError> {
+    match entry(name) {
+        Some(e) => (e.build)(raw),
+        None => Err(SettingsError {
+            unknown: true,
+            field: "solvers.use".into(),
+            message: format!("unknown solver `{name}` (expected one of: all, {})", names()),
+        }),
+    }
+}
+
+/// Range checks shared by settings: a tolerance in (0, 1).
+pub fn check_tolerance(key: &'static str, v: f64) -> Result<(), (&'static str, String)> {
+    if !v.is_finite() || v <= 0.0 || v >= 1.0 {
+        return Err((key, format!("must lie in (0, 1) (got {v})")));
+    }
+    Ok(())
+}
+
+/// Range checks shared by settings: a count ≥ 1.
+pub fn check_count(key: &'static str, v: usize) -> Result<(), (&'static str, String)> {
+    if v == 0 {
+        return Err((key, "must be at least 1".into()));
+    }
+    Ok(())
 }

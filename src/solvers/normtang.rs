@@ -1,5 +1,5 @@
 //! NORM-TANG: Kalker's split of the frictional contact problem (Kalker 1990 ch. 2; González & Abascal 2000, the
-//! seed's ref. [3]) into a normal problem with the shear fixed (NORM) and a tangential problem with the pressure
+//! seed's ref. \[3\]) into a normal problem with the shear fixed (NORM) and a tangential problem with the pressure
 //! fixed (TANG, a Tresca box |h| ≤ μf), alternated until the change of the tractions falls under a tolerance.
 //!
 //! - **NORM** (h fixed): `g = g₀ + R_N ρ + K_NN f + K_NT h ≥ 0 ⊥ f ≥ 0`; with the normal load prescribed the
@@ -21,10 +21,139 @@
 
 use super::clarabel_box::solve_box;
 use super::clarabel_qp::{solve_frictionless, QpSettings};
-use super::Status;
-use crate::formulation::{Split, MODE_APPROACH, MODE_ROTATION, MODE_SHIFT};
-use crate::scene::Dof;
+use super::{Entry, Solver, Status, Validate, Work};
+use crate::flexibility::ModeKind;
+use crate::formulation::{ContactProblem, Dof, ProblemKind, Solution};
+use faer::Mat;
 use serde::{Deserialize, Serialize};
+
+/// Slot of the shift in the split's rigid-motion arrays.
+const MODE_SHIFT: usize = 0;
+/// Slot of the approach.
+const MODE_APPROACH: usize = 1;
+/// Slot of the rotation.
+const MODE_ROTATION: usize = 2;
+
+/// The slot of a rigid mode.
+fn slot(kind: ModeKind) -> usize {
+    match kind {
+        ModeKind::Shift => MODE_SHIFT,
+        ModeKind::Approach => MODE_APPROACH,
+        ModeKind::Rotation => MODE_ROTATION,
+    }
+}
+
+/// The contact problem split into its normal and tangential blocks, NORM-TANG's own view of it: nodal-force
+/// matrices (row-major, and K_NN column-major too for the QP inner solver), rigid responses, and the drive in
+/// dimensionless units. The tangential blocks are those of the slip (`D K_TT`, `D K_TN` and the DOFs' slip
+/// responses, plus the slip operator's offset), so TANG solves Coulomb's law on the problem's own slip. The cross
+/// blocks are zero when `coupling = false`; the tangential blocks are empty for a frictionless problem.
+#[derive(Debug, Clone)]
+pub struct Split {
+    /// Contact nodes.
+    pub n: usize,
+    /// Friction coefficient.
+    pub mu: f64,
+    /// Whether K_NT, K_TN are kept.
+    pub coupling: bool,
+    /// K_NN, row-major.
+    pub knn_rows: Vec<f64>,
+    /// K_NN, column-major.
+    pub knn_cols: Vec<f64>,
+    /// K_NT, row-major (empty without friction).
+    pub knt_rows: Vec<f64>,
+    /// D K_TN, row-major.
+    pub ktn_rows: Vec<f64>,
+    /// D K_TT, row-major.
+    pub ktt_rows: Vec<f64>,
+    /// The slip operator's offset c (zeros when it has none).
+    pub slip_offset: Vec<f64>,
+    /// Initial gaps.
+    pub g0: Vec<f64>,
+    /// Normal rigid responses per node (shift, approach, rotation slots).
+    pub rn: Vec<[f64; 3]>,
+    /// Slip responses per node (zeros without the tangential blocks).
+    pub rt: Vec<[f64; 3]>,
+    /// Prescribed rigid motion (load-driven entries 0).
+    pub rigid_given: [f64; 3],
+    /// Normal drive, dimensionless.
+    pub normal: Dof,
+    /// Tangential drive, dimensionless.
+    pub tangential: Dof,
+}
+
+impl Split {
+    /// The split view of a problem (frictionless or frictional; the caller has checked that NORM-TANG applies).
+    pub fn from_problem(p: &ContactProblem) -> Split {
+        let flex = p.flex;
+        let n = flex.n();
+        let mu = p.law.friction;
+        let frictional = mu > 0.0;
+        let coupling = p.law.coupling && frictional;
+        let rows = |m: &Mat<f64>| {
+            let mut v = Vec::with_capacity(n * n);
+            for i in 0..n {
+                for j in 0..n {
+                    v.push(m[(i, j)]);
+                }
+            }
+            v
+        };
+        let knn_rows = rows(&flex.k_nn);
+        let mut knn_cols = vec![0.0; n * n];
+        for i in 0..n {
+            for j in 0..n {
+                knn_cols[i + j * n] = knn_rows[i * n + j];
+            }
+        }
+        let tangential_rows = |m: &Option<Mat<f64>>| match (frictional, m) {
+            (true, Some(m)) => rows(&p.slip.apply_mat(m)),
+            _ => Vec::new(),
+        };
+        let knt_rows = if frictional { flex.k_nt.as_ref().map(&rows).unwrap_or_default() } else { Vec::new() };
+        let (ktn_rows, ktt_rows) = (tangential_rows(&flex.k_tn), tangential_rows(&flex.k_tt));
+        let mut rigid_given = [0.0; 3];
+        let mut rn = vec![[0.0; 3]; n];
+        let mut rt = vec![[0.0; 3]; n];
+        let mut normal = Dof::Displacement(0.0);
+        let mut tangential = Dof::Displacement(0.0);
+        for d in &p.dofs {
+            let k = slot(d.kind);
+            if let Dof::Displacement(v) = d.drive {
+                rigid_given[k] = v;
+            }
+            for i in 0..n {
+                rn[i][k] = d.gap[i];
+                if let Some(s) = &d.slip {
+                    rt[i][k] = s[i];
+                }
+            }
+            match d.kind {
+                ModeKind::Approach => normal = d.drive,
+                // Without friction a zero tangential load is a free tangential DOF: nothing to solve.
+                ModeKind::Shift if frictional => tangential = d.drive,
+                ModeKind::Shift | ModeKind::Rotation => {}
+            }
+        }
+        Split {
+            n,
+            mu,
+            coupling,
+            knn_rows,
+            knn_cols,
+            knt_rows,
+            ktn_rows,
+            ktt_rows,
+            slip_offset: p.slip.offset.clone().unwrap_or_else(|| vec![0.0; n]),
+            g0: flex.g0.clone(),
+            rn,
+            rt,
+            rigid_given,
+            normal,
+            tangential,
+        }
+    }
+}
 
 /// Settings of NORM-TANG with projected Gauss–Seidel inner sweeps (`[solvers.pgs]`).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -47,6 +176,18 @@ impl Default for PgsSettings {
     }
 }
 
+impl Validate for PgsSettings {
+    fn validate(&self) -> Result<(), (&'static str, String)> {
+        super::check_tolerance("tolerance", self.tolerance)?;
+        super::check_count("max_sweeps", self.max_sweeps)?;
+        super::check_count("max_outer", self.max_outer)?;
+        if !(self.relaxation > 0.0 && self.relaxation < 2.0) {
+            return Err(("relaxation", format!("must lie in (0, 2) (got {})", self.relaxation)));
+        }
+        Ok(())
+    }
+}
+
 /// Settings of NORM-TANG with clarabel QPs as inner solver (`[solvers.normtang_qp]`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -62,6 +203,15 @@ pub struct NormTangQpSettings {
 impl Default for NormTangQpSettings {
     fn default() -> Self {
         NormTangQpSettings { tolerance: 1e-10, max_outer: 200, qp: QpSettings::default() }
+    }
+}
+
+impl Validate for NormTangQpSettings {
+    fn validate(&self) -> Result<(), (&'static str, String)> {
+        super::check_tolerance("tolerance", self.tolerance)?;
+        super::check_count("max_outer", self.max_outer)?;
+        super::check_tolerance("qp.tolerance", self.qp.tolerance)?;
+        super::check_count("qp.max_iter", self.qp.max_iter as usize)
     }
 }
 
@@ -340,7 +490,7 @@ fn norm(
             let out = solve_frictionless(&p.knn_cols, n, &q, load, &s.qp);
             *qp_iterations += out.iterations;
             if !out.status.is_solved() {
-                return Err(Failure(Status::NumericalError, format!("clarabel: {}", out.status)));
+                return Err(Failure(Status::from(&out.status), format!("clarabel: {}", out.status)));
             }
             *f = out.f;
             if let Some(d) = out.approach {
@@ -367,6 +517,7 @@ fn tang(
             p.rt[i][MODE_APPROACH] * rigid[MODE_APPROACH]
                 + p.rt[i][MODE_ROTATION] * rigid[MODE_ROTATION]
                 + if p.coupling { (0..n).map(|j| p.ktn_rows[i * n + j] * f[j]).sum::<f64>() } else { 0.0 }
+                + p.slip_offset[i]
         })
         .collect();
     let c: Vec<f64> = (0..n).map(|i| p.rt[i][MODE_SHIFT]).collect();
@@ -454,7 +605,7 @@ fn tang(
             let out = solve_box(&cols, na, &q, &lo_a, &hi_a, eq, &s.qp);
             *qp_iterations += out.iterations;
             if !out.status.is_solved() {
-                return Err(Failure(Status::NumericalError, format!("clarabel (TANG): {}", out.status)));
+                return Err(Failure(Status::from(&out.status), format!("clarabel (TANG): {}", out.status)));
             }
             x = out.x;
             if let Some(nu) = out.nu {
@@ -467,4 +618,98 @@ fn tang(
         h[i] = x[a];
     }
     Ok(())
+}
+
+/// NORM-TANG with projected Gauss–Seidel inner sweeps, as a contact solver.
+pub struct Pgs {
+    /// Its settings.
+    pub settings: PgsSettings,
+}
+
+/// NORM-TANG with clarabel QPs as inner solver, as a contact solver.
+pub struct NormTangQp {
+    /// Its settings.
+    pub settings: NormTangQpSettings,
+}
+
+/// Registry entry of NORM-TANG with PGS.
+pub const PGS_ENTRY: Entry = Entry {
+    name: "pgs",
+    summary: "NORM-TANG split (Kalker; González & Abascal) with projected Gauss–Seidel sweeps; no moment load",
+    in_all: true,
+    counters: &["sweeps", "outer"],
+    build: |raw| Ok(Box::new(Pgs { settings: super::parse_settings("pgs", raw)? })),
+};
+
+/// Registry entry of NORM-TANG with clarabel QPs.
+pub const NORMTANG_QP_ENTRY: Entry = Entry {
+    name: "normtang_qp",
+    summary: "NORM-TANG with clarabel QPs as the inner solver; no moment load",
+    in_all: true,
+    counters: &["iterations", "outer"],
+    build: |raw| Ok(Box::new(NormTangQp { settings: super::parse_settings("normtang_qp", raw)? })),
+};
+
+/// Whether NORM-TANG applies: not with a prescribed moment, not at the sliding limit.
+fn applies(p: &ContactProblem) -> Result<(), String> {
+    if matches!(p.drive.rotational, Dof::Load(_)) {
+        Err("the NORM-TANG split does not carry a prescribed moment (use lemke)".into())
+    } else if matches!(p.kind, ProblemKind::SlidingLimit { .. }) {
+        Err("at the sliding limit |Q| = μP the problem is solved as full slip by lemke".into())
+    } else {
+        Ok(())
+    }
+}
+
+/// Run NORM-TANG and put its answer in the one solution shape.
+fn run(p: &ContactProblem, inner: &Inner) -> super::Outcome {
+    let out = solve(&Split::from_problem(p), inner);
+    let work = match inner {
+        Inner::Pgs(_) => Work(vec![("sweeps", out.sweeps as u64), ("outer", out.outer as u64)]),
+        Inner::Qp(_) => Work(vec![("iterations", out.qp_iterations as u64), ("outer", out.outer as u64)]),
+    };
+    let rigid = p.dofs.iter().map(|d| out.rigid[slot(d.kind)]).collect();
+    super::Outcome {
+        solution: Some(Solution { f: out.f, h: out.h, rigid, tangential_known: true }),
+        status: out.status,
+        message: out.message,
+        work,
+        polish_change: None,
+    }
+}
+
+impl Solver for Pgs {
+    fn name(&self) -> &'static str {
+        "pgs"
+    }
+    fn applies(&self, p: &ContactProblem) -> Result<(), String> {
+        applies(p)
+    }
+    fn settings(&self) -> toml::Value {
+        super::settings_value(&self.settings)
+    }
+    fn tolerance(&self) -> Option<f64> {
+        Some(self.settings.tolerance)
+    }
+    fn solve(&self, p: &ContactProblem) -> super::Outcome {
+        run(p, &Inner::Pgs(self.settings))
+    }
+}
+
+impl Solver for NormTangQp {
+    fn name(&self) -> &'static str {
+        "normtang_qp"
+    }
+    fn applies(&self, p: &ContactProblem) -> Result<(), String> {
+        applies(p)
+    }
+    fn settings(&self) -> toml::Value {
+        super::settings_value(&self.settings)
+    }
+    fn tolerance(&self) -> Option<f64> {
+        Some(self.settings.tolerance)
+    }
+    fn solve(&self, p: &ContactProblem) -> super::Outcome {
+        run(p, &Inner::Qp(self.settings.clone()))
+    }
 }

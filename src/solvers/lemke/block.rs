@@ -18,8 +18,8 @@
 //! Ties in the ratio test are broken lexicographically with rows of B⁻¹ (formed only for the tied candidates),
 //! exactly as in the dense engine, so both follow the same pivot path on exact data.
 
-use super::lemke::{LemkeOutcome, LemkeSettings, Scaled, Z0_NEGLIGIBLE};
-use super::Status;
+use super::{LemkeOutcome, LemkeSettings, Scaled, Z0_NEGLIGIBLE};
+use crate::solvers::Status;
 use faer::linalg::solvers::Solve;
 use faer::Mat;
 
@@ -319,6 +319,74 @@ impl<'a> Engine<'a> {
         true
     }
 
+    /// The minimum-ratio test for the pivot column (dw, dz), with ties broken lexicographically by rows of B⁻¹
+    /// divided by the pivot entry, and z₀ leaving whenever it is tied or this step brings it to a negligible value.
+    /// `None` when the entering column is unblocked.
+    fn leaving(&self, dw: &[f64], dz: &[f64], settings: &LemkeSettings, qscale: f64, z0_start: f64) -> Option<Var> {
+        let (e, n) = (self, self.n);
+        let dmax = (0..n)
+            .filter(|&i| e.wbasic[i])
+            .map(|i| dw[i].abs())
+            .chain(dz.iter().map(|d| d.abs()))
+            .fold(0.0_f64, f64::max);
+        let tol = settings.pivot_tolerance * dmax.max(1e-300);
+        let mut theta = f64::INFINITY;
+        for i in 0..n {
+            if e.wbasic[i] && dw[i] > tol {
+                theta = theta.min(e.xw[i].max(0.0) / dw[i]);
+            }
+        }
+        for p in 0..e.k() {
+            if dz[p] > tol {
+                theta = theta.min(e.xz[p].max(0.0) / dz[p]);
+            }
+        }
+        if !theta.is_finite() {
+            return None;
+        }
+        let z0_pos = e.zcols.iter().position(|&c| c == Zv::Z0);
+        let z0_value = z0_pos.map(|p| e.xz[p]).unwrap_or(0.0);
+        let tie = settings.tie_tolerance * (theta.abs() + settings.tie_tolerance * qscale.max(1.0));
+        let mut tied: Vec<(Var, f64)> = Vec::new();
+        for i in 0..n {
+            if e.wbasic[i] && dw[i] > tol && e.xw[i].max(0.0) / dw[i] <= theta + tie {
+                tied.push((Var::W(i), dw[i]));
+            }
+        }
+        for p in 0..e.k() {
+            if dz[p] > tol && e.xz[p].max(0.0) / dz[p] <= theta + tie {
+                tied.push((Var::Z(e.zcols[p]), dz[p]));
+            }
+        }
+        // z0 leaves whenever it is tied, or whenever this step would bring it to a negligible value (a tie the
+        // relative band misses when θ ≈ 0).
+        let z0_drops = z0_pos.is_some_and(|p| dz[p] > tol && z0_value - theta * dz[p] <= Z0_NEGLIGIBLE * z0_start);
+        Some(if let Some(&(v, _)) = tied.iter().find(|(v, _)| *v == Var::Z(Zv::Z0)) {
+            v
+        } else if z0_drops {
+            Var::Z(Zv::Z0)
+        } else if tied.len() == 1 {
+            tied[0].0
+        } else {
+            // Lexicographic rule on rows of B⁻¹ divided by the pivot entry.
+            let rows: Vec<Vec<f64>> =
+                tied.iter().map(|&(v, d)| e.binv_row(v).iter().map(|x| x / d).collect()).collect();
+            let mut best = 0;
+            for t in 1..tied.len() {
+                for c in 0..n {
+                    let (a, b) = (rows[t][c], rows[best][c]);
+                    if (a - b).abs() > 1e-14 * (a.abs() + b.abs()) {
+                        if a < b {
+                            best = t;
+                        }
+                        break;
+                    }
+                }
+            }
+            tied[best].0
+        })
+    }
+
     fn z_vector(&self) -> Vec<f64> {
         let mut z = vec![0.0; self.n];
         for (p, &v) in self.zcols.iter().enumerate() {
@@ -379,27 +447,8 @@ pub(crate) fn run(sc: &Scaled, settings: &LemkeSettings) -> LemkeOutcome {
             Var::Z(Zv::Z0) => unreachable!("z0 leaving ends the loop"),
         };
         e.column(entering, &mut dw, &mut dz);
-        let dmax = (0..n)
-            .filter(|&i| e.wbasic[i])
-            .map(|i| dw[i].abs())
-            .chain(dz.iter().map(|d| d.abs()))
-            .fold(0.0_f64, f64::max);
-        let tol = settings.pivot_tolerance * dmax.max(1e-300);
-        // Candidates: (variable, value, pivot entry).
-        let mut theta = f64::INFINITY;
-        for i in 0..n {
-            if e.wbasic[i] && dw[i] > tol {
-                theta = theta.min(e.xw[i].max(0.0) / dw[i]);
-            }
-        }
-        for p in 0..e.k() {
-            if dz[p] > tol {
-                theta = theta.min(e.xz[p].max(0.0) / dz[p]);
-            }
-        }
-        let z0_pos = e.zcols.iter().position(|&c| c == Zv::Z0);
-        let z0_value = z0_pos.map(|p| e.xz[p]).unwrap_or(0.0);
-        if !theta.is_finite() {
+        let Some(leave) = e.leaving(&dw, &dz, settings, sc.qscale, z0_start) else {
+            let z0_value = e.zcols.iter().position(|&c| c == Zv::Z0).map(|p| e.xz[p]).unwrap_or(0.0);
             if z0_value <= Z0_NEGLIGIBLE * z0_start {
                 // z0 is already zero to round-off: the current basic point is complementary (a degenerate last step
                 // left z0 basic at value ~0). Accept it; the caller's residual check is the judge.
@@ -419,45 +468,6 @@ pub(crate) fn run(sc: &Scaled, settings: &LemkeSettings) -> LemkeOutcome {
                 pivots,
                 format!("secondary ray: entering {entering:?} is unblocked after {pivots} pivots"),
             );
-        }
-        let tie = settings.tie_tolerance * (theta.abs() + settings.tie_tolerance * sc.qscale.max(1.0));
-        let mut tied: Vec<(Var, f64)> = Vec::new();
-        for i in 0..n {
-            if e.wbasic[i] && dw[i] > tol && e.xw[i].max(0.0) / dw[i] <= theta + tie {
-                tied.push((Var::W(i), dw[i]));
-            }
-        }
-        for p in 0..e.k() {
-            if dz[p] > tol && e.xz[p].max(0.0) / dz[p] <= theta + tie {
-                tied.push((Var::Z(e.zcols[p]), dz[p]));
-            }
-        }
-        // z0 leaves whenever it is tied, or whenever this step would bring it to a negligible value (a tie the
-        // relative band misses when θ ≈ 0).
-        let z0_drops = z0_pos.is_some_and(|p| dz[p] > tol && z0_value - theta * dz[p] <= Z0_NEGLIGIBLE * z0_start);
-        let leave = if let Some(&(v, _)) = tied.iter().find(|(v, _)| *v == Var::Z(Zv::Z0)) {
-            v
-        } else if z0_drops {
-            Var::Z(Zv::Z0)
-        } else if tied.len() == 1 {
-            tied[0].0
-        } else {
-            // Lexicographic rule on rows of B⁻¹ divided by the pivot entry.
-            let rows: Vec<Vec<f64>> =
-                tied.iter().map(|&(v, d)| e.binv_row(v).iter().map(|x| x / d).collect()).collect();
-            let mut best = 0;
-            for t in 1..tied.len() {
-                for c in 0..n {
-                    let (a, b) = (rows[t][c], rows[best][c]);
-                    if (a - b).abs() > 1e-14 * (a.abs() + b.abs()) {
-                        if a < b {
-                            best = t;
-                        }
-                        break;
-                    }
-                }
-            }
-            tied[best].0
         };
         let piv = match leave {
             Var::W(i) => dw[i],

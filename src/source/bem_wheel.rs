@@ -13,14 +13,18 @@
 //! rotation C_i (eq. 18) is not applied: the counter-body is a flat, whose frame is the same at every node.
 //!
 //! Units: everything here is dimensionless, lengths divided by the model's reference length `L0 = 2R` and
-//! stresses by Young's modulus (see [`Model`]). The rigid modes are, in this order, the tangential shift
-//! (u = (1, 0)), the approach towards the flat (u = (0, −1)) and the counter-clockwise rotation about the wheel
-//! centre (u = (−y, x)).
+//! stresses by Young's modulus (see [`Model`]). The wheel's support offers three rigid modes
+//! ([`crate::flexibility::ModeKind`]): the tangential shift (u = (1, 0)), the approach towards the flat
+//! (u = (0, −1)) and the counter-clockwise rotation about the wheel centre (u = (−y, x)). The flexibility is handed
+//! on per unit nodal force, `K = F W⁻¹` ([`crate::flexibility`]).
 
+use super::{Blocks, SourceTiming};
 use crate::bem::{assemble, kelvin::Kelvin, BlockSink};
 use crate::error::{Error, Result};
+use crate::flexibility::{Flexibility, ModeKind, RigidMode, Scales};
 use crate::mesh::{Bc, Mesh};
 use crate::scene::{Scene, Support};
+use crate::tolerances::BEM_SINGULAR_PIVOT_RATIO;
 use faer::linalg::solvers::Solve;
 use faer::Mat;
 
@@ -56,51 +60,15 @@ impl Model {
     }
 }
 
-/// Which blocks of the flexibility to compute.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Blocks {
-    /// Only F_NN and the normal rigid responses: the frictionless problem.
-    Normal,
-    /// F_NN, F_NT, F_TN, F_TT and both rigid responses.
-    All,
-}
-
-/// The contact flexibility and the contact nodes' data, dimensionless (see the module docs).
-#[derive(Debug, Clone)]
-pub struct Flexibility {
-    /// u_y per unit t_y (n × n).
-    pub nn: Mat<f64>,
-    /// u_y per unit t_x (only with [`Blocks::All`]).
-    pub nt: Option<Mat<f64>>,
-    /// u_x per unit t_y (only with [`Blocks::All`]).
-    pub tn: Option<Mat<f64>>,
-    /// u_x per unit t_x (only with [`Blocks::All`]).
-    pub tt: Option<Mat<f64>>,
-    /// u_y of the contact nodes per unit rigid mode (n × 3: shift, approach, rotation).
-    pub rigid_n: Mat<f64>,
-    /// u_x of the contact nodes per unit rigid mode (only with [`Blocks::All`]).
-    pub rigid_t: Option<Mat<f64>>,
-    /// Contact-node x coordinates (increasing).
-    pub x: Vec<f64>,
-    /// Contact-node y coordinates.
-    pub y: Vec<f64>,
-    /// Initial gaps g0 = y + R to the flat.
-    pub g0: Vec<f64>,
-    /// Tributary lengths (∫N ds): nodal force = weight × traction.
-    pub weights: Vec<f64>,
+/// Numerical health of the BEM condensation (what a BEM source adds to the flexibility).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BemHealth {
     /// Size of the rearranged BEM system (2 × nodes).
     pub system_size: usize,
     /// Ratio of the largest to the smallest |U_ii| of A's LU factors: a cheap lower bound of A's condition number.
     pub pivot_ratio: f64,
     /// Estimated 1-norm condition number of the rearranged BEM system A ([`crate::condition`]).
     pub system_condition: f64,
-}
-
-impl Flexibility {
-    /// Number of contact nodes.
-    pub fn n(&self) -> usize {
-        self.x.len()
-    }
 }
 
 struct CondSink<'a> {
@@ -189,15 +157,6 @@ impl BlockSink for CondSink<'_> {
     }
 }
 
-/// Timings of the two BEM stages, seconds.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct BemTiming {
-    /// Assembly of A and the right-hand sides.
-    pub assembly: f64,
-    /// LU factorisation and solves.
-    pub condensation: f64,
-}
-
 /// The rearranged BEM system `A x = rhs` before factorisation (see the module docs).
 pub struct System {
     /// A: −G columns for support DOFs, H columns otherwise (2N × 2N).
@@ -234,7 +193,7 @@ pub fn assemble_system(model: &Model, blocks: Blocks) -> Result<System> {
 }
 
 /// Factorise the rearranged system once and solve for the flexibility (the condensation stage).
-pub fn solve_system(model: &Model, sys: &System) -> Result<Flexibility> {
+pub fn solve_system(model: &Model, sys: &System) -> Result<(Flexibility, BemHealth)> {
     let mesh = &model.mesh;
     let nn = mesh.n_nodes();
     let nc = mesh.contact_nodes.len();
@@ -249,7 +208,7 @@ pub fn solve_system(model: &Model, sys: &System) -> Result<Flexibility> {
         umin = umin.min(v);
     }
     let pivot_ratio = umax / umin;
-    if !pivot_ratio.is_finite() || pivot_ratio > 1e14 {
+    if !pivot_ratio.is_finite() || pivot_ratio > BEM_SINGULAR_PIVOT_RATIO {
         return Err(Error::Numerical {
             stage: "condensation",
             message: format!(
@@ -259,33 +218,42 @@ pub fn solve_system(model: &Model, sys: &System) -> Result<Flexibility> {
     }
     let sol = lu.solve(&sys.rhs);
     let system_condition = crate::condition::cond1(&sys.a, &lu);
-    let rows = |comp: usize, col0: usize, ncol: usize| {
-        Mat::from_fn(nc, ncol, |r, c| sol[(2 * mesh.contact_nodes[r] + comp, col0 + c)])
+    let weights: Vec<f64> = mesh.contact_nodes.iter().map(|&i| mesh.nodes[i].weight).collect();
+    // Displacement component `comp` of the contact nodes per unit nodal force of right-hand side columns col0..:
+    // K = F W⁻¹ (column j divided by node j's tributary length).
+    let per_force = |comp: usize, col0: usize| {
+        Mat::from_fn(nc, nc, |r, c| sol[(2 * mesh.contact_nodes[r] + comp, col0 + c)] / weights[c])
     };
     let rigid0 = ncols - 3;
-    Ok(Flexibility {
-        nn: rows(1, 0, nc),
-        nt: store_tx.then(|| rows(1, nc, nc)),
-        tn: store_tx.then(|| rows(0, 0, nc)),
-        tt: store_tx.then(|| rows(0, nc, nc)),
-        rigid_n: rows(1, rigid0, 3),
-        rigid_t: store_tx.then(|| rows(0, rigid0, 3)),
+    let response = |comp: usize, m: usize| -> Vec<f64> {
+        mesh.contact_nodes.iter().map(|&i| sol[(2 * i + comp, rigid0 + m)]).collect()
+    };
+    let modes = [ModeKind::Shift, ModeKind::Approach, ModeKind::Rotation]
+        .into_iter()
+        .enumerate()
+        .map(|(m, kind)| RigidMode { kind, normal: response(1, m), tangential: store_tx.then(|| response(0, m)) })
+        .collect();
+    let flex = Flexibility {
+        k_nn: per_force(1, 0),
+        k_nt: store_tx.then(|| per_force(1, nc)),
+        k_tn: store_tx.then(|| per_force(0, 0)),
+        k_tt: store_tx.then(|| per_force(0, nc)),
+        modes,
         x: mesh.contact_nodes.iter().map(|&i| mesh.nodes[i].pos[0]).collect(),
         y: mesh.contact_nodes.iter().map(|&i| mesh.nodes[i].pos[1]).collect(),
         g0: mesh.contact_nodes.iter().map(|&i| mesh.initial_gap(i)).collect(),
-        weights: mesh.contact_nodes.iter().map(|&i| mesh.nodes[i].weight).collect(),
-        system_size: 2 * nn,
-        pivot_ratio,
-        system_condition,
-    })
+        weights,
+        scales: Scales { length: model.length, modulus: model.modulus },
+    };
+    Ok((flex, BemHealth { system_size: 2 * nn, pivot_ratio, system_condition }))
 }
 
 /// Assemble, factorise and condense the model to the contact flexibility, timing both stages.
-pub fn condense(model: &Model, blocks: Blocks) -> Result<(Flexibility, BemTiming)> {
+pub fn condense(model: &Model, blocks: Blocks) -> Result<(Flexibility, BemHealth, SourceTiming)> {
     let t0 = std::time::Instant::now();
     let sys = assemble_system(model, blocks)?;
     let t1 = std::time::Instant::now();
-    let flex = solve_system(model, &sys)?;
+    let (flex, health) = solve_system(model, &sys)?;
     let t2 = std::time::Instant::now();
-    Ok((flex, BemTiming { assembly: (t1 - t0).as_secs_f64(), condensation: (t2 - t1).as_secs_f64() }))
+    Ok((flex, health, SourceTiming { assembly: (t1 - t0).as_secs_f64(), condensation: (t2 - t1).as_secs_f64() }))
 }

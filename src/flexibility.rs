@@ -1,0 +1,109 @@
+//! The contact flexibility: everything a contact formulation needs to know about the elastic bodies, whatever
+//! produced it — a boundary-element model of the finite wheel ([`crate::source::bem_wheel`]) today, the closed forms
+//! of an elastic half-plane or the sum with an elastic counter-body tomorrow. Nothing here knows about BEM.
+//!
+//! **Frame and signs** (`DESIGN.md`): the flat's frame at every contact node, N = y (pressure p = t_y ≥ 0 on the
+//! wheel, gap change u_N = u_y), T = x (shear q = t_x on the wheel, tangential displacement u_T = u_x of the wheel
+//! relative to the counter-body). The contact unknowns are **nodal forces** f = w p, h = w q (w the tributary
+//! length of the node), so the blocks here are `K = F W⁻¹`, displacement per unit nodal force, computed once by
+//! the source:
+//!
+//! ```text
+//!   u_N = K_NN f + K_NT h + Σ_m r_N,m ρ_m,      u_T = K_TN f + K_TT h + Σ_m r_T,m ρ_m
+//! ```
+//!
+//! where ρ_m are the rigid modes the source offers ([`RigidMode`]). **Units**: dimensionless, every length divided
+//! by [`Scales::length`] and every stress by [`Scales::modulus`]; nodal forces are then in units of E·L0.
+
+use faer::Mat;
+
+/// A rigid degree of freedom of the body's support (or datum) relative to the counter-body.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum ModeKind {
+    /// Tangential shift d_T of the support, +x: every point moves by (1, 0) per unit.
+    Shift,
+    /// Approach d_N of the support towards the flat: every point moves by (0, −1) per unit.
+    Approach,
+    /// Counter-clockwise rotation φ about the wheel centre: a point (x, y) moves by (−y, x) per unit.
+    Rotation,
+}
+
+/// The contact nodes' response to one unit rigid mode.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RigidMode {
+    /// Which rigid motion.
+    pub kind: ModeKind,
+    /// u_N (= u_y) of the contact nodes per unit mode (dimensionless).
+    pub normal: Vec<f64>,
+    /// u_T (= u_x) per unit mode; `None` when the source built only the normal problem.
+    pub tangential: Option<Vec<f64>>,
+}
+
+/// The reference scales of the dimensionless flexibility, in the user's units. Every source uses the wheel's
+/// diameter as its reference length.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Scales {
+    /// Reference length L0 = 2R, the wheel's diameter.
+    pub length: f64,
+    /// Reference stress: the wheel's Young's modulus E.
+    pub modulus: f64,
+}
+
+impl Scales {
+    /// The wheel's radius R = L0/2 (user's unit).
+    pub fn radius(&self) -> f64 {
+        0.5 * self.length
+    }
+
+    /// Force per unit thickness of one dimensionless unit: E·L0.
+    pub fn force(&self) -> f64 {
+        self.modulus * self.length
+    }
+
+    /// Moment per unit thickness of one dimensionless unit: E·L0².
+    pub fn moment(&self) -> f64 {
+        self.modulus * self.length * self.length
+    }
+}
+
+/// The contact flexibility and the contact nodes' data, dimensionless (see the module docs).
+#[derive(Debug, Clone)]
+pub struct Flexibility {
+    /// K_NN: u_N per unit normal nodal force (n × n).
+    pub k_nn: Mat<f64>,
+    /// K_NT: u_N per unit tangential nodal force (only when the tangential problem is built).
+    pub k_nt: Option<Mat<f64>>,
+    /// K_TN: u_T per unit normal nodal force.
+    pub k_tn: Option<Mat<f64>>,
+    /// K_TT: u_T per unit tangential nodal force.
+    pub k_tt: Option<Mat<f64>>,
+    /// The rigid modes the source offers, with the contact nodes' responses.
+    pub modes: Vec<RigidMode>,
+    /// Contact-node x coordinates (increasing).
+    pub x: Vec<f64>,
+    /// Contact-node y coordinates (undeformed).
+    pub y: Vec<f64>,
+    /// Initial gaps g₀ to the counter-body.
+    pub g0: Vec<f64>,
+    /// Tributary lengths w (∫N ds): nodal force = w × traction.
+    pub weights: Vec<f64>,
+    /// The scales that make it dimensionless.
+    pub scales: Scales,
+}
+
+impl Flexibility {
+    /// Number of contact nodes.
+    pub fn n(&self) -> usize {
+        self.x.len()
+    }
+
+    /// Whether the tangential blocks were built.
+    pub fn has_tangential(&self) -> bool {
+        self.k_tt.is_some()
+    }
+
+    /// The rigid mode of a kind, if the source offers it.
+    pub fn mode(&self, kind: ModeKind) -> Option<&RigidMode> {
+        self.modes.iter().find(|m| m.kind == kind)
+    }
+}

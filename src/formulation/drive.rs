@@ -1,0 +1,119 @@
+//! The drive of the body's rigid degrees of freedom, turned once into the problem's rigid DOFs
+//! ([`super::RigidDof`]): each a prescribed displacement or a prescribed resultant (then the rigid motion is an
+//! unknown tied by an equilibrium row).
+
+use super::slip::SlipOperator;
+use crate::flexibility::{Flexibility, ModeKind};
+use serde::Serialize;
+
+/// One rigid degree of freedom's drive.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub enum Dof {
+    /// Prescribed rigid displacement (or rotation).
+    Displacement(f64),
+    /// Prescribed resultant (force or moment); the rigid motion is an unknown.
+    Load(f64),
+}
+
+impl Dof {
+    /// The prescribed load, if this DOF is load-driven.
+    pub fn load(self) -> Option<f64> {
+        match self {
+            Dof::Load(l) => Some(l),
+            Dof::Displacement(_) => None,
+        }
+    }
+}
+
+/// The drive of the three rigid degrees of freedom in the user's units (`DESIGN.md`): approach d_N or load P,
+/// shift d_T or load Q, rotation φ or moment M.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Drive {
+    /// Normal: approach d_N (length) or P = ∫p dx.
+    pub normal: Dof,
+    /// Tangential: shift d_T (length) or Q = ∫q dx.
+    pub tangential: Dof,
+    /// Rotational: φ (radians) or M about the wheel centre.
+    pub rotational: Dof,
+}
+
+/// The contact law between the bodies.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactLaw {
+    /// Coulomb friction coefficient μ ≥ 0 (0: frictionless, the normal problem only).
+    pub friction: f64,
+    /// Keep the normal–tangential cross flexibilities K_NT, K_TN (false drops them).
+    pub coupling: bool,
+}
+
+/// One rigid degree of freedom of the contact problem, in dimensionless units ([`crate::flexibility`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RigidDof {
+    /// Which rigid motion.
+    pub kind: ModeKind,
+    /// Its drive, dimensionless (lengths / L0, forces / (E·L0), moments / (E·L0²)).
+    pub drive: Dof,
+    /// Its drive in the user's units.
+    pub user: Dof,
+    /// Gap change u_N of the contact nodes per unit of this DOF.
+    pub gap: Vec<f64>,
+    /// Slip change of the contact nodes per unit of this DOF, through the slip operator (`None` when the
+    /// tangential problem is not built).
+    pub slip: Option<Vec<f64>>,
+    /// Equilibrium row on the normal nodal forces: its resultant is `row_nᵀ f + row_tᵀ h` (1 for P, 0 for Q, x for
+    /// M).
+    pub row_n: Vec<f64>,
+    /// Equilibrium row on the tangential nodal forces (0 for P, 1 for Q, −y for M).
+    pub row_t: Vec<f64>,
+}
+
+impl RigidDof {
+    /// The default sign s of this DOF's slack rows in the loading LCPs (see [`super::lcp`]): chosen so that the
+    /// DOF's gap response r ≈ s·row_n (the approach moves contact nodes by −1 in y: s = −1; the rotation by +x:
+    /// s = +1; the shift, whose gap response is only the coupling: s = +1).
+    pub fn default_sign(&self) -> f64 {
+        match self.kind {
+            ModeKind::Approach => -1.0,
+            ModeKind::Shift | ModeKind::Rotation => 1.0,
+        }
+    }
+
+    /// Whether the DOF is load-driven (its rigid motion is an unknown).
+    pub fn is_load(&self) -> bool {
+        matches!(self.drive, Dof::Load(_))
+    }
+}
+
+/// Turn the drive into the problem's rigid DOFs, in the order tangential, normal, rotational (the columns of the
+/// loading LCPs follow it). A mode the source does not offer gets no DOF.
+pub fn rigid_dofs(flex: &Flexibility, drive: &Drive, slip: &SlipOperator) -> Vec<RigidDof> {
+    let sc = flex.scales;
+    let n = flex.n();
+    let scaled = |d: Dof, length: f64, load: f64| match d {
+        Dof::Displacement(v) => Dof::Displacement(v / length),
+        Dof::Load(v) => Dof::Load(v / load),
+    };
+    let mut out = Vec::with_capacity(3);
+    for (kind, user) in [
+        (ModeKind::Shift, drive.tangential),
+        (ModeKind::Approach, drive.normal),
+        (ModeKind::Rotation, drive.rotational),
+    ] {
+        let Some(mode) = flex.mode(kind) else { continue };
+        let (drive, row_n, row_t) = match kind {
+            ModeKind::Shift => (scaled(user, sc.length, sc.force()), vec![0.0; n], vec![1.0; n]),
+            ModeKind::Approach => (scaled(user, sc.length, sc.force()), vec![1.0; n], vec![0.0; n]),
+            ModeKind::Rotation => (scaled(user, 1.0, sc.moment()), flex.x.clone(), flex.y.iter().map(|y| -y).collect()),
+        };
+        out.push(RigidDof {
+            kind,
+            drive,
+            user,
+            gap: mode.normal.clone(),
+            slip: mode.tangential.as_ref().map(|t| slip.apply(t)),
+            row_n,
+            row_t,
+        });
+    }
+    out
+}

@@ -1,0 +1,272 @@
+//! Contact formulations: the contact problem built once from (flexibility, drive, slip operator), plain data that
+//! every solver consumes ([`ContactProblem`]), and the one solution shape every solver's unknowns unpack into
+//! ([`Solution`]).
+//!
+//! **Unknowns are nodal forces**, `f_i = w_i p_i` (tributary length × pressure), not tractions. The matrix that
+//! maps nodal forces to displacements, `K = F W⁻¹`, is symmetric up to the collocation error of the BEM
+//! (Betti's reciprocity), so (i) the frictionless problem is the LCP of an almost symmetric positive definite
+//! matrix and the symmetric part defines the QP solved by clarabel, and (ii) in the load-driven LCP the columns of
+//! the rigid motion and the rows of equilibrium cancel in `zᵀMz`, which makes M copositive-plus: Lemke then either
+//! solves the problem or proves it infeasible (Cottle–Pang–Stone, Thm. 4.4.13). This is how rollbem resolves the
+//! seed's ambiguous equilibrium matrices G_N (eq. 39): with nodal forces they are the rows `1ᵀ` (P) and `xᵀ` (M).
+//!
+//! Which problem a scene poses ([`ProblemKind`]):
+//! - **frictionless** (μ = 0): the normal problem only (seed eq. 38 without friction rows, or §4.2 with the normal
+//!   load and moment);
+//! - **frictional** (μ > 0): the seed's displacement (eq. 38), loading (eq. 49) or mixed LCP ([`lcp`]);
+//! - **sliding limit** (P and Q prescribed, |Q| = μP): every contact node slips with h = σμf (σ = sgn Q), so the
+//!   tangential forces are eliminated exactly and only the normal problem remains, with `K = K_NN + σμ K_NT` (the
+//!   cross block only with coupling) and the moment row `x − σμ y`; Σh = σμP = Q holds by construction and the
+//!   shift is indeterminate;
+//! - **gross sliding** (|Q| > μP): no static solution; every solver reports `infeasible` with the friction limit.
+//!
+//! All quantities are dimensionless ([`crate::flexibility`]): lengths / L0, forces / (E·L0), moments / (E·L0²).
+
+pub mod drive;
+pub mod lcp;
+pub mod slip;
+
+pub use drive::{ContactLaw, Dof, Drive, RigidDof};
+pub use lcp::Lcp;
+pub use slip::{SlipKind, SlipOperator};
+
+use crate::flexibility::{Flexibility, ModeKind};
+use crate::tolerances::SLIDING_LIMIT_BAND;
+use faer::Mat;
+use serde::Serialize;
+
+/// Which problem a scene poses (see the module docs).
+#[derive(Debug, Clone, PartialEq)]
+pub enum ProblemKind {
+    /// μ = 0: the normal problem only.
+    Frictionless,
+    /// μ > 0: the frictional LCP (displacement, loading or mixed drive).
+    Frictional,
+    /// |Q| = μP with both prescribed: full slip h = σμf, normal problem only, shift indeterminate.
+    SlidingLimit {
+        /// σ = sgn Q.
+        sigma: f64,
+    },
+    /// |Q| > μP with both prescribed: no static solution (the message names the friction limit).
+    GrossSliding {
+        /// What is violated, with the numbers.
+        message: String,
+    },
+}
+
+/// The formulation's name in results: the seed's two approaches, or the frictionless problem.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FormulationName {
+    /// The normal problem of a frictionless scene.
+    Frictionless,
+    /// Every rigid DOF prescribed as a displacement (seed eq. 38).
+    Displacement,
+    /// At least one rigid DOF prescribed as a load (seed eq. 49, or mixed).
+    Loading,
+}
+
+impl FormulationName {
+    /// Name as written in results.
+    pub fn name(self) -> &'static str {
+        match self {
+            FormulationName::Frictionless => "frictionless",
+            FormulationName::Displacement => "displacement",
+            FormulationName::Loading => "loading",
+        }
+    }
+}
+
+impl std::fmt::Display for FormulationName {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.pad(self.name())
+    }
+}
+
+/// Why a drive cannot be formulated.
+#[derive(Debug, Clone, PartialEq)]
+pub enum DriveIssue {
+    /// A nonzero tangential load with no friction: no static solution (user's units).
+    TangentialLoadWithoutFriction(f64),
+}
+
+/// The normal problem of a frictionless scene or of the sliding limit: `g = K f + Σ_m r_m ρ_m + q₀ ≥ 0 ⊥ f ≥ 0`
+/// over the load-driven DOFs m.
+#[derive(Debug, Clone)]
+pub struct NormalProblem {
+    /// K: gap change per unit nodal force (K_NN, or K_NN + σμ K_NT at the sliding limit).
+    pub k: Mat<f64>,
+    /// q₀ = g₀ + Σ r_m ρ_m over the displacement-driven DOFs.
+    pub q0: Vec<f64>,
+}
+
+/// The contact problem, built once and consumed by every solver.
+#[derive(Debug, Clone)]
+pub struct ContactProblem<'a> {
+    /// The flexibility it is built on.
+    pub flex: &'a Flexibility,
+    /// Friction and coupling.
+    pub law: ContactLaw,
+    /// The drive in the user's units.
+    pub drive: Drive,
+    /// Which problem.
+    pub kind: ProblemKind,
+    /// The rigid DOFs (tangential, normal, rotational; those the source offers).
+    pub dofs: Vec<RigidDof>,
+    /// The tangential kinematics.
+    pub slip: SlipOperator,
+    /// The normal problem (frictionless and sliding limit).
+    pub normal: Option<NormalProblem>,
+    /// The LCP with the default slack signs (every kind but gross sliding).
+    pub lcp: Option<Lcp>,
+    /// The affine map of the tangential forces of the frictional LCP (see [`lcp::Frictional`]).
+    pub tangential: Option<lcp::TangentialMap>,
+}
+
+/// A solver's answer in the problem's dimensionless unknowns: the one solution shape of every solver.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solution {
+    /// Normal nodal forces f.
+    pub f: Vec<f64>,
+    /// Tangential nodal forces h (`None` when the tangential problem was not built).
+    pub h: Option<Vec<f64>>,
+    /// Value of each rigid DOF of the problem (same order as [`ContactProblem::dofs`]): the prescribed
+    /// displacement, or the solved one.
+    pub rigid: Vec<f64>,
+    /// False when the tangential rigid motion is indeterminate (at the sliding limit).
+    pub tangential_known: bool,
+}
+
+impl<'a> ContactProblem<'a> {
+    /// Build the problem a drive poses on a flexibility with the given slip operator. The flexibility must hold the
+    /// tangential blocks when μ > 0.
+    pub fn new(
+        flex: &'a Flexibility,
+        law: ContactLaw,
+        drive: Drive,
+        slip: SlipOperator,
+    ) -> Result<ContactProblem<'a>, DriveIssue> {
+        let mu = law.friction;
+        let kind = if mu == 0.0 {
+            if let Dof::Load(q) = drive.tangential {
+                if q != 0.0 {
+                    return Err(DriveIssue::TangentialLoadWithoutFriction(q));
+                }
+            }
+            ProblemKind::Frictionless
+        } else {
+            match (drive.normal, drive.tangential) {
+                (Dof::Load(p), Dof::Load(q)) if q.abs() > mu * p * (1.0 + SLIDING_LIMIT_BAND) => {
+                    ProblemKind::GrossSliding {
+                        message: format!(
+                            "gross sliding: the tangential load |Q| = {:.6e} exceeds the friction limit μP = {:.6e} \
+                             (μ = {mu}, P = {p:.6e}); no static solution exists",
+                            q.abs(),
+                            mu * p
+                        ),
+                    }
+                }
+                (Dof::Load(p), Dof::Load(q)) if q.abs() >= mu * p * (1.0 - SLIDING_LIMIT_BAND) => {
+                    ProblemKind::SlidingLimit { sigma: q.signum() }
+                }
+                _ => ProblemKind::Frictional,
+            }
+        };
+        let dofs = drive::rigid_dofs(flex, &drive, &slip);
+        let mut p = ContactProblem { flex, law, drive, kind, dofs, slip, normal: None, lcp: None, tangential: None };
+        match p.kind {
+            ProblemKind::Frictionless | ProblemKind::SlidingLimit { .. } => {
+                let (normal, lcp) = lcp::normal_lcp(&p);
+                p.normal = Some(normal);
+                p.lcp = Some(lcp);
+            }
+            ProblemKind::Frictional => {
+                let signs: Vec<f64> = p.load_dofs().map(|d| d.default_sign()).collect();
+                let fr = lcp::frictional_lcp(&p, &signs);
+                p.lcp = Some(fr.lcp);
+                p.tangential = Some(fr.map);
+            }
+            ProblemKind::GrossSliding { .. } => {}
+        }
+        Ok(p)
+    }
+
+    /// Number of contact nodes.
+    pub fn n(&self) -> usize {
+        self.flex.n()
+    }
+
+    /// The formulation's name.
+    pub fn formulation(&self) -> FormulationName {
+        match self.kind {
+            ProblemKind::Frictionless => FormulationName::Frictionless,
+            ProblemKind::Frictional if !self.dofs.iter().any(RigidDof::is_load) => FormulationName::Displacement,
+            _ => FormulationName::Loading,
+        }
+    }
+
+    /// σμ at the sliding limit (h = σμ f), 0 otherwise.
+    pub fn limit_factor(&self) -> f64 {
+        match self.kind {
+            ProblemKind::SlidingLimit { sigma } => sigma * self.law.friction,
+            _ => 0.0,
+        }
+    }
+
+    /// The DOFs whose rigid motion is unknown, in LCP column order. The tangential DOF is not part of the normal
+    /// problem (frictionless: it carries no load; sliding limit: its motion is indeterminate).
+    pub fn load_dofs(&self) -> impl Iterator<Item = &RigidDof> + '_ {
+        self.dofs.iter().filter(|d| self.is_unknown(d))
+    }
+
+    /// Whether a DOF's rigid motion is an unknown of the LCP (see [`ContactProblem::load_dofs`]).
+    pub fn is_unknown(&self, d: &RigidDof) -> bool {
+        d.is_load() && !(self.normal_only() && d.kind == ModeKind::Shift)
+    }
+
+    /// Whether only the normal problem is solved (frictionless, sliding limit).
+    pub fn normal_only(&self) -> bool {
+        matches!(self.kind, ProblemKind::Frictionless | ProblemKind::SlidingLimit { .. })
+    }
+
+    /// The prescribed value of each DOF (0 for load-driven ones).
+    pub fn given(&self) -> Vec<f64> {
+        self.dofs
+            .iter()
+            .map(|d| match d.drive {
+                Dof::Displacement(v) => v,
+                Dof::Load(_) => 0.0,
+            })
+            .collect()
+    }
+
+    /// Unpack an LCP solution z (of the default LCP or of one built with other slack signs: they share unknowns)
+    /// into the one solution shape.
+    pub fn unpack(&self, z: &[f64]) -> Solution {
+        let n = self.n();
+        let mut rigid = self.given();
+        let base = if self.kind == ProblemKind::Frictional { 3 * n } else { n };
+        let mut load_values = Vec::new();
+        for (k, d) in self.dofs.iter().enumerate() {
+            if self.is_unknown(d) {
+                let b = load_values.len();
+                let r = z[base + 2 * b] - z[base + 2 * b + 1];
+                rigid[k] = r;
+                load_values.push(r);
+            }
+        }
+        let f = z[..n].to_vec();
+        let h = match (&self.kind, &self.tangential) {
+            (ProblemKind::Frictional, Some(map)) => Some(map.h(&z[..3 * n], &load_values)),
+            (ProblemKind::SlidingLimit { .. }, _) => Some(f.iter().map(|v| self.limit_factor() * v).collect()),
+            _ => None,
+        };
+        let tangential_known = !matches!(self.kind, ProblemKind::SlidingLimit { .. });
+        Solution { f, h, rigid, tangential_known }
+    }
+
+    /// The value of a rigid mode in a solution (0 when the problem has no DOF of that kind).
+    pub fn rigid_value(&self, sol: &Solution, kind: ModeKind) -> f64 {
+        self.dofs.iter().position(|d| d.kind == kind).map(|k| sol.rigid[k]).unwrap_or(0.0)
+    }
+}

@@ -1,0 +1,172 @@
+//! The result document of one scene run (`DESIGN.md`, "Result files"): the JSON that `rollbem run --json` writes
+//! and that other tools, the sweeps, the reports and the regression suite read. Keys are stable: add freely,
+//! rename none.
+
+use crate::formulation::FormulationName;
+use crate::hertz::Hertz;
+use crate::post::{ContactSummary, NodeResult, Residuals, Resultants, RigidBody};
+use crate::scene::{ElementKind, Scene};
+use crate::solvers::Work;
+use crate::status::Status;
+use serde::Serialize;
+
+/// A solver's registry name ([`crate::solvers::REGISTRY`]), as written in results.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[serde(transparent)]
+pub struct SolverName(pub &'static str);
+
+impl std::fmt::Display for SolverName {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.pad(self.0)
+    }
+}
+
+impl PartialEq<str> for SolverName {
+    fn eq(&self, other: &str) -> bool {
+        self.0 == other
+    }
+}
+
+impl PartialEq<&str> for SolverName {
+    fn eq(&self, other: &&str) -> bool {
+        self.0 == *other
+    }
+}
+
+impl PartialEq<&str> for FormulationName {
+    fn eq(&self, other: &&str) -> bool {
+        self.name() == *other
+    }
+}
+
+/// Wall-clock time per stage, seconds. Assembly and condensation are shared by all solvers of a scene.
+#[derive(Debug, Clone, Copy, Default, Serialize)]
+pub struct Timing {
+    /// Flexibility assembly (BEM: H and G).
+    pub assembly: f64,
+    /// Condensation to the contact flexibility (BEM: LU factorisation and solves).
+    pub condensation: f64,
+    /// Building the contact problem (LCP / QP).
+    pub formulation: f64,
+    /// The solver.
+    pub solve: f64,
+    /// Sum of the above.
+    pub total: f64,
+}
+
+/// One solver's run on the scene.
+#[derive(Debug, Clone, Serialize)]
+pub struct SolverRun {
+    /// Solver name.
+    pub solver: SolverName,
+    /// `frictionless` | `displacement` | `loading`.
+    pub formulation: FormulationName,
+    /// Outcome (after the solver-independent residual check).
+    pub status: Status,
+    /// Detail from the solver or the residual check.
+    pub message: String,
+    /// Number of complementarity (or QP) unknowns solved.
+    pub problem_size: usize,
+    /// Work counters (named: pivots, sweeps, iterations, outer, ...).
+    pub work: Work,
+    /// Time per stage.
+    pub timing_s: Timing,
+    /// Solver-independent residuals (null unless a solution was produced).
+    pub residuals: Option<Residuals>,
+    /// Resultants of the contact tractions (null unless solved).
+    pub resultants: Option<Resultants>,
+    /// Rigid motion of the support (null unless solved).
+    pub rigid_body: Option<RigidBody>,
+    /// Contact figures (null unless solved).
+    pub contact: Option<ContactSummary>,
+    /// Per contact node (empty unless solved).
+    pub nodes: Vec<NodeResult>,
+    /// For clarabel: max |p − p_unpolished| / p_max, the effect of solving the symmetrised QP before the
+    /// active-set polish with the nonsymmetric flexibility.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub polish_change: Option<f64>,
+}
+
+/// Mesh facts.
+#[derive(Debug, Clone, Serialize)]
+pub struct MeshInfo {
+    /// Number of elements.
+    pub elements: usize,
+    /// Number of nodes (collocation points).
+    pub nodes: usize,
+    /// Number of contact nodes.
+    pub contact_nodes: usize,
+    /// Element family.
+    pub element: ElementKind,
+    /// Size of the rearranged BEM system (null without one).
+    pub system_size: Option<usize>,
+    /// Smallest contact element length (user's unit).
+    pub contact_element_length: f64,
+}
+
+/// Numerical health of the flexibility source and of the contact flexibility.
+#[derive(Debug, Clone, Serialize)]
+pub struct Diagnostics {
+    /// Largest/smallest |U_ii| of the BEM system's LU (a lower bound of its condition number; null without BEM).
+    pub bem_pivot_ratio: Option<f64>,
+    /// Estimated 1-norm condition number of the rearranged BEM system (null without BEM).
+    pub bem_condition: Option<f64>,
+    /// Estimated 1-norm condition number of the normal flexibility K_NN (nodal forces to gaps).
+    pub flexibility_condition: f64,
+    /// Same for the tangential block K_TT (null when the tangential problem is not built).
+    pub tangential_condition: Option<f64>,
+    /// ‖K − Kᵀ‖_F / ‖K‖_F of the normal flexibility in nodal forces (collocation asymmetry).
+    pub flexibility_asymmetry: f64,
+    /// Warnings when a figure above exceeds its threshold in [`crate::tolerances`].
+    pub warnings: Vec<String>,
+}
+
+/// Analytic references that apply to the scene.
+#[derive(Debug, Clone, Serialize, Default)]
+pub struct References {
+    /// Hertz at the run's load (frictionless scenes), from the first solved run's P when displacement-driven.
+    pub hertz: Option<Hertz>,
+}
+
+/// One check: a measured figure against a reference.
+#[derive(Debug, Clone, Serialize)]
+pub struct Check {
+    /// What is checked.
+    pub name: String,
+    /// Measured value.
+    pub measured: f64,
+    /// Reference value (theory, or the peer solver).
+    pub reference: f64,
+    /// Error (relative unless the name says otherwise).
+    pub error: f64,
+    /// Tolerance (from [`crate::tolerances`]).
+    pub tolerance: f64,
+    /// error ≤ tolerance.
+    pub pass: bool,
+}
+
+/// The JSON document of one scene run (`DESIGN.md`, "Result files").
+#[derive(Debug, Clone, Serialize)]
+pub struct Report {
+    /// The scene as parsed, with defaults filled in.
+    pub scene: Scene,
+    /// Effects simulated.
+    pub effects: Vec<String>,
+    /// Mesh facts.
+    pub mesh: MeshInfo,
+    /// Numerical health.
+    pub diagnostics: Diagnostics,
+    /// Analytic references.
+    pub references: References,
+    /// One entry per solver.
+    pub runs: Vec<SolverRun>,
+    /// Checks against theory and between solvers.
+    pub checks: Vec<Check>,
+}
+
+impl Report {
+    /// Whether every check passed.
+    pub fn all_pass(&self) -> bool {
+        self.checks.iter().all(|c| c.pass)
+    }
+}

@@ -1,0 +1,383 @@
+//! Lemke's complementary pivoting algorithm (seed §5; Cottle, Pang & Stone, *The Linear Complementarity Problem*,
+//! §4.4; Murty 1988 ch. 2) for `w = M z + q`, with the covering vector e = (1, …, 1).
+//!
+//! Implementation notes:
+//! - **Scaling.** Rows and columns are equilibrated (Ruiz) before pivoting: `M' = D_r M D_c`, `q' = D_r q`,
+//!   `z = D_c z'`, `w = D_r⁻¹ w'`. Positive diagonal scalings preserve complementarity, and they bring the
+//!   unknowns to order one whatever the units of the physical problem.
+//! - **Revised form.** The inverse of the basis matrix is kept explicitly and updated by one eta (Gauss–Jordan)
+//!   step per pivot, O(m²); it is recomputed from an LU factorisation every `refactor_every` pivots, and the final
+//!   basic solution is obtained by a fresh LU solve with one step of iterative refinement, so the complementarity
+//!   of the answer is exact (every nonbasic variable is zero) and its residual is at round-off level.
+//! - **Anti-cycling.** Ties in the minimum-ratio test are broken by the lexicographic rule: among the tied rows
+//!   choose the one whose row of `B⁻¹`, divided by the pivot column entry, is lexicographically smallest. Rows of
+//!   `B⁻¹` are linearly independent, so no tie survives and no basis repeats: the algorithm is finite on
+//!   degenerate problems. When z₀ is among the tied rows it leaves at once (termination).
+//! - **Outcome.** `Solved` (z₀ left the basis), `RayTermination` (no blocking row: for a copositive-plus M this
+//!   proves the LCP infeasible), `NotConverged` (pivot limit).
+//! - **Engines.** [`solve`] is the block-revised engine ([`block`]); the dense reference engine is
+//!   [`dense`]. Both pivot on the same scaled problem (`prepare`) and follow the same path.
+//!
+//! As a contact solver ([`Lemke`]) it solves every problem's LCP and interprets its end: on the frictional LCP a
+//! ray is retried with the other slack-sign patterns of the load-driven DOFs (the same solution set, another
+//! path), and a ray is reported `infeasible` only when a bound proves it ([`classify_ray`]).
+
+pub mod block;
+pub mod dense;
+
+use super::{Entry, Outcome, Solver, Status, Validate, Work};
+use crate::formulation::{lcp::frictional_lcp, ContactProblem, Dof, Lcp, ProblemKind};
+use faer::Mat;
+
+/// Settings of Lemke's algorithm.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct LemkeSettings {
+    /// Maximum number of pivots, as a multiple of the problem size m (plus 100). Default 50.
+    pub max_pivots_per_unknown: usize,
+    /// Pivot-column entries ≤ `pivot_tolerance · ‖column‖∞` cannot block (default 1e-11).
+    pub pivot_tolerance: f64,
+    /// Ratios within `tie_tolerance` (relative) of the minimum count as tied (default 1e-9).
+    pub tie_tolerance: f64,
+    /// Recompute the basis inverse from scratch every this many pivots (default 100).
+    pub refactor_every: usize,
+}
+
+impl Default for LemkeSettings {
+    fn default() -> Self {
+        LemkeSettings { max_pivots_per_unknown: 50, pivot_tolerance: 1e-11, tie_tolerance: 1e-9, refactor_every: 100 }
+    }
+}
+
+impl Validate for LemkeSettings {
+    fn validate(&self) -> Result<(), (&'static str, String)> {
+        crate::solvers::check_tolerance("pivot_tolerance", self.pivot_tolerance)?;
+        crate::solvers::check_tolerance("tie_tolerance", self.tie_tolerance)?;
+        crate::solvers::check_count("max_pivots_per_unknown", self.max_pivots_per_unknown)?;
+        crate::solvers::check_count("refactor_every", self.refactor_every)
+    }
+}
+
+/// Result of Lemke's algorithm.
+#[derive(Debug, Clone)]
+pub struct LemkeOutcome {
+    /// z (unscaled); on ray termination the last basic point's z (not a solution).
+    pub z: Vec<f64>,
+    /// w = M z + q (unscaled), recomputed from z.
+    pub w: Vec<f64>,
+    /// Outcome.
+    pub status: Status,
+    /// Number of pivots, including the initial z₀ pivot.
+    pub pivots: usize,
+    /// Human-readable detail (which variable ended it, etc.).
+    pub message: String,
+}
+
+/// z0 counts as zero below this fraction of its initial value (both engines).
+pub(crate) const Z0_NEGLIGIBLE: f64 = 1e-13;
+
+/// Ruiz equilibration (8 sweeps): returns (D_r, D_c) with max |D_r M D_c| ≈ 1 in every nonzero row and column.
+/// Both Lemke engines pivot on `D_r M D_c`; with covering vector e this is Lemke on M with covering vector D_r⁻¹e.
+pub fn equilibrate(m: &Mat<f64>) -> (Vec<f64>, Vec<f64>) {
+    let n = m.nrows();
+    let mut dr = vec![1.0; n];
+    let mut dc = vec![1.0; n];
+    for _ in 0..8 {
+        let mut rmax = vec![0.0_f64; n];
+        let mut cmax = vec![0.0_f64; n];
+        for j in 0..n {
+            for i in 0..n {
+                let v = (dr[i] * m[(i, j)] * dc[j]).abs();
+                rmax[i] = rmax[i].max(v);
+                cmax[j] = cmax[j].max(v);
+            }
+        }
+        for i in 0..n {
+            if rmax[i] > 0.0 {
+                dr[i] /= rmax[i].sqrt();
+            }
+            if cmax[i] > 0.0 {
+                dc[i] /= cmax[i].sqrt();
+            }
+        }
+    }
+    (dr, dc)
+}
+
+/// The scaled problem both engines pivot on, and the way back to the user's variables.
+pub(crate) struct Scaled<'a> {
+    pub(crate) lcp: &'a Lcp,
+    pub(crate) m: Mat<f64>,
+    pub(crate) q: Vec<f64>,
+    pub(crate) dc: Vec<f64>,
+    pub(crate) qscale: f64,
+}
+
+impl Scaled<'_> {
+    /// Unscale z, recompute w = M z + q from the original data, and wrap up.
+    pub(crate) fn finish(&self, z_s: Vec<f64>, status: Status, pivots: usize, message: String) -> LemkeOutcome {
+        let z: Vec<f64> = z_s.iter().zip(&self.dc).map(|(z, d)| z * d).collect();
+        let w = self.lcp.w_of(&z);
+        LemkeOutcome { z, w, status, pivots, message }
+    }
+}
+
+/// Validate and equilibrate; `Err` carries the outcome when there is nothing to pivot (bad data, or q ≥ 0).
+pub(crate) fn prepare(lcp: &Lcp) -> Result<Scaled<'_>, LemkeOutcome> {
+    let n = lcp.size();
+    let fail = |msg: String| LemkeOutcome {
+        z: vec![0.0; n],
+        w: lcp.q.clone(),
+        status: Status::NumericalError,
+        pivots: 0,
+        message: msg,
+    };
+    if lcp.m.nrows() != n || lcp.m.ncols() != n {
+        return Err(fail(format!("M is {}×{} but q has {} entries", lcp.m.nrows(), lcp.m.ncols(), n)));
+    }
+    if !lcp.q.iter().all(|v| v.is_finite()) || !lcp.m.col_iter().all(|c| c.iter().all(|v| v.is_finite())) {
+        return Err(fail("M or q has a non-finite entry (NaN or infinity)".into()));
+    }
+    let (dr, dc) = equilibrate(&lcp.m);
+    let m = Mat::from_fn(n, n, |i, j| dr[i] * lcp.m[(i, j)] * dc[j]);
+    let q: Vec<f64> = (0..n).map(|i| dr[i] * lcp.q[i]).collect();
+    let qscale = q.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+    let sc = Scaled { lcp, m, q, dc, qscale };
+    if sc.q.iter().all(|&v| v >= 0.0) {
+        return Err(sc.finish(vec![0.0; n], Status::Solved, 0, "q ≥ 0: z = 0 is the solution".into()));
+    }
+    Ok(sc)
+}
+
+/// Solve `w = M z + q ⊥ z ≥ 0` by Lemke's method: the block-revised engine ([`block`]), which works
+/// on the k × k block of the basis that involves z-columns only.
+pub fn solve(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
+    match prepare(lcp) {
+        Ok(sc) => block::run(&sc, settings),
+        Err(out) => out,
+    }
+}
+
+/// A Lemke engine: solve a bare LCP with the given settings.
+pub type Engine = fn(&Lcp, &LemkeSettings) -> LemkeOutcome;
+
+/// Lemke's method as a contact solver: one engine ([`solve`] or [`dense::solve_dense`]) with the
+/// slack-sign retry and the ray interpretation of this module.
+pub struct Lemke {
+    /// Registry name.
+    pub name: &'static str,
+    /// Its settings.
+    pub settings: LemkeSettings,
+    /// The pivoting engine.
+    pub engine: Engine,
+}
+
+/// Registry entry of the block-revised engine.
+pub const ENTRY: Entry = Entry {
+    name: "lemke",
+    summary: "Lemke's method, block-revised (only the z-part of the basis is factorised), lexicographic anti-cycling; \
+              every scene",
+    in_all: true,
+    counters: &["pivots"],
+    build: |raw| {
+        let settings = crate::solvers::parse_settings("lemke", raw)?;
+        Ok(Box::new(Lemke { name: "lemke", settings, engine: solve }))
+    },
+};
+
+impl Solver for Lemke {
+    fn name(&self) -> &'static str {
+        self.name
+    }
+
+    fn applies(&self, _problem: &ContactProblem) -> Result<(), String> {
+        Ok(())
+    }
+
+    fn settings(&self) -> toml::Value {
+        crate::solvers::settings_value(&self.settings)
+    }
+
+    fn solves_lcp(&self) -> bool {
+        true
+    }
+
+    fn solve_lcp(&self, lcp: &Lcp) -> Option<LemkeOutcome> {
+        Some((self.engine)(lcp, &self.settings))
+    }
+
+    fn solve(&self, p: &ContactProblem) -> Outcome {
+        let lcp = p.lcp.as_ref().expect("a problem with a static solution has an LCP");
+        let out = match p.kind {
+            ProblemKind::Frictional => self.frictional(p).1,
+            ProblemKind::SlidingLimit { .. } => {
+                let o = (self.engine)(lcp, &self.settings);
+                let message = format!(
+                    "sliding limit |Q| = μP: every contact node slips (q = μp sgn Q); the tangential shift is \
+                     indeterminate (reported null); {}",
+                    o.message
+                );
+                LemkeOutcome { message, ..o }
+            }
+            _ => (self.engine)(lcp, &self.settings),
+        };
+        let (status, message) = classify_ray(out.status, out.message, p);
+        Outcome {
+            solution: Some(p.unpack(&out.z)),
+            status,
+            message,
+            work: Work::one("pivots", out.pivots as u64),
+            polish_change: None,
+        }
+    }
+}
+
+impl Lemke {
+    /// Lemke on the frictional LCP with the default slack signs and, on a ray, with every other sign pattern of the
+    /// load-driven DOFs (the same solution set; see [`crate::formulation::lcp`]). Returns the LCP that was solved
+    /// (when a retry solved it) and the outcome, with the pivots of all attempts summed.
+    pub fn frictional(&self, p: &ContactProblem) -> (Option<Lcp>, LemkeOutcome) {
+        let lcp = p.lcp.as_ref().expect("frictional LCP");
+        let mut out = (self.engine)(lcp, &self.settings);
+        let defaults: Vec<f64> = p.load_dofs().map(|d| d.default_sign()).collect();
+        let loads = defaults.len();
+        if out.status != Status::RayTermination || loads == 0 {
+            return (None, out);
+        }
+        let mut pivots = out.pivots;
+        for pattern in 1..(1usize << loads) {
+            let signs: Vec<f64> =
+                defaults.iter().enumerate().map(|(b, s)| if pattern & (1 << b) != 0 { -s } else { *s }).collect();
+            let alt = frictional_lcp(p, &signs).lcp;
+            let o = (self.engine)(&alt, &self.settings);
+            pivots += o.pivots;
+            if o.status == Status::Solved {
+                let msg = format!(
+                    "{} (solved with flipped slack signs, attempt {} of {})",
+                    o.message,
+                    pattern + 1,
+                    1 << loads
+                );
+                return (Some(alt), LemkeOutcome { pivots, message: msg, ..o });
+            }
+        }
+        out.pivots = pivots;
+        out.message = format!("{} ({} slack-sign patterns tried)", out.message, 1 << loads);
+        (None, out)
+    }
+
+    /// The LCP this solver ends up solving for a problem (for `rollbem lcp export`): the default one, or the one
+    /// with the slack signs of the attempt that succeeded. `None` beyond gross sliding (no static problem).
+    pub fn solved_lcp(&self, p: &ContactProblem) -> Option<Lcp> {
+        match p.kind {
+            ProblemKind::GrossSliding { .. } => None,
+            ProblemKind::Frictional => {
+                let (solved_by, _) = self.frictional(p);
+                solved_by.or_else(|| p.lcp.clone())
+            }
+            _ => p.lcp.clone(),
+        }
+    }
+}
+
+/// Interpret Lemke's secondary ray. A ray proves infeasibility only for a copositive-plus M, which the frictional
+/// LCPs are not ([`crate::formulation::lcp`]); so `infeasible` is reported only when it is proven, with the bound
+/// that is violated:
+/// - |Q| > μP with both prescribed (Coulomb: |Σh| ≤ μΣf);
+/// - a prescribed moment beyond `|M| ≤ P·max|x| + μP·max|y + R| + R·|Q|` (with |Q| ≤ μP when Q is not prescribed),
+///   which every static solution obeys since M = Σ(x f − y h) and Σh = Q;
+/// - a frictionless LCP (copositive-plus: the ray is the proof).
+///
+/// Otherwise the status stays `ray_termination` and the message says that feasibility is undecided.
+pub fn classify_ray(status: Status, message: String, p: &ContactProblem) -> (Status, String) {
+    if status != Status::RayTermination {
+        return (status, message);
+    }
+    let mu = p.law.friction;
+    let r = p.flex.scales.radius();
+    let l0 = p.flex.scales.length;
+    let xmax = p.flex.x.iter().fold(0.0_f64, |m, v| m.max(v.abs())) * l0;
+    let ymax = p.flex.y.iter().fold(0.0_f64, |m, v| m.max((v * l0 + r).abs()));
+    let (normal, tangential, rotational) = (p.drive.normal, p.drive.tangential, p.drive.rotational);
+    if let (Dof::Load(q), Dof::Load(pl)) = (tangential, normal) {
+        if q.abs() > mu * pl {
+            return (
+                Status::Infeasible,
+                format!("infeasible: |Q| = {:.6e} exceeds μP = {:.6e} (Lemke: {message})", q.abs(), mu * pl),
+            );
+        }
+    }
+    if let (Dof::Load(m), Dof::Load(pl)) = (rotational, normal) {
+        let qterm = match tangential {
+            Dof::Load(q) => q.abs(),
+            Dof::Displacement(_) => mu * pl,
+        };
+        let bound = pl * xmax + mu * pl * ymax + r * qterm;
+        if m.abs() > bound {
+            return (
+                Status::Infeasible,
+                format!(
+                    "infeasible: the moment |M| = {:.6e} exceeds what any static state can carry, \
+                     P·max|x| + μP·max|y + R| + R·|Q| = {bound:.6e} (the pressure centre would have to leave the \
+                     candidate zone, |x| ≤ {xmax:.4e}: overturning) (Lemke: {message})",
+                    m.abs()
+                ),
+            );
+        }
+    }
+    // The frictionless LCP is copositive-plus (K nearly SPD, skew rigid-motion coupling): its ray is a proof. The
+    // frictional LCPs are not copositive-plus, and a displacement-driven contact always has a static solution, so
+    // their ray is a solver failure, not a diagnosis.
+    if mu == 0.0 {
+        return (
+            Status::Infeasible,
+            format!("infeasible: the LCP has no solution (Lemke's ray on a copositive-plus LCP: {message})"),
+        );
+    }
+    (
+        Status::RayTermination,
+        format!(
+            "Lemke ended on a secondary ray with every choice of slack signs; the frictional LCP is not copositive-plus, \
+             so this does not prove that no static solution exists ({message})"
+        ),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn lcp(m: &[&[f64]], q: &[f64]) -> Lcp {
+        let n = q.len();
+        Lcp { m: Mat::from_fn(n, n, |i, j| m[i][j]), q: q.to_vec() }
+    }
+
+    #[test]
+    fn solves_a_p_matrix_problem_known_by_hand() {
+        // M = [[2,1],[1,2]], q = [-5,-6]: both positive, z = M⁻¹(−q) = (4/3, 7/3), w = 0 (solved by hand).
+        let p = lcp(&[&[2.0, 1.0], &[1.0, 2.0]], &[-5.0, -6.0]);
+        let out = solve(&p, &LemkeSettings::default());
+        assert_eq!(out.status, Status::Solved);
+        assert!((out.z[0] - 4.0 / 3.0).abs() < 1e-14 && (out.z[1] - 7.0 / 3.0).abs() < 1e-14);
+    }
+
+    #[test]
+    fn detects_infeasibility_by_ray_termination() {
+        // w1 = 0·z − 1 ≥ 0 is impossible whatever z (by inspection): Lemke must end on a secondary ray.
+        let p = lcp(&[&[0.0, 0.0], &[0.0, 1.0]], &[-1.0, 1.0]);
+        let out = solve(&p, &LemkeSettings::default());
+        assert_eq!(out.status, Status::RayTermination);
+    }
+
+    #[test]
+    fn degenerate_ties_terminate() {
+        // Fully degenerate: every q equal, M with repeated columns (ties in every ratio test). The solution is
+        // checked against the LCP conditions themselves.
+        let p = lcp(&[&[1.0, 1.0, 1.0], &[1.0, 1.0, 1.0], &[1.0, 1.0, 2.0]], &[-1.0, -1.0, -1.0]);
+        let out = solve(&p, &LemkeSettings::default());
+        assert_eq!(out.status, Status::Solved, "{}", out.message);
+        for i in 0..3 {
+            assert!(out.w[i] >= -1e-14 && out.z[i] >= 0.0 && (out.w[i] * out.z[i]).abs() < 1e-14);
+        }
+    }
+}

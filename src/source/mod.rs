@@ -1,0 +1,80 @@
+//! Flexibility sources: what turns a scene's bodies into the contact flexibility ([`crate::flexibility`]).
+//!
+//! Today's source is the boundary-element model of the finite wheel ([`bem_wheel`]). A source builds only the
+//! blocks a scene needs ([`Blocks`]): a frictionless scene gets the normal columns only. It reports what it is made
+//! of ([`SourceInfo`]) for the result document and the health line.
+
+pub mod bem_wheel;
+
+use crate::error::Result;
+use crate::flexibility::Flexibility;
+use crate::scene::{ElementKind, Scene};
+
+/// Which blocks of the flexibility to compute.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Blocks {
+    /// Only K_NN and the normal rigid responses: the frictionless problem.
+    Normal,
+    /// K_NN, K_NT, K_TN, K_TT and both rigid responses.
+    All,
+}
+
+/// What a source is made of, and its numerical health (the BEM figures are `None` for closed-form sources).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SourceInfo {
+    /// Number of boundary elements.
+    pub elements: usize,
+    /// Number of nodes (collocation points).
+    pub nodes: usize,
+    /// Element family.
+    pub element: ElementKind,
+    /// Size of the rearranged BEM system (2 × nodes), when there is one.
+    pub system_size: Option<usize>,
+    /// Largest/smallest |U_ii| of the BEM system's LU (a lower bound of its condition number).
+    pub pivot_ratio: Option<f64>,
+    /// Estimated 1-norm condition number of the rearranged BEM system.
+    pub condition: Option<f64>,
+    /// Smallest contact element length (user's unit).
+    pub contact_element_length: f64,
+}
+
+/// Wall-clock time of a source's two stages, seconds.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct SourceTiming {
+    /// Assembly (BEM: H and G into the rearranged system).
+    pub assembly: f64,
+    /// Condensation (BEM: one LU and the solves for F).
+    pub condensation: f64,
+}
+
+/// A built flexibility with its description and timings.
+#[derive(Debug, Clone)]
+pub struct Built {
+    /// The flexibility.
+    pub flex: Flexibility,
+    /// What it is made of.
+    pub info: SourceInfo,
+    /// Time per stage.
+    pub timing: SourceTiming,
+}
+
+/// Build the flexibility a (validated) scene describes, with the blocks it needs.
+pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
+    let model = bem_wheel::Model::new(scene);
+    let (flex, health, t) = bem_wheel::condense(&model, blocks)?;
+    let mesh = &model.mesh;
+    Ok(Built {
+        info: SourceInfo {
+            elements: mesh.elements.len(),
+            nodes: mesh.n_nodes(),
+            element: mesh.kind,
+            system_size: Some(health.system_size),
+            pivot_ratio: Some(health.pivot_ratio),
+            condition: Some(health.system_condition),
+            contact_element_length: scene.wheel.radius * scene.mesh.contact_arc_deg.to_radians()
+                / scene.mesh.contact_elements as f64,
+        },
+        flex,
+        timing: SourceTiming { assembly: t.assembly, condensation: t.condensation },
+    })
+}
