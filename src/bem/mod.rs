@@ -12,6 +12,7 @@ pub mod constant;
 pub mod kelvin;
 pub mod quadratic;
 pub mod quadrature;
+pub mod stress;
 
 use crate::mesh::{Mesh, Shape};
 use kelvin::Kelvin;
