@@ -1692,8 +1692,7 @@ impl ContourMap {
         let d_tick_w =
             d_axis_est.bold.iter().map(|v| text_width(&d_axis_est.label(*v), TICK_SIZE)).fold(0.0, f64::max) + 14.0;
         let left = margin + desc_h + d_tick_w;
-        let bar_labels: Vec<f64> = edges.clone();
-        let bar_tick_w = bar_labels
+        let bar_tick_w = edges
             .iter()
             .map(|v| text_width(&fmt_linear(*v, bar_step, e_lo.abs().max(e_hi.abs())), TICK_SIZE))
             .fold(0.0, f64::max);
@@ -1874,7 +1873,9 @@ impl ContourMap {
         let (by_top, by_bottom) = (f64::from(yr.start), f64::from(yr.end));
         let bar_y = |v: f64| by_bottom - (v - e_lo) / (e_hi - e_lo) * (by_bottom - by_top);
         for (k, color) in colors.iter().enumerate() {
-            let (a, b) = (to_px((bx0, bar_y(edges[k + 1]))), to_px((bx1, bar_y(edges[k]))));
+            // One pixel into the next band up (drawn over it next), against anti-aliasing seams.
+            let overlap = if k + 1 < nb { 1.0 } else { 0.0 };
+            let (a, b) = (to_px((bx0, bar_y(edges[k + 1]) - overlap)), to_px((bx1, bar_y(edges[k]))));
             root.draw(&Rectangle::new([a, b], color.filled())).map_err(|e| err(&e))?;
         }
         for &l in levels.iter().filter(|l| **l >= e_lo && **l <= e_hi) {
@@ -1886,8 +1887,9 @@ impl ContourMap {
             .map_err(|e| err(&e))?;
         let per_label = (TICK_SIZE * 1.3) / ((by_bottom - by_top) / nb as f64);
         let every = nice_stride(per_label.ceil().max(1.0) as usize);
-        for (k, &v) in edges.iter().enumerate() {
-            if k % every != 0 {
+        for &v in &edges {
+            // Label round multiples of the stride (0, 0.2, 0.4 rather than 0.1, 0.3, …).
+            if ((v / bar_step).round() as i64).rem_euclid(every as i64) != 0 {
                 continue;
             }
             let y = bar_y(v);

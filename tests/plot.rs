@@ -172,4 +172,7 @@ fn edge_case_maps_render() {
     .contours(&[-0.5, 0.0, 0.5])
     .marker(0.0, 0.5, "probe");
     keep("map-coarse.svg", &coarse.to_svg().unwrap());
+    // Many bands: the colour bar labels only every few band edges, at round values.
+    let fine = hertz_shear_map().bands(40).size(700, 420);
+    keep("map-fine-bands.svg", &fine.to_svg().unwrap());
 }
