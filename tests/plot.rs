@@ -1,0 +1,178 @@
+//! The plotting module's public API on realistic figures. Set `ROLLBEM_PLOT_EXAMPLES=/some/dir` to keep the SVGs
+//! for a look (e.g. `rsvg-convert -w 1100 dir/map.svg -o map.png`).
+
+use std::path::Path;
+
+use rollbem::plot::{Appearance, Chart, ContourMap, Field, PlotError, Series, Style};
+
+fn keep(name: &str, svg: &str) {
+    if let Some(dir) = std::env::var_os("ROLLBEM_PLOT_EXAMPLES") {
+        std::fs::write(Path::new(&dir).join(name), svg).unwrap();
+    }
+}
+
+/// McEwen's closed-form subsurface stresses under a 2D Hertz contact of half-width `a = 1` and peak pressure
+/// `p0 = 1` (Johnson, Contact Mechanics, eq. 4.75): returns (σx, σz, τxz) at (x, z), z ≥ 0 downward.
+fn mcewen(x: f64, z: f64) -> (f64, f64, f64) {
+    let k = 1.0 - x * x + z * z;
+    let root = (k * k + 4.0 * x * x * z * z).sqrt();
+    let m = (0.5 * (root + k)).max(0.0).sqrt();
+    let n = (0.5 * (root - k)).max(0.0).sqrt() * x.signum();
+    let mn = m * m + n * n;
+    if mn == 0.0 {
+        return (0.0, 0.0, 0.0); // the contact edges x = ±a on the surface: the stresses vanish there
+    }
+    let sx = -(m * (1.0 + (z * z + n * n) / mn) - 2.0 * z);
+    let sz = -m * (1.0 - (z * z + n * n) / mn);
+    let txz = n * (m * m - z * z) / mn;
+    (sx, sz, txz)
+}
+
+fn principal_shear(x: f64, z: f64) -> f64 {
+    let (sx, sz, txz) = mcewen(x, z);
+    (0.25 * (sx - sz).powi(2) + txz * txz).sqrt()
+}
+
+/// Half-width a = 0.5 mm and peak pressure p0 = 1000 MPa.
+const A_MM: f64 = 0.5;
+const P0_MPA: f64 = 1000.0;
+
+fn hertz_shear_map() -> ContourMap {
+    let field = Field::from_fn(161, 81, (-2.0 * A_MM, 2.0 * A_MM), (0.0, 2.0 * A_MM), |x, z| {
+        P0_MPA * principal_shear(x / A_MM, z / A_MM)
+    });
+    ContourMap::new("Principal shear stress under a 2D Hertz contact (McEwen), a = 0.5 mm, p₀ = 1 GPa", field)
+        .x_axis("x", "mm")
+        .depth_axis("depth z", "mm")
+        .value_axis("τ₁", "MPa")
+        .contours(&[50.0, 100.0, 150.0, 200.0, 250.0, 300.0])
+        .mark_max()
+        .equal_aspect()
+}
+
+#[test]
+fn hertz_principal_shear_map_has_its_maximum_at_the_textbook_place() {
+    let map = hertz_shear_map();
+    let (x, z, v) = map.field.max().unwrap();
+    // τ₁,max = 0.300 p0 at z = 0.78 a on the axis (Johnson §4.2); the grid spacing is a / 40.
+    assert!(x.abs() < 1e-12 && (z / A_MM - 0.78).abs() < 0.026 && (v / P0_MPA - 0.300).abs() < 0.002, "{x} {z} {v}");
+    let svg = map.to_svg().unwrap();
+    assert_eq!(svg, hertz_shear_map().to_svg().unwrap());
+    assert!(svg.contains("max τ₁ = 300.3 MPa at x = 0 mm, depth z = 0.3875 mm"), "caption");
+    keep("map-hertz.svg", &svg);
+    // The same map with holes, in cividis, not to scale.
+    let mut holes = map.clone().colormap(rollbem::plot::ColorMap::Cividis);
+    holes.equal_aspect = false;
+    for iz in 30..40 {
+        for ix in 100..115 {
+            holes.field.values[iz * 161 + ix] = f64::NAN;
+        }
+    }
+    holes.title = "Same field with missing values (cividis, not to scale)".into();
+    keep("map-holes.svg", &holes.to_svg().unwrap());
+}
+
+#[test]
+fn fourteen_series_line_chart() {
+    let mut chart = Chart::new("Convergence of 14 configurations", "contact elements", "L2 pressure error")
+        .x_unit("1")
+        .y_unit("1")
+        .log_x()
+        .log_y();
+    for i in 0..14u32 {
+        let c = 0.02 * (1.0 + 0.15 * f64::from(i));
+        let order = 1.0 + 0.08 * f64::from(i);
+        let pts =
+            [10.0, 20.0, 40.0, 80.0, 160.0, 320.0].iter().map(|&n: &f64| (n, c * (10.0 / n).powf(order))).collect();
+        let solver =
+            ["lemke", "clarabel", "pgs τ=1e-3", "pgs τ=1e-5", "pgs τ=1e-8", "pgs τ=1e-10", "qp"][i as usize % 7];
+        let kind = if i < 7 { "constant" } else { "quadratic" };
+        chart = chart.add(Series::new(format!("{kind} {solver}"), pts, Style::LineMarkers));
+    }
+    let svg = chart.to_svg().unwrap();
+    // 14 different appearances.
+    let looks: Vec<Appearance> = (0..14).map(Appearance::for_index).collect();
+    for i in 0..14 {
+        assert!(!looks[..i].contains(&looks[i]));
+    }
+    assert!(chart.axes_without_unit().is_empty());
+    keep("lines-14.svg", &svg);
+}
+
+#[test]
+fn loglog_chart_with_units() {
+    let ts: Vec<f64> = (0..12).map(|i| 1e-3 * 2f64.powi(i)).collect();
+    let chart = Chart::new("Residual against wall time", "wall time", "max |LCP residual| / p₀")
+        .x_unit("s")
+        .y_unit("1")
+        .log_x()
+        .log_y()
+        .add(Series::new("Lemke", ts.iter().map(|&t| (t, 1e-2 * (1e-3 / t).powi(2))).collect(), Style::LineMarkers))
+        .add(Series::new(
+            "clarabel (QP)",
+            ts.iter().map(|&t| (1.7 * t, 3e-3 * (1e-3 / t).powf(1.5))).collect(),
+            Style::LineMarkers,
+        ))
+        .add(Series::new("projected Gauss-Seidel", ts.iter().map(|&t| (t, 2e-2 * (1e-3 / t))).collect(), Style::Line))
+        .add(Series::new("slope −2", vec![(1e-3, 1e-2), (2e-2, 2.5e-5)], Style::Dashed));
+    let svg = chart.to_svg().unwrap();
+    assert!(svg.contains("wall time [s]") && svg.contains("max |LCP residual| / p₀ [1]"));
+    keep("loglog-units.svg", &svg);
+}
+
+#[test]
+fn categorical_states_chart_with_overlapping_series() {
+    let xs: Vec<f64> = (0..23).map(|i| -0.25 + 0.5 * f64::from(i) / 22.0).collect();
+    let state = |x: f64, stick: f64| {
+        if x.abs() > 0.1 {
+            0.0
+        } else if x.abs() > stick {
+            1.0
+        } else {
+            2.0
+        }
+    };
+    let mut chart = Chart::new("Node states (seed Figs. 7–10)", "x", "state").x_unit("m").categories_y(&[
+        "separated",
+        "slip",
+        "stick",
+    ]);
+    for (label, stick) in [("μ = 0.02", -1.0), ("μ = 0.1", -1.0), ("μ = 0.5", 0.035)] {
+        chart = chart.add(Series::new(label, xs.iter().map(|&x| (x, state(x, stick))).collect(), Style::Markers));
+    }
+    let svg = chart.to_svg().unwrap();
+    keep("states.svg", &svg);
+    // Empty charts stay errors.
+    assert!(matches!(Chart::new("e", "x", "y").to_svg(), Err(PlotError::NoFiniteData { .. })));
+}
+
+#[test]
+fn edge_case_maps_render() {
+    // A constant field with a hole: one band, the colour bar round the constant, the hole captioned.
+    let mut values = vec![42.0; 30 * 15];
+    values[7 * 30 + 10] = f64::NAN;
+    let constant = ContourMap::new("Constant field", Field::new(30, 15, values, (0.0, 3.0), (0.0, 1.5)))
+        .x_axis("x", "mm")
+        .depth_axis("depth", "mm")
+        .value_axis("σ", "MPa")
+        .contours(&[42.0])
+        .mark_max()
+        .equal_aspect();
+    let svg = constant.to_svg().unwrap();
+    assert!(svg.contains("no value"));
+    keep("map-constant.svg", &svg);
+    // A coarse grid (6 × 4 nodes): bands and lines follow the same straight pieces per cell.
+    let coarse = ContourMap::new(
+        "Coarse grid, saddle",
+        Field::from_fn(6, 4, (-1.0, 1.0), (0.0, 1.0), |x, z| (3.0 * x).sin() * (4.0 * z).cos()),
+    )
+    .x_axis("x", "mm")
+    .depth_axis("depth", "mm")
+    .value_axis("v", "1")
+    .contours(&[-0.5, 0.0, 0.5])
+    .marker(0.0, 0.5, "probe");
+    keep("map-coarse.svg", &coarse.to_svg().unwrap());
+    // Many bands: the colour bar labels only every few band edges, at round values.
+    let fine = hertz_shear_map().bands(40).size(700, 420);
+    keep("map-fine-bands.svg", &fine.to_svg().unwrap());
+}
