@@ -30,11 +30,11 @@ fn seed_scene() -> Scene {
 /// The seed's material on a hub, `n` elements in all with a quarter of them on a 12° candidate arc.
 fn scene_with(n: usize, kind: ElementKind) -> Scene {
     let mut s = seed_scene();
-    s.wheel.support = rollbem::scene::Support::Hub { radius: 0.2 };
+    s.wheel.support = Some(rollbem::scene::Support::Hub { radius: 0.2 });
     s.mesh.element = kind;
-    s.mesh.contact_arc_deg = 12.0;
+    s.mesh.contact_arc_deg = Some(12.0);
     s.mesh.contact_elements = n / 4;
-    s.mesh.other_elements = n - n / 4;
+    s.mesh.other_elements = Some(n - n / 4);
     s.drive.normal_load = Some(187.42);
     s
 }
@@ -116,10 +116,10 @@ fn lemke_frictional(c: &mut Criterion) {
     for n in [25usize, 100, 200, 400, 800, 880] {
         let mut s = seed_scene();
         s.wheel.poisson_ratio = 0.3;
-        s.wheel.support = rollbem::scene::Support::Hub { radius: 0.25 };
-        s.mesh.contact_arc_deg = 12.0;
+        s.wheel.support = Some(rollbem::scene::Support::Hub { radius: 0.25 });
+        s.mesh.contact_arc_deg = Some(12.0);
         s.mesh.contact_elements = n;
-        s.mesh.other_elements = 200;
+        s.mesh.other_elements = Some(200);
         s.contact.friction = 0.3;
         s.drive.normal_load = Some(187.42);
         s.drive.tangential_load = Some(18.742);

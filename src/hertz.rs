@@ -22,9 +22,14 @@ pub struct Hertz {
 }
 
 impl Hertz {
-    /// Hertz contact of a wheel of radius `r`, modulus `e`, Poisson's ratio `nu` under load `p`.
+    /// Hertz contact of a wheel of radius `r`, modulus `e`, Poisson's ratio `nu` under load `p` on a rigid flat.
     pub fn new(r: f64, e: f64, nu: f64, p: f64) -> Hertz {
-        let estar = e / (1.0 - nu * nu);
+        Hertz::with_modulus(r, e / (1.0 - nu * nu), p)
+    }
+
+    /// Hertz contact of a cylinder of radius `r` on a flat with the pair's contact modulus `estar`
+    /// (1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂) under load `p`.
+    pub fn with_modulus(r: f64, estar: f64, p: f64) -> Hertz {
         let a = (4.0 * p * r / (std::f64::consts::PI * estar)).sqrt();
         Hertz { half_width: a, peak_pressure: 2.0 * p / (std::f64::consts::PI * a), load: p }
     }

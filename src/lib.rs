@@ -41,6 +41,7 @@ pub mod diagnostics;
 pub mod error;
 pub mod flexibility;
 pub mod formulation;
+pub mod halfplane;
 pub mod hertz;
 pub mod io;
 pub mod lcp_io;

@@ -195,21 +195,39 @@ fn graded_sizes(h0: f64, span: f64, n: usize) -> Vec<f64> {
     sizes
 }
 
+/// Polar angles of the potential contact zone's vertices on a circle of radius `radius`, counter-clockwise from its
+/// left end: uniform in angle when `spec` gives `contact_arc_deg`; uniform in x, θ_k = −π/2 + asin(x_k/R), when it
+/// gives `contact_half_width` (in the unit of `radius`). The half-plane model puts its strips between the x of the
+/// same vertices, so both models share their collocation points.
+pub fn contact_vertex_angles(radius: f64, spec: &MeshSpec) -> Vec<f64> {
+    let nc = spec.contact_elements;
+    match spec.contact_half_width {
+        Some(w) => (0..=nc).map(|k| -PI / 2.0 + ((-w + 2.0 * w * k as f64 / nc as f64) / radius).asin()).collect(),
+        None => {
+            let alpha = spec.arc_rad(radius);
+            let h0 = alpha / nc as f64;
+            let start = -PI / 2.0 - alpha / 2.0;
+            std::iter::once(start).chain((1..=nc).map(|k| start + h0 * k as f64)).collect()
+        }
+    }
+}
+
 impl Mesh {
-    /// Mesh a wheel of outer radius `radius` with the given support (its lengths in the same unit as `radius`).
+    /// Mesh a wheel of outer radius `radius` with the given support (its lengths, and `spec`'s contact half-width,
+    /// in the same unit as `radius`).
     pub fn wheel(radius: f64, support: Support, spec: &MeshSpec) -> Mesh {
-        let alpha = spec.contact_arc_deg.to_radians();
+        let alpha = spec.arc_rad(radius);
         let nc = spec.contact_elements;
-        let h0 = alpha / nc as f64;
         let start = -PI / 2.0 - alpha / 2.0;
         // Outer-circle vertex angles, counter-clockwise, and the class of each element.
-        let mut angles = vec![start];
-        let mut classes = Vec::new();
-        for k in 1..=nc {
-            angles.push(start + h0 * k as f64);
-            classes.push(Bc::Contact);
-        }
-        let no = spec.other_elements;
+        let mut angles = contact_vertex_angles(radius, spec);
+        let mut classes = vec![Bc::Contact; nc];
+        // The grading into the rest of the boundary starts from the size of the contact zone's end element.
+        let h0 = match spec.contact_half_width {
+            None => alpha / nc as f64,
+            Some(_) => angles[nc] - angles[nc - 1],
+        };
+        let no = spec.others();
         match support {
             Support::Hub { .. } => {
                 let nr = no.div_ceil(2);
@@ -340,7 +358,7 @@ mod tests {
     use super::*;
 
     fn spec(element: ElementKind) -> MeshSpec {
-        MeshSpec { element, contact_arc_deg: 30.0, contact_elements: 24, other_elements: 32 }
+        MeshSpec::arc(element, 30.0, 24, 32)
     }
 
     #[test]

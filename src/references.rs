@@ -14,7 +14,7 @@
 use crate::hertz::Hertz;
 use crate::post::NodeState;
 use crate::results::SolverRun;
-use crate::scene::{Dof, Scene};
+use crate::scene::{BodyModel, Dof, Scene};
 use crate::tolerances::{CATTANEO_EDGE_ELEMENTS, CATTANEO_MAX_A_OVER_R_AT_NU_HALF};
 use serde::Serialize;
 
@@ -45,22 +45,29 @@ pub fn hertz_for(scene: &Scene, run: &SolverRun) -> Option<Hertz> {
         return None;
     }
     let p = run.resultants?.normal;
-    let w = &scene.wheel;
-    (p > 0.0).then(|| Hertz::new(w.radius, w.youngs_modulus, w.poisson_ratio, p))
+    (p > 0.0).then(|| Hertz::with_modulus(scene.wheel.radius, scene.contact_modulus(), p))
 }
 
-/// Whether Cattaneo–Mindlin applies: β = 0 (coupling switched off, or ν = 0.5 with a/R ≤
-/// [`CATTANEO_MAX_A_OVER_R_AT_NU_HALF`]: a finite wheel keeps a coupling of order a/R), P and Q prescribed with the
-/// rotation held, 0 < |Q| < μP.
+/// Whether the normal and tangential problems decouple as the half-plane theories (Cattaneo–Mindlin, Carter)
+/// assume: coupling switched off, or Dundurs' β of the pair zero (ν = 0.5 on a rigid flat, two identical
+/// half-planes) — on the half-plane model exactly, on the finite wheel only for a/R ≤
+/// [`CATTANEO_MAX_A_OVER_R_AT_NU_HALF`] (a finite wheel keeps a coupling of order a/R through its curvature and
+/// bending even where β = 0). `p` is the normal load.
+pub fn beta_zero(scene: &Scene, p: f64) -> bool {
+    let w = &scene.wheel;
+    let a_over_r = Hertz::with_modulus(w.radius, scene.contact_modulus(), p).half_width / w.radius;
+    let beta_vanishes = scene.dundurs_beta().abs() < 1e-12;
+    let finite_ok = w.model == BodyModel::HalfPlane || a_over_r <= CATTANEO_MAX_A_OVER_R_AT_NU_HALF;
+    !scene.contact.coupling || (beta_vanishes && finite_ok)
+}
+
+/// Whether Cattaneo–Mindlin applies: β = 0 ([`beta_zero`]), P and Q prescribed with the rotation held (or no
+/// rotation: the half-plane), 0 < |Q| < μP.
 pub fn cattaneo_applies(scene: &Scene) -> bool {
     let mu = scene.contact.friction;
     match (scene.drive.normal(), scene.drive.tangential(), scene.drive.rotational()) {
         (Dof::Load(p), Dof::Load(q), Dof::Displacement(_)) => {
-            let w = &scene.wheel;
-            let a_over_r = Hertz::new(w.radius, w.youngs_modulus, w.poisson_ratio, p).half_width / w.radius;
-            let beta_zero =
-                !scene.contact.coupling || (w.poisson_ratio == 0.5 && a_over_r <= CATTANEO_MAX_A_OVER_R_AT_NU_HALF);
-            beta_zero && mu > 0.0 && q != 0.0 && q.abs() < mu * p
+            beta_zero(scene, p) && mu > 0.0 && q != 0.0 && q.abs() < mu * p
         }
         _ => false,
     }
@@ -68,7 +75,7 @@ pub fn cattaneo_applies(scene: &Scene) -> bool {
 
 /// Contact element length (user's unit).
 pub fn element_length(scene: &Scene) -> f64 {
-    scene.wheel.radius * scene.mesh.contact_arc_deg.to_radians() / scene.mesh.contact_elements as f64
+    scene.mesh.element_length(scene.wheel.radius)
 }
 
 /// Compute the metrics of a run.
@@ -97,8 +104,7 @@ pub fn metrics(scene: &Scene, run: &SolverRun) -> Metrics {
     if cattaneo_applies(scene) {
         if let (Dof::Load(p), Dof::Load(q)) = (scene.drive.normal(), scene.drive.tangential()) {
             let mu = scene.contact.friction;
-            let w = &scene.wheel;
-            let h = Hertz::new(w.radius, w.youngs_modulus, w.poisson_ratio, p);
+            let h = Hertz::with_modulus(scene.wheel.radius, scene.contact_modulus(), p);
             let ce = h.half_width * (1.0 - q.abs() / (mu * p)).sqrt();
             let elem = element_length(scene);
             m.cm_c_over_a_exact = Some(ce / h.half_width);

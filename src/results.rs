@@ -5,7 +5,7 @@
 use crate::formulation::FormulationName;
 use crate::hertz::Hertz;
 use crate::post::{ContactSummary, NodeResult, Residuals, Resultants, RigidBody};
-use crate::scene::{ElementKind, Scene};
+use crate::scene::{BodyModel, ElementKind, Scene};
 use crate::solvers::Work;
 use crate::status::Status;
 use serde::Serialize;
@@ -90,6 +90,8 @@ pub struct SolverRun {
 /// Mesh facts.
 #[derive(Debug, Clone, Serialize)]
 pub struct MeshInfo {
+    /// The wheel's model: `bem` (the finite wheel) or `half_plane`.
+    pub model: BodyModel,
     /// Number of elements.
     pub elements: usize,
     /// Number of nodes (collocation points).
@@ -122,10 +124,14 @@ pub struct Diagnostics {
 }
 
 /// Analytic references that apply to the scene.
-#[derive(Debug, Clone, Serialize, Default)]
+#[derive(Debug, Clone, Serialize)]
 pub struct References {
-    /// Hertz at the run's load (frictionless scenes), from the first solved run's P when displacement-driven.
+    /// Hertz at the run's load (frictionless scenes), from the first solved run's P when displacement-driven, with
+    /// the pair's contact modulus E*.
     pub hertz: Option<Hertz>,
+    /// Dundurs' β of the pair (wheel against counter-body; a rigid flat has G → ∞): the normal–tangential coupling
+    /// of two half-planes vanishes with it.
+    pub dundurs_beta: f64,
 }
 
 /// One check: a measured figure against a reference.

@@ -119,6 +119,9 @@ pub fn effects(scene: &Scene) -> Vec<String> {
     if scene.rolling.is_some() {
         effects.push("rolling".into());
     }
+    if scene.counter_body != crate::scene::CounterBody::Rigid {
+        effects.push("counter_body".into());
+    }
     effects
 }
 
@@ -170,6 +173,7 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
         scene: scene.clone(),
         effects: effects(scene),
         mesh: MeshInfo {
+            model: scene.wheel.model,
             elements: built.info.elements,
             nodes: built.info.nodes,
             contact_nodes: flex.n(),
@@ -178,7 +182,7 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
             contact_element_length: built.info.contact_element_length,
         },
         diagnostics: diagnose(flex, &built.info, asym),
-        references: References { hertz },
+        references: References { hertz, dundurs_beta: scene.dundurs_beta() },
         runs,
         checks,
     })
@@ -229,10 +233,9 @@ fn finish_run(
 
 /// Hertz at the scene's load, or at the first solved run's load when the approach is prescribed.
 fn reference_hertz(scene: &Scene, runs: &[SolverRun]) -> Option<Hertz> {
-    let w = &scene.wheel;
     let p = match scene.drive.normal() {
         Dof::Load(p) => Some(p),
         Dof::Displacement(_) => runs.iter().find_map(|r| r.resultants.map(|x| x.normal)),
     }?;
-    (p > 0.0).then(|| Hertz::new(w.radius, w.youngs_modulus, w.poisson_ratio, p))
+    (p > 0.0).then(|| Hertz::with_modulus(scene.wheel.radius, scene.contact_modulus(), p))
 }

@@ -19,6 +19,10 @@ use std::path::{Path, PathBuf};
 /// then need about 2 GiB.
 pub const MAX_NODES: usize = 8000;
 
+/// Largest number of contact elements of a half-plane scene: the four dense influence blocks (4n² doubles) and the
+/// frictional LCP ((3n)² doubles) then need about 3.5 GiB.
+pub const MAX_HALF_PLANE_ELEMENTS: usize = 6000;
+
 /// A whole scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -30,8 +34,11 @@ pub struct Scene {
     pub description: String,
     /// The elastic wheel and its support.
     pub wheel: Wheel,
-    /// Boundary-element mesh of the wheel.
+    /// Boundary-element mesh of the wheel (or the contact grid of the half-plane).
     pub mesh: MeshSpec,
+    /// The counter-body: a rigid flat (default) or an elastic half-plane.
+    #[serde(default)]
+    pub counter_body: CounterBody,
     /// Contact law.
     #[serde(default)]
     pub contact: ContactSpec,
@@ -91,7 +98,8 @@ impl Default for Expect {
     }
 }
 
-/// The wheel: an elastic disk (or annulus) in plane strain.
+/// The wheel: an elastic disk (or annulus) in plane strain, modelled either as itself (BEM, the finite body) or as
+/// an elastic half-plane with the wheel's initial gap (the half-space model of Hertz, Cattaneo, Carter and Spence).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Wheel {
@@ -101,8 +109,86 @@ pub struct Wheel {
     pub youngs_modulus: f64,
     /// Poisson's ratio ν, 0 ≤ ν ≤ 0.5 (plane strain).
     pub poisson_ratio: f64,
-    /// How the wheel is held.
-    pub support: Support,
+    /// Which model of the wheel: `bem` (default, the finite wheel) or `half_plane`.
+    #[serde(default)]
+    pub model: BodyModel,
+    /// How the wheel is held (BEM only; required there, refused for the half-plane).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub support: Option<Support>,
+    /// Half-plane only: depth below the contact centre of the datum point whose rigid motion the drive prescribes
+    /// (length unit; default R, the depth of the wheel's centre). A half-plane's surface displacement under a line
+    /// load is logarithmic, so an approach is defined only against such a datum.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub datum_depth: Option<f64>,
+    /// Half-plane only: the initial gap profile, `circle` (default: the wheel's circle, g₀ = R − √(R² − x²)) or
+    /// `parabola` (g₀ = x²/(2R), Hertz's geometry and the seed's eq. 5).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub profile: Option<Profile>,
+}
+
+impl Wheel {
+    /// The support of a (validated) BEM wheel.
+    ///
+    /// # Panics
+    /// If the wheel has no support (a half-plane, or an unvalidated scene).
+    pub fn support(&self) -> Support {
+        self.support.expect("a BEM wheel has a support (checked by Scene::validate)")
+    }
+
+    /// The half-plane's datum depth (default R).
+    pub fn datum(&self) -> f64 {
+        self.datum_depth.unwrap_or(self.radius)
+    }
+}
+
+/// The model of the wheel.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum BodyModel {
+    /// The finite wheel, by the boundary element method.
+    #[default]
+    Bem,
+    /// An elastic half-plane with the wheel's material and initial gap (closed-form influence coefficients).
+    HalfPlane,
+}
+
+impl BodyModel {
+    /// Name as written in scene files.
+    pub fn name(self) -> &'static str {
+        match self {
+            BodyModel::Bem => "bem",
+            BodyModel::HalfPlane => "half_plane",
+        }
+    }
+}
+
+/// The initial gap profile of the half-plane model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Profile {
+    /// The wheel's circle: g₀ = R − √(R² − x²).
+    Circle,
+    /// Hertz's parabola: g₀ = x²/(2R).
+    Parabola,
+}
+
+/// The counter-body the wheel meets.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum CounterBody {
+    /// A rigid flat (the seed's problem).
+    #[default]
+    Rigid,
+    /// An elastic half-plane (e.g. a steel rail under a steel wheel), in plane strain.
+    HalfPlane {
+        /// Its Young's modulus (stress unit).
+        youngs_modulus: f64,
+        /// Its Poisson's ratio, 0 ≤ ν ≤ 0.5.
+        poisson_ratio: f64,
+        /// Depth of its datum point below the contact centre (length unit; default R).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        datum_depth: Option<f64>,
+    },
 }
 
 /// The wheel's support, which moves rigidly with the drive.
@@ -141,19 +227,75 @@ impl ElementKind {
     }
 }
 
-/// Mesh of the wheel's boundary.
+/// Mesh of the wheel's boundary (BEM), or the contact grid of the half-plane. The potential contact zone is given
+/// by exactly one of `contact_arc_deg` (elements uniform in angle on the arc) and `contact_half_width` (elements
+/// uniform in x, so that a grid of N elements of size dx is written directly); both models put their collocation
+/// points at the same x for the same keys.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct MeshSpec {
     /// Element family.
     pub element: ElementKind,
     /// Angular extent (degrees) of the potential contact zone, centred on the bottom point, in (0, 180).
-    pub contact_arc_deg: f64,
-    /// Number of (uniform) elements on the potential contact arc, ≥ 1.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub contact_arc_deg: Option<f64>,
+    /// Half-width (length unit) of the potential contact zone, 0 < w < R: the zone is −w ≤ x ≤ w.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub contact_half_width: Option<f64>,
+    /// Number of elements on the potential contact zone, ≥ 1.
     pub contact_elements: usize,
-    /// Number of elements on the rest of the outer boundary (graded from the contact size), ≥ 3. The hub circle
-    /// gets elements in proportion to its circumference.
-    pub other_elements: usize,
+    /// BEM only: number of elements on the rest of the outer boundary (graded from the contact size), ≥ 4. The hub
+    /// circle gets elements in proportion to its circumference.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub other_elements: Option<usize>,
+}
+
+impl MeshSpec {
+    /// A BEM mesh on a contact arc of `arc_deg` degrees.
+    pub fn arc(element: ElementKind, arc_deg: f64, contact_elements: usize, other_elements: usize) -> MeshSpec {
+        MeshSpec {
+            element,
+            contact_arc_deg: Some(arc_deg),
+            contact_half_width: None,
+            contact_elements,
+            other_elements: Some(other_elements),
+        }
+    }
+
+    /// The potential contact zone's half-width in x for a wheel of radius `radius` (the half chord of the arc).
+    pub fn half_width(&self, radius: f64) -> f64 {
+        match (self.contact_half_width, self.contact_arc_deg) {
+            (Some(w), _) => w,
+            (None, Some(a)) => radius * (0.5 * a.to_radians()).sin(),
+            (None, None) => 0.0,
+        }
+    }
+
+    /// The angle (radians) the potential contact zone subtends on a wheel of radius `radius`.
+    pub fn arc_rad(&self, radius: f64) -> f64 {
+        match (self.contact_arc_deg, self.contact_half_width) {
+            (Some(a), _) => a.to_radians(),
+            (None, Some(w)) => 2.0 * (w / radius).asin(),
+            (None, None) => 0.0,
+        }
+    }
+
+    /// The (mean) contact element length on a wheel of radius `radius` (user's unit): the arc length over the
+    /// number of elements with `contact_arc_deg`, the grid step dx with `contact_half_width`.
+    pub fn element_length(&self, radius: f64) -> f64 {
+        match self.contact_half_width {
+            Some(w) => 2.0 * w / self.contact_elements as f64,
+            None => radius * self.arc_rad(radius) / self.contact_elements as f64,
+        }
+    }
+
+    /// The number of other elements of a (validated) BEM mesh.
+    ///
+    /// # Panics
+    /// If absent (a half-plane grid, or an unvalidated scene).
+    pub fn others(&self) -> usize {
+        self.other_elements.expect("a BEM mesh has other_elements (checked by Scene::validate)")
+    }
 }
 
 /// Contact law between wheel and flat.
@@ -252,6 +394,23 @@ impl Checker<'_> {
             return Err(self.bad(field, format!("must be a finite number > 0 (got {v})")));
         }
         Ok(())
+    }
+
+    fn poisson(&self, field: &str, nu: f64) -> Result<()> {
+        if !nu.is_finite() || !(0.0..=0.5).contains(&nu) {
+            return Err(self.bad(field, format!("must lie in [0, 0.5] (got {nu})")));
+        }
+        Ok(())
+    }
+
+    /// A key that means nothing for the half-plane model.
+    fn meaningless(&self, field: &str) -> Error {
+        self.bad(
+            field,
+            "means nothing for wheel.model = \"half_plane\" (an unbounded body has no support, no other boundary \
+             and no rotation about a centre): remove it"
+                .into(),
+        )
     }
 
     fn finite(&self, field: &str, v: f64) -> Result<()> {
@@ -416,6 +575,35 @@ impl Scene {
         }
     }
 
+    /// The plane-strain contact modulus of the pair, E* with 1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂ (the second term
+    /// absent for a rigid counter-body), as Hertz's theory uses it.
+    pub fn contact_modulus(&self) -> f64 {
+        let w = &self.wheel;
+        let mut c = (1.0 - w.poisson_ratio * w.poisson_ratio) / w.youngs_modulus;
+        if let CounterBody::HalfPlane { youngs_modulus, poisson_ratio, .. } = self.counter_body {
+            c += (1.0 - poisson_ratio * poisson_ratio) / youngs_modulus;
+        }
+        1.0 / c
+    }
+
+    /// Dundurs' β of the pair (wheel against counter-body; a rigid counter-body has G₂ → ∞):
+    /// β = [(1 − 2ν₁)/G₁ − (1 − 2ν₂)/G₂] / [2((1 − ν₁)/G₁ + (1 − ν₂)/G₂)]. β = 0 decouples the normal and tangential
+    /// problems of two half-planes.
+    pub fn dundurs_beta(&self) -> f64 {
+        let w = &self.wheel;
+        let g = |e: f64, nu: f64| e / (2.0 * (1.0 + nu));
+        let (a1, b1) = ((1.0 - 2.0 * w.poisson_ratio), (1.0 - w.poisson_ratio));
+        let g1 = g(w.youngs_modulus, w.poisson_ratio);
+        let (num2, den2) = match self.counter_body {
+            CounterBody::Rigid => (0.0, 0.0),
+            CounterBody::HalfPlane { youngs_modulus, poisson_ratio, .. } => {
+                let g2 = g(youngs_modulus, poisson_ratio);
+                ((1.0 - 2.0 * poisson_ratio) / g2, (1.0 - poisson_ratio) / g2)
+            }
+        };
+        (a1 / g1 - num2) / (2.0 * (b1 / g1 + den2))
+    }
+
     /// The contact law.
     pub fn law(&self) -> ContactLaw {
         ContactLaw { friction: self.contact.friction, coupling: self.contact.coupling }
@@ -429,6 +617,7 @@ impl Scene {
         }
         self.validate_wheel(&c)?;
         self.validate_mesh(&c)?;
+        self.validate_counter_body(&c)?;
         let mu = self.contact.friction;
         if !mu.is_finite() || mu < 0.0 {
             return Err(c.bad("contact.friction", format!("must be a finite number ≥ 0 (got {mu})")));
@@ -459,11 +648,31 @@ impl Scene {
         let w = &self.wheel;
         c.positive("wheel.radius", w.radius)?;
         c.positive("wheel.youngs_modulus", w.youngs_modulus)?;
+        c.poisson("wheel.poisson_ratio", w.poisson_ratio)?;
         let nu = w.poisson_ratio;
-        if !nu.is_finite() || !(0.0..=0.5).contains(&nu) {
-            return Err(c.bad("wheel.poisson_ratio", format!("must lie in [0, 0.5] (got {nu})")));
+        let support = match (w.model, w.support) {
+            (BodyModel::Bem, Some(s)) => s,
+            (BodyModel::Bem, None) => {
+                return Err(c.bad("wheel.support", "missing: the BEM wheel needs a support (hub or top_arc)".into()))
+            }
+            (BodyModel::HalfPlane, Some(_)) => return Err(c.meaningless("wheel.support")),
+            (BodyModel::HalfPlane, None) => {
+                if let Some(d) = w.datum_depth {
+                    c.positive("wheel.datum_depth", d)?;
+                }
+                return Ok(());
+            }
+        };
+        if w.datum_depth.is_some() {
+            return Err(c.bad(
+                "wheel.datum_depth",
+                "only for model = \"half_plane\": the BEM wheel's rigid motion is that of its support".into(),
+            ));
         }
-        match w.support {
+        if w.profile.is_some_and(|p| p != Profile::Circle) {
+            return Err(c.bad("wheel.profile", "only for model = \"half_plane\": the BEM wheel is a circle".into()));
+        }
+        match support {
             Support::Hub { radius } => {
                 c.positive("wheel.support.radius", radius)?;
                 if nu == 0.5 {
@@ -494,27 +703,95 @@ impl Scene {
         Ok(())
     }
 
+    fn validate_counter_body(&self, c: &Checker) -> Result<()> {
+        if let CounterBody::HalfPlane { youngs_modulus, poisson_ratio, datum_depth } = self.counter_body {
+            c.positive("counter_body.youngs_modulus", youngs_modulus)?;
+            c.poisson("counter_body.poisson_ratio", poisson_ratio)?;
+            if let Some(d) = datum_depth {
+                c.positive("counter_body.datum_depth", d)?;
+            }
+            if self.mesh.element == ElementKind::Quadratic {
+                return Err(c.bad(
+                    "mesh.element",
+                    "an elastic counter-body needs constant elements: its influence coefficients are those of \
+                     uniform-traction strips"
+                        .into(),
+                ));
+            }
+        }
+        Ok(())
+    }
+
     fn validate_mesh(&self, c: &Checker) -> Result<()> {
         let w = &self.wheel;
         let m = &self.mesh;
-        if !m.contact_arc_deg.is_finite() || m.contact_arc_deg <= 0.0 || m.contact_arc_deg >= 180.0 {
-            return Err(
-                c.bad("mesh.contact_arc_deg", format!("must lie in (0, 180) degrees (got {})", m.contact_arc_deg))
-            );
+        match (m.contact_arc_deg, m.contact_half_width) {
+            (Some(_), Some(_)) => {
+                return Err(c.bad(
+                    "mesh.contact_arc_deg",
+                    "give either `mesh.contact_arc_deg` or `mesh.contact_half_width`, not both".into(),
+                ))
+            }
+            (None, None) => {
+                return Err(
+                    c.bad("mesh", "give `contact_arc_deg` or `contact_half_width` (the potential contact zone)".into())
+                )
+            }
+            (Some(a), None) => {
+                if !a.is_finite() || a <= 0.0 || a >= 180.0 {
+                    return Err(c.bad("mesh.contact_arc_deg", format!("must lie in (0, 180) degrees (got {a})")));
+                }
+            }
+            (None, Some(hw)) => {
+                if !hw.is_finite() || hw <= 0.0 || hw >= w.radius {
+                    return Err(c.bad(
+                        "mesh.contact_half_width",
+                        format!("must lie in (0, wheel.radius = {}) (got {hw})", w.radius),
+                    ));
+                }
+            }
         }
-        if let Support::TopArc { angle_deg } = w.support {
-            if m.contact_arc_deg + angle_deg >= 300.0 {
+        if m.contact_elements < 1 {
+            return Err(c.bad("mesh.contact_elements", "must be at least 1".into()));
+        }
+        if w.model == BodyModel::HalfPlane {
+            if m.other_elements.is_some() {
+                return Err(c.meaningless("mesh.other_elements"));
+            }
+            if m.element != ElementKind::Constant {
+                return Err(c.bad(
+                    "mesh.element",
+                    "the half-plane has closed-form influence coefficients for uniform-traction (constant) elements \
+                     only"
+                        .into(),
+                ));
+            }
+            if m.contact_elements > MAX_HALF_PLANE_ELEMENTS {
+                return Err(c.bad(
+                    "mesh.contact_elements",
+                    format!(
+                        "{} elements: the dense influence blocks and the frictional LCP would not fit in memory; \
+                         rollbem allows at most {MAX_HALF_PLANE_ELEMENTS} on the half-plane",
+                        m.contact_elements
+                    ),
+                ));
+            }
+            return Ok(());
+        }
+        let Some(other) = m.other_elements else {
+            return Err(c.bad("mesh.other_elements", "missing: the BEM wheel's mesh needs it (≥ 4)".into()));
+        };
+        let arc = m.arc_rad(w.radius).to_degrees();
+        if let Support::TopArc { angle_deg } = w.support() {
+            if arc + angle_deg >= 300.0 {
                 return Err(c.bad(
                     "wheel.support.angle_deg",
                     "the clamped top arc and the contact arc overlap or leave no free boundary".into(),
                 ));
             }
         }
-        if m.contact_elements < 1 {
-            return Err(c.bad("mesh.contact_elements", "must be at least 1".into()));
-        }
-        if m.other_elements < 4 {
-            return Err(c.bad("mesh.other_elements", format!("must be at least 4 (got {})", m.other_elements)));
+        if other < 4 {
+            return Err(c.bad("mesh.other_elements", format!("must be at least 4 (got {other})")));
         }
         // The dense BEM system holds (2N)² doubles for N nodes (plus its LU copy): bound N so that it fits in a few
         // GiB instead of failing to allocate (an abort, not an error).
@@ -522,8 +799,8 @@ impl Scene {
             ElementKind::Constant => 1,
             ElementKind::Quadratic => 3,
         };
-        let outer_nodes = m.contact_elements.saturating_add(m.other_elements).saturating_mul(per);
-        let hub_nodes = match w.support {
+        let outer_nodes = m.contact_elements.saturating_add(other).saturating_mul(per);
+        let hub_nodes = match w.support() {
             Support::Hub { radius } => ((outer_nodes as f64) * radius / w.radius).ceil() as usize + 12 * per,
             Support::TopArc { .. } => 0,
         };
@@ -564,6 +841,14 @@ impl Scene {
         }
         if let Some(p) = d.normal_load {
             c.positive("drive.normal_load", p)?;
+        }
+        if self.wheel.model == BodyModel::HalfPlane {
+            if d.rotation.is_some() {
+                return Err(c.meaningless("drive.rotation"));
+            }
+            if d.moment.is_some() {
+                return Err(c.meaningless("drive.moment"));
+            }
         }
         if let Some(r) = &self.rolling {
             c.finite("rolling.creepage", r.creepage)?;

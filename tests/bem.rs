@@ -13,7 +13,7 @@ use rollbem::scene::{ElementKind, MeshSpec, Support};
 
 /// Uniform-ish mesh of `n` elements (the contact arc gets n/12, the rest is graded from the same size).
 fn mesh(n: usize, kind: ElementKind, support: Support) -> Mesh {
-    let spec = MeshSpec { element: kind, contact_arc_deg: 30.0, contact_elements: n / 12, other_elements: n - n / 12 };
+    let spec = MeshSpec::arc(kind, 30.0, n / 12, n - n / 12);
     Mesh::wheel(1.0, support, &spec)
 }
 

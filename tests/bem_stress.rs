@@ -23,7 +23,7 @@ type V2 = [f64; 2];
 
 /// Wheel mesh of `n` elements on the outer circle (radius 1), n/12 of them on the 30° contact arc.
 fn wheel(n: usize, kind: ElementKind, support: Support) -> Mesh {
-    let spec = MeshSpec { element: kind, contact_arc_deg: 30.0, contact_elements: n / 12, other_elements: n - n / 12 };
+    let spec = MeshSpec::arc(kind, 30.0, n / 12, n - n / 12);
     Mesh::wheel(1.0, support, &spec)
 }
 
@@ -713,7 +713,7 @@ fn timing_grid_100_by_50() {
         .flat_map(|j| (0..100).map(move |i| [-0.12 + 0.24 * i as f64 / 99.0, -0.99 + 0.29 * j as f64 / 49.0]))
         .collect();
     for kind in [ElementKind::Constant, ElementKind::Quadratic] {
-        let spec = MeshSpec { element: kind, contact_arc_deg: 30.0, contact_elements: 100, other_elements: 200 };
+        let spec = MeshSpec::arc(kind, 30.0, 100, 200);
         let m = Mesh::wheel(1.0, Support::Hub { radius: 0.4 }, &spec);
         let (u, t) = exact_data(&m, |x| lame.u(x), |x, n| lame.t(x, n));
         let t0 = Instant::now();

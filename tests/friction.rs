@@ -100,7 +100,7 @@ fn cattaneo_mindlin_stick_zone_and_tractions_at_beta_zero() {
         for (mu, qr) in [(0.3, 0.1), (0.5, 0.1), (0.5, 0.3)] {
             let q = qr * p;
             let mut s = base(nu, mu, &format!("normal_load = {p}\ntangential_load = {q}\nrotation = 0.0"), extra);
-            s.mesh.contact_arc_deg = arc;
+            s.mesh.contact_arc_deg = Some(arc);
             let r = run(&s);
             let l = lemke(&r);
             assert_eq!(l.status, Status::Solved, "{}", l.message);

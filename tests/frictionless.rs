@@ -153,7 +153,7 @@ fn unit_invariance_m_and_mm() {
     let mut m = mm.clone();
     m.wheel.radius = 0.46;
     m.wheel.youngs_modulus = 210e9;
-    m.wheel.support = rollbem::scene::Support::Hub { radius: 0.1 };
+    m.wheel.support = Some(rollbem::scene::Support::Hub { radius: 0.1 });
     m.drive.normal_load = Some(mm.drive.normal_load.unwrap() * 1e3); // N/mm → N/m
     let (a, b) = (run(&mm), run(&m));
     for (ra, rb) in a.runs.iter().zip(&b.runs) {

@@ -179,13 +179,22 @@ impl SceneParams {
         Scene {
             name: "property".into(),
             description: format!("{self:?}"),
-            wheel: Wheel { radius: r, youngs_modulus: self.youngs, poisson_ratio: self.nu, support },
-            mesh: MeshSpec {
-                element: if self.quadratic { ElementKind::Quadratic } else { ElementKind::Constant },
-                contact_arc_deg: self.contact_arc_deg,
-                contact_elements: self.contact_elements,
-                other_elements: self.other_elements,
+            wheel: Wheel {
+                radius: r,
+                youngs_modulus: self.youngs,
+                poisson_ratio: self.nu,
+                model: Default::default(),
+                support: Some(support),
+                datum_depth: None,
+                profile: None,
             },
+            mesh: MeshSpec::arc(
+                if self.quadratic { ElementKind::Quadratic } else { ElementKind::Constant },
+                self.contact_arc_deg,
+                self.contact_elements,
+                self.other_elements,
+            ),
+            counter_body: Default::default(),
             contact: ContactSpec { friction: self.friction, coupling: self.coupling },
             drive,
             rolling: self.creepage.map(|creepage| Rolling { creepage, direction: 1 }),

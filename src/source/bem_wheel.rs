@@ -47,12 +47,14 @@ impl Model {
     pub fn new(scene: &Scene) -> Model {
         let w = &scene.wheel;
         let length = 2.0 * w.radius;
-        let support = match w.support {
+        let support = match w.support() {
             Support::Hub { radius } => Support::Hub { radius: radius / length },
             s @ Support::TopArc { .. } => s,
         };
+        let mut spec = scene.mesh.clone();
+        spec.contact_half_width = spec.contact_half_width.map(|hw| hw / length);
         Model {
-            mesh: Mesh::wheel(w.radius / length, support, &scene.mesh),
+            mesh: Mesh::wheel(w.radius / length, support, &spec),
             kelvin: Kelvin::new(1.0, w.poisson_ratio),
             length,
             modulus: w.youngs_modulus,

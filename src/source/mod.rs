@@ -1,14 +1,17 @@
 //! Flexibility sources: what turns a scene's bodies into the contact flexibility ([`crate::flexibility`]).
 //!
-//! Today's source is the boundary-element model of the finite wheel ([`bem_wheel`]). A source builds only the
-//! blocks a scene needs ([`Blocks`]): a frictionless scene gets the normal columns only. It reports what it is made
-//! of ([`SourceInfo`]) for the result document and the health line.
+//! Two sources: the boundary-element model of the finite wheel ([`bem_wheel`], `[wheel] model = "bem"`) and the
+//! elastic half-plane with the wheel's gap ([`half_plane`], `model = "half_plane"`); either may meet an elastic
+//! counter-body ([`half_plane::add_counter_body`]). A source builds only the blocks a scene needs ([`Blocks`]): a
+//! frictionless scene gets the normal columns only. It reports what it is made of ([`SourceInfo`]) for the result
+//! document and the health line.
 
 pub mod bem_wheel;
+pub mod half_plane;
 
 use crate::error::Result;
 use crate::flexibility::Flexibility;
-use crate::scene::{ElementKind, Scene};
+use crate::scene::{BodyModel, ElementKind, Scene};
 
 /// Which blocks of the flexibility to compute.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -60,8 +63,12 @@ pub struct Built {
 
 /// Build the flexibility a (validated) scene describes, with the blocks it needs.
 pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
+    if scene.wheel.model == BodyModel::HalfPlane {
+        return half_plane::build(scene, blocks);
+    }
     let model = bem_wheel::Model::new(scene);
-    let (flex, health, t) = bem_wheel::condense(&model, blocks)?;
+    let (mut flex, health, t) = bem_wheel::condense(&model, blocks)?;
+    half_plane::add_counter_body(&mut flex, scene, &half_plane::Grid::of(scene));
     let mesh = &model.mesh;
     Ok(Built {
         info: SourceInfo {
@@ -71,8 +78,7 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
             system_size: Some(health.system_size),
             pivot_ratio: Some(health.pivot_ratio),
             condition: Some(health.system_condition),
-            contact_element_length: scene.wheel.radius * scene.mesh.contact_arc_deg.to_radians()
-                / scene.mesh.contact_elements as f64,
+            contact_element_length: scene.mesh.element_length(scene.wheel.radius),
         },
         flex,
         timing: SourceTiming { assembly: t.assembly, condensation: t.condensation },

@@ -1,0 +1,169 @@
+//! The elastic half-plane as a flexibility source: the half-space model of the wheel (Hertz, Cattaneo–Mindlin,
+//! Carter and Spence are half-plane theories), and the elastic counter-body added to any source.
+//!
+//! **Geometry.** The half-plane has the wheel's material (E, ν, plane strain) and the wheel's initial gap: the
+//! circle of radius R, g₀ = R − √(R² − x²) (default), or Hertz's parabola x²/(2R) (`[wheel] profile`). Its
+//! surface is the line y = −R; the body lies above it (z = y + R is the depth into the wheel). The contact grid's
+//! strips lie between the x of the BEM wheel's contact vertices ([`crate::mesh::contact_vertex_angles`]), and the
+//! collocation points at the strips' midpoints, so one key (`[wheel] model`) switches a scene between the models
+//! at the same points. Each strip carries a uniform traction; the influence coefficients are the closed forms of
+//! [`crate::halfplane`].
+//!
+//! **Rigid modes and the datum.** A half-plane's surface displacement under a line load is logarithmic: it is
+//! defined only relative to a datum. rollbem's datum is the material point at depth D below the contact centre
+//! (`[wheel] datum_depth`, default R: the depth of the wheel's centre); the displacements are relative to it, and
+//! the drive prescribes its rigid motion: the shift (every point moves by (1, 0)) and the approach (by (0, −1)).
+//! A load is datum-independent (the tractions do not depend on D); an approach is the approach of the datum point.
+//! The half-plane has no support, no other boundary and no rotation about a centre: `support`, `other_elements`,
+//! `rotation` and `moment` are refused by the scene's validation.
+//!
+//! **Counter-body** ([`add_counter_body`]): an elastic half-plane below the contact line (E₂, ν₂, datum depth D₂,
+//! default R), loaded by the reactions (−q, −p). Its surface displacements add to the wheel's in the relative
+//! kinematics of the pair (slip = u_x,wheel − u_x,flat; gap change = the wheel's surface moving away from the flat
+//! plus the flat's moving away from the wheel): `K_NN += C′_zz`, `K_TT += C′_xx`, `K_NT −= C′_zx`,
+//! `K_TN −= C′_xz` ([`crate::halfplane::InfluenceBlocks::into_counter_body`]). For two identical materials the
+//! coupling blocks cancel exactly (Dundurs' β = 0).
+//!
+//! Units: dimensionless as every flexibility ([`crate::flexibility`]): lengths / L0 (L0 = 2R), stresses / E.
+
+use super::{Blocks, Built, SourceInfo, SourceTiming};
+use crate::error::Result;
+use crate::flexibility::{Flexibility, ModeKind, RigidMode, Scales};
+use crate::halfplane::{HalfPlane, InfluenceBlocks};
+use crate::scene::{CounterBody, ElementKind, Profile, Scene};
+use faer::Mat;
+
+/// The contact grid of a scene, dimensionless: strip ends and collocation points.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Grid {
+    /// Left ends a_j.
+    pub a: Vec<f64>,
+    /// Right ends b_j.
+    pub b: Vec<f64>,
+    /// Collocation points (midpoints).
+    pub xc: Vec<f64>,
+    /// Uniform spacing and left end (x0, h), when the scene gives `contact_half_width` (the Toeplitz fast path).
+    pub uniform: Option<(f64, f64)>,
+}
+
+impl Grid {
+    /// The grid of a scene (lengths / L0): uniform in x with `contact_half_width`, the x-projections of the BEM
+    /// wheel's contact chords with `contact_arc_deg`.
+    pub fn of(scene: &Scene) -> Grid {
+        let l0 = 2.0 * scene.wheel.radius;
+        let n = scene.mesh.contact_elements;
+        match scene.mesh.contact_half_width {
+            Some(w) => {
+                let (x0, h) = (-w / l0, 2.0 * w / l0 / n as f64);
+                let m = crate::halfplane::uniform_mesh(x0, h, n);
+                Grid { a: m.a, b: m.b, xc: m.xc, uniform: Some((x0, h)) }
+            }
+            None => {
+                let rho = 0.5;
+                let x: Vec<f64> =
+                    crate::mesh::contact_vertex_angles(rho, &scene.mesh).iter().map(|t| rho * t.cos()).collect();
+                let xc = x.windows(2).map(|v| 0.5 * (v[0] + v[1])).collect();
+                Grid { a: x[..n].to_vec(), b: x[1..].to_vec(), xc, uniform: None }
+            }
+        }
+    }
+
+    /// Influence blocks of a half-plane on this grid (the Toeplitz fast path on a uniform grid).
+    pub fn blocks(&self, hp: &HalfPlane) -> InfluenceBlocks {
+        match self.uniform {
+            Some((x0, h)) => hp.influence_blocks_uniform(x0, h, self.xc.len()),
+            None => hp.influence_blocks(&self.a, &self.b, &self.xc),
+        }
+    }
+}
+
+/// A row-major block per unit traction → K per unit nodal force (column j divided by the strip width w_j).
+fn per_force(block: &[f64], w: &[f64]) -> Mat<f64> {
+    let n = w.len();
+    Mat::from_fn(n, n, |i, j| block[i * n + j] / w[j])
+}
+
+/// Build the half-plane flexibility of a (validated) scene with `model = "half_plane"`.
+pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
+    let t0 = std::time::Instant::now();
+    let w = &scene.wheel;
+    let l0 = 2.0 * w.radius;
+    let grid = Grid::of(scene);
+    let n = grid.xc.len();
+    let rho = 0.5;
+    let g0: Vec<f64> = grid
+        .xc
+        .iter()
+        .map(|&x| match w.profile.unwrap_or(Profile::Circle) {
+            Profile::Circle => x * x / (rho + (rho * rho - x * x).sqrt()),
+            Profile::Parabola => x * x / (2.0 * rho),
+        })
+        .collect();
+    let weights: Vec<f64> = grid.a.iter().zip(&grid.b).map(|(a, b)| b - a).collect();
+    let hp = HalfPlane::new(1.0, w.poisson_ratio, w.datum() / l0);
+    let c = grid.blocks(&hp);
+    let all = blocks == Blocks::All;
+    let tangential = |v: f64| all.then(|| vec![v; n]);
+    let mut flex = Flexibility {
+        k_nn: per_force(&c.czz, &weights),
+        k_nt: all.then(|| per_force(&c.czx, &weights)),
+        k_tn: all.then(|| per_force(&c.cxz, &weights)),
+        k_tt: all.then(|| per_force(&c.cxx, &weights)),
+        modes: vec![
+            RigidMode { kind: ModeKind::Shift, normal: vec![0.0; n], tangential: tangential(1.0) },
+            RigidMode { kind: ModeKind::Approach, normal: vec![-1.0; n], tangential: tangential(0.0) },
+        ],
+        y: g0.iter().map(|g| g - rho).collect(),
+        x: grid.xc.clone(),
+        g0,
+        weights,
+        scales: Scales { length: l0, modulus: w.youngs_modulus },
+    };
+    add_counter_body(&mut flex, scene, &grid);
+    let assembly = t0.elapsed().as_secs_f64();
+    Ok(Built {
+        flex,
+        info: SourceInfo {
+            elements: n,
+            nodes: n,
+            element: ElementKind::Constant,
+            system_size: None,
+            pivot_ratio: None,
+            condition: None,
+            contact_element_length: scene.mesh.element_length(w.radius),
+        },
+        timing: SourceTiming { assembly, condensation: 0.0 },
+    })
+}
+
+/// Add the elastic counter-body's flexibility (if the scene has one) on the grid of strips carrying the contact
+/// nodes' forces (see the module docs). A rigid counter-body adds nothing.
+pub fn add_counter_body(flex: &mut Flexibility, scene: &Scene, grid: &Grid) {
+    let CounterBody::HalfPlane { youngs_modulus, poisson_ratio, datum_depth } = scene.counter_body else { return };
+    let l0 = flex.scales.length;
+    let hp = HalfPlane::new(
+        youngs_modulus / flex.scales.modulus,
+        poisson_ratio,
+        datum_depth.unwrap_or(scene.wheel.radius) / l0,
+    );
+    let c = grid.blocks(&hp).into_counter_body();
+    let w: Vec<f64> = grid.a.iter().zip(&grid.b).map(|(a, b)| b - a).collect();
+    let add = |k: &mut Mat<f64>, block: &[f64]| {
+        let n = w.len();
+        for j in 0..n {
+            for i in 0..n {
+                k[(i, j)] += block[i * n + j] / w[j];
+            }
+        }
+    };
+    add(&mut flex.k_nn, &c.czz);
+    if let Some(k) = flex.k_nt.as_mut() {
+        add(k, &c.czx);
+    }
+    if let Some(k) = flex.k_tn.as_mut() {
+        add(k, &c.cxz);
+    }
+    if let Some(k) = flex.k_tt.as_mut() {
+        add(k, &c.cxx);
+    }
+}
