@@ -42,6 +42,7 @@
 
 use std::collections::BTreeMap;
 use std::io::Write as _;
+use std::ops::Range;
 use std::path::{Path, PathBuf};
 
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint};
@@ -1268,6 +1269,12 @@ impl Field {
         self.values[iz * self.nx + ix]
     }
 
+    /// Values at the corners of cell `(ix, iz)`, clockwise on the map from its top left: nodes `(ix, iz)`,
+    /// `(ix + 1, iz)`, `(ix + 1, iz + 1)`, `(ix, iz + 1)`.
+    fn cell(&self, ix: usize, iz: usize) -> [f64; 4] {
+        [self.value(ix, iz), self.value(ix + 1, iz), self.value(ix + 1, iz + 1), self.value(ix, iz + 1)]
+    }
+
     /// Why the field cannot be drawn, if it cannot.
     pub fn check(&self) -> Result<(), String> {
         if self.nx < 2 || self.nz < 2 {
@@ -1313,8 +1320,7 @@ impl Field {
         let mut segments: Vec<(usize, usize)> = Vec::new();
         for iz in 0..nz - 1 {
             for ix in 0..nx - 1 {
-                let c =
-                    [self.value(ix, iz), self.value(ix + 1, iz), self.value(ix + 1, iz + 1), self.value(ix, iz + 1)];
+                let c = self.cell(ix, iz);
                 if c.iter().any(|x| !x.is_finite()) {
                     continue;
                 }
@@ -1632,15 +1638,49 @@ impl ContourMap {
         (0..=n).map(|k| (k0 + k as f64) * step).collect()
     }
 
+    /// Draw the map of values `vmin..vmax` into `svg`. The steps paint in this order, each over the ones before.
     fn draw(&self, vmin: f64, vmax: f64, svg: &mut String) -> Result<(), DrawFail> {
         let f = &self.field;
-        let (width, height) = (f64::from(self.width), f64::from(self.height));
+        let bands = self.colour_bands(vmin, vmax);
+        let captions = self.captions();
+        let layout = self.layout(&bands, captions.count())?;
+        let root = SVGBackend::with_string(svg, (self.width, layout.height as u32)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| err(&e))?;
+        let x_axis = Axis::exact(f.x_range.0, f.x_range.1, (layout.mw / 90.0).max(2.0) as usize);
+        let mut d_axis = Axis::exact(f.depth_range.0, f.depth_range.1, (layout.mh / 50.0).max(2.0) as usize);
+        d_axis.reversed = true;
+        let mut chart = layout.chart_on(&root, &x_axis, &d_axis)?;
+        let (xr, yr) = chart.plotting_area().get_pixel_range();
+        let canvas = MapCanvas { root: &root, coord: chart.as_coord_spec().clone(), xr, yr };
+
+        self.draw_bands(&canvas, &bands)?;
+        if captions.has_nan {
+            self.draw_missing_cells(&canvas)?;
+        }
+        let levels: Vec<f64> = self.levels.iter().copied().filter(|l| l.is_finite()).collect();
+        let lines = self.draw_contour_lines(&canvas, &levels)?;
+        canvas.draw_axes(&mut chart, &x_axis, &d_axis)?;
+        let mut taken = self.draw_markers(&canvas, &captions.marks)?;
+        canvas.draw_contour_labels(&levels, &lines, bands.step, &mut taken)?;
+        canvas.draw_colour_bar(&layout, &bands, &levels)?;
+        self.draw_titles(&canvas, &layout)?;
+        canvas.draw_captions(&layout, &captions)?;
+        root.present().map_err(|e| err(&e))?;
+        Ok(())
+    }
+
+    /// The colour bands for values `vmin..vmax`: round edges (`band_edges`) and a colour for each band.
+    fn colour_bands(&self, vmin: f64, vmax: f64) -> Bands {
         let edges = self.band_edges(vmin, vmax);
         let nb = edges.len() - 1;
-        let (e_lo, e_hi) = (edges[0], edges[nb]);
-        let bar_step = edges[1] - edges[0];
+        let colors = (0..nb).map(|k| self.colormap.at((k as f64 + 0.5) / nb as f64).color()).collect();
+        let step = edges[1] - edges[0];
+        Bands { edges, colors, step }
+    }
 
-        // Captions under the map: the maximum, the other markers, missing data.
+    /// Captions under the map: the maximum, the other markers, missing data.
+    fn captions(&self) -> MapCaptions {
+        let f = &self.field;
         let unit = |u: &Option<String>| match u.as_deref().map(str::trim) {
             None | Some("" | "1" | "-" | "–") => String::new(),
             Some(u) => format!(" {u}"),
@@ -1672,10 +1712,14 @@ impl ContourMap {
             );
             marks.push((m.x, m.depth, text));
         }
-        let has_nan = f.values.iter().any(|v| !v.is_finite());
-        let captions = marks.len() + usize::from(has_nan);
+        MapCaptions { marks, has_nan: f.values.iter().any(|v| !v.is_finite()) }
+    }
 
-        // Layout.
+    /// Layout: room for the title, the tick labels and axis texts, the colour bar and `captions` caption lines
+    /// around the map, which gets the rest (to scale if `equal_aspect`).
+    fn layout(&self, bands: &Bands, captions: usize) -> Result<MapLayout, DrawFail> {
+        let f = &self.field;
+        let (width, height) = (f64::from(self.width), f64::from(self.height));
         let x_text = with_unit(&self.x_label, self.x_unit.as_deref());
         let d_text = with_unit(&self.depth_label, self.depth_unit.as_deref());
         let v_text = with_unit(&self.value_label, self.value_unit.as_deref());
@@ -1692,13 +1736,12 @@ impl ContourMap {
         let d_tick_w =
             d_axis_est.bold.iter().map(|v| text_width(&d_axis_est.label(*v), TICK_SIZE)).fold(0.0, f64::max) + 14.0;
         let left = margin + desc_h + d_tick_w;
-        let bar_tick_w = edges
+        let bar_tick_w = bands
+            .edges
             .iter()
-            .map(|v| text_width(&fmt_linear(*v, bar_step, e_lo.abs().max(e_hi.abs())), TICK_SIZE))
+            .map(|v| text_width(&fmt_linear(*v, bands.step, bands.magnitude()), TICK_SIZE))
             .fold(0.0, f64::max);
-        let bar_gap = 18.0;
-        let bar_w = 18.0;
-        let right = bar_gap + bar_w + 8.0 + bar_tick_w + 8.0 + desc_h + margin;
+        let right = BAR_GAP + BAR_WIDTH + 8.0 + bar_tick_w + 8.0 + desc_h + margin;
         let (aw, ah) = (width - left - right, height - top - bottom);
         if aw < 40.0 || ah < 40.0 {
             return Err(DrawFail::NoRoom);
@@ -1712,100 +1755,263 @@ impl ContourMap {
         };
         // The map with its axes and colour bar centred horizontally; height the map does not use is trimmed from
         // the figure.
-        let height = (height - (ah - mh)).round();
-        let x0 = (left + (aw - mw) / 2.0).round();
-        let y0 = top.round();
-        let (mw, mh) = (mw.round(), mh.round());
-        let root = SVGBackend::with_string(svg, (self.width, height as u32)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| err(&e))?;
-        let x_axis = Axis::exact(f.x_range.0, f.x_range.1, (mw / 90.0).max(2.0) as usize);
-        let mut d_axis = Axis::exact(f.depth_range.0, f.depth_range.1, (mh / 50.0).max(2.0) as usize);
-        d_axis.reversed = true;
+        Ok(MapLayout {
+            x_text,
+            d_text,
+            v_text,
+            width,
+            height: (height - (ah - mh)).round(),
+            x_tick_h,
+            desc_h,
+            caption_h,
+            d_tick_w,
+            bar_tick_w,
+            x0: (left + (aw - mw) / 2.0).round(),
+            y0: top.round(),
+            mw: mw.round(),
+            mh: mh.round(),
+        })
+    }
 
-        let mut builder = ChartBuilder::on(&root);
-        builder
-            .margin_left((x0 - d_tick_w).max(0.0) as u32)
-            .margin_top(y0 as u32)
-            .margin_right((width - x0 - mw).max(0.0) as u32)
-            .margin_bottom((height - y0 - mh - x_tick_h).max(0.0) as u32)
-            .x_label_area_size(x_tick_h as u32)
-            .y_label_area_size(d_tick_w as u32);
-        let mut chart = builder.build_cartesian_2d(x_axis.clone(), d_axis.clone()).map_err(|e| err(&e))?;
-        let (xr, yr) = chart.plotting_area().get_pixel_range();
-        let coord = chart.as_coord_spec().clone();
-        let px = |p: (f64, f64)| coord.translate(&p);
-
-        // Filled bands, painted from the lowest up: layer k covers where the field is ≥ edge k.
-        let colors: Vec<RGBColor> = (0..nb).map(|k| self.colormap.at((k as f64 + 0.5) / nb as f64).color()).collect();
-        let cell =
-            |ix: usize, iz: usize| [f.value(ix, iz), f.value(ix + 1, iz), f.value(ix + 1, iz + 1), f.value(ix, iz + 1)];
-        let finite = |c: &[f64; 4]| c.iter().all(|v| v.is_finite());
-        // Pixel rectangle of the cells ix0..ix1 of row iz, one pixel larger to the right and below (inside the
-        // map): abutting shapes would otherwise show anti-aliasing seams when the SVG is scaled.
-        let cell_run = |ix0: usize, ix1: usize, iz: usize| {
-            let (a, b) = (px((f.x(ix0), f.depth(iz))), px((f.x(ix1), f.depth(iz + 1))));
-            [a, ((b.0 + 1).min(xr.end), (b.1 + 1).min(yr.end))]
-        };
-        for (k, color) in colors.iter().enumerate() {
-            let level = edges[k];
+    /// Filled bands, painted from the lowest up: layer k covers where the field is ≥ edge k (whole runs of cells
+    /// as one rectangle, the cells the edge crosses as polygons).
+    fn draw_bands(&self, canvas: &MapCanvas<'_, '_>, bands: &Bands) -> Result<(), String> {
+        let f = &self.field;
+        for (k, color) in bands.colors.iter().enumerate() {
+            let level = bands.edges[k];
             for iz in 0..f.nz - 1 {
                 let mut run: Option<usize> = None;
                 for ix in 0..f.nx {
-                    let c = if ix + 1 < f.nx { Some(cell(ix, iz)) } else { None };
-                    let full = c.is_some_and(|c| finite(&c) && (k == 0 || c.iter().all(|v| *v >= level)));
+                    let c = if ix + 1 < f.nx { Some(f.cell(ix, iz)) } else { None };
+                    let full = c.is_some_and(|c| all_finite(&c) && (k == 0 || c.iter().all(|v| *v >= level)));
                     match (full, run) {
                         (true, None) => run = Some(ix),
                         (false, Some(start)) => {
-                            let [a, b] = cell_run(start, ix, iz);
-                            root.draw(&Rectangle::new([a, b], color.filled())).map_err(|e| err(&e))?;
+                            let [a, b] = canvas.cell_run(f, start, ix, iz);
+                            canvas.root.draw(&Rectangle::new([a, b], color.filled())).map_err(|e| err(&e))?;
                             run = None;
                         }
                         _ => {}
                     }
-                    if let Some(c) = c.filter(|c| k > 0 && finite(c)) {
+                    if let Some(c) = c.filter(|c| k > 0 && all_finite(c)) {
                         let (lo, hi) = min_max(c.iter().copied());
                         if lo < level && hi >= level {
                             for poly in cell_superlevel(f, ix, iz, &c, level) {
-                                let pts: Vec<(i32, i32)> = poly.into_iter().map(px).collect();
-                                root.draw(&Polygon::new(pts, color.filled())).map_err(|e| err(&e))?;
+                                let pts: Vec<(i32, i32)> = poly.into_iter().map(|p| canvas.px(p)).collect();
+                                canvas.root.draw(&Polygon::new(pts, color.filled())).map_err(|e| err(&e))?;
                             }
                         }
                     }
                 }
             }
         }
-        // Cells with a missing corner.
-        if has_nan {
-            for iz in 0..f.nz - 1 {
-                let mut run: Option<usize> = None;
-                for ix in 0..f.nx {
-                    let missing = ix + 1 < f.nx && !finite(&cell(ix, iz));
-                    match (missing, run) {
-                        (true, None) => run = Some(ix),
-                        (false, Some(start)) => {
-                            let [a, b] = cell_run(start, ix, iz);
-                            root.draw(&Rectangle::new([a, b], NO_DATA.filled())).map_err(|e| err(&e))?;
-                            run = None;
-                        }
-                        _ => {}
+        Ok(())
+    }
+
+    /// Cells with a missing corner, in grey (runs of them as one rectangle).
+    fn draw_missing_cells(&self, canvas: &MapCanvas<'_, '_>) -> Result<(), String> {
+        let f = &self.field;
+        for iz in 0..f.nz - 1 {
+            let mut run: Option<usize> = None;
+            for ix in 0..f.nx {
+                let missing = ix + 1 < f.nx && !all_finite(&f.cell(ix, iz));
+                match (missing, run) {
+                    (true, None) => run = Some(ix),
+                    (false, Some(start)) => {
+                        let [a, b] = canvas.cell_run(f, start, ix, iz);
+                        canvas.root.draw(&Rectangle::new([a, b], NO_DATA.filled())).map_err(|e| err(&e))?;
+                        run = None;
                     }
+                    _ => {}
                 }
             }
         }
+        Ok(())
+    }
 
-        // Contour lines: a white halo under a dark line shows on every colour of the map.
-        let levels: Vec<f64> = self.levels.iter().copied().filter(|l| l.is_finite()).collect();
-        let lines: Vec<Vec<Vec<(i32, i32)>>> = levels
+    /// Contour lines at `levels`: a white halo under a dark line shows on every colour of the map. Returns the
+    /// lines of each level, in pixels.
+    fn draw_contour_lines(&self, canvas: &MapCanvas<'_, '_>, levels: &[f64]) -> Result<Vec<Vec<PixelLine>>, String> {
+        let lines: Vec<Vec<PixelLine>> = levels
             .iter()
-            .map(|&l| f.contour_lines(l).into_iter().map(|line| line.into_iter().map(px).collect()).collect())
+            .map(|&l| {
+                let level_lines = self.field.contour_lines(l).into_iter();
+                level_lines.map(|line| line.into_iter().map(|p| canvas.px(p)).collect()).collect()
+            })
             .collect();
         for pass in [WHITE.mix(0.8).stroke_width(3), RGBColor(20, 20, 20).stroke_width(1)] {
             for line in lines.iter().flatten() {
-                root.draw(&PathElement::new(line.clone(), pass)).map_err(|e| err(&e))?;
+                canvas.root.draw(&PathElement::new(line.clone(), pass)).map_err(|e| err(&e))?;
             }
         }
+        Ok(lines)
+    }
 
-        // Axes, ticks and frame.
+    /// Markers at the marked points that lie on the map (the others are only captioned). Returns the pixel boxes
+    /// they cover, which contour labels avoid.
+    fn draw_markers(&self, canvas: &MapCanvas<'_, '_>, marks: &[(f64, f64, String)]) -> Result<Vec<[f64; 4]>, String> {
+        let f = &self.field;
+        let inside =
+            |(x, d): (f64, f64)| x >= f.x_range.0 && x <= f.x_range.1 && d >= f.depth_range.0 && d <= f.depth_range.1;
+        let mut taken: Vec<[f64; 4]> = Vec::new();
+        for (i, (x, d, _)) in marks.iter().enumerate() {
+            if inside((*x, *d)) {
+                let p = canvas.px((*x, *d));
+                let p = (f64::from(p.0), f64::from(p.1));
+                draw_marker(canvas.root, p, MAP_MARKERS[i % MAP_MARKERS.len()], BLACK, MAP_MARKER_SIZE)?;
+                let r = MAP_MARKER_SIZE * 1.6;
+                taken.push([p.0 - r, p.1 - r, p.0 + r, p.1 + r]);
+            }
+        }
+        Ok(taken)
+    }
+
+    /// Title above the map; axis texts below it and left of it.
+    fn draw_titles(&self, canvas: &MapCanvas<'_, '_>, layout: &MapLayout) -> Result<(), String> {
+        let (root, xr, yr) = (canvas.root, &canvas.xr, &canvas.yr);
+        let (width, margin) = (layout.width, f64::from(MARGIN));
+        if !self.title.is_empty() {
+            let size = fit_font(TITLE_SIZE, &self.title, width - 20.0);
+            text(root, &self.title, to_px((width / 2.0, margin + TITLE_SIZE * 0.6)), size, Anchor::Center, false)?;
+        }
+        let mid_x = f64::from(xr.start + xr.end) / 2.0;
+        let x_text = &layout.x_text;
+        if !x_text.is_empty() {
+            let size = fit_font(DESC_SIZE, x_text, width - 2.0 * margin);
+            let y = f64::from(yr.end) + layout.x_tick_h + layout.desc_h / 2.0;
+            text(root, x_text, to_px((mid_x, y)), size, Anchor::Center, false)?;
+        }
+        let d_text = &layout.d_text;
+        if !d_text.is_empty() {
+            let (by_top, by_bottom) = (f64::from(yr.start), f64::from(yr.end));
+            let size = fit_font(DESC_SIZE, d_text, by_bottom - by_top + 40.0);
+            let x = f64::from(xr.start) - layout.d_tick_w - layout.desc_h / 2.0;
+            text(root, d_text, to_px((x, (by_top + by_bottom) / 2.0)), size, Anchor::Center, true)?;
+        }
+        Ok(())
+    }
+}
+
+/// Pixel points of a contour line.
+type PixelLine = Vec<(i32, i32)>;
+
+/// Colour bar spacing from the map, and width, in pixels.
+const BAR_GAP: f64 = 18.0;
+const BAR_WIDTH: f64 = 18.0;
+
+/// The colour bands of a contour map.
+struct Bands {
+    /// Band edges, increasing: band `k` spans `edges[k]..edges[k + 1]`.
+    edges: Vec<f64>,
+    /// Colour of each band.
+    colors: Vec<RGBColor>,
+    /// Spacing of the edges.
+    step: f64,
+}
+
+impl Bands {
+    fn lo(&self) -> f64 {
+        self.edges[0]
+    }
+
+    fn hi(&self) -> f64 {
+        self.edges[self.edges.len() - 1]
+    }
+
+    /// The largest magnitude of an edge (sets the format of the colour bar's labels).
+    fn magnitude(&self) -> f64 {
+        self.lo().abs().max(self.hi().abs())
+    }
+}
+
+/// What is captioned under a contour map.
+struct MapCaptions {
+    /// Marked points `(x, depth, caption)`: the maximum (if marked), then the markers.
+    marks: Vec<(f64, f64, String)>,
+    /// Some value is not finite: such cells are grey, with a caption saying so.
+    has_nan: bool,
+}
+
+impl MapCaptions {
+    /// Number of caption lines.
+    fn count(&self) -> usize {
+        self.marks.len() + usize::from(self.has_nan)
+    }
+}
+
+/// Where the parts of a contour map go, in pixels.
+struct MapLayout {
+    /// Axis texts (label and unit) of x, depth and the values.
+    x_text: String,
+    d_text: String,
+    v_text: String,
+    /// Size of the figure (its height trimmed to what the map uses).
+    width: f64,
+    height: f64,
+    /// Height of the x tick labels, of an axis text and of a caption line.
+    x_tick_h: f64,
+    desc_h: f64,
+    caption_h: f64,
+    /// Width of the depth tick labels and of the colour bar's tick labels.
+    d_tick_w: f64,
+    bar_tick_w: f64,
+    /// Top left corner and size of the map.
+    x0: f64,
+    y0: f64,
+    mw: f64,
+    mh: f64,
+}
+
+impl MapLayout {
+    /// The chart of the map on `root`: its plotting area the map, with the tick labels left of and below it.
+    fn chart_on<'a, 'b>(
+        &self,
+        root: &'a DrawingArea<SVGBackend<'b>, Shift>,
+        x_axis: &Axis,
+        d_axis: &Axis,
+    ) -> Result<ChartContext<'a, SVGBackend<'b>, Cartesian2d<Axis, Axis>>, String> {
+        let mut builder = ChartBuilder::on(root);
+        builder
+            .margin_left((self.x0 - self.d_tick_w).max(0.0) as u32)
+            .margin_top(self.y0 as u32)
+            .margin_right((self.width - self.x0 - self.mw).max(0.0) as u32)
+            .margin_bottom((self.height - self.y0 - self.mh - self.x_tick_h).max(0.0) as u32)
+            .x_label_area_size(self.x_tick_h as u32)
+            .y_label_area_size(self.d_tick_w as u32);
+        builder.build_cartesian_2d(x_axis.clone(), d_axis.clone()).map_err(|e| err(&e))
+    }
+}
+
+/// A contour map being drawn: the figure, the map's coordinates and its pixel extent.
+struct MapCanvas<'a, 'b> {
+    root: &'a DrawingArea<SVGBackend<'b>, Shift>,
+    coord: Cartesian2d<Axis, Axis>,
+    /// Pixel columns of the map.
+    xr: Range<i32>,
+    /// Pixel rows of the map.
+    yr: Range<i32>,
+}
+
+impl MapCanvas<'_, '_> {
+    /// The pixel of the point `(x, depth)`.
+    fn px(&self, p: (f64, f64)) -> (i32, i32) {
+        self.coord.translate(&p)
+    }
+
+    /// Pixel rectangle of the cells ix0..ix1 of row iz, one pixel larger to the right and below (inside the
+    /// map): abutting shapes would otherwise show anti-aliasing seams when the SVG is scaled.
+    fn cell_run(&self, f: &Field, ix0: usize, ix1: usize, iz: usize) -> [(i32, i32); 2] {
+        let (a, b) = (self.px((f.x(ix0), f.depth(iz))), self.px((f.x(ix1), f.depth(iz + 1))));
+        [a, ((b.0 + 1).min(self.xr.end), (b.1 + 1).min(self.yr.end))]
+    }
+
+    /// Axes, ticks and frame.
+    fn draw_axes(
+        &self,
+        chart: &mut ChartContext<'_, SVGBackend<'_>, Cartesian2d<Axis, Axis>>,
+        x_axis: &Axis,
+        d_axis: &Axis,
+    ) -> Result<(), String> {
         let x_fmt = |v: &f64| x_axis.label(*v);
         let d_fmt = |v: &f64| d_axis.label(*v);
         chart
@@ -1817,65 +2023,57 @@ impl ContourMap {
             .y_label_formatter(&d_fmt)
             .draw()
             .map_err(|e| err(&e))?;
-        root.draw(&Rectangle::new([(xr.start, yr.start), (xr.end, yr.end)], BLACK.stroke_width(1)))
-            .map_err(|e| err(&e))?;
+        let (xr, yr) = (&self.xr, &self.yr);
+        self.root
+            .draw(&Rectangle::new([(xr.start, yr.start), (xr.end, yr.end)], BLACK.stroke_width(1)))
+            .map_err(|e| err(&e))
+    }
 
-        // Markers.
-        let inside =
-            |(x, d): (f64, f64)| x >= f.x_range.0 && x <= f.x_range.1 && d >= f.depth_range.0 && d <= f.depth_range.1;
-        let mut taken: Vec<[f64; 4]> = Vec::new();
-        for (i, (x, d, _)) in marks.iter().enumerate() {
-            if inside((*x, *d)) {
-                let p = px((*x, *d));
-                let p = (f64::from(p.0), f64::from(p.1));
-                draw_marker(&root, p, MAP_MARKERS[i % MAP_MARKERS.len()], BLACK, MAP_MARKER_SIZE)?;
-                let r = MAP_MARKER_SIZE * 1.6;
-                taken.push([p.0 - r, p.1 - r, p.0 + r, p.1 + r]);
-            }
-        }
-
-        // Contour labels: a few levels, each on its longest line, where the label overlaps no other.
+    /// Contour labels: a few of the `levels`, each on its longest line, where the label overlaps neither another
+    /// nor a box in `taken` (the labels' boxes are added to it). `bar_step` sets the decimals of a single level.
+    fn draw_contour_labels(
+        &self,
+        levels: &[f64],
+        lines: &[Vec<PixelLine>],
+        bar_step: f64,
+        taken: &mut Vec<[f64; 4]>,
+    ) -> Result<(), String> {
         let stride = levels.len().div_ceil(6).max(1);
         let level_step =
             levels.windows(2).map(|w| (w[1] - w[0]).abs()).filter(|d| *d > 0.0).fold(f64::INFINITY, f64::min);
         let level_step = if level_step.is_finite() { level_step } else { bar_step };
+        let (xr, yr) = (&self.xr, &self.yr);
         let frame = [f64::from(xr.start), f64::from(yr.start), f64::from(xr.end), f64::from(yr.end)];
-        for (k, (&level, level_lines)) in levels.iter().zip(&lines).enumerate() {
+        for (k, (&level, level_lines)) in levels.iter().zip(lines).enumerate() {
             if k % stride != 0 {
                 continue;
             }
             let label = fmt_level(level, level_step);
-            let (w, h) = (text_width(&label, MAP_LABEL_SIZE) + 6.0, MAP_LABEL_SIZE + 2.0);
-            let mut order: Vec<&Vec<(i32, i32)>> = level_lines.iter().filter(|l| l.len() >= 2).collect();
-            order.sort_by(|a, b| polyline_length(b).total_cmp(&polyline_length(a)));
-            let spot = order.iter().take(3).find_map(|line| {
-                [0.5, 0.25, 0.75, 0.125, 0.375, 0.625, 0.875].iter().find_map(|&t| {
-                    let (cx, cy) = point_along(line, t);
-                    let b = [cx - w / 2.0, cy - h / 2.0, cx + w / 2.0, cy + h / 2.0];
-                    let within = b[0] >= frame[0] + 2.0
-                        && b[2] <= frame[2] - 2.0
-                        && b[1] >= frame[1] + 2.0
-                        && b[3] <= frame[3] - 2.0;
-                    (within && !taken.iter().any(|o| overlaps(o, &b))).then_some((cx, cy, b))
-                })
-            });
-            if let Some((cx, cy, b)) = spot {
+            let size = (text_width(&label, MAP_LABEL_SIZE) + 6.0, MAP_LABEL_SIZE + 2.0);
+            if let Some((cx, cy, b)) = label_spot(level_lines, size, &frame, taken) {
                 taken.push(b);
-                root.draw(&Rectangle::new([to_px((b[0], b[1])), to_px((b[2], b[3]))], WHITE.mix(0.85).filled()))
+                self.root
+                    .draw(&Rectangle::new([to_px((b[0], b[1])), to_px((b[2], b[3]))], WHITE.mix(0.85).filled()))
                     .map_err(|e| err(&e))?;
-                text(&root, &label, to_px((cx, cy)), MAP_LABEL_SIZE, Anchor::Center, false)?;
+                text(self.root, &label, to_px((cx, cy)), MAP_LABEL_SIZE, Anchor::Center, false)?;
             }
         }
+        Ok(())
+    }
 
-        // Colour bar: the bands, ticks at band edges (every few, so labels do not collide), contour levels.
-        let bx0 = f64::from(xr.end) + bar_gap;
-        let bx1 = bx0 + bar_w;
-        let (by_top, by_bottom) = (f64::from(yr.start), f64::from(yr.end));
+    /// Colour bar right of the map: the bands, ticks at band edges (every few, so labels do not collide), contour
+    /// levels, and the value text.
+    fn draw_colour_bar(&self, layout: &MapLayout, bands: &Bands, levels: &[f64]) -> Result<(), String> {
+        let root = self.root;
+        let (nb, e_lo, e_hi, bar_step) = (bands.colors.len(), bands.lo(), bands.hi(), bands.step);
+        let bx0 = f64::from(self.xr.end) + BAR_GAP;
+        let bx1 = bx0 + BAR_WIDTH;
+        let (by_top, by_bottom) = (f64::from(self.yr.start), f64::from(self.yr.end));
         let bar_y = |v: f64| by_bottom - (v - e_lo) / (e_hi - e_lo) * (by_bottom - by_top);
-        for (k, color) in colors.iter().enumerate() {
+        for (k, color) in bands.colors.iter().enumerate() {
             // One pixel into the next band up (drawn over it next), against anti-aliasing seams.
             let overlap = if k + 1 < nb { 1.0 } else { 0.0 };
-            let (a, b) = (to_px((bx0, bar_y(edges[k + 1]) - overlap)), to_px((bx1, bar_y(edges[k]))));
+            let (a, b) = (to_px((bx0, bar_y(bands.edges[k + 1]) - overlap)), to_px((bx1, bar_y(bands.edges[k]))));
             root.draw(&Rectangle::new([a, b], color.filled())).map_err(|e| err(&e))?;
         }
         for &l in levels.iter().filter(|l| **l >= e_lo && **l <= e_hi) {
@@ -1887,7 +2085,7 @@ impl ContourMap {
             .map_err(|e| err(&e))?;
         let per_label = (TICK_SIZE * 1.3) / ((by_bottom - by_top) / nb as f64);
         let every = nice_stride(per_label.ceil().max(1.0) as usize);
-        for &v in &edges {
+        for &v in &bands.edges {
             // Label round multiples of the stride (0, 0.2, 0.4 rather than 0.1, 0.3, …).
             if ((v / bar_step).round() as i64).rem_euclid(every as i64) != 0 {
                 continue;
@@ -1895,62 +2093,66 @@ impl ContourMap {
             let y = bar_y(v);
             root.draw(&PathElement::new(vec![to_px((bx1, y)), to_px((bx1 + 5.0, y))], BLACK.stroke_width(1)))
                 .map_err(|e| err(&e))?;
-            let label = fmt_linear(v, bar_step * every as f64, e_lo.abs().max(e_hi.abs()));
-            text(&root, &label, to_px((bx1 + 8.0, y)), TICK_SIZE, Anchor::Left, false)?;
+            let label = fmt_linear(v, bar_step * every as f64, bands.magnitude());
+            text(root, &label, to_px((bx1 + 8.0, y)), TICK_SIZE, Anchor::Left, false)?;
         }
+        let v_text = &layout.v_text;
         if !v_text.is_empty() {
-            let x = bx1 + 8.0 + bar_tick_w + 8.0 + desc_h / 2.0;
-            let size = fit_font(DESC_SIZE, &v_text, by_bottom - by_top + 40.0);
-            text(&root, &v_text, to_px((x, (by_top + by_bottom) / 2.0)), size, Anchor::Center, true)?;
+            let x = bx1 + 8.0 + layout.bar_tick_w + 8.0 + layout.desc_h / 2.0;
+            let size = fit_font(DESC_SIZE, v_text, by_bottom - by_top + 40.0);
+            text(root, v_text, to_px((x, (by_top + by_bottom) / 2.0)), size, Anchor::Center, true)?;
         }
+        Ok(())
+    }
 
-        // Title, axis texts, captions.
-        if !self.title.is_empty() {
-            let size = fit_font(TITLE_SIZE, &self.title, width - 20.0);
-            text(&root, &self.title, to_px((width / 2.0, margin + TITLE_SIZE * 0.6)), size, Anchor::Center, false)?;
-        }
-        let mid_x = f64::from(xr.start + xr.end) / 2.0;
-        if !x_text.is_empty() {
-            let size = fit_font(DESC_SIZE, &x_text, width - 2.0 * margin);
-            text(
-                &root,
-                &x_text,
-                to_px((mid_x, f64::from(yr.end) + x_tick_h + desc_h / 2.0)),
-                size,
-                Anchor::Center,
-                false,
-            )?;
-        }
-        if !d_text.is_empty() {
-            let size = fit_font(DESC_SIZE, &d_text, by_bottom - by_top + 40.0);
-            let x = f64::from(xr.start) - d_tick_w - desc_h / 2.0;
-            text(&root, &d_text, to_px((x, (by_top + by_bottom) / 2.0)), size, Anchor::Center, true)?;
-        }
-        let mut cy = f64::from(yr.end) + x_tick_h + desc_h + caption_h / 2.0;
+    /// Captions under the map, each after its marker: the marked points, then missing data.
+    fn draw_captions(&self, layout: &MapLayout, captions: &MapCaptions) -> Result<(), String> {
+        let (root, width, margin) = (self.root, layout.width, f64::from(MARGIN));
+        let mut cy = f64::from(self.yr.end) + layout.x_tick_h + layout.desc_h + layout.caption_h / 2.0;
         let caption_x = margin + 12.0;
-        for (i, (_, _, s)) in marks.iter().enumerate() {
-            draw_marker(&root, (caption_x, cy), MAP_MARKERS[i % MAP_MARKERS.len()], BLACK, MAP_MARKER_SIZE)?;
+        for (i, (_, _, s)) in captions.marks.iter().enumerate() {
+            draw_marker(root, (caption_x, cy), MAP_MARKERS[i % MAP_MARKERS.len()], BLACK, MAP_MARKER_SIZE)?;
             let size = fit_font(CAPTION_SIZE, s, width - caption_x - 20.0 - margin);
-            text(&root, s, to_px((caption_x + 16.0, cy)), size, Anchor::Left, false)?;
-            cy += caption_h;
+            text(root, s, to_px((caption_x + 16.0, cy)), size, Anchor::Left, false)?;
+            cy += layout.caption_h;
         }
-        if has_nan {
+        if captions.has_nan {
             let a = to_px((caption_x - 7.0, cy - 7.0));
             let b = to_px((caption_x + 7.0, cy + 7.0));
             root.draw(&Rectangle::new([a, b], NO_DATA.filled())).map_err(|e| err(&e))?;
             root.draw(&Rectangle::new([a, b], BLACK.stroke_width(1))).map_err(|e| err(&e))?;
-            text(
-                &root,
-                "no value (non-finite data)",
-                to_px((caption_x + 16.0, cy)),
-                CAPTION_SIZE,
-                Anchor::Left,
-                false,
-            )?;
+            let no_value = "no value (non-finite data)";
+            text(root, no_value, to_px((caption_x + 16.0, cy)), CAPTION_SIZE, Anchor::Left, false)?;
         }
-        root.present().map_err(|e| err(&e))?;
         Ok(())
     }
+}
+
+/// Where a label of `w` × `h` pixels goes on a contour level's `lines`: at one of a few fractions of the length
+/// of one of its three longest lines, 2 pixels inside `frame` and overlapping no box in `taken`. Returns the
+/// label's centre and box.
+fn label_spot(
+    lines: &[PixelLine],
+    (w, h): (f64, f64),
+    frame: &[f64; 4],
+    taken: &[[f64; 4]],
+) -> Option<(f64, f64, [f64; 4])> {
+    let mut order: Vec<&PixelLine> = lines.iter().filter(|l| l.len() >= 2).collect();
+    order.sort_by(|a, b| polyline_length(b).total_cmp(&polyline_length(a)));
+    order.iter().take(3).find_map(|line| {
+        [0.5, 0.25, 0.75, 0.125, 0.375, 0.625, 0.875].iter().find_map(|&t| {
+            let (cx, cy) = point_along(line, t);
+            let b = [cx - w / 2.0, cy - h / 2.0, cx + w / 2.0, cy + h / 2.0];
+            let within =
+                b[0] >= frame[0] + 2.0 && b[2] <= frame[2] - 2.0 && b[1] >= frame[1] + 2.0 && b[3] <= frame[3] - 2.0;
+            (within && !taken.iter().any(|o| overlaps(o, &b))).then_some((cx, cy, b))
+        })
+    })
+}
+
+/// All four corner values are finite.
+fn all_finite(c: &[f64; 4]) -> bool {
+    c.iter().all(|v| v.is_finite())
 }
 
 /// Why a contour map could not be drawn.
