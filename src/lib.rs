@@ -39,6 +39,7 @@ pub mod error;
 pub mod formulation;
 pub mod hertz;
 pub mod lcp_io;
+pub mod lcp_residual;
 pub mod mesh;
 pub mod plot;
 pub mod post;
