@@ -91,6 +91,8 @@ time_rollbem() {
   echo "$(printf '%s\n' "${times[@]}" | median) $runs"
 }
 
+loadavg() { cut -d' ' -f1-3 /proc/loadavg; }
+load_start=$(loadavg)
 rows=()
 notes=()
 timing_source=""
@@ -170,7 +172,7 @@ for m in $sizes; do
   d_lemke=$(rel_diff "$work/peer-$m.lemke.z" "$work/peer-$m.siconos.lemke.z")
   d_dense=$(rel_diff "$work/peer-$m.lemke.z" "$work/peer-$m.lemke_dense.z")
   fastest=$(awk -v a="${t[lemke]}" -v b="${t[lemke_dense]}" 'BEGIN { print (a < b ? a : b) }')
-  ratio=$(awk -v p="$p_lemke_t" -v f="$fastest" 'BEGIN { if (f > 0) printf "%.1f", p / f; else print "n/a" }')
+  ratio=$(awk -v p="$p_lemke_t" -v f="$fastest" 'BEGIN { if (f > 0) printf "%.3g", p / f; else print "n/a" }')
   cell() { # pivots, with the status when not solved and the run count when not repeated
     local c=$1
     [[ $2 == solved ]] || c="$c ($2)"
@@ -189,7 +191,7 @@ done
   printf '%s\n' "${rows[@]}"
   echo
   echo "Scenes: reference/scenes/cattaneo-decoupled.toml with \`[contact] coupling = true\` and \`[mesh] contact_elements\` = $sizes (hub support, μ = 0.3, load-driven P and Q, rotation held). Siconos numerics $siconos_version (Debian libsiconos-numerics-dev); PGS tolerance $pgs_tol on lcp_compute_error, at most $pgs_max_iter iterations."
-  echo "Times: median of $repeats runs on this machine ($(nproc) cores). Siconos: the solver call alone (benches/peer/driver.c)."
+  echo "Times: wall clock, median of $repeats runs, on this machine ($(nproc) cores; load average $load_start at the start, $(loadavg) at the end: other work on the machine inflates the times). Siconos: the solver call alone (benches/peer/driver.c)."
   if [[ $timing_source == solve_time_s ]]; then
     echo "rollbem: \`solve_time_s\` reported by \`rollbem lcp solve\` (the solve alone)."
   else
