@@ -135,13 +135,9 @@ pub fn parse_with_remark(text: &str, path: &Path) -> Result<(Lcp, String)> {
         let mut data = Vec::with_capacity(n * n);
         for k in 0..n * n {
             let (i, j) = (k % n, k / n);
-            data.push(tok.number(&format!(
-                "M[{}, {}] (entry {} of {} of M, column-major)",
-                i + 1,
-                j + 1,
-                k + 1,
-                n * n
-            ))?);
+            data.push(
+                tok.number(|| format!("M[{}, {}] (entry {} of {} of M, column-major)", i + 1, j + 1, k + 1, n * n))?,
+            );
         }
         data
     } else {
@@ -149,7 +145,7 @@ pub fn parse_with_remark(text: &str, path: &Path) -> Result<(Lcp, String)> {
     };
     let mut q = Vec::with_capacity(n);
     for i in 0..n {
-        q.push(tok.number(&format!("q[{}] (entry {} of {} of q)", i + 1, i + 1, n))?);
+        q.push(tok.number(|| format!("q[{}] (entry {} of {} of q)", i + 1, i + 1, n))?);
     }
     let remark = tok.rest();
     if let Some(first) = remark.split_whitespace().next() {
@@ -255,17 +251,18 @@ fn read_sparse_block(tok: &mut Tokens, n: usize) -> Result<Vec<f64>> {
             let rows = r1 - r0;
             for k in 0..rows * (c1 - c0) {
                 let (i, j) = (r0 + k % rows, c0 + k / rows);
-                let what = format!(
-                    "M[{}, {}] (entry {} of block {b}, rows {}..{}, columns {}..{}, column-major)",
-                    i + 1,
-                    j + 1,
-                    k + 1,
-                    r0 + 1,
-                    r1,
-                    c0 + 1,
-                    c1
-                );
-                data[j * n + i] = tok.number(&what)?;
+                data[j * n + i] = tok.number(|| {
+                    format!(
+                        "M[{}, {}] (entry {} of block {b}, rows {}..{}, columns {}..{}, column-major)",
+                        i + 1,
+                        j + 1,
+                        k + 1,
+                        r0 + 1,
+                        r1,
+                        c0 + 1,
+                        c1
+                    )
+                })?;
             }
         }
     }
@@ -379,12 +376,18 @@ impl<'a> Tokens<'a> {
     }
 
     fn next(&mut self, what: &str) -> Result<&'a str> {
+        self.next_with(|| what.to_string())
+    }
+
+    /// The next token; `what` describes it in an error and is called only then (building the description of
+    /// each of the n² entries of M up front took most of the time of reading a large file).
+    fn next_with(&mut self, what: impl Fn() -> String) -> Result<&'a str> {
         self.skip_space();
         let rest = &self.text[self.pos..];
         if rest.is_empty() {
             return Err(self.error_at(
                 self.line,
-                format!("unexpected end of file after {} number(s): expected {what}", self.count),
+                format!("unexpected end of file after {} number(s): expected {}", self.count, what()),
             ));
         }
         let len = rest.find(char::is_whitespace).unwrap_or(rest.len());
@@ -407,12 +410,12 @@ impl<'a> Tokens<'a> {
         Ok(n)
     }
 
-    fn number(&mut self, what: &str) -> Result<f64> {
-        let t = self.next(what)?;
+    fn number(&mut self, what: impl Fn() -> String) -> Result<f64> {
+        let t = self.next_with(&what)?;
         match t.parse::<f64>() {
             Ok(v) if v.is_finite() => Ok(v),
-            Ok(_) => Err(self.error(format!("{what} is `{t}`: entries must be finite"))),
-            Err(_) => Err(self.error(format!("expected {what} (a number), found `{t}`"))),
+            Ok(_) => Err(self.error(format!("{} is `{t}`: entries must be finite", what()))),
+            Err(_) => Err(self.error(format!("expected {} (a number), found `{t}`", what()))),
         }
     }
 
