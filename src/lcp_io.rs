@@ -3,14 +3,15 @@
 //! test problems can be read back.
 //!
 //! ## The format (as Siconos reads and writes it)
-//! Siconos reads an LCP with `linearComplementarity_newFromFile` (`numerics/src/LCP/LinearComplementarityProblem.c`):
-//! the problem size n, then a `NumericsMatrix` (`NM_new_from_file` in `numerics/src/tools/NumericsMatrix.c`), then
-//! the `size1` entries of q. A dense `NumericsMatrix` is its storage type (`0` = `NM_DENSE`), `size0`, `size1`, the
-//! two sizes again (written `size0<TAB>size1`), and then the `size0·size1` entries **in Siconos' storage order,
-//! which is column-major**: `NM_write_in_file` prints `matrix0[i]` for i = 0, 1, … and breaks the line every
-//! `size1` entries, so each line of a Siconos-written file is a *column* of M. Every number is read by `fscanf`
-//! and separated by any whitespace; the LCP is `w = M z + q`, `w ≥ 0`, `z ≥ 0`, `wᵀz = 0`, as in
-//! [`crate::solvers::Lcp`]. For n = 2:
+//! The layouts below were read off Siconos 4.4.0's source (Debian source package `siconos` 4.4.0+dfsg-2); the
+//! collection itself is in `reference/lcp/siconos/`. Siconos reads an LCP with `linearComplementarity_newFromFile`
+//! (`numerics/src/LCP/LinearComplementarityProblem.c`): the problem size n, then a `NumericsMatrix`
+//! (`NM_new_from_file` in `numerics/src/tools/NumericsMatrix.c`), then the `size1` entries of q. A dense
+//! `NumericsMatrix` is its storage type (`0` = `NM_DENSE`), `size0`, `size1`, the two sizes again (written
+//! `size0<TAB>size1`), and then the `size0·size1` entries **in Siconos' storage order, which is column-major**:
+//! `NM_write_in_file` prints `matrix0[i]` for i = 0, 1, … and breaks the line every `size1` entries, so each line
+//! of a Siconos-written file is a *column* of M. Every number is read by `fscanf` and separated by any whitespace;
+//! the LCP is `w = M z + q`, `w ≥ 0`, `z ≥ 0`, `wᵀz = 0`, as in [`crate::solvers::Lcp`]. For n = 2:
 //!
 //! ```text
 //! 2              problem size n
@@ -29,8 +30,46 @@
 //! like. [`to_string_with_remark`] writes such a remark (each line prefixed with `# `) and [`parse_with_remark`]
 //! returns it.
 //!
-//! Only the dense storage (type 0) is supported; Siconos' sparse-block (1) and sparse (2) storages are reported as
-//! [`Error::Unsupported`].
+//! ## Sparse-block storage (type 1)
+//! Three files of Siconos' collection (`lcp_deudeu_block.dat`, `lcp_ortiz_block.dat`, `lcp_trivial_block.dat`)
+//! store M as a `SparseBlockStructuredMatrix` (SBM). After the storage type `1`, `size0` and `size1` (*not*
+//! repeated), `SBM_write_in_file` (`numerics/src/tools/SparseBlockMatrix.c`, read back by `SBM_new_from_file`)
+//! writes:
+//!
+//! ```text
+//! nbblocks                        number of stored (nonzero) blocks; 0 = M is all zero, and nothing else follows
+//! blocknumber0                    number of block rows
+//! blocknumber1                    number of block columns
+//! blocksize0[0..blocknumber0]     CUMULATIVE row counts: block row r holds rows blocksize0[r-1] .. blocksize0[r]-1
+//! blocksize1[0..blocknumber1]     cumulative column counts, likewise
+//! filled1                         (index of the last nonempty block row) + 2: the length of index1_data
+//! filled2                         length of index2_data = the number of stored blocks
+//! index1_data[0..filled1]         compressed-row pointers: block row r stores the blocks
+//!                                 index1_data[r] .. index1_data[r+1]-1
+//! index2_data[0..filled2]         block column of each stored block
+//! then, for each stored block b in order: the number b, and its rows·columns entries in COLUMN-MAJOR order
+//! ```
+//!
+//! (one number per line in Siconos' files, but any whitespace separates them, as for `fscanf`). rollbem converts
+//! the blocks to the dense M it works with; blocks not stored are zero. A file is refused, with the line of the
+//! offending number, when it is not what `SBM_write_in_file` can produce: cumulative sizes that do not increase
+//! or do not end at n, `filled2 ≠ nbblocks`, row pointers that do not start at 0, decrease or do not end at
+//! `filled2`, a block column out of range, the same block stored twice, or a block number out of sequence
+//! (Siconos only prints a warning for the last one and reads on). For example, `lcp_ortiz_block.dat` is
+//!
+//! ```text
+//! 4  1  4  4          n, storage type 1, size0, size1
+//! 4  2  2             nbblocks, blocknumber0, blocknumber1
+//! 2 4   2 4           blocksize0, blocksize1 (two 2 × 2 block rows and columns)
+//! 3  4                filled1, filled2
+//! 0 2 4   0 1 0 1     index1_data, index2_data: row 0 holds blocks 0, 1 (columns 0, 1); row 1 blocks 2, 3
+//! 0  3 -1 1 2         block 0 = M[0..2, 0..2] = [[3, 1], [-1, 2]], column-major
+//! 1  0 1 -1 1         block 1 = M[0..2, 2..4]; then blocks 2 and 3
+//! …  q
+//! ```
+//!
+//! Siconos' sparse (compressed-column, type 2) storage is reported as [`Error::Unsupported`]; rollbem writes only
+//! the dense storage.
 //!
 //! Numbers are written with Rust's shortest round-trip representation (`{:e}`), so write → read is exact to the
 //! bit; Siconos (`%le`) reads them unchanged.
@@ -46,6 +85,9 @@ pub const MAX_SIZE: usize = 20_000;
 
 /// Storage type of a dense `NumericsMatrix` (`NM_DENSE`).
 const NM_DENSE: usize = 0;
+
+/// Storage type of a sparse-block `NumericsMatrix` (`NM_SPARSE_BLOCK`, a `SparseBlockStructuredMatrix`).
+const NM_SPARSE_BLOCK: usize = 1;
 
 /// Read an LCP file; errors name the file and the line (or the token count) of the problem.
 pub fn read(path: &Path) -> Result<Lcp> {
@@ -64,35 +106,46 @@ pub fn parse_with_remark(text: &str, path: &Path) -> Result<(Lcp, String)> {
     let mut tok = Tokens::new(text, path);
     let n = tok.size("the problem size n")?;
     let storage = tok.integer("the matrix storage type")?;
-    if storage != NM_DENSE {
+    if storage != NM_DENSE && storage != NM_SPARSE_BLOCK {
         let what = match storage {
-            1 => "sparse-block (NM_SPARSE_BLOCK)".to_string(),
             2 => "sparse (NM_SPARSE)".to_string(),
             s => format!("unknown ({s})"),
         };
         return Err(Error::Unsupported {
             path: path.to_path_buf(),
             message: format!(
-                "line {}: matrix storage type {what}: only dense matrices (storage type 0) are supported",
+                "line {}: matrix storage type {what}: only dense (0) and sparse-block (1) matrices are supported",
                 tok.last_line
             ),
         });
     }
-    for what in ["size0 (rows of M)", "size1 (columns of M)", "size0 (repeated)", "size1 (repeated)"] {
+    let sizes: &[&str] = if storage == NM_DENSE {
+        &["size0 (rows of M)", "size1 (columns of M)", "size0 (repeated)", "size1 (repeated)"]
+    } else {
+        &["size0 (rows of M)", "size1 (columns of M)"]
+    };
+    for what in sizes {
         let s = tok.integer(what)?;
         if s != n {
             return Err(tok.error(format!("{what} is {s} but the problem size n is {n}: M must be n × n")));
         }
     }
     // Column-major, as NM_new_from_file fills `matrix0`.
-    let mut data = Vec::with_capacity(n * n);
-    for k in 0..n * n {
-        let (i, j) = (k % n, k / n);
-        data.push(tok.number(&format!("M[{}, {}] (entry {} of {} of M, column-major)", i + 1, j + 1, k + 1, n * n))?);
-    }
+    let data = if storage == NM_DENSE {
+        let mut data = Vec::with_capacity(n * n);
+        for k in 0..n * n {
+            let (i, j) = (k % n, k / n);
+            data.push(
+                tok.number(|| format!("M[{}, {}] (entry {} of {} of M, column-major)", i + 1, j + 1, k + 1, n * n))?,
+            );
+        }
+        data
+    } else {
+        read_sparse_block(&mut tok, n)?
+    };
     let mut q = Vec::with_capacity(n);
     for i in 0..n {
-        q.push(tok.number(&format!("q[{}] (entry {} of {} of q)", i + 1, i + 1, n))?);
+        q.push(tok.number(|| format!("q[{}] (entry {} of {} of q)", i + 1, i + 1, n))?);
     }
     let remark = tok.rest();
     if let Some(first) = remark.split_whitespace().next() {
@@ -110,6 +163,134 @@ pub fn parse_with_remark(text: &str, path: &Path) -> Result<(Lcp, String)> {
     }
     let m = Mat::from_fn(n, n, |i, j| data[j * n + i]);
     Ok((Lcp { m, q }, remark.trim().to_string()))
+}
+
+/// Read the `SparseBlockStructuredMatrix` part of a file (after the storage type and the two sizes) into a dense
+/// column-major n × n array, validating it as described in the module docs.
+fn read_sparse_block(tok: &mut Tokens, n: usize) -> Result<Vec<f64>> {
+    let mut data = vec![0.0; n * n];
+    let nbblocks = tok.integer("nbblocks (the number of stored blocks)")?;
+    if nbblocks == 0 {
+        // SBM_write_in_file writes only this 0 for a matrix without blocks: M is zero.
+        return Ok(data);
+    }
+    let mut block_count = |name: &str, dim: &str| -> Result<usize> {
+        let nb = tok.integer(&format!("{name} (the number of block {dim})"))?;
+        if nb == 0 || nb > n {
+            return Err(tok.error(format!("{name} is {nb}: expected 1 ≤ {name} ≤ n = {n}")));
+        }
+        Ok(nb)
+    };
+    let nb0 = block_count("blocknumber0", "rows")?;
+    let nb1 = block_count("blocknumber1", "columns")?;
+    let start0 = cumulative_sizes(tok, nb0, n, "blocksize0", "row")?;
+    let start1 = cumulative_sizes(tok, nb1, n, "blocksize1", "column")?;
+    let filled1 = tok.integer("filled1 (the number of row pointers)")?;
+    if filled1 < 2 || filled1 > nb0 + 1 {
+        return Err(tok.error(format!(
+            "filled1 is {filled1}: expected 2 ≤ filled1 ≤ blocknumber0 + 1 = {} (one row pointer per block row up to \
+             the last nonempty one, plus one)",
+            nb0 + 1
+        )));
+    }
+    let filled2 = tok.integer("filled2 (the number of stored blocks)")?;
+    if filled2 != nbblocks {
+        return Err(tok.error(format!("filled2 is {filled2} but nbblocks is {nbblocks}: they must be equal")));
+    }
+    if filled2 > nb0 * nb1 {
+        return Err(tok.error(format!("filled2 is {filled2}: more blocks than the {nb0} × {nb1} block positions of M")));
+    }
+    let mut rowptr = Vec::with_capacity(filled1);
+    for r in 0..filled1 {
+        let p = tok.integer(&format!("index1_data[{r}] (row pointer of block row {r})"))?;
+        let ok = if r == 0 { p == 0 } else { p >= rowptr[r - 1] && p <= filled2 };
+        if !ok {
+            let expected = if r == 0 {
+                "0".to_string()
+            } else {
+                format!("between index1_data[{}] = {} and filled2 = {filled2}", r - 1, rowptr[r - 1])
+            };
+            return Err(tok.error(format!("index1_data[{r}] is {p}: expected {expected}")));
+        }
+        rowptr.push(p);
+    }
+    if rowptr[filled1 - 1] != filled2 {
+        return Err(tok.error(format!(
+            "index1_data[{}] is {}: the last row pointer must be filled2 = {filled2}",
+            filled1 - 1,
+            rowptr[filled1 - 1]
+        )));
+    }
+    let mut blockcol = Vec::with_capacity(filled2);
+    for b in 0..filled2 {
+        let c = tok.integer(&format!("index2_data[{b}] (block column of block {b})"))?;
+        if c >= nb1 {
+            return Err(tok.error(format!("index2_data[{b}] is {c}: expected a block column < blocknumber1 = {nb1}")));
+        }
+        blockcol.push(c);
+    }
+    let mut seen = vec![false; nb0 * nb1];
+    for r in 0..filled1 - 1 {
+        for b in rowptr[r]..rowptr[r + 1] {
+            let c = blockcol[b];
+            if std::mem::replace(&mut seen[r * nb1 + c], true) {
+                return Err(
+                    tok.error(format!("index2_data[{b}] is {c}: block ({r}, {c}) is stored twice in block row {r}"))
+                );
+            }
+        }
+    }
+    for r in 0..filled1 - 1 {
+        for b in rowptr[r]..rowptr[r + 1] {
+            let c = blockcol[b];
+            let number = tok.integer(&format!("the number of block {b}"))?;
+            if number != b {
+                return Err(tok.error(format!("block number {number} where block {b} was expected (blocks in order)")));
+            }
+            let (r0, r1, c0, c1) = (start0[r], start0[r + 1], start1[c], start1[c + 1]);
+            let rows = r1 - r0;
+            for k in 0..rows * (c1 - c0) {
+                let (i, j) = (r0 + k % rows, c0 + k / rows);
+                data[j * n + i] = tok.number(|| {
+                    format!(
+                        "M[{}, {}] (entry {} of block {b}, rows {}..{}, columns {}..{}, column-major)",
+                        i + 1,
+                        j + 1,
+                        k + 1,
+                        r0 + 1,
+                        r1,
+                        c0 + 1,
+                        c1
+                    )
+                })?;
+            }
+        }
+    }
+    Ok(data)
+}
+
+/// Read `nb` cumulative block sizes (`blocksize0` or `blocksize1`) and return the block starts `[0, s₀, …, n]`:
+/// block r spans `start[r] .. start[r + 1]`.
+fn cumulative_sizes(tok: &mut Tokens, nb: usize, n: usize, name: &str, dim: &str) -> Result<Vec<usize>> {
+    let mut start = vec![0];
+    for r in 0..nb {
+        let s = tok.integer(&format!("{name}[{r}] (cumulative {dim} count of block {r})"))?;
+        let prev = start[r];
+        if s <= prev {
+            return Err(
+                tok.error(format!("{name}[{r}] is {s}: the cumulative {dim} counts must increase (previous {prev})"))
+            );
+        }
+        start.push(s);
+    }
+    if start[nb] != n {
+        return Err(tok.error(format!(
+            "{name}[{}] is {}: the cumulative {dim} counts must end at n = {n}",
+            nb - 1,
+            start[nb]
+        )));
+    }
+    Ok(start)
 }
 
 /// Write in the same format, full round-trip precision, atomically (a temporary file renamed into place).
@@ -195,12 +376,18 @@ impl<'a> Tokens<'a> {
     }
 
     fn next(&mut self, what: &str) -> Result<&'a str> {
+        self.next_with(|| what.to_string())
+    }
+
+    /// The next token; `what` describes it in an error and is called only then (building the description of
+    /// each of the n² entries of M up front took most of the time of reading a large file).
+    fn next_with(&mut self, what: impl Fn() -> String) -> Result<&'a str> {
         self.skip_space();
         let rest = &self.text[self.pos..];
         if rest.is_empty() {
             return Err(self.error_at(
                 self.line,
-                format!("unexpected end of file after {} number(s): expected {what}", self.count),
+                format!("unexpected end of file after {} number(s): expected {}", self.count, what()),
             ));
         }
         let len = rest.find(char::is_whitespace).unwrap_or(rest.len());
@@ -223,12 +410,12 @@ impl<'a> Tokens<'a> {
         Ok(n)
     }
 
-    fn number(&mut self, what: &str) -> Result<f64> {
-        let t = self.next(what)?;
+    fn number(&mut self, what: impl Fn() -> String) -> Result<f64> {
+        let t = self.next_with(&what)?;
         match t.parse::<f64>() {
             Ok(v) if v.is_finite() => Ok(v),
-            Ok(_) => Err(self.error(format!("{what} is `{t}`: entries must be finite"))),
-            Err(_) => Err(self.error(format!("expected {what} (a number), found `{t}`"))),
+            Ok(_) => Err(self.error(format!("{} is `{t}`: entries must be finite", what()))),
+            Err(_) => Err(self.error(format!("expected {} (a number), found `{t}`", what()))),
         }
     }
 
@@ -285,7 +472,8 @@ mod tests {
         assert!(msg("2\n0\n2\n2\n2 2\n1 2\n3 4\n-1 inf\n").contains("finite"));
         assert!(msg("2\n0\n2\n2\n2 2\n1 2\n3 4\n-1\n").contains("end of file after 11 number(s): expected q[2]"));
         assert!(msg("2\n0\n2\n2\n2 2\n1 2\n3 4\n-1 -1\n\n7 8\n").contains("line 10: 2 extra number(s)"));
-        assert!(matches!(parse("2\n1\n2\n2\n", p()), Err(Error::Unsupported { .. })));
+        assert!(matches!(parse("2\n2\n2\n2\n", p()), Err(Error::Unsupported { .. })));
+        assert!(matches!(parse("2\n7\n2\n2\n", p()), Err(Error::Unsupported { .. })));
         // A remark may start with a word that Rust would parse as a float.
         assert!(parse("1\n0\n1\n1\n1 1\n2\n-1\nInfinity of solutions? no.\n", p()).is_ok());
     }
@@ -302,5 +490,79 @@ mod tests {
             }
         }
         assert!(back.q.iter().zip(&lcp.q).all(|(a, b)| a.to_bits() == b.to_bits()));
+    }
+
+    /// `lcp_ortiz_block.dat` of Siconos' collection, as `SBM_write_in_file` wrote it (one number per line, tabs after
+    /// the integers of a list). Its dense equivalent is `lcp_ortiz.dat`: by rows, M = [[3, 1, 0, −1], [−1, 2, 1, 1],
+    /// [0, 1, 3, −1], [0, 0, 1, 2]], q = (−2, 1, −1, 1) (read off the dense file, whose lines are columns).
+    const ORTIZ_BLOCK: &str = "4\n1\n4\n4\n4\n2\n2\n2\t4\t\n2\t4\t\n3\n4\n0\t2\t4\t\n0\t1\t0\t1\t\n\
+        0\n 3.0e+00\n -1.0e+00\n 1.0e+00\n 2.0e+00\n\
+        1\n 0.0e+00\n 1.0e+00\n -1.0e+00\n 1.0e+00\n\
+        2\n 0.0e+00\n 0.0e+00\n 1.0e+00\n 0.0e+00\n\
+        3\n 3.0e+00\n 1.0e+00\n -1.0e+00\n 2.0e+00\n\
+         -2.0e+00  1.0e+00  -1.0e+00  1.0e+00 ";
+
+    fn dense_rows(lcp: &Lcp) -> Vec<Vec<f64>> {
+        (0..lcp.size()).map(|i| (0..lcp.size()).map(|j| lcp.m[(i, j)]).collect()).collect()
+    }
+
+    #[test]
+    fn reads_the_sparse_block_layout() {
+        let lcp = parse(ORTIZ_BLOCK, p()).expect("valid file");
+        let rows = [[3.0, 1.0, 0.0, -1.0], [-1.0, 2.0, 1.0, 1.0], [0.0, 1.0, 3.0, -1.0], [0.0, 0.0, 1.0, 2.0]];
+        assert_eq!(dense_rows(&lcp), rows.map(|r| r.to_vec()).to_vec());
+        assert_eq!(lcp.q, vec![-2.0, 1.0, -1.0, 1.0]);
+    }
+
+    #[test]
+    fn sparse_block_with_unequal_blocks_and_missing_ones() {
+        // Hand-made: n = 3, block rows {0} and {1, 2}, block columns {0, 1} and {2}; stored: block 0 = (row 0,
+        // column block 0) = M[0, 0..2] = [1, 2]; block 1 = (row block 1, column block 1) = M[1..3, 2] = [5, 6]; the
+        // blocks (0, 1) and (1, 0) are absent, hence zero. Dense equivalent, by rows: [[1, 2, 0], [0, 0, 5],
+        // [0, 0, 6]], q = (−1, −2, −3). Entries of block 0 are column-major over a 1 × 2 block: 1 then 2.
+        let text = "3\n1\n3\n3\n2\n2\n2\n1 3\n2 3\n3\n2\n0 1 2\n0 1\n0\n1\n2\n1\n5\n6\n-1 -2 -3\n";
+        let lcp = parse(text, p()).expect("valid file");
+        assert_eq!(dense_rows(&lcp), vec![vec![1.0, 2.0, 0.0], vec![0.0, 0.0, 5.0], vec![0.0, 0.0, 6.0]]);
+        assert_eq!(lcp.q, vec![-1.0, -2.0, -3.0]);
+        // A last block row without blocks is not listed (filled1 = 2 < blocknumber0 + 1): dense [[0, 7], [0, 0]].
+        let lcp = parse("2\n1\n2\n2\n1\n2\n2\n1 2\n1 2\n2\n1\n0 1\n1\n0\n7\n1 1\n", p()).expect("valid");
+        assert_eq!(dense_rows(&lcp), vec![vec![0.0, 7.0], vec![0.0, 0.0]]);
+        // nbblocks = 0: M = 0 and nothing else of the matrix follows.
+        let lcp = parse("2\n1\n2\n2\n0\n3 4\n", p()).expect("valid");
+        assert_eq!(dense_rows(&lcp), vec![vec![0.0, 0.0], vec![0.0, 0.0]]);
+        assert_eq!(lcp.q, vec![3.0, 4.0]);
+    }
+
+    #[test]
+    fn malformed_sparse_block_files_are_errors_with_line_numbers() {
+        // Start from the valid one-line-per-number 2 × 2 file (one block) and break one thing at a time.
+        //            1  2  3  4  5  6  7  8  9  10 11 12  13 14  15 16 17 18 19 (line)
+        let good =
+            ["2", "1", "2", "2", "1", "1", "1", "2", "2", "2", "1", "0 1", "0", "0", "2", "1", "1", "2", "-5 -6"];
+        let with = |line: usize, text: &str| {
+            let mut v = good.to_vec();
+            v[line - 1] = text;
+            v.join("\n")
+        };
+        let lcp = parse(&good.join("\n"), p()).expect("the base file is valid");
+        assert_eq!(dense_rows(&lcp), vec![vec![2.0, 1.0], vec![1.0, 2.0]]);
+        assert!(msg(&with(3, "3")).contains("line 3: size0 (rows of M) is 3"));
+        assert!(msg(&with(6, "3")).contains("line 6: blocknumber0 is 3"));
+        assert!(msg(&with(8, "3")).contains("line 8: blocksize0[0] is 3: the cumulative row counts must end at n = 2"));
+        assert!(msg(&with(9, "0")).contains("line 9: blocksize1[0] is 0: the cumulative column counts must increase"));
+        assert!(msg(&with(10, "3")).contains("line 10: filled1 is 3"));
+        assert!(msg(&with(11, "2")).contains("line 11: filled2 is 2 but nbblocks is 1"));
+        assert!(msg(&with(12, "1 1")).contains("line 12: index1_data[0] is 1: expected 0"));
+        assert!(msg(&with(12, "0 0")).contains("line 12: index1_data[1] is 0: the last row pointer must be filled2"));
+        assert!(msg(&with(13, "1")).contains("line 13: index2_data[0] is 1: expected a block column < blocknumber1"));
+        assert!(msg(&with(14, "5")).contains("line 14: block number 5 where block 0 was expected"));
+        assert!(msg(&with(16, "x")).contains("line 16: expected M[2, 1] (entry 2 of block 0, rows 1..2, columns 1..2"));
+        assert!(msg(&with(19, "-5")).contains("expected q[2]"));
+        assert!(msg(&with(19, "-5 -6 7")).contains("line 19: 1 extra number(s)"));
+        // The same block twice in a row: one block row, two block columns, both stored blocks in block column 0.
+        let twice = "2\n1\n2\n2\n2\n1\n2\n2\n1 2\n2\n2\n0 2\n0 0\n0\n1\n1\n1\n1\n1\n-1 -1\n";
+        assert!(msg(twice).contains("line 13: index2_data[1] is 0: block (0, 0) is stored twice"));
+        // Truncated in the middle of a block.
+        assert!(msg(&good[..16].join("\n")).contains("line 16: unexpected end of file"));
     }
 }

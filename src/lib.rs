@@ -45,6 +45,7 @@ pub mod halfplane;
 pub mod hertz;
 pub mod io;
 pub mod lcp_io;
+pub mod lcp_residual;
 pub mod mesh;
 pub mod plot;
 pub mod post;

@@ -1,0 +1,221 @@
+//! Residuals of a solution of an LCP `w = M z + q`, `w ≥ 0`, `z ≥ 0`, `wᵀz = 0`, scaled so that round-off reads as
+//! round-off, and a timed solve of an LCP by one of rollbem's Lemke engines (what `rollbem lcp solve` reports).
+//!
+//! ## The scale
+//! Every w-type residual is divided by the **data scale**
+//!
+//! ```text
+//!   s = max(‖q‖∞, ‖M‖∞ ‖z‖∞)        ‖M‖∞ = maxᵢ Σⱼ |Mᵢⱼ|  (the largest absolute row sum)
+//! ```
+//!
+//! Why: wᵢ = Σⱼ Mᵢⱼ zⱼ + qᵢ is a sum of terms bounded by |qᵢ| and Σⱼ |Mᵢⱼ| |zⱼ| ≤ ‖M‖∞ ‖z‖∞, so floating-point
+//! evaluation errs by about ε·(‖q‖∞ + ‖M‖∞ ‖z‖∞) ≤ 2ε s (Higham, *Accuracy and Stability of Numerical Algorithms*,
+//! §3.1, for inner products). Divided by s, a solution exact to round-off reads as a few ε (≈ 1e-16) however small w
+//! is, and a wrong one reads as O(1). The alternatives fail one way or the other:
+//! - dividing by max|w| (what `lcp solve` printed before) makes round-off read as 1 when the exact w is zero, as in
+//!   every problem whose solution has w = 0 (Siconos' `lcp_deudeu`, `lcp_trivial`, `lcp_CPS_4`: "0.57", "1.0");
+//! - dividing by ‖q‖ (Siconos' `lcp_compute_error`, with ‖·‖₂) ignores the size of M z: when z is large because M
+//!   is nearly singular, the cancellation in M z + q leaves round-off of order ε ‖M‖ ‖z‖ ≫ ε ‖q‖ (Siconos'
+//!   `lcp_tobenna`: z up to 570 with |q| ≤ 1, so an exact Lemke answer shows `lcp_compute_error` ≈ 1e-12 while
+//!   its s-scaled residual is ≈ 1e-16). s contains ‖q‖∞, so it is never smaller than Siconos' scale in ∞-norm.
+//!
+//! z-type quantities are scaled by ‖z‖∞ (the negativity of z), and complementarity by s·‖z‖∞, so all residuals are
+//! dimensionless whatever the units of z and w. For comparison with Siconos, [`LcpResiduals::siconos_error`] is
+//! Siconos' own measure, ‖z − max(0, z − w)‖₂ / ‖q‖₂ with w = M z + q (divided by 1 when ‖q‖₂ ≤ ε, as Siconos does).
+
+use crate::solvers::lemke::{self, LemkeOutcome, LemkeSettings};
+use crate::solvers::Lcp;
+use serde::Serialize;
+use std::time::Instant;
+
+/// Residuals of (z, w) for an LCP, each dimensionless (see the module docs for the scale).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct LcpResiduals {
+    /// The data scale s = max(‖q‖∞, ‖M‖∞ ‖z‖∞) the w-type residuals are divided by.
+    pub scale: f64,
+    /// Infeasibility of w: maxᵢ max(0, −wᵢ) / s.
+    pub negative_w: f64,
+    /// Infeasibility of z: maxᵢ max(0, −zᵢ) / ‖z‖∞ (0 when z = 0).
+    pub negative_z: f64,
+    /// Complementarity: maxᵢ |wᵢ zᵢ| / (s ‖z‖∞) (0 when z = 0).
+    pub complementarity: f64,
+    /// Consistency of the given w with z: maxᵢ |wᵢ − (M z + q)ᵢ| / s.
+    pub equation: f64,
+    /// The largest of the four above.
+    pub max: f64,
+    /// Siconos' `lcp_compute_error`: ‖z − max(0, z − w)‖₂ / ‖q‖₂ with w = M z + q recomputed from z.
+    pub siconos_error: f64,
+}
+
+/// Residuals of a candidate solution (z, w) of `lcp` (w as reported by the solver; it is also checked against
+/// M z + q). Non-finite entries give non-finite residuals.
+///
+/// # Panics
+/// If z or w does not have the size of the LCP.
+pub fn residuals(lcp: &Lcp, z: &[f64], w: &[f64]) -> LcpResiduals {
+    let n = lcp.size();
+    assert!(z.len() == n && w.len() == n, "z and w must have the size of the LCP ({n})");
+    let inf = |v: &[f64]| v.iter().fold(0.0_f64, |a, x| a.max(x.abs()));
+    let m_inf = (0..n).map(|i| (0..n).map(|j| lcp.m[(i, j)].abs()).sum::<f64>()).fold(0.0_f64, f64::max);
+    let (q_inf, z_inf) = (inf(&lcp.q), inf(z));
+    let scale = q_inf.max(m_inf * z_inf);
+    // s = 0 only when q = 0 and M z = 0 term by term: then w = 0 exactly and any nonzero w is wrong whatever its size.
+    let s = if scale > 0.0 { scale } else { f64::MIN_POSITIVE };
+    let zs = if z_inf > 0.0 { z_inf } else { 1.0 };
+    let mz_q = lcp.w_of(z);
+    let mut r = LcpResiduals {
+        scale,
+        negative_w: 0.0,
+        negative_z: 0.0,
+        complementarity: 0.0,
+        equation: 0.0,
+        max: 0.0,
+        siconos_error: 0.0,
+    };
+    let nan_max = |a: f64, b: f64| if a.is_nan() || b.is_nan() { f64::NAN } else { a.max(b) };
+    let mut natural = 0.0;
+    for i in 0..n {
+        r.negative_w = nan_max(r.negative_w, (-w[i]).max(0.0) / s);
+        r.negative_z = nan_max(r.negative_z, (-z[i]).max(0.0) / zs);
+        r.complementarity = nan_max(r.complementarity, (w[i] * z[i]).abs() / (s * zs));
+        r.equation = nan_max(r.equation, (w[i] - mz_q[i]).abs() / s);
+        let d = z[i] - (z[i] - mz_q[i]).max(0.0);
+        natural += d * d;
+    }
+    let q2 = lcp.q.iter().map(|v| v * v).sum::<f64>().sqrt();
+    r.siconos_error = natural.sqrt() / if q2 > f64::EPSILON { q2 } else { 1.0 };
+    r.max = [r.negative_w, r.negative_z, r.complementarity, r.equation].into_iter().fold(0.0, nan_max);
+    r
+}
+
+/// The LCP solvers of `rollbem lcp solve`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LcpSolver {
+    /// [`lemke::solve`]: the block-revised engine.
+    Lemke,
+    /// [`lemke::solve_dense`]: the dense reference engine.
+    LemkeDense,
+}
+
+impl LcpSolver {
+    /// The solver of a command-line name (`lemke`, `lemke_dense`).
+    pub fn parse(name: &str) -> Option<Self> {
+        match name {
+            "lemke" => Some(LcpSolver::Lemke),
+            "lemke_dense" => Some(LcpSolver::LemkeDense),
+            _ => None,
+        }
+    }
+
+    /// The command-line name.
+    pub fn name(self) -> &'static str {
+        match self {
+            LcpSolver::Lemke => "lemke",
+            LcpSolver::LemkeDense => "lemke_dense",
+        }
+    }
+}
+
+/// A solve of an LCP: the solver's outcome, its residuals and the wall time of the solve.
+#[derive(Debug, Clone)]
+pub struct LcpSolve {
+    /// What the solver returned.
+    pub outcome: LemkeOutcome,
+    /// [`residuals`] of the returned (z, w).
+    pub residuals: LcpResiduals,
+    /// Wall time of the solver call alone, in seconds (not reading the file, not the residuals).
+    pub solve_time_s: f64,
+}
+
+/// Solve `lcp` with `solver`, timing the solver call alone, and compute the residuals of its answer.
+pub fn solve_timed(lcp: &Lcp, solver: LcpSolver, settings: &LemkeSettings) -> LcpSolve {
+    let start = Instant::now();
+    let outcome = match solver {
+        LcpSolver::Lemke => lemke::solve(lcp, settings),
+        LcpSolver::LemkeDense => lemke::solve_dense(lcp, settings),
+    };
+    let solve_time_s = start.elapsed().as_secs_f64();
+    let residuals = residuals(lcp, &outcome.z, &outcome.w);
+    LcpSolve { outcome, residuals, solve_time_s }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::solvers::Status;
+    use faer::Mat;
+
+    fn lcp(rows: &[&[f64]], q: &[f64]) -> Lcp {
+        let n = q.len();
+        Lcp { m: Mat::from_fn(n, n, |i, j| rows[i][j]), q: q.to_vec() }
+    }
+
+    /// Siconos' `lcp_deudeu.dat`: M = [[2, 1], [1, 2]], q = (−5, −6); by hand z = M⁻¹(−q) = (4/3, 7/3), w = 0.
+    fn deudeu() -> Lcp {
+        lcp(&[&[2.0, 1.0], &[1.0, 2.0]], &[-5.0, -6.0])
+    }
+
+    #[test]
+    fn round_off_reads_as_round_off() {
+        // The exact solution is z = (4/3, 7/3), w = 0 (by hand); rollbem's Lemke returns it to round-off, with a w
+        // that is round-off but not zero (the old max|w| scaling printed this answer as 0.57 and 1.0).
+        let p = deudeu();
+        let solved = solve_timed(&p, LcpSolver::Lemke, &LemkeSettings::default());
+        let (z, w) = (&solved.outcome.z, &solved.outcome.w);
+        assert_eq!(solved.outcome.status, Status::Solved);
+        assert!((z[0] - 4.0 / 3.0).abs() < 1e-15 && (z[1] - 7.0 / 3.0).abs() < 1e-15, "z = {z:?}");
+        assert!(w.iter().any(|&v| v != 0.0) && w.iter().all(|v| v.abs() < 1e-14), "w = {w:?}");
+        let r = solved.residuals;
+        assert_eq!(r, residuals(&p, z, w));
+        // s = max(‖q‖∞ = 6, ‖M‖∞ ‖z‖∞ = 3 · 7/3 = 7) = 7 (by hand).
+        assert!((r.scale - 7.0).abs() < 1e-14);
+        assert!(r.max < 4.0 * f64::EPSILON && r.siconos_error < 4.0 * f64::EPSILON, "{r:?}");
+        assert!(solved.solve_time_s >= 0.0 && solved.solve_time_s.is_finite());
+    }
+
+    #[test]
+    fn wrong_solutions_read_as_order_one() {
+        let p = deudeu();
+        // z = 0 is feasible but w = q = (−5, −6): max(0, −w)/s = 6/6 = 1 (s = ‖q‖∞ = 6 as z = 0).
+        let r = residuals(&p, &[0.0, 0.0], &p.q);
+        assert!((r.negative_w - 1.0).abs() < 1e-15 && r.max == r.negative_w, "{r:?}");
+        // z = (3, 0): w = (1, −3), w₁ z₁ = 3 ≠ 0 and w₂ < 0. s = max(6, 3 · 3) = 9; complementarity 3/(9·3) = 1/9,
+        // negative w 3/9 = 1/3.
+        let z = [3.0, 0.0];
+        let r = residuals(&p, &z, &p.w_of(&z));
+        assert!((r.negative_w - 1.0 / 3.0).abs() < 1e-15 && (r.complementarity - 1.0 / 9.0).abs() < 1e-15, "{r:?}");
+        // A w that does not match z, and a negative z.
+        // (w₁ z₁ = 4/3, s ‖z‖∞ = 7 · 7/3: complementarity 4/49; |w − (M z + q)| = 1: equation 1/7.)
+        let r = residuals(&p, &[4.0 / 3.0, 7.0 / 3.0], &[1.0, 0.0]);
+        assert!((r.equation - 1.0 / 7.0).abs() < 1e-14 && (r.complementarity - 4.0 / 49.0).abs() < 1e-14, "{r:?}");
+        let r = residuals(&p, &[-1.0, 2.0], &p.w_of(&[-1.0, 2.0]));
+        assert!((r.negative_z - 0.5).abs() < 1e-15, "{r:?}");
+        // Non-finite input is reported, not hidden.
+        assert!(residuals(&p, &[f64::NAN, 0.0], &[0.0, 0.0]).max.is_nan());
+    }
+
+    #[test]
+    fn large_z_from_a_nearly_singular_m_is_judged_on_its_own_scale() {
+        // M = [[1, −1], [−1, 1 + δ]] (positive definite, det δ = 1e−8), q = (−1, 1 − 1e6 δ). Solved by hand: w = 0
+        // gives z₁ − z₂ = 1 and δ (z₂ − 1e6) = 0, so z = (1e6 + 1, 1e6) with ‖q‖ ≈ 1. The terms of M z + q are ≈ 1e6,
+        // so an answer exact to round-off has w ≈ ε·1e6: the data scale s ≈ 2e6 reads it as ≈ 1e−16, Siconos'
+        // ‖q‖ scaling as ≈ 1e−10 (observed with this Lemke answer: 5.8e−17 against 8.3e−11).
+        let d = 1e-8;
+        let p = lcp(&[&[1.0, -1.0], &[-1.0, 1.0 + d]], &[-1.0, 1.0 - d * 1e6]);
+        let out = solve_timed(&p, LcpSolver::LemkeDense, &LemkeSettings::default());
+        assert_eq!(out.outcome.status, Status::Solved, "{}", out.outcome.message);
+        // z itself is only as accurate as the conditioning (κ ≈ 4e8) allows.
+        assert!((out.outcome.z[1] - 1e6).abs() < 1e-6 * 1e6, "z = {:?}", out.outcome.z);
+        let r = out.residuals;
+        assert!(r.scale > 1e6 && r.max < 1e-15, "{r:?}");
+        assert!(r.siconos_error > 1e-12, "the ‖q‖ scaling overstates this round-off: {r:?}");
+    }
+
+    #[test]
+    fn solver_names_round_trip() {
+        for s in [LcpSolver::Lemke, LcpSolver::LemkeDense] {
+            assert_eq!(LcpSolver::parse(s.name()), Some(s));
+        }
+        assert_eq!(LcpSolver::parse("pgs"), None);
+    }
+}
