@@ -139,6 +139,46 @@ pub fn make_checks(
             }
         }
     }
+    // Carter where it applies (steady rolling, β = 0).
+    let elem = element_length;
+    for r in runs.iter().filter(|r| r.contact.is_some()) {
+        let m = crate::references::metrics(scene, r);
+        let (Some(qm), Some(qe), Some(ce), Some(cerr)) =
+            (m.carter_q_over_mup, m.carter_q_over_mup_exact, m.carter_c_over_a_exact, m.carter_c_err_elements)
+        else {
+            continue;
+        };
+        let t = scene.checks.cattaneo_elements.unwrap_or(tol::CATTANEO_ELEMENTS);
+        let a = crate::references::hertz_at(scene, r.resultants.map_or(0.0, |x| x.normal)).half_width;
+        // One element of stick zone moves Q/(μP) = 1 − (c/a)² by about 2(c/a)(h/a) + (h/a)².
+        let tq = t * (2.0 * ce * elem / a + (elem / a).powi(2));
+        out.push(Check {
+            name: format!("{}: Carter Q/(μP)", r.solver),
+            measured: qm,
+            reference: qe,
+            error: (qm - qe).abs(),
+            tolerance: tq,
+            pass: (qm - qe).abs() <= tq,
+        });
+        out.push(Check {
+            name: format!("{}: Carter stick-zone half-width c (error in elements)", r.solver),
+            measured: m.carter_c_over_a.unwrap_or(0.0),
+            reference: ce,
+            error: cerr.abs(),
+            tolerance: t,
+            pass: cerr.abs() <= t,
+        });
+        if let Some(centre) = m.carter_centre_err_elements {
+            out.push(Check {
+                name: format!("{}: Carter stick zone at the leading edge (centre error, elements)", r.solver),
+                measured: centre,
+                reference: 0.0,
+                error: centre.abs(),
+                tolerance: t,
+                pass: centre.abs() <= t,
+            });
+        }
+    }
     // Solvers against each other: pressures and shears relative to the peak pressure, and active sets.
     let solved: Vec<&SolverRun> = runs.iter().filter(|r| r.contact.is_some()).collect();
     let mu = scene.contact.friction;

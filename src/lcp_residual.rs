@@ -23,8 +23,8 @@
 //! dimensionless whatever the units of z and w. For comparison with Siconos, [`LcpResiduals::siconos_error`] is
 //! Siconos' own measure, ‖z − max(0, z − w)‖₂ / ‖q‖₂ with w = M z + q (divided by 1 when ‖q‖₂ ≤ ε, as Siconos does).
 
-use crate::solvers::lemke::{self, LemkeOutcome, LemkeSettings};
-use crate::solvers::Lcp;
+use crate::solvers::lemke::LemkeOutcome;
+use crate::solvers::{Lcp, Solver};
 use serde::Serialize;
 use std::time::Instant;
 
@@ -88,34 +88,6 @@ pub fn residuals(lcp: &Lcp, z: &[f64], w: &[f64]) -> LcpResiduals {
     r
 }
 
-/// The LCP solvers of `rollbem lcp solve`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum LcpSolver {
-    /// [`lemke::solve`]: the block-revised engine.
-    Lemke,
-    /// [`lemke::solve_dense`]: the dense reference engine.
-    LemkeDense,
-}
-
-impl LcpSolver {
-    /// The solver of a command-line name (`lemke`, `lemke_dense`).
-    pub fn parse(name: &str) -> Option<Self> {
-        match name {
-            "lemke" => Some(LcpSolver::Lemke),
-            "lemke_dense" => Some(LcpSolver::LemkeDense),
-            _ => None,
-        }
-    }
-
-    /// The command-line name.
-    pub fn name(self) -> &'static str {
-        match self {
-            LcpSolver::Lemke => "lemke",
-            LcpSolver::LemkeDense => "lemke_dense",
-        }
-    }
-}
-
 /// A solve of an LCP: the solver's outcome, its residuals and the wall time of the solve.
 #[derive(Debug, Clone)]
 pub struct LcpSolve {
@@ -127,16 +99,14 @@ pub struct LcpSolve {
     pub solve_time_s: f64,
 }
 
-/// Solve `lcp` with `solver`, timing the solver call alone, and compute the residuals of its answer.
-pub fn solve_timed(lcp: &Lcp, solver: LcpSolver, settings: &LemkeSettings) -> LcpSolve {
+/// Solve `lcp` with a registered solver that works on bare LCPs ([`crate::solvers::Solver::solves_lcp`]), timing
+/// the solver call alone, and compute the residuals of its answer; `None` for a solver that does not solve LCPs.
+pub fn solve_timed(lcp: &Lcp, solver: &dyn Solver) -> Option<LcpSolve> {
     let start = Instant::now();
-    let outcome = match solver {
-        LcpSolver::Lemke => lemke::solve(lcp, settings),
-        LcpSolver::LemkeDense => lemke::solve_dense(lcp, settings),
-    };
+    let outcome = solver.solve_lcp(lcp)?;
     let solve_time_s = start.elapsed().as_secs_f64();
     let residuals = residuals(lcp, &outcome.z, &outcome.w);
-    LcpSolve { outcome, residuals, solve_time_s }
+    Some(LcpSolve { outcome, residuals, solve_time_s })
 }
 
 #[cfg(test)]
@@ -160,7 +130,7 @@ mod tests {
         // The exact solution is z = (4/3, 7/3), w = 0 (by hand); rollbem's Lemke returns it to round-off, with a w
         // that is round-off but not zero (the old max|w| scaling printed this answer as 0.57 and 1.0).
         let p = deudeu();
-        let solved = solve_timed(&p, LcpSolver::Lemke, &LemkeSettings::default());
+        let solved = solve_timed(&p, crate::solvers::build("lemke", None).unwrap().as_ref()).unwrap();
         let (z, w) = (&solved.outcome.z, &solved.outcome.w);
         assert_eq!(solved.outcome.status, Status::Solved);
         assert!((z[0] - 4.0 / 3.0).abs() < 1e-15 && (z[1] - 7.0 / 3.0).abs() < 1e-15, "z = {z:?}");
@@ -202,7 +172,7 @@ mod tests {
         // ‖q‖ scaling as ≈ 1e−10 (observed with this Lemke answer: 5.8e−17 against 8.3e−11).
         let d = 1e-8;
         let p = lcp(&[&[1.0, -1.0], &[-1.0, 1.0 + d]], &[-1.0, 1.0 - d * 1e6]);
-        let out = solve_timed(&p, LcpSolver::LemkeDense, &LemkeSettings::default());
+        let out = solve_timed(&p, crate::solvers::build("lemke_dense", None).unwrap().as_ref()).unwrap();
         assert_eq!(out.outcome.status, Status::Solved, "{}", out.outcome.message);
         // z itself is only as accurate as the conditioning (κ ≈ 4e8) allows.
         assert!((out.outcome.z[1] - 1e6).abs() < 1e-6 * 1e6, "z = {:?}", out.outcome.z);
@@ -212,10 +182,11 @@ mod tests {
     }
 
     #[test]
-    fn solver_names_round_trip() {
-        for s in [LcpSolver::Lemke, LcpSolver::LemkeDense] {
-            assert_eq!(LcpSolver::parse(s.name()), Some(s));
+    fn only_solvers_of_bare_lcps_solve_files() {
+        let p = deudeu();
+        for name in ["lemke", "lemke_dense"] {
+            assert!(solve_timed(&p, crate::solvers::build(name, None).unwrap().as_ref()).is_some(), "{name}");
         }
-        assert_eq!(LcpSolver::parse("pgs"), None);
+        assert!(solve_timed(&p, crate::solvers::build("pgs", None).unwrap().as_ref()).is_none());
     }
 }

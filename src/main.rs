@@ -139,20 +139,30 @@ fn lcp_cmd(cmd: LcpCmd) -> rollbem::Result<i32> {
                 message: format!("`{solver}` does not solve LCP files (expected one of: {})", lcp_solvers.join(", ")),
             };
             let built = rollbem::solvers::build(&solver, None).map_err(|_| bad())?;
-            let out = built.solve_lcp(&lcp).ok_or_else(bad)?;
-            let n = lcp.size();
-            let zmax = out.z.iter().fold(0.0_f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
-            let wmax = out.w.iter().fold(0.0_f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
-            let comp = (0..n).map(|i| (out.w[i] * out.z[i]).abs()).fold(0.0, f64::max) / (zmax * wmax);
-            let neg_w = (-out.w.iter().cloned().fold(f64::INFINITY, f64::min)).max(0.0) / wmax;
-            say!("status {}  pivots {}  size {}", out.status, out.pivots, n);
-            say!("complementarity max|w z|/(|w| |z|) {comp:.3e}, max(0, −w)/|w| {neg_w:.3e}");
+            let run = rollbem::lcp_residual::solve_timed(&lcp, built.as_ref()).ok_or_else(bad)?;
+            let (out, r) = (&run.outcome, &run.residuals);
+            say!(
+                "status {}  pivots {}  size {}  solve time {:.3e} s",
+                out.status,
+                out.pivots,
+                lcp.size(),
+                run.solve_time_s
+            );
+            say!(
+                "residuals (relative to s = max(‖q‖∞, ‖M‖∞‖z‖∞) = {:.3e}): max(0, −w)/s {:.1e}, max(0, −z)/‖z‖∞ {:.1e}, \
+                 max|w z|/(s ‖z‖∞) {:.1e}, max|w − (Mz + q)|/s {:.1e}; Siconos' lcp_compute_error {:.1e}",
+                r.scale,
+                r.negative_w,
+                r.negative_z,
+                r.complementarity,
+                r.equation,
+                r.siconos_error
+            );
             say!("{}", out.message);
             if let Some(path) = json {
                 let doc = serde_json::json!({
-                    "status": out.status, "pivots": out.pivots, "message": out.message,
-                    "z": out.z, "w": out.w,
-                    "residuals": { "complementarity": comp, "negative_w": neg_w },
+                    "solver": solver, "status": out.status, "pivots": out.pivots, "message": out.message,
+                    "solve_time_s": run.solve_time_s, "z": out.z, "w": out.w, "residuals": r,
                 });
                 write_atomic(&path, &serde_json::to_string_pretty(&doc).expect("json"))?;
             }

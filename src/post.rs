@@ -104,6 +104,56 @@ pub struct ContactSummary {
     pub nodes_slip: usize,
 }
 
+/// The rolling figures of a run: the creepage and the counts of Coulomb-law inconsistencies of the slip velocities.
+fn rolling_result(
+    problem: &ContactProblem,
+    sol: &Solution,
+    r: RollingPost,
+    nodes: &[NodeResult],
+    slip_scale: f64,
+) -> RollingResult {
+    use crate::formulation::DofKind;
+    let mu = problem.law.friction;
+    let (mode, creepage, prescribed) = match r {
+        RollingPost::Seed { creepage, .. } => (crate::scene::RollingMode::Seed, Some(creepage), true),
+        RollingPost::Steady => {
+            let d = problem.dofs.iter().find(|d| d.kind == DofKind::Creepage);
+            let prescribed = d.is_some_and(|d| !d.is_load());
+            let known = sol.tangential_known || prescribed;
+            (crate::scene::RollingMode::Steady, known.then(|| problem.rigid_value(sol, DofKind::Creepage)), prescribed)
+        }
+    };
+    let scale = match r {
+        RollingPost::Steady => slip_scale,
+        RollingPost::Seed { creepage, .. } => {
+            let smax = nodes.iter().filter_map(|n| n.slip_velocity).fold(0.0_f64, |m, v| m.max(v.abs()));
+            slip_scale.max(creepage.abs()).max(smax)
+        }
+    };
+    let margin = crate::tolerances::STATE_MARGIN * scale;
+    let pscale = nodes.iter().fold(0.0_f64, |m, n| m.max(n.pressure));
+    let mut moving = 0;
+    let mut not_opposed = 0;
+    for n in nodes {
+        let Some(s) = n.slip_velocity else { continue };
+        match n.state {
+            NodeState::Stick if s.abs() > margin => moving += 1,
+            NodeState::Slip if mu > 0.0 && s * n.shear > margin * crate::tolerances::STATE_MARGIN * pscale => {
+                not_opposed += 1
+            }
+            _ => {}
+        }
+    }
+    RollingResult {
+        mode,
+        creepage,
+        creepage_prescribed: prescribed,
+        stick_nodes_moving: moving,
+        slip_nodes_not_opposed: not_opposed,
+        slip_velocity_scale: scale,
+    }
+}
+
 /// Solver-independent residuals, relative (see [`evaluate`]); null where a condition does not apply.
 #[derive(Debug, Clone, Copy, Serialize)]
 pub struct Residuals {
@@ -137,6 +187,8 @@ impl Residuals {
 /// Everything post-processing derives from one solution.
 #[derive(Debug, Clone)]
 pub struct Evaluation {
+    /// Rolling figures (when the scene rolls).
+    pub rolling: Option<RollingResult>,
     /// Per contact node.
     pub nodes: Vec<NodeResult>,
     /// Resultants.
@@ -149,32 +201,39 @@ pub struct Evaluation {
     pub residuals: Residuals,
 }
 
-/// Slip velocity s_t* of seed eq. 12 at the contact nodes: `s*(x_i) = ξ + sgn(V) (u_T(x_{i+1}) − u_T(x_i)) / h_i`,
-/// the forward difference with the neighbour the seed's formula names (i + 1, towards +x), `h_i = x_{i+1} − x_i`.
-/// At the last candidate node there is no i + 1 and the backward difference with i − 1 is used. The neighbour may be
-/// a separated node: u_T is defined there (the wheel's surface displacement), so the difference stays one-sided
-/// and first order at the contact edge rather than switching schemes. Separated nodes get `None` (no contact, no
-/// slip velocity). `u_t` and `x` in the same (dimensionless) length unit.
-pub fn slip_velocity(x: &[f64], u_t: &[f64], in_contact: &[bool], creepage: f64, direction: i32) -> Vec<Option<f64>> {
-    let n = x.len();
-    (0..n)
-        .map(|i| {
-            if !in_contact[i] || n < 2 {
-                return None;
-            }
-            let (a, b) = if i + 1 < n { (i, i + 1) } else { (i - 1, i) };
-            Some(creepage + direction as f64 * (u_t[b] - u_t[a]) / (x[b] - x[a]))
-        })
-        .collect()
+/// The rolling a scene asks for, as post-processing sees it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum RollingPost {
+    /// The seed's formulation: a static solution, then the slip velocity of eq. 12 with this creepage and rolling
+    /// direction (the same upwind operator as steady rolling, [`crate::formulation::slip::upwind`]).
+    Seed {
+        /// Creepage ξ.
+        creepage: f64,
+        /// Rolling direction ±1.
+        direction: i32,
+    },
+    /// Steady rolling: the slip velocity is the problem's own slip.
+    Steady,
 }
 
-/// Seed eq. 12 post-processing of a static solution: the rolling direction and creepage.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SeedRolling {
-    /// Creepage ξ.
-    pub creepage: f64,
-    /// sgn(V).
-    pub direction: i32,
+/// What rolling adds to a run: the creepage, and how far the slip velocities are from Coulomb's law.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct RollingResult {
+    /// `steady` or `seed`.
+    pub mode: crate::scene::RollingMode,
+    /// The creepage ξ: prescribed, or computed from the prescribed tangential load (null when indeterminate, at the
+    /// sliding limit).
+    pub creepage: Option<f64>,
+    /// Whether the creepage was prescribed (else the tangential load was, and ξ computed).
+    pub creepage_prescribed: bool,
+    /// Sticking nodes whose slip velocity is not zero (|s| above [`crate::tolerances::STATE_MARGIN`] of the slip
+    /// velocity scale): an inconsistency of Coulomb's law, expected in the seed's formulation.
+    pub stick_nodes_moving: usize,
+    /// Slipping nodes whose shear does not oppose their slip velocity (q·s > 0 beyond the same margin).
+    pub slip_nodes_not_opposed: usize,
+    /// The slip velocity scale these counts are relative to: max(|ξ|, max |s|, μ w/R) with w the candidate zone's
+    /// half-width (the creepage at which a contact of that size saturates).
+    pub slip_velocity_scale: f64,
 }
 
 /// Evaluate a solution of `problem` (with the seed's eq. 12 slip velocity when `rolling` is given).
@@ -185,7 +244,7 @@ pub struct SeedRolling {
 /// sticking material |s|(μp − |q|)/(ℓ μ p_max) and slip along the friction force max(0, s q)/(ℓ μ p_max) (the slip
 /// terms only where the tangential rigid motion is known); `equilibrium` the worst relative error of a prescribed
 /// resultant (Q relative to max(|Q|, μP), M to max(|M|, P R)).
-pub fn evaluate(problem: &ContactProblem, sol: &Solution, rolling: Option<SeedRolling>) -> Evaluation {
+pub fn evaluate(problem: &ContactProblem, sol: &Solution, rolling: Option<RollingPost>) -> Evaluation {
     let flex = problem.flex;
     let n = flex.n();
     let (l0, e) = (flex.scales.length, flex.scales.modulus);
@@ -206,10 +265,16 @@ pub fn evaluate(problem: &ContactProblem, sol: &Solution, rolling: Option<SeedRo
             NodeState::Slip
         }
     };
-    let sv: Vec<Option<f64>> = match (rolling, &k.ux) {
-        (Some(r), Some(ux)) => slip_velocity(&flex.x, ux, &in_contact, r.creepage, r.direction),
-        _ => vec![None; n],
+    // Slip velocities: the problem's own slip in steady rolling, eq. 12 applied to the static solution for the seed.
+    let sv: Option<Vec<f64>> = match (rolling, &k.ux) {
+        (Some(RollingPost::Steady), _) => k.slip.clone(),
+        (Some(RollingPost::Seed { creepage, direction }), Some(ux)) => {
+            let d = crate::formulation::slip::upwind(&flex.x, direction);
+            Some((0..n).map(|i| creepage + (0..n).map(|j| d[(i, j)] * ux[j]).sum::<f64>()).collect())
+        }
+        _ => None,
     };
+    let steady = matches!(rolling, Some(RollingPost::Steady));
     let nodes: Vec<NodeResult> = (0..n)
         .map(|i| NodeResult {
             x: flex.x[i] * l0,
@@ -219,14 +284,16 @@ pub fn evaluate(problem: &ContactProblem, sol: &Solution, rolling: Option<SeedRo
             u_x: k.ux.as_ref().filter(|_| shift_known).map(|u| u[i] * l0),
             u_y: k.uy[i] * l0,
             gap: k.gap[i] * l0,
-            slip: k.slip.as_ref().filter(|_| shift_known && h.is_some() && in_contact[i]).map(|s| s[i] * l0),
+            slip: k.slip.as_ref().filter(|_| shift_known && h.is_some() && in_contact[i] && !steady).map(|s| s[i] * l0),
             state: state(i),
-            slip_velocity: sv[i],
+            slip_velocity: sv.as_ref().filter(|_| in_contact[i]).map(|v| v[i]),
         })
         .collect();
     let contact = summary(&nodes, pmax * e, pmax.max(k.ell) * e);
+    let rolling = rolling.map(|r| rolling_result(problem, sol, r, &nodes, k.slip_scale));
     let rigid = |kind: ModeKind| problem.rigid_value(sol, kind);
     Evaluation {
+        rolling,
         nodes,
         resultants: resultants(problem, sol),
         rigid_body: RigidBody {
@@ -249,12 +316,15 @@ struct Kinematics {
     uy: Vec<f64>,
     /// u_x, rigid motion included (when the tangential blocks exist).
     ux: Option<Vec<f64>>,
-    /// The slip s = D u_x + c of the problem's slip operator.
+    /// The slip s = D u_x + c of the problem's slip operator, plus the creepage in steady rolling.
     slip: Option<Vec<f64>>,
     /// Gaps g = g₀ + u_y.
     gap: Vec<f64>,
     /// The gap scale ℓ: the largest rigid gap |g₀ + Σ r_m ρ_m| (floored at the smallest positive number).
     ell: f64,
+    /// The scale of the slip: ℓ for the static slip (a displacement); for the steady slip velocity
+    /// max(|ξ|, max |s|, μ w/R), w the candidate zone's half-width (the creepage that saturates such a contact).
+    slip_scale: f64,
 }
 
 impl Kinematics {
@@ -298,11 +368,30 @@ impl Kinematics {
             ),
             _ => None,
         };
-        let slip = ux.as_ref().map(|u| problem.slip.slip(u));
+        let creepage = problem.rigid_value(sol, crate::formulation::DofKind::Creepage);
+        let slip: Option<Vec<f64>> = ux.as_ref().map(|u| {
+            let mut s = problem.slip.slip(u);
+            if problem.slip.is_steady() {
+                s.iter_mut().for_each(|v| *v += creepage);
+            }
+            s
+        });
         let gap: Vec<f64> = (0..n).map(|i| flex.g0[i] + uy[i]).collect();
         let ell =
             (0..n).map(|i| flex.g0[i] + rig(i, false)).fold(0.0_f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
-        Kinematics { p, q, uy, ux, slip, gap, ell }
+        let slip_scale = if problem.slip.is_steady() {
+            // The creepage at which a contact of the candidate zone's half-width w saturates: μ w / R.
+            let w = 0.5 * (flex.x.last().copied().unwrap_or(0.0) - flex.x.first().copied().unwrap_or(0.0));
+            // Over the loaded nodes: a separated node's slip velocity means nothing (the leading-edge row of D).
+            let smax = slip
+                .as_ref()
+                .map_or(0.0, |s| s.iter().zip(f).filter(|(_, f)| **f > 0.0).fold(0.0_f64, |m, (v, _)| m.max(v.abs())));
+            creepage.abs().max(smax).max(problem.law.friction * w / 0.5) // R = 1/2 in units of L0
+        } else {
+            ell
+        }
+        .max(f64::MIN_POSITIVE);
+        Kinematics { p, q, uy, ux, slip, gap, ell, slip_scale }
     }
 }
 
@@ -322,7 +411,7 @@ fn resultants(problem: &ContactProblem, sol: &Solution) -> Resultants {
 fn residuals(problem: &ContactProblem, sol: &Solution, k: &Kinematics) -> Residuals {
     let n = problem.n();
     let mu = problem.law.friction;
-    let (p, q, ell) = (&k.p, &k.q, k.ell);
+    let (p, q, ell, sl) = (&k.p, &k.q, k.ell, k.slip_scale);
     let pmax = p.iter().fold(0.0_f64, |a, &v| a.max(v));
     // Pressure scale of the residuals: the peak pressure, floored by the stress a strain ℓ/L0 would cause (E = 1
     // in these units), so a solution without contact is not divided by zero.
@@ -337,8 +426,8 @@ fn residuals(problem: &ContactProblem, sol: &Solution, k: &Kinematics) -> Residu
             worst = worst.max((q[i].abs() - mu * p[i]).max(0.0) / fref);
             if let (Some(s), true) = (&k.slip, sol.tangential_known) {
                 let s = s[i];
-                worst = worst.max(s.abs() * (mu * p[i] - q[i].abs()).max(0.0) / (ell * fref));
-                worst = worst.max((s * q[i]).max(0.0) / (ell * fref));
+                worst = worst.max(s.abs() * (mu * p[i] - q[i].abs()).max(0.0) / (sl * fref));
+                worst = worst.max((s * q[i]).max(0.0) / (sl * fref));
             }
         }
         worst

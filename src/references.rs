@@ -9,12 +9,20 @@
 //!   the nodes more than 1.5 elements from ±a and ±c (where q_CM has infinite slopes and a nodal comparison
 //!   measures where the discrete edge falls, not the traction).
 //!
+//! - **Carter** (steady rolling, β = 0; Johnson, *Contact Mechanics*, §8.2; REFERENCES.md): with the creepage
+//!   prescribed, c/a = 1 − |ξ|R/(μa) (full slip for |ξ| ≥ μa/R); with the tangential load prescribed,
+//!   c/a = √(1 − |Q|/(μP)) and |ξ| = (μa/R)(1 − c/a); Q/(μP) = −sgn(ξ)(1 − (c/a)²) (ξ > 0 brakes: the friction on the
+//!   wheel is negative, [`crate::formulation::slip`]); the stick zone touches the leading edge (a − 2c < x < a
+//!   rolling towards +x), centred at d = a − c, where q = −sgn(ξ) μ p0 [√(1 − x²/a²) − (c/a)√(1 − (x − d)²/c²)];
+//!   q = −sgn(ξ) μ p in the slip zone. Errors: Q/(μP) absolute, the stick zone's half-width and centre in elements,
+//!   the RMS of |q − q_C|/(μ p0) over the loaded nodes, and the computed creepage relative to Carter's.
+//!
 //! The sweep CSVs, the reports and `rollbem check` all use these functions.
 
 use crate::hertz::Hertz;
 use crate::post::NodeState;
 use crate::results::SolverRun;
-use crate::scene::{BodyModel, Dof, Scene};
+use crate::scene::{BodyModel, Dof, RollingMode, Scene};
 use crate::tolerances::{CATTANEO_EDGE_ELEMENTS, CATTANEO_MAX_A_OVER_R_AT_NU_HALF};
 use serde::Serialize;
 
@@ -37,6 +45,67 @@ pub struct Metrics {
     pub cm_centre_elements: Option<f64>,
     /// Worst |q − q_CM| / (μ p0) away from ±a and ±c.
     pub cm_shear_err: Option<f64>,
+    /// Measured Q/(μP) of a steady-rolling run (Carter scenes).
+    pub carter_q_over_mup: Option<f64>,
+    /// Carter's Q/(μP).
+    pub carter_q_over_mup_exact: Option<f64>,
+    /// Measured stick-zone half-width over a.
+    pub carter_c_over_a: Option<f64>,
+    /// Carter's c/a.
+    pub carter_c_over_a_exact: Option<f64>,
+    /// (c − c_Carter) in contact elements.
+    pub carter_c_err_elements: Option<f64>,
+    /// (stick-zone centre − d) in contact elements.
+    pub carter_centre_err_elements: Option<f64>,
+    /// RMS of |q − q_Carter| / (μ p0) over the loaded nodes.
+    pub carter_shear_rms: Option<f64>,
+    /// |ξ − ξ_Carter| / |ξ_Carter| when the tangential load is prescribed (the creepage computed).
+    pub carter_creepage_err: Option<f64>,
+}
+
+/// The stick zone's edges (left, right), each midway between the outermost sticking node and its slipping or
+/// separated neighbour (user's units); `None` when nothing sticks.
+pub fn stick_edges(nodes: &[crate::post::NodeResult]) -> Option<(f64, f64)> {
+    let first = nodes.iter().position(|n| n.state == NodeState::Stick)?;
+    let last = nodes.iter().rposition(|n| n.state == NodeState::Stick)?;
+    let left = if first > 0 { 0.5 * (nodes[first].x + nodes[first - 1].x) } else { nodes[first].x };
+    let right = if last + 1 < nodes.len() { 0.5 * (nodes[last].x + nodes[last + 1].x) } else { nodes[last].x };
+    Some((left, right))
+}
+
+/// Hertz at load `p` with the scene's pair modulus E*.
+pub fn hertz_at(scene: &Scene, p: f64) -> Hertz {
+    Hertz::with_modulus(scene.wheel.radius, scene.contact_modulus(), p)
+}
+
+/// Whether Carter applies: steady rolling with μ > 0, the normal and tangential problems decoupled ([`beta_zero`]).
+pub fn carter_applies(scene: &Scene, p: f64) -> bool {
+    let steady = scene.rolling.as_ref().is_some_and(|r| r.mode == RollingMode::Steady);
+    steady && scene.contact.friction > 0.0 && p > 0.0 && beta_zero(scene, p)
+}
+
+/// Carter's solution for a steady-rolling run: (c/a, Q/(μP), ξ, stick-zone centre d, Hertz). `None` when it does
+/// not apply or the run has no resultant.
+fn carter_solution(scene: &Scene, run: &SolverRun) -> Option<(f64, f64, f64, f64, Hertz)> {
+    let p = run.resultants?.normal;
+    if !carter_applies(scene, p) {
+        return None;
+    }
+    let r = scene.rolling.as_ref()?;
+    let mu = scene.contact.friction;
+    let h = Hertz::with_modulus(scene.wheel.radius, scene.contact_modulus(), p);
+    let crit = mu * h.half_width / scene.wheel.radius;
+    let (c_over_a, xi) = match (r.creepage, scene.drive.tangential_load) {
+        (Some(xi), _) => ((1.0 - xi.abs() / crit).max(0.0), xi),
+        (None, Some(q)) => {
+            let ca = (1.0 - (q.abs() / (mu * p)).min(1.0)).sqrt();
+            (ca, -q.signum() * crit * (1.0 - ca))
+        }
+        (None, None) => return None,
+    };
+    let q_over = -xi.signum() * (1.0 - c_over_a * c_over_a);
+    let d = r.direction as f64 * h.half_width * (1.0 - c_over_a);
+    Some((c_over_a, q_over, xi, d, h))
 }
 
 /// Hertz at the run's load P, when the scene is frictionless and the run solved with P > 0.
@@ -61,9 +130,12 @@ pub fn beta_zero(scene: &Scene, p: f64) -> bool {
     !scene.contact.coupling || (beta_vanishes && finite_ok)
 }
 
-/// Whether Cattaneo–Mindlin applies: β = 0 ([`beta_zero`]), P and Q prescribed with the rotation held (or no
-/// rotation: the half-plane), 0 < |Q| < μP.
+/// Whether Cattaneo–Mindlin applies: a static problem (no steady rolling), β = 0 ([`beta_zero`]), P and Q
+/// prescribed with the rotation held (or no rotation: the half-plane), 0 < |Q| < μP.
 pub fn cattaneo_applies(scene: &Scene) -> bool {
+    if scene.rolling.as_ref().is_some_and(|r| r.mode == RollingMode::Steady) {
+        return false;
+    }
     let mu = scene.contact.friction;
     match (scene.drive.normal(), scene.drive.tangential(), scene.drive.rotational()) {
         (Dof::Load(p), Dof::Load(q), Dof::Displacement(_)) => {
@@ -101,6 +173,44 @@ pub fn metrics(scene: &Scene, run: &SolverRun) -> Metrics {
         }
         m.hertz_l2_err = (den > 0.0).then(|| (num / den).sqrt());
     }
+    if let Some((ca, qmup, xi, d, h)) = carter_solution(scene, run) {
+        let mu = scene.contact.friction;
+        let elem = element_length(scene);
+        let res = run.resultants.expect("solved");
+        m.carter_q_over_mup = Some(res.tangential / (mu * res.normal));
+        m.carter_q_over_mup_exact = Some(qmup);
+        m.carter_c_over_a_exact = Some(ca);
+        let c_exact = ca * h.half_width;
+        match stick_edges(&run.nodes) {
+            Some((left, right)) => {
+                let (c, centre) = (0.5 * (right - left), 0.5 * (right + left));
+                m.carter_c_over_a = Some(c / h.half_width);
+                m.carter_c_err_elements = Some((c - c_exact) / elem);
+                m.carter_centre_err_elements = Some((centre - d) / elem);
+            }
+            None => {
+                m.carter_c_over_a = Some(0.0);
+                m.carter_c_err_elements = Some(-c_exact / elem);
+            }
+        }
+        let sg = -xi.signum();
+        let (mut sum2, mut count) = (0.0, 0usize);
+        for n in run.nodes.iter().filter(|n| n.state != NodeState::Separated) {
+            let pa = h.pressure(n.x);
+            let in_stick = c_exact > 0.0 && (n.x - d).abs() < c_exact;
+            let qa = sg
+                * if in_stick {
+                    mu * pa - mu * h.peak_pressure * ca * (1.0 - ((n.x - d) / c_exact).powi(2)).sqrt()
+                } else {
+                    mu * pa
+                };
+            sum2 += ((n.shear - qa) / (mu * h.peak_pressure)).powi(2);
+            count += 1;
+        }
+        m.carter_shear_rms = (count > 0).then(|| (sum2 / count as f64).sqrt());
+        let computed = run.rolling.and_then(|r| (!r.creepage_prescribed).then_some(r.creepage).flatten());
+        m.carter_creepage_err = computed.filter(|_| xi != 0.0).map(|x| (x - xi).abs() / xi.abs());
+    }
     if cattaneo_applies(scene) {
         if let (Dof::Load(p), Dof::Load(q)) = (scene.drive.normal(), scene.drive.tangential()) {
             let mu = scene.contact.friction;
@@ -109,11 +219,7 @@ pub fn metrics(scene: &Scene, run: &SolverRun) -> Metrics {
             let elem = element_length(scene);
             m.cm_c_over_a_exact = Some(ce / h.half_width);
             let nodes = &run.nodes;
-            let first = nodes.iter().position(|n| n.state == NodeState::Stick);
-            let last = nodes.iter().rposition(|n| n.state == NodeState::Stick);
-            if let (Some(f), Some(l)) = (first, last) {
-                let left = if f > 0 { 0.5 * (nodes[f].x + nodes[f - 1].x) } else { nodes[f].x };
-                let right = if l + 1 < nodes.len() { 0.5 * (nodes[l].x + nodes[l + 1].x) } else { nodes[l].x };
+            if let Some((left, right)) = stick_edges(nodes) {
                 let (c, centre) = (0.5 * (right - left), 0.5 * (right + left));
                 m.cm_c_over_a = Some(c / h.half_width);
                 m.cm_c_err_elements = Some((c - ce) / elem);

@@ -4,7 +4,7 @@
 
 use crate::formulation::FormulationName;
 use crate::hertz::Hertz;
-use crate::post::{ContactSummary, NodeResult, Residuals, Resultants, RigidBody};
+use crate::post::{ContactSummary, NodeResult, Residuals, Resultants, RigidBody, RollingResult};
 use crate::scene::{BodyModel, ElementKind, Scene};
 use crate::solvers::Work;
 use crate::status::Status;
@@ -79,6 +79,10 @@ pub struct SolverRun {
     pub rigid_body: Option<RigidBody>,
     /// Contact figures (null unless solved).
     pub contact: Option<ContactSummary>,
+    /// Rolling figures: creepage (prescribed or computed) and Coulomb-law inconsistencies of the slip velocities
+    /// (null without rolling, or unless solved).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rolling: Option<RollingResult>,
     /// Per contact node (empty unless solved).
     pub nodes: Vec<NodeResult>,
     /// For clarabel: max |p − p_unpolished| / p_max, the effect of solving the symmetrised QP before the

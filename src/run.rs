@@ -10,9 +10,9 @@ use crate::diagnostics::{asymmetry, diagnose};
 use crate::error::{Error, Result};
 use crate::formulation::{ContactProblem, DriveIssue, Lcp, ProblemKind, SlipOperator};
 use crate::hertz::Hertz;
-use crate::post::{evaluate, SeedRolling};
+use crate::post::{evaluate, RollingPost};
 use crate::results::{MeshInfo, References, Report, SolverName, SolverRun, Timing};
-use crate::scene::{Dof, Scene};
+use crate::scene::{Dof, RollingMode, Scene};
 use crate::solvers::{Outcome, Solver, Status, Work, REGISTRY};
 use crate::source::{self, Blocks};
 use std::path::Path;
@@ -27,13 +27,32 @@ pub fn blocks_for(scene: &Scene) -> Blocks {
     }
 }
 
+/// The rolling post-processing a scene asks for.
+pub fn rolling_post(scene: &Scene) -> Option<RollingPost> {
+    scene.rolling.as_ref().map(|r| match r.mode {
+        RollingMode::Steady => RollingPost::Steady,
+        RollingMode::Seed => RollingPost::Seed {
+            creepage: r.creepage.expect("validated: seed mode has a creepage"),
+            direction: r.direction,
+        },
+    })
+}
+
+/// The slip operator of a scene on a flexibility: steady rolling's upwind slip velocity, or the static slip.
+pub fn slip_operator(scene: &Scene, flex: &crate::flexibility::Flexibility) -> SlipOperator {
+    match &scene.rolling {
+        Some(r) if r.mode == RollingMode::Steady => SlipOperator::steady(&flex.x, r.direction),
+        _ => SlipOperator::static_slip(),
+    }
+}
+
 /// Build the scene's contact problem on a flexibility (an unformulable drive is an input error naming the key).
 pub fn build_problem<'a>(
     scene: &Scene,
     flex: &'a crate::flexibility::Flexibility,
     path: &Path,
 ) -> Result<ContactProblem<'a>> {
-    ContactProblem::new(flex, scene.law(), scene.drive_dofs(), SlipOperator::static_slip()).map_err(|issue| {
+    ContactProblem::new(flex, scene.law(), scene.drive_dofs(), slip_operator(scene, flex)).map_err(|issue| {
         Error::Unsupported {
             path: path.to_path_buf(),
             message: match issue {
@@ -139,7 +158,7 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
     };
     let problem_size = problem.lcp.as_ref().map_or(0, Lcp::size);
     let solvers = solvers_for(scene, &problem, path)?;
-    let rolling = scene.rolling.as_ref().map(|r| SeedRolling { creepage: r.creepage, direction: r.direction });
+    let rolling = rolling_post(scene);
     let mut runs = Vec::new();
     let mut bounds = Vec::new();
     for solver in &solvers {
@@ -197,7 +216,7 @@ fn finish_run(
     outcome: Outcome,
     timing: Timing,
     refuse: f64,
-    rolling: Option<SeedRolling>,
+    rolling: Option<RollingPost>,
 ) -> SolverRun {
     let Outcome { solution, mut status, mut message, work, polish_change } = outcome;
     let ev = match (&solution, status) {
@@ -226,6 +245,7 @@ fn finish_run(
         resultants: ev.as_ref().map(|e| e.resultants),
         rigid_body: ev.as_ref().map(|e| e.rigid_body),
         contact: ev.as_ref().map(|e| e.contact.clone()),
+        rolling: ev.as_ref().and_then(|e| e.rolling),
         nodes: ev.map(|e| e.nodes).unwrap_or_default(),
         polish_change,
     }

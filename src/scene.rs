@@ -44,7 +44,7 @@ pub struct Scene {
     pub contact: ContactSpec,
     /// How the support is driven: a displacement or a load for each rigid degree of freedom.
     pub drive: Drive,
-    /// Optional rolling post-processing (slip velocity, seed eq. 12).
+    /// Optional rolling: steady-state rolling, or the seed's slip velocity after a static solve.
     #[serde(default)]
     pub rolling: Option<Rolling>,
     /// Which solvers to run.
@@ -369,14 +369,31 @@ impl Drive {
     }
 }
 
-/// Rolling post-processing (seed eqs. 10–12).
+/// Rolling (seed eqs. 6–12): either the steady-rolling problem with the slip velocity as the unknown of Coulomb's
+/// law (`mode = "steady"`, [`crate::formulation::slip`]), or the seed's formulation: a static solve, then the slip
+/// velocity of eq. 12 computed from it (`mode = "seed"`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Rolling {
-    /// Creepage ξ = (V_A − V_B)/|V| (dimensionless).
-    pub creepage: f64,
-    /// sgn(V): +1 rolling towards +x, −1 towards −x.
+    /// Which formulation (required, so that nobody gets the seed's post-processing by surprise).
+    pub mode: RollingMode,
+    /// Creepage ξ = (V_A − V_B)/|V|, the rigid slip velocity of the wheel's surface relative to the flat over the
+    /// rolling speed (dimensionless; ξ > 0 braking). Steady: prescribe it, or give `[drive] tangential_load`
+    /// instead and it is computed. Seed: required.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub creepage: Option<f64>,
+    /// The rolling direction: +1 towards +x (the leading edge is at +x), −1 towards −x.
     pub direction: i32,
+}
+
+/// The rolling formulation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RollingMode {
+    /// Steady-state rolling: the slip velocity is the unknown of Coulomb's law.
+    Steady,
+    /// The seed's formulation: a static solve, then eq. 12.
+    Seed,
 }
 
 /// Range checks of scene values; every error names the file and the dotted key.
@@ -568,11 +585,11 @@ impl Scene {
 
     /// The drive of the three rigid degrees of freedom (user's units).
     pub fn drive_dofs(&self) -> DriveDofs {
-        DriveDofs {
-            normal: self.drive.normal(),
-            tangential: self.drive.tangential(),
-            rotational: self.drive.rotational(),
-        }
+        let tangential = match &self.rolling {
+            Some(Rolling { mode: RollingMode::Steady, creepage: Some(xi), .. }) => Dof::Displacement(*xi),
+            _ => self.drive.tangential(),
+        };
+        DriveDofs { normal: self.drive.normal(), tangential, rotational: self.drive.rotational() }
     }
 
     /// The plane-strain contact modulus of the pair, E* with 1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂ (the second term
@@ -851,9 +868,47 @@ impl Scene {
             }
         }
         if let Some(r) = &self.rolling {
-            c.finite("rolling.creepage", r.creepage)?;
+            if let Some(xi) = r.creepage {
+                c.finite("rolling.creepage", xi)?;
+            }
             if r.direction != 1 && r.direction != -1 {
                 return Err(c.bad("rolling.direction", format!("must be 1 or -1 (got {})", r.direction)));
+            }
+            match r.mode {
+                RollingMode::Seed if r.creepage.is_none() => {
+                    return Err(c.bad("rolling.creepage", "missing: the seed's eq. 12 needs the creepage".into()))
+                }
+                RollingMode::Seed => {}
+                RollingMode::Steady => {
+                    match (r.creepage, d.tangential_load) {
+                        (Some(_), Some(_)) => {
+                            return Err(c.bad(
+                                "rolling.creepage",
+                                "give either `rolling.creepage` (the tangential force is computed) or \
+                                 `drive.tangential_load` (the creepage is computed), not both"
+                                    .into(),
+                            ))
+                        }
+                        (None, None) => {
+                            return Err(c.bad(
+                                "rolling.creepage",
+                                "steady rolling needs `rolling.creepage` or `drive.tangential_load`".into(),
+                            ))
+                        }
+                        _ => {}
+                    }
+                    let steady = "means nothing in steady rolling (mode = \"steady\"): the wheel turns \
+                                  continuously, its tangential motion is the creepage";
+                    for (key, given) in [
+                        ("drive.tangential_shift", d.tangential_shift.is_some()),
+                        ("drive.rotation", d.rotation.is_some()),
+                        ("drive.moment", d.moment.is_some()),
+                    ] {
+                        if given {
+                            return Err(c.bad(key, steady.into()));
+                        }
+                    }
+                }
             }
         }
         Ok(())

@@ -240,17 +240,20 @@ fn rolling_slip_velocity_only_when_asked() {
     let r = run(&s);
     assert!(lemke(&r).nodes.iter().all(|n| n.slip_velocity.is_none()));
     assert!(!r.effects.contains(&"rolling".to_string()));
-    s.rolling = Some(rollbem::scene::Rolling { creepage: 0.002, direction: 1 });
+    s.rolling =
+        Some(rollbem::scene::Rolling { mode: rollbem::scene::RollingMode::Seed, creepage: Some(0.002), direction: 1 });
     let r = run(&s);
     let l = lemke(&r);
     assert!(r.effects.contains(&"rolling".to_string()));
-    // Eq. 12 recomputed from the reported u_x: forward difference with the next node.
+    // Eq. 12 recomputed from the reported u_x: the difference towards the leading edge (the next node, rolling
+    // towards +x), s = ξ − ∂u_x/∂x (the seed's sgn(V) is that of the material's velocity through the contact, −1
+    // here: `rollbem::formulation::slip`).
     let nodes = &l.nodes;
     for i in 0..nodes.len() - 1 {
         match nodes[i].slip_velocity {
             Some(v) => {
                 let d = (nodes[i + 1].u_x.unwrap() - nodes[i].u_x.unwrap()) / (nodes[i + 1].x - nodes[i].x);
-                assert!((v - (0.002 + d)).abs() < 1e-12, "node {i}");
+                assert!((v - (0.002 - d)).abs() < 1e-12, "node {i}");
                 assert_ne!(nodes[i].state, NodeState::Separated);
             }
             None => assert_eq!(nodes[i].state, NodeState::Separated),

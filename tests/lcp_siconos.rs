@@ -135,7 +135,7 @@ fn lemke_solves_every_solvable_file_to_round_off_and_agrees_with_siconos() {
         assert_eq!(sic.n, n, "{name}: size in siconos_lemke.tsv");
         let out = lemke::solve(&lcp, &st);
         // The dense reference engine takes the same path.
-        let dense = lemke::solve_dense(&lcp, &st);
+        let dense = lemke::dense::solve_dense(&lcp, &st);
         assert_eq!((dense.status, dense.pivots), (out.status, out.pivots), "{name}: dense engine");
         let r = residuals(&lcp, &out.z, &out.w);
         // The enumeration for small files: every vertex solution, independent of Lemke.

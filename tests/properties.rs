@@ -197,7 +197,11 @@ impl SceneParams {
             counter_body: Default::default(),
             contact: ContactSpec { friction: self.friction, coupling: self.coupling },
             drive,
-            rolling: self.creepage.map(|creepage| Rolling { creepage, direction: 1 }),
+            rolling: self.creepage.map(|creepage| Rolling {
+                mode: rollbem::scene::RollingMode::Seed,
+                creepage: Some(creepage),
+                direction: 1,
+            }),
             solvers: SolverSpec { use_: vec!["all".to_string()], ..SolverSpec::default() },
             checks: Expect::default(),
         }

@@ -46,11 +46,43 @@ pub struct ContactLaw {
     pub coupling: bool,
 }
 
+/// What a degree of freedom of the contact problem is: a rigid mode of the body's support (or datum), or the
+/// creepage of steady rolling, which takes the place of the shift as the tangential DOF there.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum DofKind {
+    /// The tangential shift d_T (a rigid mode).
+    Shift,
+    /// The approach d_N (a rigid mode).
+    Approach,
+    /// The rotation φ (a rigid mode).
+    Rotation,
+    /// The creepage ξ of steady rolling: a uniform slip velocity (dimensionless), the tangential DOF of the steady
+    /// problem (prescribed, or unknown with the tangential load prescribed).
+    Creepage,
+}
+
+impl From<ModeKind> for DofKind {
+    fn from(m: ModeKind) -> DofKind {
+        match m {
+            ModeKind::Shift => DofKind::Shift,
+            ModeKind::Approach => DofKind::Approach,
+            ModeKind::Rotation => DofKind::Rotation,
+        }
+    }
+}
+
+impl DofKind {
+    /// Whether this is the problem's tangential DOF (conjugate to Q).
+    pub fn is_tangential(self) -> bool {
+        matches!(self, DofKind::Shift | DofKind::Creepage)
+    }
+}
+
 /// One rigid degree of freedom of the contact problem, in dimensionless units ([`crate::flexibility`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct RigidDof {
-    /// Which rigid motion.
-    pub kind: ModeKind,
+    /// Which degree of freedom.
+    pub kind: DofKind,
     /// Its drive, dimensionless (lengths / L0, forces / (E·L0), moments / (E·L0²)).
     pub drive: Dof,
     /// Its drive in the user's units.
@@ -73,8 +105,8 @@ impl RigidDof {
     /// s = +1; the shift, whose gap response is only the coupling: s = +1).
     pub fn default_sign(&self) -> f64 {
         match self.kind {
-            ModeKind::Approach => -1.0,
-            ModeKind::Shift | ModeKind::Rotation => 1.0,
+            DofKind::Approach => -1.0,
+            DofKind::Shift | DofKind::Rotation | DofKind::Creepage => 1.0,
         }
     }
 
@@ -85,7 +117,9 @@ impl RigidDof {
 }
 
 /// Turn the drive into the problem's rigid DOFs, in the order tangential, normal, rotational (the columns of the
-/// loading LCPs follow it). A mode the source does not offer gets no DOF.
+/// loading LCPs follow it). A mode the source does not offer gets no DOF. With the steady-rolling slip operator the
+/// tangential DOF is the creepage (slip response 1 at every node, no gap response: [`super::slip`]) and the
+/// rotation is no DOF (the wheel turns continuously; its rate is in the creepage).
 pub fn rigid_dofs(flex: &Flexibility, drive: &Drive, slip: &SlipOperator) -> Vec<RigidDof> {
     let sc = flex.scales;
     let n = flex.n();
@@ -93,12 +127,27 @@ pub fn rigid_dofs(flex: &Flexibility, drive: &Drive, slip: &SlipOperator) -> Vec
         Dof::Displacement(v) => Dof::Displacement(v / length),
         Dof::Load(v) => Dof::Load(v / load),
     };
+    let steady = slip.is_steady();
     let mut out = Vec::with_capacity(3);
+    if steady {
+        out.push(RigidDof {
+            kind: DofKind::Creepage,
+            drive: scaled(drive.tangential, 1.0, sc.force()),
+            user: drive.tangential,
+            gap: vec![0.0; n],
+            slip: flex.has_tangential().then(|| vec![1.0; n]),
+            row_n: vec![0.0; n],
+            row_t: vec![1.0; n],
+        });
+    }
     for (kind, user) in [
         (ModeKind::Shift, drive.tangential),
         (ModeKind::Approach, drive.normal),
         (ModeKind::Rotation, drive.rotational),
     ] {
+        if steady && kind != ModeKind::Approach {
+            continue;
+        }
         let Some(mode) = flex.mode(kind) else { continue };
         let (drive, row_n, row_t) = match kind {
             ModeKind::Shift => (scaled(user, sc.length, sc.force()), vec![0.0; n], vec![1.0; n]),
@@ -106,7 +155,7 @@ pub fn rigid_dofs(flex: &Flexibility, drive: &Drive, slip: &SlipOperator) -> Vec
             ModeKind::Rotation => (scaled(user, 1.0, sc.moment()), flex.x.clone(), flex.y.iter().map(|y| -y).collect()),
         };
         out.push(RigidDof {
-            kind,
+            kind: kind.into(),
             drive,
             user,
             gap: mode.normal.clone(),

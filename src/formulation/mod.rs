@@ -26,11 +26,11 @@ pub mod drive;
 pub mod lcp;
 pub mod slip;
 
-pub use drive::{ContactLaw, Dof, Drive, RigidDof};
+pub use drive::{ContactLaw, Dof, DofKind, Drive, RigidDof};
 pub use lcp::Lcp;
 pub use slip::{SlipKind, SlipOperator};
 
-use crate::flexibility::{Flexibility, ModeKind};
+use crate::flexibility::Flexibility;
 use crate::tolerances::SLIDING_LIMIT_BAND;
 use faer::Mat;
 use serde::Serialize;
@@ -221,7 +221,7 @@ impl<'a> ContactProblem<'a> {
 
     /// Whether a DOF's rigid motion is an unknown of the LCP (see [`ContactProblem::load_dofs`]).
     pub fn is_unknown(&self, d: &RigidDof) -> bool {
-        d.is_load() && !(self.normal_only() && d.kind == ModeKind::Shift)
+        d.is_load() && !(self.normal_only() && d.kind.is_tangential())
     }
 
     /// Whether only the normal problem is solved (frictionless, sliding limit).
@@ -265,8 +265,9 @@ impl<'a> ContactProblem<'a> {
         Solution { f, h, rigid, tangential_known }
     }
 
-    /// The value of a rigid mode in a solution (0 when the problem has no DOF of that kind).
-    pub fn rigid_value(&self, sol: &Solution, kind: ModeKind) -> f64 {
+    /// The value of a DOF in a solution (0 when the problem has no DOF of that kind).
+    pub fn rigid_value(&self, sol: &Solution, kind: impl Into<DofKind>) -> f64 {
+        let kind = kind.into();
         self.dofs.iter().position(|d| d.kind == kind).map(|k| sol.rigid[k]).unwrap_or(0.0)
     }
 }

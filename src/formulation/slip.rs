@@ -11,6 +11,23 @@
 //!
 //! - **Static** (the seed's problem, §4): s = u_T, the tangential displacement relative to the flat (it includes
 //!   the rigid shift δ_T through the shift mode's response): D = I, c = 0.
+//! - **Steady rolling** (Kalker 1990 §2; González & Abascal 2000, the seed's ref. \[3\]): s is the dimensionless
+//!   slip velocity of the wheel's surface relative to the flat, `s = ξ − dir · ∂u_T/∂x` (dir = ±1 the rolling
+//!   direction), discretised upwind: the difference taken towards the leading edge, where material enters,
+//!   `s_i = ξ + (u_T,i − u_T,up(i)) / |x_up(i) − x_i|` with up(i) = i + 1 rolling towards +x and i − 1 towards
+//!   −x. The creepage ξ is the problem's tangential DOF ([`super::DofKind::Creepage`]), so D holds the difference
+//!   only. At the leading-edge node there is no upstream node in the candidate zone; its row takes u_up = 0, which
+//!   keeps D invertible and matters for nothing physical there, since a well-posed candidate zone leaves that node
+//!   separated (h = 0 whatever its slip).
+//!
+//!   **Sign.** In the contact frame of a wheel rolling towards +x, material moves towards −x at the rolling speed
+//!   V: a surface point's slip velocity relative to the flat is V(ξ − ∂u_x/∂x). The seed's eq. 10–12 write
+//!   `ξ + sgn(V)(u_T,x)` with V the velocity of the material through the contact, which is −dir: the same thing.
+//!   Read with sgn(V) = the rolling direction, eq. 12 would make the slip decrease with the node's own shear
+//!   (D K_TT with a negative diagonal: friction assisting its own slip, several solutions); the sign here makes it
+//!   increase, and Carter's theory confirms it: the stick zone comes out at the leading edge (`tests/rolling.rs`).
+//!   ξ > 0 is braking (the wheel's surface slower than the ground): the slip is positive and the friction on the
+//!   wheel, q = −μp, negative.
 //!
 //! The LCP builder ([`super::lcp`]), NORM-TANG ([`crate::solvers::normtang`]) and the solver-independent residuals
 //! ([`crate::post`]) all take the slip from here, so a new kinematics (steady rolling s = ξ + D u_T, a load step
@@ -23,6 +40,11 @@ use faer::Mat;
 pub enum SlipKind {
     /// s = u_T: static contact (seed §4).
     Static,
+    /// s = ξ + D u_T: steady rolling in direction `direction` (±1), the upwind difference D.
+    Steady {
+        /// The rolling direction, +1 towards +x.
+        direction: i32,
+    },
 }
 
 /// The slip operator s = D u_T + c (see the module docs).
@@ -40,6 +62,17 @@ impl SlipOperator {
     /// The static slip s = u_T.
     pub fn static_slip() -> SlipOperator {
         SlipOperator { kind: SlipKind::Static, d: None, offset: None }
+    }
+
+    /// The steady-rolling slip velocity on contact nodes at `x` (increasing), rolling in direction `direction`
+    /// (±1): D is the upwind difference of the module docs; the creepage is the problem's tangential DOF.
+    pub fn steady(x: &[f64], direction: i32) -> SlipOperator {
+        SlipOperator { kind: SlipKind::Steady { direction }, d: Some(upwind(x, direction)), offset: None }
+    }
+
+    /// Whether this is the steady-rolling operator (whose tangential DOF is the creepage).
+    pub fn is_steady(&self) -> bool {
+        matches!(self.kind, SlipKind::Steady { .. })
     }
 
     /// D v (a copy of v when D is the identity).
@@ -68,4 +101,27 @@ impl SlipOperator {
         }
         s
     }
+}
+
+/// The upwind difference of steady rolling (module docs): row i is `(e_i − e_up(i)) / |x_up(i) − x_i|`, the
+/// leading-edge node's row `e_i / h` with the spacing of its downstream neighbour.
+pub fn upwind(x: &[f64], direction: i32) -> Mat<f64> {
+    let n = x.len();
+    let mut d = Mat::<f64>::zeros(n, n);
+    for i in 0..n {
+        let up = if direction >= 0 { (i + 1 < n).then_some(i + 1) } else { i.checked_sub(1) };
+        match up {
+            Some(u) => {
+                let h = (x[u] - x[i]).abs();
+                d[(i, i)] = 1.0 / h;
+                d[(i, u)] = -1.0 / h;
+            }
+            None => {
+                let down = if direction >= 0 { i.checked_sub(1) } else { (i + 1 < n).then_some(i + 1) };
+                let h = down.map_or(1.0, |k| (x[k] - x[i]).abs());
+                d[(i, i)] = 1.0 / h;
+            }
+        }
+    }
+    d
 }

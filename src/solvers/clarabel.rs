@@ -4,8 +4,7 @@
 
 use super::clarabel_qp::{solve_frictionless, QpSettings, QpStatus};
 use super::{Entry, Outcome, Solver, Status, Work};
-use crate::flexibility::ModeKind;
-use crate::formulation::{ContactProblem, Dof, ProblemKind};
+use crate::formulation::{ContactProblem, Dof, DofKind, ProblemKind};
 
 /// clarabel on the frictionless QP.
 pub struct Clarabel {
@@ -49,11 +48,11 @@ impl Solver for Clarabel {
         let n = p.n();
         let kcol: Vec<f64> = (0..n * n).map(|idx| np.k[(idx % n, idx / n)]).collect();
         let ones = vec![1.0; n];
-        let normal_load = p.dofs.iter().find(|d| d.kind == ModeKind::Approach).and_then(|d| d.drive.load());
+        let normal_load = p.dofs.iter().find(|d| d.kind == DofKind::Approach).and_then(|d| d.drive.load());
         let load = normal_load.map(|l| (ones.as_slice(), l));
         let out = solve_frictionless(&kcol, n, &np.q0, load, &self.settings);
         let mut rigid = p.given();
-        if let (Some(d), Some(k)) = (out.approach, p.dofs.iter().position(|d| d.kind == ModeKind::Approach)) {
+        if let (Some(d), Some(k)) = (out.approach, p.dofs.iter().position(|d| d.kind == DofKind::Approach)) {
             rigid[k] = d;
         }
         let w = &p.flex.weights;

@@ -22,8 +22,7 @@
 use super::clarabel_box::solve_box;
 use super::clarabel_qp::{solve_frictionless, QpSettings};
 use super::{Entry, Solver, Status, Validate, Work};
-use crate::flexibility::ModeKind;
-use crate::formulation::{ContactProblem, Dof, ProblemKind, Solution};
+use crate::formulation::{ContactProblem, Dof, DofKind, ProblemKind, Solution};
 use faer::Mat;
 use serde::{Deserialize, Serialize};
 
@@ -34,12 +33,12 @@ const MODE_APPROACH: usize = 1;
 /// Slot of the rotation.
 const MODE_ROTATION: usize = 2;
 
-/// The slot of a rigid mode.
-fn slot(kind: ModeKind) -> usize {
+/// The slot of a DOF (the creepage of steady rolling is the tangential DOF, in the shift's slot).
+fn slot(kind: DofKind) -> usize {
     match kind {
-        ModeKind::Shift => MODE_SHIFT,
-        ModeKind::Approach => MODE_APPROACH,
-        ModeKind::Rotation => MODE_ROTATION,
+        DofKind::Shift | DofKind::Creepage => MODE_SHIFT,
+        DofKind::Approach => MODE_APPROACH,
+        DofKind::Rotation => MODE_ROTATION,
     }
 }
 
@@ -129,10 +128,10 @@ impl Split {
                 }
             }
             match d.kind {
-                ModeKind::Approach => normal = d.drive,
+                DofKind::Approach => normal = d.drive,
                 // Without friction a zero tangential load is a free tangential DOF: nothing to solve.
-                ModeKind::Shift if frictional => tangential = d.drive,
-                ModeKind::Shift | ModeKind::Rotation => {}
+                DofKind::Shift | DofKind::Creepage if frictional => tangential = d.drive,
+                DofKind::Shift | DofKind::Creepage | DofKind::Rotation => {}
             }
         }
         Split {
@@ -701,6 +700,11 @@ impl Solver for NormTangQp {
         "normtang_qp"
     }
     fn applies(&self, p: &ContactProblem) -> Result<(), String> {
+        if p.slip.is_steady() && p.law.friction > 0.0 {
+            return Err("the steady-rolling tangential operator D K_TT is far from symmetric, and the QP inner \
+                        solver symmetrises it; use pgs or lemke"
+                .into());
+        }
         applies(p)
     }
     fn settings(&self) -> toml::Value {
