@@ -43,6 +43,7 @@ pub mod flexibility;
 pub mod formulation;
 pub mod halfplane;
 pub mod hertz;
+pub mod history;
 pub mod io;
 pub mod lcp_io;
 pub mod lcp_residual;

@@ -116,6 +116,7 @@ fn rolling_result(
     let mu = problem.law.friction;
     let (mode, creepage, prescribed) = match r {
         RollingPost::Seed { creepage, .. } => (crate::scene::RollingMode::Seed, Some(creepage), true),
+        RollingPost::Transient { creepage, .. } => (crate::scene::RollingMode::Transient, Some(creepage), true),
         RollingPost::Steady => {
             let d = problem.dofs.iter().find(|d| d.kind == DofKind::Creepage);
             let prescribed = d.is_some_and(|d| !d.is_load());
@@ -125,7 +126,7 @@ fn rolling_result(
     };
     let scale = match r {
         RollingPost::Steady => slip_scale,
-        RollingPost::Seed { creepage, .. } => {
+        RollingPost::Seed { creepage, .. } | RollingPost::Transient { creepage, .. } => {
             let smax = nodes.iter().filter_map(|n| n.slip_velocity).fold(0.0_f64, |m, v| m.max(v.abs()));
             slip_scale.max(creepage.abs()).max(smax)
         }
@@ -189,6 +190,11 @@ impl Residuals {
 pub struct Evaluation {
     /// Rolling figures (when the scene rolls).
     pub rolling: Option<RollingResult>,
+    /// The total tangential displacement u_T of the contact nodes, rigid motion included (dimensionless; when the
+    /// tangential problem is built): a load path carries it to the next step.
+    pub u_t: Option<Vec<f64>>,
+    /// The problem's slip s at the contact nodes (dimensionless; the slip increment of a load step).
+    pub slip: Option<Vec<f64>>,
     /// Per contact node.
     pub nodes: Vec<NodeResult>,
     /// Resultants.
@@ -214,6 +220,14 @@ pub enum RollingPost {
     },
     /// Steady rolling: the slip velocity is the problem's own slip.
     Steady,
+    /// A step of transient rolling: the slip velocity is the slip increment over the rolled distance (dimensionless,
+    /// lengths / L0); with `roll = 0` (a step that does not roll) there is none.
+    Transient {
+        /// Creepage ξ.
+        creepage: f64,
+        /// Rolled distance of the step, dimensionless.
+        roll: f64,
+    },
 }
 
 /// What rolling adds to a run: the creepage, and how far the slip velocities are from Coulomb's law.
@@ -268,6 +282,9 @@ pub fn evaluate(problem: &ContactProblem, sol: &Solution, rolling: Option<Rollin
     // Slip velocities: the problem's own slip in steady rolling, eq. 12 applied to the static solution for the seed.
     let sv: Option<Vec<f64>> = match (rolling, &k.ux) {
         (Some(RollingPost::Steady), _) => k.slip.clone(),
+        (Some(RollingPost::Transient { roll, .. }), _) if roll > 0.0 => {
+            k.slip.as_ref().map(|s| s.iter().map(|v| v / roll).collect())
+        }
         (Some(RollingPost::Seed { creepage, direction }), Some(ux)) => {
             let d = crate::formulation::slip::upwind(&flex.x, direction);
             Some((0..n).map(|i| creepage + (0..n).map(|j| d[(i, j)] * ux[j]).sum::<f64>()).collect())
@@ -293,6 +310,8 @@ pub fn evaluate(problem: &ContactProblem, sol: &Solution, rolling: Option<Rollin
     let rolling = rolling.map(|r| rolling_result(problem, sol, r, &nodes, k.slip_scale));
     let rigid = |kind: ModeKind| problem.rigid_value(sol, kind);
     Evaluation {
+        u_t: k.ux.clone(),
+        slip: k.slip.clone(),
         rolling,
         nodes,
         resultants: resultants(problem, sol),

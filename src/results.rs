@@ -89,6 +89,36 @@ pub struct SolverRun {
     /// active-set polish with the nonsymmetric flexibility.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub polish_change: Option<f64>,
+    /// A step of a load path: the frictional energy dissipated in the step and since the start.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub history: Option<StepEnergy>,
+}
+
+/// The frictional dissipation of a load step (energy per unit thickness, user's units): Σ −h_i Δs_i with the
+/// step's end forces (backward Euler; converges with the substeps).
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct StepEnergy {
+    /// Dissipated in this (sub)step.
+    pub dissipated: f64,
+    /// Dissipated since the start of the path.
+    pub dissipated_total: f64,
+}
+
+/// One (sub)step of a load path: where it is on the path and every solver's run at its end.
+#[derive(Debug, Clone, Serialize)]
+pub struct StepResult {
+    /// Step index (from 0, as in `[[steps]]`).
+    pub step: usize,
+    /// Substep (1 ..= substeps).
+    pub substep: usize,
+    /// Number of substeps of the step.
+    pub substeps: usize,
+    /// Distance rolled since the start of the path (user's length unit).
+    pub rolled: f64,
+    /// The drive at the substep's end (user's units): per DOF `{"Displacement": v}` or `{"Load": v}`.
+    pub drive: crate::formulation::Drive,
+    /// Every solver's run at the substep's end (a solver whose path broke earlier has none).
+    pub runs: Vec<SolverRun>,
 }
 
 /// Mesh facts.
@@ -168,8 +198,11 @@ pub struct Report {
     pub diagnostics: Diagnostics,
     /// Analytic references.
     pub references: References,
-    /// One entry per solver.
+    /// One entry per solver (for a load path: its run at the last step it reached).
     pub runs: Vec<SolverRun>,
+    /// A load path's steps (empty for a one-step scene).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub steps: Vec<StepResult>,
     /// Checks against theory and between solvers.
     pub checks: Vec<Check>,
 }

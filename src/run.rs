@@ -35,6 +35,8 @@ pub fn rolling_post(scene: &Scene) -> Option<RollingPost> {
             creepage: r.creepage.expect("validated: seed mode has a creepage"),
             direction: r.direction,
         },
+        // A history sets the rolled distance per step (crate::history); this is the one-step default.
+        RollingMode::Transient => RollingPost::Transient { creepage: r.creepage.unwrap_or(0.0), roll: 0.0 },
     })
 }
 
@@ -52,17 +54,20 @@ pub fn build_problem<'a>(
     flex: &'a crate::flexibility::Flexibility,
     path: &Path,
 ) -> Result<ContactProblem<'a>> {
-    ContactProblem::new(flex, scene.law(), scene.drive_dofs(), slip_operator(scene, flex)).map_err(|issue| {
-        Error::Unsupported {
-            path: path.to_path_buf(),
-            message: match issue {
-                DriveIssue::TangentialLoadWithoutFriction(q) => format!(
-                    "drive.tangential_load = {q}: a frictionless contact carries no tangential load (gross \
-                     sliding); use tangential_load = 0 or friction > 0"
-                ),
-            },
-        }
-    })
+    ContactProblem::new(flex, scene.law(), scene.drive_dofs(), slip_operator(scene, flex))
+        .map_err(|DriveIssue::TangentialLoadWithoutFriction(_)| drive_error(scene, path))
+}
+
+/// The input error of a tangential load on a frictionless contact.
+pub fn drive_error(scene: &Scene, path: &Path) -> Error {
+    let key = if scene.steps.is_empty() { "drive.tangential_load" } else { "steps[].tangential_load" };
+    Error::Unsupported {
+        path: path.to_path_buf(),
+        message: format!(
+            "{key}: a frictionless contact carries no tangential load (gross sliding); use a zero tangential load \
+             or friction > 0"
+        ),
+    }
 }
 
 /// Build the scene's solvers (`solvers.use`): `all` expands to every solver of the registry's `all` set that
@@ -141,39 +146,30 @@ pub fn effects(scene: &Scene) -> Vec<String> {
     if scene.counter_body != crate::scene::CounterBody::Rigid {
         effects.push("counter_body".into());
     }
+    if !scene.steps.is_empty() {
+        effects.push("history".into());
+    }
     effects
 }
 
-/// Run a validated scene. `path` is used in error messages.
+/// Run a validated scene (one step from rest, or a load path: [`crate::history`]). `path` is used in error
+/// messages.
 pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
+    if !scene.steps.is_empty() {
+        return crate::history::run_history(scene, path);
+    }
     let built = source::build(scene, blocks_for(scene))?;
     let flex = &built.flex;
     let tf = Instant::now();
     let problem = build_problem(scene, flex, path)?;
     let formulation_time = tf.elapsed().as_secs_f64();
-    let asym = match (&problem.kind, &problem.normal) {
-        (_, Some(np)) => asymmetry(&np.k),
-        (ProblemKind::Frictional, _) => asymmetry(&flex.k_nn),
-        _ => 0.0,
-    };
     let problem_size = problem.lcp.as_ref().map_or(0, Lcp::size);
     let solvers = solvers_for(scene, &problem, path)?;
     let rolling = rolling_post(scene);
     let mut runs = Vec::new();
     let mut bounds = Vec::new();
     for solver in &solvers {
-        let t0 = Instant::now();
-        let outcome = match &problem.kind {
-            ProblemKind::GrossSliding { message } => Outcome {
-                solution: None,
-                status: Status::Infeasible,
-                message: message.clone(),
-                work: Work::default(),
-                polish_change: None,
-            },
-            _ => solver.solve(&problem),
-        };
-        let solve_time = t0.elapsed().as_secs_f64();
+        let (outcome, solve_time) = solve_timed(solver.as_ref(), &problem);
         let timing = Timing {
             assembly: built.timing.assembly,
             condensation: built.timing.condensation,
@@ -185,10 +181,49 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
         runs.push(finish_run(&problem, solver.name(), problem_size, outcome, timing, refuse_bound, rolling));
         bounds.push(check_bound);
     }
+    Ok(assemble_report(scene, &built, normal_asymmetry(&problem), runs, &bounds, Vec::new()))
+}
+
+/// Solve a problem with a solver, timed; a problem beyond gross sliding is `infeasible` without a solve.
+pub fn solve_timed(solver: &dyn Solver, problem: &ContactProblem) -> (Outcome, f64) {
+    let t0 = Instant::now();
+    let outcome = match &problem.kind {
+        ProblemKind::GrossSliding { message } => Outcome {
+            solution: None,
+            status: Status::Infeasible,
+            message: message.clone(),
+            work: Work::default(),
+            polish_change: None,
+        },
+        _ => solver.solve(problem),
+    };
+    (outcome, t0.elapsed().as_secs_f64())
+}
+
+/// The asymmetry of the normal matrix a problem solves (K_NN, or K_NN + σμK_NT at the sliding limit).
+pub fn normal_asymmetry(problem: &ContactProblem) -> f64 {
+    match (&problem.kind, &problem.normal) {
+        (_, Some(np)) => asymmetry(&np.k),
+        (ProblemKind::Frictional, _) => asymmetry(&problem.flex.k_nn),
+        _ => 0.0,
+    }
+}
+
+/// The result document of a scene from its runs (and a load path's steps): references, checks, mesh facts and
+/// health. `bounds[k]` is run k's residual check bound.
+pub fn assemble_report(
+    scene: &Scene,
+    built: &source::Built,
+    asym: f64,
+    runs: Vec<SolverRun>,
+    bounds: &[f64],
+    steps: Vec<crate::results::StepResult>,
+) -> Report {
+    let flex = &built.flex;
     let hertz = if scene.contact.friction > 0.0 { None } else { reference_hertz(scene, &runs) };
     let checks =
-        make_checks(scene, built.info.element, built.info.contact_element_length, &runs, &bounds, hertz.as_ref());
-    Ok(Report {
+        make_checks(scene, built.info.element, built.info.contact_element_length, &runs, bounds, hertz.as_ref());
+    Report {
         scene: scene.clone(),
         effects: effects(scene),
         mesh: MeshInfo {
@@ -204,7 +239,8 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
         references: References { hertz, dundurs_beta: scene.dundurs_beta() },
         runs,
         checks,
-    })
+        steps,
+    }
 }
 
 /// Post-process a solver's outcome: evaluate a claimed solution by the solver-independent residuals and refuse it
@@ -218,6 +254,20 @@ fn finish_run(
     refuse: f64,
     rolling: Option<RollingPost>,
 ) -> SolverRun {
+    evaluate_outcome(problem, solver, problem_size, outcome, timing, refuse, rolling).0
+}
+
+/// [`finish_run`], returning also the evaluation of an accepted solution (a load path carries its state on).
+#[allow(clippy::too_many_arguments)]
+pub fn evaluate_outcome(
+    problem: &ContactProblem,
+    solver: &'static str,
+    problem_size: usize,
+    outcome: Outcome,
+    timing: Timing,
+    refuse: f64,
+    rolling: Option<RollingPost>,
+) -> (SolverRun, Option<crate::post::Evaluation>) {
     let Outcome { solution, mut status, mut message, work, polish_change } = outcome;
     let ev = match (&solution, status) {
         (Some(sol), Status::Solved) => Some(evaluate(problem, sol, rolling)),
@@ -233,7 +283,7 @@ fn finish_run(
         }
     }
     let ev = ev.filter(|_| status == Status::Solved);
-    SolverRun {
+    let run = SolverRun {
         solver: SolverName(solver),
         formulation: problem.formulation(),
         status,
@@ -246,9 +296,11 @@ fn finish_run(
         rigid_body: ev.as_ref().map(|e| e.rigid_body),
         contact: ev.as_ref().map(|e| e.contact.clone()),
         rolling: ev.as_ref().and_then(|e| e.rolling),
-        nodes: ev.map(|e| e.nodes).unwrap_or_default(),
+        nodes: ev.as_ref().map(|e| e.nodes.clone()).unwrap_or_default(),
         polish_change,
-    }
+        history: None,
+    };
+    (run, ev)
 }
 
 /// Hertz at the scene's load, or at the first solved run's load when the approach is prescribed.

@@ -42,8 +42,13 @@ pub struct Scene {
     /// Contact law.
     #[serde(default)]
     pub contact: ContactSpec,
-    /// How the support is driven: a displacement or a load for each rigid degree of freedom.
+    /// How the support is driven: a displacement or a load for each rigid degree of freedom (one step from rest).
+    /// Absent when the scene gives a load path (`[[steps]]`).
+    #[serde(default)]
     pub drive: Drive,
+    /// A load path: quasi-static steps with memory ([`crate::history`]), instead of `[drive]`.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub steps: Vec<Step>,
     /// Optional rolling: steady-state rolling, or the seed's slip velocity after a static solve.
     #[serde(default)]
     pub rolling: Option<Rolling>,
@@ -369,6 +374,53 @@ impl Drive {
     }
 }
 
+/// One step of a load path (`[[steps]]`): the drive at the step's end, with the keys of `[drive]` (each rigid DOF a
+/// displacement or a load; the normal DOF required, the others 0 when absent), reached in `substeps` equal
+/// increments (linear in the prescribed quantity, from its value at the previous step's end), while the contact
+/// rolls `roll` (a length) over the body at the scene's creepage (`[rolling] mode = "transient"`).
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Step {
+    /// Rigid approach d_N at the step's end.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub normal_approach: Option<f64>,
+    /// Normal load P at the step's end.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub normal_load: Option<f64>,
+    /// Tangential shift d_T at the step's end.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tangential_shift: Option<f64>,
+    /// Tangential load Q at the step's end.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tangential_load: Option<f64>,
+    /// Rotation φ at the step's end.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rotation: Option<f64>,
+    /// Moment M at the step's end.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub moment: Option<f64>,
+    /// Number of equal increments (default 1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub substeps: Option<usize>,
+    /// Distance the contact rolls over the body during the step (length, ≥ 0; default 0).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub roll: Option<f64>,
+}
+
+impl Step {
+    /// The step's end drive as a `[drive]` table.
+    pub fn drive(&self) -> Drive {
+        Drive {
+            normal_approach: self.normal_approach,
+            normal_load: self.normal_load,
+            tangential_shift: self.tangential_shift,
+            tangential_load: self.tangential_load,
+            rotation: self.rotation,
+            moment: self.moment,
+        }
+    }
+}
+
 /// Rolling (seed eqs. 6–12): either the steady-rolling problem with the slip velocity as the unknown of Coulomb's
 /// law (`mode = "steady"`, [`crate::formulation::slip`]), or the seed's formulation: a static solve, then the slip
 /// velocity of eq. 12 computed from it (`mode = "seed"`).
@@ -394,6 +446,9 @@ pub enum RollingMode {
     Steady,
     /// The seed's formulation: a static solve, then eq. 12.
     Seed,
+    /// Transient rolling through a load path (`[[steps]]` with `roll`): each step's slip is the slip increment of the
+    /// material, which the contact carries along by the rolled distance ([`crate::history`]).
+    Transient,
 }
 
 /// Range checks of scene values; every error names the file and the dotted key.
@@ -835,38 +890,82 @@ impl Scene {
         Ok(())
     }
 
-    fn validate_drive(&self, c: &Checker) -> Result<()> {
-        let d = &self.drive;
+    /// Check one drive table (`[drive]`, or a step's keys) under the key prefix `prefix` (e.g. `drive` or
+    /// `steps[2]`).
+    fn check_drive(&self, c: &Checker, prefix: &str, d: &Drive) -> Result<()> {
+        let key = |k: &str| format!("{prefix}.{k}");
         let pairs = [
-            ("drive.normal_approach", d.normal_approach, "drive.normal_load", d.normal_load),
-            ("drive.tangential_shift", d.tangential_shift, "drive.tangential_load", d.tangential_load),
-            ("drive.rotation", d.rotation, "drive.moment", d.moment),
+            ("normal_approach", d.normal_approach, "normal_load", d.normal_load),
+            ("tangential_shift", d.tangential_shift, "tangential_load", d.tangential_load),
+            ("rotation", d.rotation, "moment", d.moment),
         ];
         for (a, va, b, vb) in pairs {
             if va.is_some() && vb.is_some() {
-                return Err(c.bad(a, format!("give either `{a}` or `{b}`, not both")));
+                return Err(c.bad(&key(a), format!("give either `{}` or `{}`, not both", key(a), key(b))));
             }
             if let Some(v) = va {
-                c.finite(a, v)?;
+                c.finite(&key(a), v)?;
             }
             if let Some(v) = vb {
-                c.finite(b, v)?;
+                c.finite(&key(b), v)?;
             }
         }
         if d.normal_approach.is_none() && d.normal_load.is_none() {
-            return Err(c.bad("drive", "give `normal_approach` or `normal_load`".into()));
+            return Err(c.bad(prefix, "give `normal_approach` or `normal_load`".into()));
         }
         if let Some(p) = d.normal_load {
-            c.positive("drive.normal_load", p)?;
+            c.positive(&key("normal_load"), p)?;
         }
         if self.wheel.model == BodyModel::HalfPlane {
             if d.rotation.is_some() {
-                return Err(c.meaningless("drive.rotation"));
+                return Err(c.meaningless(&key("rotation")));
             }
             if d.moment.is_some() {
-                return Err(c.meaningless("drive.moment"));
+                return Err(c.meaningless(&key("moment")));
             }
         }
+        Ok(())
+    }
+
+    fn validate_steps(&self, c: &Checker) -> Result<()> {
+        if self.drive != Drive::default() {
+            return Err(c.bad(
+                "steps",
+                "give either `[drive]` (one step from rest) or `[[steps]]` (a load path), not both".into(),
+            ));
+        }
+        let mut rolls = false;
+        for (k, st) in self.steps.iter().enumerate() {
+            let prefix = format!("steps[{k}]");
+            self.check_drive(c, &prefix, &st.drive())?;
+            if st.substeps == Some(0) {
+                return Err(c.bad(&format!("{prefix}.substeps"), "must be at least 1".into()));
+            }
+            if let Some(r) = st.roll {
+                if !r.is_finite() || r < 0.0 {
+                    return Err(c.bad(&format!("{prefix}.roll"), format!("must be a finite length ≥ 0 (got {r})")));
+                }
+                rolls |= r > 0.0;
+            }
+        }
+        match &self.rolling {
+            Some(r) if r.mode != RollingMode::Transient => Err(c.bad(
+                "rolling.mode",
+                "a load path rolls with mode = \"transient\" (steady and seed are one-step formulations)".into(),
+            )),
+            Some(r) if r.creepage.is_none() => {
+                Err(c.bad("rolling.creepage", "missing: transient rolling rolls at the scene's creepage".into()))
+            }
+            None if rolls => Err(c.bad(
+                "rolling",
+                "a step rolls (`roll` > 0): give `[rolling] mode = \"transient\"` with the creepage and direction"
+                    .into(),
+            )),
+            _ => Ok(()),
+        }
+    }
+
+    fn validate_drive(&self, c: &Checker) -> Result<()> {
         if let Some(r) = &self.rolling {
             if let Some(xi) = r.creepage {
                 c.finite("rolling.creepage", xi)?;
@@ -874,7 +973,19 @@ impl Scene {
             if r.direction != 1 && r.direction != -1 {
                 return Err(c.bad("rolling.direction", format!("must be 1 or -1 (got {})", r.direction)));
             }
+        }
+        if !self.steps.is_empty() {
+            return self.validate_steps(c);
+        }
+        let d = &self.drive;
+        self.check_drive(c, "drive", d)?;
+        if let Some(r) = &self.rolling {
             match r.mode {
+                RollingMode::Transient => {
+                    return Err(
+                        c.bad("rolling.mode", "transient rolling needs a load path (`[[steps]]` with `roll`)".into())
+                    )
+                }
                 RollingMode::Seed if r.creepage.is_none() => {
                     return Err(c.bad("rolling.creepage", "missing: the seed's eq. 12 needs the creepage".into()))
                 }

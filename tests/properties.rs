@@ -195,6 +195,7 @@ impl SceneParams {
                 self.other_elements,
             ),
             counter_body: Default::default(),
+            steps: Vec::new(),
             contact: ContactSpec { friction: self.friction, coupling: self.coupling },
             drive,
             rolling: self.creepage.map(|creepage| Rolling {

@@ -27,7 +27,7 @@ impl Dof {
 
 /// The drive of the three rigid degrees of freedom in the user's units (`DESIGN.md`): approach d_N or load P,
 /// shift d_T or load Q, rotation φ or moment M.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Drive {
     /// Normal: approach d_N (length) or P = ∫p dx.
     pub normal: Dof,

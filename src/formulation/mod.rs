@@ -121,6 +121,8 @@ pub struct ContactProblem<'a> {
     pub lcp: Option<Lcp>,
     /// The affine map of the tangential forces of the frictional LCP (see [`lcp::Frictional`]).
     pub tangential: Option<lcp::TangentialMap>,
+    /// A nearby solution (the previous step's, on a load path), which an iterative solver may start from.
+    pub warm: Option<Solution>,
 }
 
 /// A solver's answer in the problem's dimensionless unknowns: the one solution shape of every solver.
@@ -173,7 +175,18 @@ impl<'a> ContactProblem<'a> {
             }
         };
         let dofs = drive::rigid_dofs(flex, &drive, &slip);
-        let mut p = ContactProblem { flex, law, drive, kind, dofs, slip, normal: None, lcp: None, tangential: None };
+        let mut p = ContactProblem {
+            flex,
+            law,
+            drive,
+            kind,
+            dofs,
+            slip,
+            normal: None,
+            lcp: None,
+            tangential: None,
+            warm: None,
+        };
         match p.kind {
             ProblemKind::Frictionless | ProblemKind::SlidingLimit { .. } => {
                 let (normal, lcp) = lcp::normal_lcp(&p);

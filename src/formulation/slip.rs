@@ -28,6 +28,10 @@
 //!   increase, and Carter's theory confirms it: the stick zone comes out at the leading edge (`tests/rolling.rs`).
 //!   ξ > 0 is braking (the wheel's surface slower than the ground): the slip is positive and the friction on the
 //!   wheel, q = −μp, negative.
+//! - **Load step** (quasi-static history, [`crate::history`]): s = Δu_T = u_T − u_T,prev, the slip increment since the
+//!   previous step: D = I, c = −u_T,prev (material-tracked: when the contact rolls by d during the step, node i
+//!   holds the material that was at x_i + dir·d, and the rigid creep ξ d adds to c). Coulomb's law on the increment
+//!   is the incremental law of Mindlin–Deresiewicz and Spence: friction remembers the path.
 //!
 //! The LCP builder ([`super::lcp`]), NORM-TANG ([`crate::solvers::normtang`]) and the solver-independent residuals
 //! ([`crate::post`]) all take the slip from here, so a new kinematics (steady rolling s = ξ + D u_T, a load step
@@ -45,6 +49,9 @@ pub enum SlipKind {
         /// The rolling direction, +1 towards +x.
         direction: i32,
     },
+    /// s = u_T + c: the slip increment of a load step, c = −(the material's tangential displacement at the previous
+    /// step's end) + ξ d (the rigid creep over a rolled distance d).
+    Increment,
 }
 
 /// The slip operator s = D u_T + c (see the module docs).
@@ -68,6 +75,11 @@ impl SlipOperator {
     /// (±1): D is the upwind difference of the module docs; the creepage is the problem's tangential DOF.
     pub fn steady(x: &[f64], direction: i32) -> SlipOperator {
         SlipOperator { kind: SlipKind::Steady { direction }, d: Some(upwind(x, direction)), offset: None }
+    }
+
+    /// The slip increment of a load step: s = u_T + c with c = `offset` (see the module docs).
+    pub fn increment(offset: Vec<f64>) -> SlipOperator {
+        SlipOperator { kind: SlipKind::Increment, d: None, offset: Some(offset) }
     }
 
     /// Whether this is the steady-rolling operator (whose tangential DOF is the creepage).

@@ -79,6 +79,8 @@ pub struct Split {
     pub normal: Dof,
     /// Tangential drive, dimensionless.
     pub tangential: Dof,
+    /// A starting guess (f, h, rigid motion by slot): the problem's warm start, if any.
+    pub start: Option<(Vec<f64>, Vec<f64>, [f64; 3])>,
 }
 
 impl Split {
@@ -150,6 +152,15 @@ impl Split {
             rigid_given,
             normal,
             tangential,
+            start: p.warm.as_ref().map(|w| {
+                let mut rigid = rigid_given;
+                for (d, v) in p.dofs.iter().zip(&w.rigid) {
+                    if d.is_load() {
+                        rigid[slot(d.kind)] = *v;
+                    }
+                }
+                (w.f.clone(), w.h.clone().unwrap_or_else(|| vec![0.0; n]), rigid)
+            }),
         }
     }
 }
@@ -372,9 +383,10 @@ fn root<F: FnMut(f64) -> Result<f64, Failure>>(
 /// Solve the split problem.
 pub fn solve(p: &Split, inner: &Inner) -> Outcome {
     let n = p.n;
-    let mut f = vec![0.0; n];
-    let mut h = vec![0.0; n];
-    let mut rigid = p.rigid_given;
+    let (mut f, mut h, mut rigid) = match &p.start {
+        Some((f, h, r)) => (f.clone(), h.clone(), *r),
+        None => (vec![0.0; n], vec![0.0; n], p.rigid_given),
+    };
     let mut sweeps = 0usize;
     let mut qp_iterations = 0u32;
     let (tolerance, max_outer) = match inner {
