@@ -90,7 +90,7 @@ fn frictionless_solve(c: &mut Criterion) {
         let (flex, _, _) = condense(&Model::new(&s), Blocks::Normal).unwrap();
         let prob = build_problem(&s, &flex, Path::new("bench")).unwrap();
         let nc = flex.n();
-        let lcp = prob.lcp.clone().unwrap();
+        let lcp = prob.lcp().clone();
         g.bench_with_input(BenchmarkId::new("lemke", nc), &lcp, |b, l| {
             b.iter(|| black_box(lemke::solve(l, &LemkeSettings::default())))
         });
@@ -125,7 +125,7 @@ fn lemke_frictional(c: &mut Criterion) {
         s.drive.tangential_load = Some(18.742);
         s.drive.rotation = Some(0.0);
         let (flex, _, _) = condense(&Model::new(&s), Blocks::All).unwrap();
-        let lcp = build_problem(&s, &flex, Path::new("bench")).unwrap().lcp.unwrap();
+        let lcp = build_problem(&s, &flex, Path::new("bench")).unwrap().lcp().clone();
         let m = lcp.size();
         let probe = lemke::solve(&lcp, &LemkeSettings::default());
         eprintln!("lemke_frictional/block/{m}: {} pivots, {:?}", probe.pivots, probe.status);

@@ -188,6 +188,7 @@ fn walk<'a>(
         let formulation = tf.elapsed().as_secs_f64();
         steps[k].drive = problem.drive;
         let (outcome, solve) = solve_timed(solver, &problem);
+        let formulation = formulation + crate::run::lcp_time(solver, &problem);
         let timing = Timing {
             assembly: if k == 0 { source_time.assembly } else { 0.0 },
             condensation: if k == 0 { source_time.condensation } else { 0.0 },
@@ -199,7 +200,7 @@ fn walk<'a>(
             creepage: r.creepage.unwrap_or(0.0),
             roll: sub.roll / problem.flex.scales.length,
         });
-        let size = problem.lcp.as_ref().map_or(0, |l| l.size());
+        let size = problem.lcp_size();
         let solution = outcome.solution.clone();
         let (mut run, ev) = evaluate_outcome(&problem, solver.name(), size, outcome, timing, refuse, rolling);
         let solved = run.status == Status::Solved;

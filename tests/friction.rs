@@ -442,7 +442,7 @@ fn block_and_dense_lemke_engines_agree() {
     ] {
         let fl = source::build(&s, Blocks::All).unwrap().flex;
         let p = rollbem::run::build_problem(&s, &fl, Path::new("<test>")).unwrap();
-        let lcp = p.lcp.as_ref().unwrap();
+        let lcp = p.lcp();
         let (a, b) = (solve(lcp, &st), solve_dense(lcp, &st));
         assert_eq!(a.status, Status::Solved, "{}", a.message);
         assert_eq!(b.status, Status::Solved, "{}", b.message);

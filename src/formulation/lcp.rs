@@ -79,8 +79,8 @@ impl Lcp {
     }
 }
 
-/// The normal problem and its LCP (frictionless, or the sliding limit). See the module docs.
-pub fn normal_lcp(p: &ContactProblem) -> (super::NormalProblem, Lcp) {
+/// The normal problem (frictionless, or the sliding limit): K and q₀. See the module docs.
+pub fn normal_problem(p: &ContactProblem) -> super::NormalProblem {
     let flex = p.flex;
     let n = flex.n();
     let smu = p.limit_factor();
@@ -91,6 +91,14 @@ pub fn normal_lcp(p: &ContactProblem) -> (super::NormalProblem, Lcp) {
     let given = p.given();
     let q0: Vec<f64> =
         (0..n).map(|i| flex.g0[i] + p.dofs.iter().zip(&given).map(|(d, v)| d.gap[i] * v).sum::<f64>()).collect();
+    super::NormalProblem { k, q0 }
+}
+
+/// The LCP of the normal problem. See the module docs.
+pub fn normal_lcp(p: &ContactProblem, np: &super::NormalProblem) -> Lcp {
+    let n = p.n();
+    let smu = p.limit_factor();
+    let (k, q0) = (&np.k, &np.q0);
     let loads: Vec<(&super::RigidDof, f64, f64)> =
         p.load_dofs().map(|d| (d, d.default_sign(), d.drive.load().expect("load-driven"))).collect();
     let size = n + 2 * loads.len();
@@ -101,7 +109,7 @@ pub fn normal_lcp(p: &ContactProblem) -> (super::NormalProblem, Lcp) {
             m[(i, j)] = k[(i, j)];
         }
     }
-    q[..n].copy_from_slice(&q0);
+    q[..n].copy_from_slice(q0);
     for (b, (d, sign, load)) in loads.iter().enumerate() {
         let (cp, cm) = (n + 2 * b, n + 2 * b + 1);
         for i in 0..n {
@@ -116,7 +124,7 @@ pub fn normal_lcp(p: &ContactProblem) -> (super::NormalProblem, Lcp) {
         q[cp] = sign * load;
         q[cm] = -sign * load;
     }
-    (super::NormalProblem { k, q0 }, Lcp { m, q })
+    Lcp { m, q }
 }
 
 /// The affine map of the tangential nodal forces of the frictional LCP: `h = h_0 + h_x x`, `x = [f; λ⁺; λ⁻; ρ_L]`.

@@ -117,12 +117,21 @@ pub struct ContactProblem<'a> {
     pub slip: SlipOperator,
     /// The normal problem (frictionless and sliding limit).
     pub normal: Option<NormalProblem>,
-    /// The LCP with the default slack signs (every kind but gross sliding).
-    pub lcp: Option<Lcp>,
-    /// The affine map of the tangential forces of the frictional LCP (see [`lcp::Frictional`]).
-    pub tangential: Option<lcp::TangentialMap>,
+    /// The LCP with the default slack signs, built on first use ([`ContactProblem::lcp`]): a solver that works on the
+    /// physical unknowns never pays for it (the frictional LCP costs several n³ and (3n)² memory).
+    lcp_cache: std::sync::OnceLock<LcpBuild>,
     /// A nearby solution (the previous step's, on a load path), which an iterative solver may start from.
     pub warm: Option<Solution>,
+}
+
+/// The LCP of a problem, built once.
+#[derive(Debug, Clone)]
+struct LcpBuild {
+    lcp: Lcp,
+    /// The affine map of the tangential forces of the frictional LCP (see [`lcp::Frictional`]).
+    tangential: Option<lcp::TangentialMap>,
+    /// Seconds it took.
+    seconds: f64,
 }
 
 /// A solver's answer in the problem's dimensionless unknowns: the one solution shape of every solver.
@@ -183,25 +192,55 @@ impl<'a> ContactProblem<'a> {
             dofs,
             slip,
             normal: None,
-            lcp: None,
-            tangential: None,
+            lcp_cache: std::sync::OnceLock::new(),
             warm: None,
         };
-        match p.kind {
-            ProblemKind::Frictionless | ProblemKind::SlidingLimit { .. } => {
-                let (normal, lcp) = lcp::normal_lcp(&p);
-                p.normal = Some(normal);
-                p.lcp = Some(lcp);
-            }
-            ProblemKind::Frictional => {
-                let signs: Vec<f64> = p.load_dofs().map(|d| d.default_sign()).collect();
-                let fr = lcp::frictional_lcp(&p, &signs);
-                p.lcp = Some(fr.lcp);
-                p.tangential = Some(fr.map);
-            }
-            ProblemKind::GrossSliding { .. } => {}
+        if p.normal_only() {
+            p.normal = Some(lcp::normal_problem(&p));
         }
         Ok(p)
+    }
+
+    /// The LCP with the default slack signs (built on the first call).
+    ///
+    /// # Panics
+    /// Beyond gross sliding (no static problem, no LCP).
+    pub fn lcp(&self) -> &Lcp {
+        &self.lcp_build().lcp
+    }
+
+    /// Seconds the LCP took to build, once built.
+    pub fn lcp_build_time(&self) -> Option<f64> {
+        self.lcp_cache.get().map(|b| b.seconds)
+    }
+
+    /// The number of LCP unknowns (without building it): n + 2L for the normal problem, 3n + 2L frictional, 0
+    /// beyond gross sliding.
+    pub fn lcp_size(&self) -> usize {
+        let l = 2 * self.load_dofs().count();
+        match self.kind {
+            ProblemKind::Frictionless | ProblemKind::SlidingLimit { .. } => self.n() + l,
+            ProblemKind::Frictional => 3 * self.n() + l,
+            ProblemKind::GrossSliding { .. } => 0,
+        }
+    }
+
+    fn lcp_build(&self) -> &LcpBuild {
+        self.lcp_cache.get_or_init(|| {
+            let t0 = std::time::Instant::now();
+            let (lcp, tangential) = match self.kind {
+                ProblemKind::Frictionless | ProblemKind::SlidingLimit { .. } => {
+                    (lcp::normal_lcp(self, self.normal.as_ref().expect("the normal problem")), None)
+                }
+                ProblemKind::Frictional => {
+                    let signs: Vec<f64> = self.load_dofs().map(|d| d.default_sign()).collect();
+                    let fr = lcp::frictional_lcp(self, &signs);
+                    (fr.lcp, Some(fr.map))
+                }
+                ProblemKind::GrossSliding { .. } => panic!("no LCP beyond gross sliding"),
+            };
+            LcpBuild { lcp, tangential, seconds: t0.elapsed().as_secs_f64() }
+        })
     }
 
     /// Number of contact nodes.
@@ -269,9 +308,9 @@ impl<'a> ContactProblem<'a> {
             }
         }
         let f = z[..n].to_vec();
-        let h = match (&self.kind, &self.tangential) {
-            (ProblemKind::Frictional, Some(map)) => Some(map.h(&z[..3 * n], &load_values)),
-            (ProblemKind::SlidingLimit { .. }, _) => Some(f.iter().map(|v| self.limit_factor() * v).collect()),
+        let h = match &self.kind {
+            ProblemKind::Frictional => self.lcp_build().tangential.as_ref().map(|map| map.h(&z[..3 * n], &load_values)),
+            ProblemKind::SlidingLimit { .. } => Some(f.iter().map(|v| self.limit_factor() * v).collect()),
             _ => None,
         };
         let tangential_known = !matches!(self.kind, ProblemKind::SlidingLimit { .. });

@@ -64,6 +64,12 @@ pub trait Solver: Send + Sync {
         None
     }
 
+    /// Whether the solver solves the problem's LCP ([`ContactProblem::lcp`]): the harness then builds it before the
+    /// solve and counts its time as formulation time, as for a solver on the physical unknowns it is not built.
+    fn uses_lcp(&self) -> bool {
+        false
+    }
+
     /// Whether the solver works on bare LCPs (`rollbem lcp solve`).
     fn solves_lcp(&self) -> bool {
         false

@@ -202,12 +202,16 @@ impl Solver for Lemke {
         true
     }
 
+    fn uses_lcp(&self) -> bool {
+        true
+    }
+
     fn solve_lcp(&self, lcp: &Lcp) -> Option<LemkeOutcome> {
         Some((self.engine)(lcp, &self.settings))
     }
 
     fn solve(&self, p: &ContactProblem) -> Outcome {
-        let lcp = p.lcp.as_ref().expect("a problem with a static solution has an LCP");
+        let lcp = p.lcp();
         let out = match p.kind {
             ProblemKind::Frictional => self.frictional(p).1,
             ProblemKind::SlidingLimit { .. } => {
@@ -237,7 +241,7 @@ impl Lemke {
     /// load-driven DOFs (the same solution set; see [`crate::formulation::lcp`]). Returns the LCP that was solved
     /// (when a retry solved it) and the outcome, with the pivots of all attempts summed.
     pub fn frictional(&self, p: &ContactProblem) -> (Option<Lcp>, LemkeOutcome) {
-        let lcp = p.lcp.as_ref().expect("frictional LCP");
+        let lcp = p.lcp();
         let mut out = (self.engine)(lcp, &self.settings);
         let defaults: Vec<f64> = p.load_dofs().map(|d| d.default_sign()).collect();
         let loads = defaults.len();
@@ -273,9 +277,9 @@ impl Lemke {
             ProblemKind::GrossSliding { .. } => None,
             ProblemKind::Frictional => {
                 let (solved_by, _) = self.frictional(p);
-                solved_by.or_else(|| p.lcp.clone())
+                solved_by.or_else(|| Some(p.lcp().clone()))
             }
-            _ => p.lcp.clone(),
+            _ => Some(p.lcp().clone()),
         }
     }
 }
