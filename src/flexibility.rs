@@ -102,6 +102,43 @@ impl Flexibility {
         self.k_tt.is_some()
     }
 
+    /// The flexibility of every `stride`-th contact node (a coarse model of the same contact: each kept node carries
+    /// the force of the `stride` nodes around it, its tributary length their sum), for a cheap first guess.
+    pub fn coarse(&self, stride: usize) -> Flexibility {
+        let n = self.n();
+        let idx: Vec<usize> = (0..n).step_by(stride.max(1)).collect();
+        let pick_mat = |m: &Mat<f64>| Mat::from_fn(idx.len(), idx.len(), |i, j| m[(idx[i], idx[j])]);
+        let pick = |v: &[f64]| idx.iter().map(|&i| v[i]).collect::<Vec<f64>>();
+        let weights = idx
+            .iter()
+            .map(|&i| {
+                let lo = i.saturating_sub(stride / 2);
+                let hi = (i + stride - stride / 2).min(n);
+                self.weights[lo..hi].iter().sum()
+            })
+            .collect();
+        Flexibility {
+            k_nn: pick_mat(&self.k_nn),
+            k_nt: self.k_nt.as_ref().map(pick_mat),
+            k_tn: self.k_tn.as_ref().map(pick_mat),
+            k_tt: self.k_tt.as_ref().map(pick_mat),
+            modes: self
+                .modes
+                .iter()
+                .map(|m| RigidMode {
+                    kind: m.kind,
+                    normal: pick(&m.normal),
+                    tangential: m.tangential.as_ref().map(|t| pick(t)),
+                })
+                .collect(),
+            x: pick(&self.x),
+            y: pick(&self.y),
+            g0: pick(&self.g0),
+            weights,
+            scales: self.scales,
+        }
+    }
+
     /// The rigid mode of a kind, if the source offers it.
     pub fn mode(&self, kind: ModeKind) -> Option<&RigidMode> {
         self.modes.iter().find(|m| m.kind == kind)

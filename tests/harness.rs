@@ -96,13 +96,13 @@ fn effects_and_problem_sizes_are_what_the_scene_calls_for() {
 
 #[test]
 fn registry_all_runs_only_valid_solvers_and_refuses_invalid_ones() {
-    // A moment load: only Lemke carries it.
+    // A moment load: only Lemke and the active-set method carry it (the QP and NORM-TANG splits do not).
     let mut s = load("cattaneo-decoupled.toml");
     s.drive.rotation = None;
     s.drive.moment = Some(18.742 * 1.0 + 187.42 * 0.001);
     let r = run(&s);
     let names: Vec<&str> = r.runs.iter().map(|x| x.solver.0).collect();
-    assert_eq!(names, ["lemke"]);
+    assert_eq!(names, ["lemke", "active_set"]);
     s.solvers.use_ = vec!["pgs".to_string()];
     let e = run_scene(&s, Path::new("x.toml")).unwrap_err().to_string();
     assert!(e.contains("solvers.use") && e.contains("pgs") && e.contains("moment"), "{e}");

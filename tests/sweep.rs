@@ -161,6 +161,8 @@ fn shards_merge_to_the_unsharded_sweep() {
         "problem_size",
         "pivots",
         "iterations",
+        "factorisations",
+        "gmres",
         "sweeps",
         "outer",
         "residual",

@@ -82,6 +82,18 @@ impl SlipOperator {
         SlipOperator { kind: SlipKind::Increment, d: None, offset: Some(offset) }
     }
 
+    /// The same kinematics on every `stride`-th node of a grid whose kept x are `x_coarse` (see
+    /// [`crate::flexibility::Flexibility::coarse`]).
+    pub fn coarse(&self, stride: usize, x_coarse: &[f64]) -> SlipOperator {
+        match self.kind {
+            SlipKind::Static => SlipOperator::static_slip(),
+            SlipKind::Steady { direction } => SlipOperator::steady(x_coarse, direction),
+            SlipKind::Increment => SlipOperator::increment(
+                self.offset.as_ref().map_or_else(Vec::new, |c| c.iter().step_by(stride.max(1)).copied().collect()),
+            ),
+        }
+    }
+
     /// Whether this is the steady-rolling operator (whose tangential DOF is the creepage).
     pub fn is_steady(&self) -> bool {
         matches!(self.kind, SlipKind::Steady { .. })

@@ -10,6 +10,7 @@
 //! Adding a solver: one file with its settings (serde, `validate`), its [`Solver`] impl and an [`Entry`], plus one
 //! line in [`REGISTRY`].
 
+pub mod active_set;
 pub mod clarabel;
 pub mod clarabel_box;
 pub mod clarabel_qp;
@@ -25,8 +26,14 @@ use serde::de::DeserializeOwned;
 use serde::Serialize;
 
 /// The registry: every solver rollbem has, in the order runs are reported.
-pub static REGISTRY: &[Entry] =
-    &[lemke::ENTRY, clarabel::ENTRY, normtang::PGS_ENTRY, normtang::NORMTANG_QP_ENTRY, lemke::dense::ENTRY];
+pub static REGISTRY: &[Entry] = &[
+    lemke::ENTRY,
+    active_set::ENTRY,
+    clarabel::ENTRY,
+    normtang::PGS_ENTRY,
+    normtang::NORMTANG_QP_ENTRY,
+    lemke::dense::ENTRY,
+];
 
 /// Builds a solver from its settings table (`None`: the documented defaults).
 pub type Builder = fn(Option<&toml::Value>) -> Result<Box<dyn Solver>, SettingsError>;

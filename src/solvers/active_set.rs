@@ -1,0 +1,808 @@
+//! A primal–dual active-set method for the contact problem on its physical unknowns (nodal forces f, h and the
+//! load-driven rigid motions): a semi-smooth Newton method on the complementarity functions of the contact and
+//! friction laws (Hintermüller, Ito & Kunisch 2002 for the normal problem; Hüeber & Wohlmuth 2005 and Hüeber,
+//! Stadler & Wohlmuth 2008 for Coulomb friction), each iteration one linear solve of the active block.
+//!
+//! **Why this method.** Lemke's cost grows with the whole LCP (3n + 2L unknowns, one pivot per node that changes
+//! state, each pivot touching every basic column), and the LCP itself costs several n³ to build. The active-set
+//! method works on the physical equations directly: it never forms the LCP, each iteration solves one dense system
+//! of the size of the *active* block (contact nodes' f, sticking nodes' h, load-driven rigid motions), and from a
+//! warm start (the frictionless solution, or the previous load step) it needs a handful of iterations. Block
+//! principal pivoting (Júdice–Pires) would work on the LCP and pay for building it; a semi-smooth Newton on the
+//! physical unknowns does not.
+//!
+//! **The iteration.** Each node is separated (f = h = 0), sticking (g = 0, s = 0), or slipping with σ = ±1
+//! (g = 0, h = −σμf: friction opposes a slip of sign σ). For given sets the equations — the gap and slip of the
+//! problem's flexibility and slip operator, and the equilibrium rows — are linear; their solution updates the
+//! sets by the complementarity functions, with the limits c → ∞ of the usual constants (exact, since one of each
+//! complementary pair vanishes at every iterate):
+//! - a contact node with f < 0 separates; a separated node with g < 0 comes into contact, slipping in the direction
+//!   of its current slip (it carries no force yet) or sticking if it does not slip;
+//! - a sticking node with |h| > μf slips with σ = −sgn h; a slipping node whose slip reverses (σ s < 0) sticks.
+//!
+//! When no node changes set, every condition holds and the iterate is the solution (the harness then certifies it by
+//! the solver-independent residuals). A set seen before (cycling) or the iteration limit makes it fall back to
+//! Lemke, and the message says so.
+//!
+//! **Start.** From the problem's warm start when it has one; otherwise the normal problem is solved first with the
+//! shear fixed at zero (every node starting in contact), then friction starts with every contact node sticking.
+
+use super::lemke::{self, Lemke, LemkeSettings};
+use super::{Entry, Outcome, Solver, Status, Validate, Work};
+use crate::formulation::{ContactProblem, ProblemKind, Solution};
+use faer::linalg::solvers::Solve;
+use faer::Mat;
+use serde::{Deserialize, Serialize};
+use std::collections::HashSet;
+
+/// Settings of the active-set method (`[solvers.active_set]`).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct ActiveSetSettings {
+    /// Largest number of active-set iterations before falling back to Lemke. Default 100.
+    pub max_iterations: usize,
+    /// Relative margin of the set updates (of the force, gap and slip scales): values within it of a bound do not
+    /// change a node's set (round-off must not make the sets chatter). Default 1e-12.
+    pub margin: f64,
+}
+
+impl Default for ActiveSetSettings {
+    fn default() -> Self {
+        ActiveSetSettings { max_iterations: 100, margin: 1e-12 }
+    }
+}
+
+impl Validate for ActiveSetSettings {
+    fn validate(&self) -> Result<(), (&'static str, String)> {
+        super::check_count("max_iterations", self.max_iterations)?;
+        super::check_tolerance("margin", self.margin)
+    }
+}
+
+/// The active-set solver.
+pub struct ActiveSet {
+    /// Its settings.
+    pub settings: ActiveSetSettings,
+}
+
+/// Registry entry.
+pub const ENTRY: Entry = Entry {
+    name: "active_set",
+    summary: "primal–dual active-set (semi-smooth Newton) on the physical unknowns, warm-started, Lemke as fallback; \
+              every scene",
+    in_all: true,
+    counters: &["iterations", "factorisations", "gmres", "pivots"],
+    build: |raw| Ok(Box::new(ActiveSet { settings: super::parse_settings("active_set", raw)? })),
+};
+
+/// The state of a node.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+enum NodeSet {
+    Separated,
+    Stick,
+    /// Slipping with slip sign σ (h = −σμf).
+    Slip(i8),
+}
+
+/// The problem's data the iteration needs (dimensionless).
+struct Data<'p> {
+    n: usize,
+    mu: f64,
+    frictional: bool,
+    /// Gap matrix on f (K_NN, or the sliding limit's K).
+    knn: &'p Mat<f64>,
+    /// Gap matrix on h (K_NT with coupling).
+    knt: Option<&'p Mat<f64>>,
+    /// Slip matrix on f (D K_TN with coupling).
+    atn: Option<Mat<f64>>,
+    /// Slip matrix on h (D K_TT).
+    att: Option<Mat<f64>>,
+    /// Gap and slip with f = h = 0 and the load-driven motions 0.
+    g_const: Vec<f64>,
+    s_const: Vec<f64>,
+    /// Load-driven DOFs.
+    loads: Vec<LoadRow>,
+}
+
+/// A load-driven DOF: its responses, its equilibrium row and its load.
+struct LoadRow {
+    /// Gap response per unit motion.
+    gap: Vec<f64>,
+    /// Slip response per unit motion.
+    slip: Vec<f64>,
+    /// Equilibrium row on f (with σμ row_t at the sliding limit).
+    row_n: Vec<f64>,
+    /// Equilibrium row on h.
+    row_t: Vec<f64>,
+    /// The prescribed resultant.
+    load: f64,
+}
+
+impl<'p> Data<'p> {
+    /// The data of a problem; with `normal_phase`, the normal problem of a frictional one with the shear fixed at
+    /// zero (its tangential load DOF dropped).
+    fn of(p: &'p ContactProblem, normal_phase: bool) -> Data<'p> {
+        let flex = p.flex;
+        let n = flex.n();
+        let mu = p.law.friction;
+        let frictional = p.kind == ProblemKind::Frictional && !normal_phase;
+        let given = p.given();
+        let smu = p.limit_factor();
+        let (knn, g_const) = match &p.normal {
+            Some(np) => (&np.k, np.q0.clone()),
+            None => {
+                let g: Vec<f64> = (0..n)
+                    .map(|i| flex.g0[i] + p.dofs.iter().zip(&given).map(|(d, v)| d.gap[i] * v).sum::<f64>())
+                    .collect();
+                (&flex.k_nn, g)
+            }
+        };
+        let coupling = p.law.coupling && frictional;
+        let (knt, atn, att, s_const) = if frictional {
+            let att = p.slip.apply_mat(flex.k_tt.as_ref().expect("tangential blocks"));
+            let atn = coupling.then(|| p.slip.apply_mat(flex.k_tn.as_ref().expect("K_TN")));
+            let knt = if coupling { flex.k_nt.as_ref() } else { None };
+            let mut s: Vec<f64> = p.slip.offset.clone().unwrap_or_else(|| vec![0.0; n]);
+            for (d, v) in p.dofs.iter().zip(&given) {
+                if let Some(t) = &d.slip {
+                    for i in 0..n {
+                        s[i] += t[i] * v;
+                    }
+                }
+            }
+            (knt, atn, Some(att), s)
+        } else {
+            (None, None, None, vec![0.0; n])
+        };
+        let loads = p
+            .load_dofs()
+            .filter(|d| !(normal_phase && d.kind.is_tangential()))
+            .map(|d| {
+                let row_n: Vec<f64> = (0..n).map(|i| d.row_n[i] + smu * d.row_t[i]).collect();
+                let slip = d.slip.clone().unwrap_or_else(|| vec![0.0; n]);
+                LoadRow {
+                    gap: d.gap.clone(),
+                    slip,
+                    row_n,
+                    row_t: d.row_t.clone(),
+                    load: d.drive.load().expect("load-driven"),
+                }
+            })
+            .collect();
+        Data { n, mu, frictional, knn, knt, atn, att, g_const, s_const, loads }
+    }
+}
+
+/// An iterate: forces, load-driven motions, and the gaps and slips they give at every node.
+struct Iterate {
+    f: Vec<f64>,
+    h: Vec<f64>,
+    rho: Vec<f64>,
+    g: Vec<f64>,
+    s: Vec<f64>,
+}
+
+/// The factor e_j of h_j = e_j f_j at a slipping node (0 elsewhere: a sticking node's h is an unknown).
+fn slip_factor(d: &Data, set: NodeSet) -> f64 {
+    match set {
+        NodeSet::Slip(sg) if d.frictional => -(sg as f64) * d.mu,
+        _ => 0.0,
+    }
+}
+
+/// The system of given sets in the *full* unknowns y = [f (n); h (n, frictional only); ρ (L)]: one normal row per
+/// node (f_i = ·, or g_i = ·), one tangential row per node (h_i = ·, s_i = ·, or h_i + σμ f_i = ·), one row per
+/// load-driven DOF. The active-set step solves it with right-hand side [−g_const; −s_const; L] on the trivial rows
+/// 0; the reduced system ([`Reduced`]) is its non-trivial block.
+struct Full<'d, 'p> {
+    d: &'d Data<'p>,
+    sets: Vec<NodeSet>,
+}
+
+impl Full<'_, '_> {
+    fn size(&self) -> usize {
+        if self.d.frictional {
+            2 * self.d.n + self.d.loads.len()
+        } else {
+            self.d.n + self.d.loads.len()
+        }
+    }
+
+    /// The right-hand side of the active-set step.
+    fn rhs(&self) -> Vec<f64> {
+        let d = self.d;
+        let n = d.n;
+        let mut b = vec![0.0; self.size()];
+        for i in 0..n {
+            if self.sets[i] != NodeSet::Separated {
+                b[i] = -d.g_const[i];
+            }
+            if d.frictional && self.sets[i] == NodeSet::Stick {
+                b[n + i] = -d.s_const[i];
+            }
+        }
+        let base = self.size() - d.loads.len();
+        for (l, ld) in d.loads.iter().enumerate() {
+            b[base + l] = ld.load;
+        }
+        b
+    }
+
+    /// E(sets) y.
+    fn apply(&self, y: &[f64]) -> Vec<f64> {
+        let d = self.d;
+        let n = d.n;
+        let (f, h, rho) = self.split(y);
+        let (g, s) = kinematics(d, f, h, rho, false);
+        let mut out = vec![0.0; self.size()];
+        for i in 0..n {
+            out[i] = if self.sets[i] == NodeSet::Separated { f[i] } else { g[i] };
+            if d.frictional {
+                out[n + i] = match self.sets[i] {
+                    NodeSet::Separated => h[i],
+                    NodeSet::Stick => s[i],
+                    NodeSet::Slip(_) => h[i] - slip_factor(d, self.sets[i]) * f[i],
+                };
+            }
+        }
+        let base = self.size() - d.loads.len();
+        for (l, ld) in d.loads.iter().enumerate() {
+            out[base + l] =
+                (0..n).map(|j| ld.row_n[j] * f[j] + if d.frictional { ld.row_t[j] * h[j] } else { 0.0 }).sum();
+        }
+        out
+    }
+
+    fn split<'y>(&self, y: &'y [f64]) -> (&'y [f64], &'y [f64], &'y [f64]) {
+        let n = self.d.n;
+        if self.d.frictional {
+            (&y[..n], &y[n..2 * n], &y[2 * n..])
+        } else {
+            (&y[..n], &y[n..n], &y[n..])
+        }
+    }
+}
+
+/// K v for a column-major K (a contiguous pass per column, through faer's matrix product).
+fn matvec(k: &Mat<f64>, v: &[f64]) -> Vec<f64> {
+    let x = faer::ColRef::from_slice(v);
+    let y = k * x;
+    y.iter().copied().collect()
+}
+
+/// g and s of forces and load-driven motions; with `constants` the constant parts are included (the physical gap
+/// and slip), without them the linear map only.
+fn kinematics(d: &Data, f: &[f64], h: &[f64], rho: &[f64], constants: bool) -> (Vec<f64>, Vec<f64>) {
+    let n = d.n;
+    let c = if constants { 1.0 } else { 0.0 };
+    let mut g = matvec(d.knn, f);
+    if let Some(k) = d.knt {
+        g.iter_mut().zip(matvec(k, h)).for_each(|(a, b)| *a += b);
+    }
+    for i in 0..n {
+        g[i] += c * d.g_const[i] + d.loads.iter().zip(rho).map(|(ld, r)| ld.gap[i] * r).sum::<f64>();
+    }
+    let s = match &d.att {
+        Some(att) => {
+            let mut s = matvec(att, h);
+            if let Some(k) = &d.atn {
+                s.iter_mut().zip(matvec(k, f)).for_each(|(a, b)| *a += b);
+            }
+            for i in 0..n {
+                s[i] += c * d.s_const[i] + d.loads.iter().zip(rho).map(|(ld, r)| ld.slip[i] * r).sum::<f64>();
+            }
+            s
+        }
+        None => vec![0.0; n],
+    };
+    (g, s)
+}
+
+/// The non-trivial block of the full system of some sets, factorised: unknowns f_C (contact nodes), h_S (sticking
+/// nodes), ρ; rows the contact nodes' gaps, the sticking nodes' slips and the equilibrium rows. Solving the full
+/// system for any right-hand side r takes one solve with it ([`Reduced::solve_full`]).
+struct Reduced {
+    sets: Vec<NodeSet>,
+    contact: Vec<usize>,
+    stick: Vec<usize>,
+    lu: Option<faer::linalg::solvers::PartialPivLu<f64>>,
+}
+
+impl Reduced {
+    fn new(d: &Data, sets: &[NodeSet]) -> Reduced {
+        let n = d.n;
+        let contact: Vec<usize> = (0..n).filter(|&i| sets[i] != NodeSet::Separated).collect();
+        let stick: Vec<usize> =
+            if d.frictional { (0..n).filter(|&i| sets[i] == NodeSet::Stick).collect() } else { vec![] };
+        let (nc, ns, nl) = (contact.len(), stick.len(), d.loads.len());
+        let m = nc + ns + nl;
+        let e = |j: usize| slip_factor(d, sets[j]);
+        let mut a = Mat::<f64>::zeros(m, m);
+        for (c, &j) in contact.iter().enumerate() {
+            let ej = e(j);
+            for (r, &i) in contact.iter().enumerate() {
+                a[(r, c)] = d.knn[(i, j)] + d.knt.map_or(0.0, |k| k[(i, j)] * ej);
+            }
+            if let Some(att) = &d.att {
+                for (r, &i) in stick.iter().enumerate() {
+                    a[(nc + r, c)] = d.atn.as_ref().map_or(0.0, |k| k[(i, j)]) + att[(i, j)] * ej;
+                }
+            }
+            for (l, ld) in d.loads.iter().enumerate() {
+                a[(nc + ns + l, c)] = ld.row_n[j] + ld.row_t[j] * ej;
+            }
+        }
+        for (c, &j) in stick.iter().enumerate() {
+            if let Some(knt) = d.knt {
+                for (r, &i) in contact.iter().enumerate() {
+                    a[(r, nc + c)] = knt[(i, j)];
+                }
+            }
+            let att = d.att.as_ref().expect("stick nodes only with friction");
+            for (r, &i) in stick.iter().enumerate() {
+                a[(nc + r, nc + c)] = att[(i, j)];
+            }
+            for (l, ld) in d.loads.iter().enumerate() {
+                a[(nc + ns + l, nc + c)] = ld.row_t[j];
+            }
+        }
+        for (l, ld) in d.loads.iter().enumerate() {
+            for (r, &i) in contact.iter().enumerate() {
+                a[(r, nc + ns + l)] = ld.gap[i];
+            }
+            for (r, &i) in stick.iter().enumerate() {
+                a[(nc + r, nc + ns + l)] = ld.slip[i];
+            }
+        }
+        let lu = (m > 0).then(|| a.partial_piv_lu());
+        Reduced { sets: sets.to_vec(), contact, stick, lu }
+    }
+
+    /// Solve the full system of these sets for the right-hand side r (full layout); `None` if singular.
+    fn solve_full(&self, d: &Data, r: &[f64]) -> Option<Vec<f64>> {
+        let n = d.n;
+        let full = Full { d, sets: self.sets.clone() };
+        let nfull = full.size();
+        let base = nfull - d.loads.len();
+        // Known values: f and h of separated nodes, the constant part of h at slipping nodes.
+        let mut known = vec![0.0; nfull];
+        for i in 0..n {
+            match self.sets[i] {
+                NodeSet::Separated => {
+                    known[i] = r[i];
+                    if d.frictional {
+                        known[n + i] = r[n + i];
+                    }
+                }
+                NodeSet::Slip(_) if d.frictional => known[n + i] = r[n + i],
+                _ => {}
+            }
+        }
+        let (f, h, rho) = full.split(&known);
+        let (g, s) = kinematics(d, f, h, rho, false);
+        let (nc, ns, nl) = (self.contact.len(), self.stick.len(), d.loads.len());
+        let mut b = Mat::<f64>::zeros(nc + ns + nl, 1);
+        for (k, &i) in self.contact.iter().enumerate() {
+            b[(k, 0)] = r[i] - g[i];
+        }
+        for (k, &i) in self.stick.iter().enumerate() {
+            b[(nc + k, 0)] = r[n + i] - s[i];
+        }
+        for (l, ld) in d.loads.iter().enumerate() {
+            let known_row: f64 =
+                (0..n).map(|j| ld.row_n[j] * f[j] + if d.frictional { ld.row_t[j] * h[j] } else { 0.0 }).sum();
+            b[(nc + ns + l, 0)] = r[base + l] - known_row;
+        }
+        let y = match &self.lu {
+            Some(lu) => lu.solve(&b),
+            None => Mat::zeros(0, 1),
+        };
+        if !(0..y.nrows()).all(|k| y[(k, 0)].is_finite()) {
+            return None;
+        }
+        let mut out = known;
+        for (k, &j) in self.contact.iter().enumerate() {
+            out[j] = y[(k, 0)];
+            if d.frictional {
+                out[n + j] += slip_factor(d, self.sets[j]) * y[(k, 0)];
+            }
+        }
+        for (k, &j) in self.stick.iter().enumerate() {
+            out[n + j] = y[(nc + k, 0)];
+        }
+        for l in 0..nl {
+            out[base + l] = y[(nc + ns + l, 0)];
+        }
+        Some(out)
+    }
+}
+
+/// Right-preconditioned restarted GMRES for E y = b from y0, with the preconditioner `prec` (an exact solve of a
+/// nearby system); returns the solution and the iterations, or `None` when it does not reach `tol` (relative to
+/// ‖b‖) within `max_iter`.
+fn gmres(
+    e: &dyn Fn(&[f64]) -> Vec<f64>,
+    prec: &dyn Fn(&[f64]) -> Option<Vec<f64>>,
+    b: &[f64],
+    y0: &[f64],
+    tol: f64,
+    max_iter: usize,
+) -> Option<(Vec<f64>, usize)> {
+    let norm = |v: &[f64]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let bnorm = norm(b).max(f64::MIN_POSITIVE);
+    let mut y = y0.to_vec();
+    let mut total = 0;
+    let restart = 60;
+    while total < max_iter {
+        let ey = e(&y);
+        let r: Vec<f64> = b.iter().zip(&ey).map(|(b, v)| b - v).collect();
+        let beta = norm(&r);
+        if beta <= tol * bnorm {
+            return Some((y, total));
+        }
+        let mut v: Vec<Vec<f64>> = vec![r.iter().map(|x| x / beta).collect()];
+        let mut z: Vec<Vec<f64>> = Vec::new();
+        let mut hm: Vec<Vec<f64>> = Vec::new(); // columns of the Hessenberg matrix
+        let (mut cs, mut sn): (Vec<f64>, Vec<f64>) = (Vec::new(), Vec::new());
+        let mut gvec = vec![beta];
+        let mut k = 0;
+        while k < restart && total < max_iter {
+            let zk = prec(&v[k])?;
+            let mut w = e(&zk);
+            z.push(zk);
+            let mut col = vec![0.0; k + 2];
+            for (i, vi) in v.iter().enumerate() {
+                let hij: f64 = w.iter().zip(vi).map(|(a, b)| a * b).sum();
+                col[i] = hij;
+                for (wj, vj) in w.iter_mut().zip(vi) {
+                    *wj -= hij * vj;
+                }
+            }
+            col[k + 1] = norm(&w);
+            for i in 0..k {
+                let t = cs[i] * col[i] + sn[i] * col[i + 1];
+                col[i + 1] = -sn[i] * col[i] + cs[i] * col[i + 1];
+                col[i] = t;
+            }
+            let rr = col[k].hypot(col[k + 1]);
+            let (c, s) = if rr == 0.0 { (1.0, 0.0) } else { (col[k] / rr, col[k + 1] / rr) };
+            cs.push(c);
+            sn.push(s);
+            col[k] = rr;
+            let hk1 = col[k + 1];
+            col[k + 1] = 0.0;
+            gvec.push(-s * gvec[k]);
+            gvec[k] *= c;
+            hm.push(col);
+            total += 1;
+            k += 1;
+            let converged = gvec[k].abs() <= tol * bnorm;
+            if !converged && hk1 > 0.0 {
+                v.push(w.iter().map(|x| x / hk1).collect());
+            }
+            if converged || hk1 == 0.0 {
+                break;
+            }
+        }
+        // Back substitution for the Krylov coefficients, then y += Z c.
+        let mut coef = vec![0.0; k];
+        for i in (0..k).rev() {
+            let mut t = gvec[i];
+            for j in i + 1..k {
+                t -= hm[j][i] * coef[j];
+            }
+            coef[i] = t / hm[i][i];
+        }
+        for (j, zj) in z.iter().enumerate() {
+            for (yi, zi) in y.iter_mut().zip(zj) {
+                *yi += coef[j] * zi;
+            }
+        }
+        if !y.iter().all(|v| v.is_finite()) {
+            return None;
+        }
+    }
+    let ey = e(&y);
+    let rn = norm(&b.iter().zip(&ey).map(|(b, v)| b - v).collect::<Vec<_>>());
+    (rn <= tol * bnorm).then_some((y, total))
+}
+
+/// GMRES's relative residual when it reuses a factorisation to decide the next sets.
+const GMRES_TOLERANCE: f64 = 1e-12;
+
+/// The solver of the linear systems of the iteration: a factorisation of some sets' system, reused through GMRES
+/// while the sets differ from it in few nodes.
+struct Linear {
+    base: Option<Reduced>,
+    /// Factorisations and GMRES iterations so far.
+    factorisations: usize,
+    gmres_iterations: usize,
+    /// Whether the last solve was direct (a factorisation of its own sets: round-off accurate).
+    last_direct: bool,
+}
+
+impl Linear {
+    fn new() -> Linear {
+        Linear { base: None, factorisations: 0, gmres_iterations: 0, last_direct: false }
+    }
+
+    /// Solve the system of `sets` (returning the iterate), from the previous full solution `y0` when given; with
+    /// `direct`, by a factorisation of these sets (the final, round-off accurate solve).
+    fn solve(&mut self, d: &Data, sets: &[NodeSet], y0: Option<&[f64]>, direct: bool) -> Option<Iterate> {
+        let full = Full { d, sets: sets.to_vec() };
+        let b = full.rhs();
+        let changed = self.base.as_ref().map_or(usize::MAX, |r| (0..d.n).filter(|&i| r.sets[i] != sets[i]).count());
+        let reuse_limit = (d.n / 100).clamp(8, 40);
+        let mut y = None;
+        if let (Some(base), Some(y0), false) = (&self.base, y0, direct || changed > reuse_limit || changed == 0) {
+            let e = |v: &[f64]| full.apply(v);
+            let prec = |v: &[f64]| base.solve_full(d, v);
+            // GMRES converges in about twice the rank of the change; 1e-12 is ample to decide the sets (the final
+            // solve is direct).
+            if let Some((sol, its)) = gmres(&e, &prec, &b, y0, GMRES_TOLERANCE, 4 * changed + 20) {
+                self.gmres_iterations += its;
+                y = Some(sol);
+            }
+        }
+        self.last_direct = y.is_none() || changed == 0;
+        let y = match y {
+            Some(y) => y,
+            None if changed == 0 => self.base.as_ref()?.solve_full(d, &b)?,
+            None => {
+                let red = Reduced::new(d, sets);
+                self.factorisations += 1;
+                let sol = red.solve_full(d, &b)?;
+                self.base = Some(red);
+                sol
+            }
+        };
+        let (f, h, rho) = full.split(&y);
+        let (f, h, rho) = (f.to_vec(), if d.frictional { h.to_vec() } else { vec![0.0; d.n] }, rho.to_vec());
+        let (g, s) = kinematics(d, &f, &h, &rho, true);
+        Some(Iterate { f, h, rho, g, s })
+    }
+}
+
+/// The sets the complementarity functions give for an iterate (module docs), with a relative margin, and for each
+/// node that changes set the size of the violation that moves it (relative to the force, gap or slip scale).
+fn update(d: &Data, sets: &[NodeSet], it: &Iterate, margin: f64) -> (Vec<NodeSet>, Vec<f64>) {
+    let fmax = it.f.iter().fold(0.0_f64, |m, v| m.max(v.abs())).max(f64::MIN_POSITIVE);
+    let gmax = d.g_const.iter().fold(0.0_f64, |m, v| m.max(v.abs())).max(f64::MIN_POSITIVE);
+    let smax = it.s.iter().fold(0.0_f64, |m, v| m.max(v.abs())).max(f64::MIN_POSITIVE);
+    let mut violation = vec![0.0; d.n];
+    let next = (0..d.n)
+        .map(|i| {
+            let (in_contact, v) = match sets[i] {
+                NodeSet::Separated => (it.g[i] < -margin * gmax, -it.g[i] / gmax),
+                _ => (it.f[i] >= -margin * fmax, -it.f[i] / fmax),
+            };
+            if !in_contact {
+                violation[i] = v;
+                return NodeSet::Separated;
+            }
+            if sets[i] == NodeSet::Separated {
+                violation[i] = v;
+            }
+            if !d.frictional {
+                return NodeSet::Stick;
+            }
+            let limit = d.mu * it.f[i].max(0.0);
+            match sets[i] {
+                // A node coming into contact carries no force yet: it can only stick if it does not slip.
+                NodeSet::Separated if it.s[i].abs() > margin * smax => {
+                    NodeSet::Slip(if it.s[i] > 0.0 { 1 } else { -1 })
+                }
+                NodeSet::Separated => NodeSet::Stick,
+                NodeSet::Slip(sg) if (sg as f64) * it.s[i] >= -margin * smax => NodeSet::Slip(sg),
+                NodeSet::Slip(sg) => {
+                    violation[i] = violation[i].max(-(sg as f64) * it.s[i] / smax);
+                    NodeSet::Stick
+                }
+                _ if it.h[i].abs() <= limit + margin * d.mu * fmax => NodeSet::Stick,
+                _ => {
+                    violation[i] = violation[i].max((it.h[i].abs() - limit) / (d.mu * fmax));
+                    NodeSet::Slip(if it.h[i] > 0.0 { -1 } else { 1 })
+                }
+            }
+        })
+        .collect();
+    (next, violation)
+}
+
+/// Iterate from `sets` until no node changes set; `Err` with the reason (cycle, limit, singular system). All the
+/// violated nodes change set at once (the semi-smooth Newton step); when the sets cycle, only the worst half of them
+/// do, then the worst quarter, down to one at a time (a damped step), before giving up.
+fn iterate(
+    d: &Data,
+    mut sets: Vec<NodeSet>,
+    s: &ActiveSetSettings,
+    count: &mut usize,
+    linear: &mut Linear,
+) -> Result<Iterate, String> {
+    let mut seen: HashSet<Vec<NodeSet>> = HashSet::new();
+    let mut max_changes = usize::MAX;
+    let mut previous: Option<Vec<f64>> = None;
+    loop {
+        *count += 1;
+        if *count > s.max_iterations {
+            return Err(format!("no convergence in {} iterations", s.max_iterations));
+        }
+        let mut it = linear
+            .solve(d, &sets, previous.as_deref(), false)
+            .ok_or_else(|| format!("singular active-set system at iteration {count}"))?;
+        if !linear.last_direct && update(d, &sets, &it, s.margin).0 == sets {
+            // Converged on an iterative solve: confirm with a direct one (round-off accurate).
+            it = linear
+                .solve(d, &sets, None, true)
+                .ok_or_else(|| format!("singular active-set system at iteration {count}"))?;
+        }
+        previous = Some(if d.frictional {
+            it.f.iter().chain(&it.h).chain(&it.rho).copied().collect()
+        } else {
+            it.f.iter().chain(&it.rho).copied().collect()
+        });
+        let (next, violation) = update(d, &sets, &it, s.margin);
+        let mut changed: Vec<usize> = (0..d.n).filter(|&i| next[i] != sets[i]).collect();
+        if changed.is_empty() {
+            return Ok(it);
+        }
+        if !seen.insert(sets.clone()) {
+            if max_changes == 1 {
+                return Err(format!("the active sets cycle even one change at a time (iteration {count})"));
+            }
+            max_changes = (changed.len() / 2).clamp(1, max_changes.saturating_sub(1).max(1));
+            seen.clear();
+            seen.insert(sets.clone());
+        }
+        if changed.len() > max_changes {
+            changed.sort_by(|&a, &b| violation[b].total_cmp(&violation[a]));
+            changed.truncate(max_changes);
+        }
+        for i in changed {
+            sets[i] = next[i];
+        }
+    }
+}
+
+/// Problems with more contact nodes than this start from the solution of the same problem on every
+/// [`COARSE_STRIDE`]-th node (solved the same way, recursively): its sets, carried to the nearest fine nodes, are
+/// right except within a node or two of the edges of the contact and stick zones, so the fine iteration changes
+/// few nodes per step and reuses its factorisation.
+const COARSE_ABOVE: usize = 400;
+
+/// The coarsening factor of [`COARSE_ABOVE`].
+const COARSE_STRIDE: usize = 4;
+
+impl ActiveSet {
+    /// The sets of the problem solved on every k-th node (module docs), carried to the nearest fine nodes; `None`
+    /// when the problem is small or the coarse solve fails.
+    fn coarse_start(&self, p: &ContactProblem, count: &mut usize) -> Option<Vec<NodeSet>> {
+        let n = p.n();
+        if n <= COARSE_ABOVE || matches!(p.kind, ProblemKind::GrossSliding { .. }) {
+            return None;
+        }
+        let stride = COARSE_STRIDE;
+        let flex = p.flex.coarse(stride);
+        let slip = p.slip.coarse(stride, &flex.x);
+        let cp = ContactProblem::new(&flex, p.law, p.drive, slip).ok()?;
+        let out = self.solve(&cp);
+        *count += out.work.get("iterations").unwrap_or(0) as usize;
+        let sol = out.solution.filter(|_| out.status == Status::Solved && out.work.get("pivots").is_none())?;
+        let mu = p.law.friction;
+        let frictional = p.kind == ProblemKind::Frictional;
+        let nk = flex.n();
+        Some(
+            (0..n)
+                .map(|i| {
+                    let k = ((i + stride / 2) / stride).min(nk - 1);
+                    let (f, h) = (sol.f[k], sol.h.as_ref().map_or(0.0, |h| h[k]));
+                    if f <= 0.0 {
+                        NodeSet::Separated
+                    } else if !frictional || h.abs() < mu * f * (1.0 - 1e-9) {
+                        NodeSet::Stick
+                    } else {
+                        NodeSet::Slip(if h > 0.0 { -1 } else { 1 })
+                    }
+                })
+                .collect(),
+        )
+    }
+}
+
+impl Solver for ActiveSet {
+    fn name(&self) -> &'static str {
+        "active_set"
+    }
+
+    fn applies(&self, _problem: &ContactProblem) -> Result<(), String> {
+        Ok(())
+    }
+
+    fn settings(&self) -> toml::Value {
+        super::settings_value(&self.settings)
+    }
+
+    fn solve(&self, p: &ContactProblem) -> Outcome {
+        let d = Data::of(p, false);
+        let n = d.n;
+        let mut count = 0;
+        // Start: the warm start's sets, or those of the same problem on a coarse grid, or the normal problem first
+        // (every node in contact, no shear).
+        let coarse = if p.warm.is_none() { self.coarse_start(p, &mut count) } else { None };
+        let start: Vec<NodeSet> = match (&p.warm, coarse) {
+            (_, Some(sets)) => sets,
+            (Some(w), None) => (0..n)
+                .map(|i| {
+                    let f = w.f[i];
+                    let h = w.h.as_ref().map_or(0.0, |h| h[i]);
+                    if f <= 0.0 {
+                        NodeSet::Separated
+                    } else if !d.frictional || h.abs() < d.mu * f * (1.0 - 1e-9) {
+                        NodeSet::Stick
+                    } else {
+                        NodeSet::Slip(if h > 0.0 { -1 } else { 1 })
+                    }
+                })
+                .collect(),
+            (None, None) if d.frictional => {
+                let normal = Data::of(p, true);
+                let mut linear = Linear::new();
+                match iterate(&normal, vec![NodeSet::Stick; n], &self.settings, &mut count, &mut linear) {
+                    Ok(it) => it.f.iter().map(|&f| if f > 0.0 { NodeSet::Stick } else { NodeSet::Separated }).collect(),
+                    Err(_) => vec![NodeSet::Stick; n],
+                }
+            }
+            (None, None) => vec![NodeSet::Stick; n],
+        };
+        let mut linear = Linear::new();
+        let result = iterate(&d, start, &self.settings, &mut count, &mut linear);
+        if std::env::var_os("ROLLBEM_DEBUG_AS").is_some() {
+            eprintln!(
+                "active set: {count} iterations, {} factorisations, {} GMRES iterations",
+                linear.factorisations, linear.gmres_iterations
+            );
+        }
+        match result {
+            Ok(it) => {
+                let mut rigid = p.given();
+                let mut l = 0;
+                for (k, dof) in p.dofs.iter().enumerate() {
+                    if p.is_unknown(dof) {
+                        rigid[k] = it.rho[l];
+                        l += 1;
+                    }
+                }
+                let h = match p.kind {
+                    ProblemKind::Frictional => Some(it.h),
+                    ProblemKind::SlidingLimit { .. } => Some(it.f.iter().map(|v| p.limit_factor() * v).collect()),
+                    _ => None,
+                };
+                let tangential_known = !matches!(p.kind, ProblemKind::SlidingLimit { .. });
+                Outcome {
+                    solution: Some(Solution { f: it.f, h, rigid, tangential_known }),
+                    status: Status::Solved,
+                    message: format!(
+                        "active sets converged in {count} iterations ({} factorisations and {} GMRES iterations on \
+                         the full grid)",
+                        linear.factorisations, linear.gmres_iterations
+                    ),
+                    work: Work(vec![
+                        ("iterations", count as u64),
+                        ("factorisations", linear.factorisations as u64),
+                        ("gmres", linear.gmres_iterations as u64),
+                    ]),
+                    polish_change: None,
+                }
+            }
+            Err(why) => {
+                // Fall back to Lemke on the problem's LCP.
+                let lemke = Lemke { name: "lemke", settings: LemkeSettings::default(), engine: lemke::solve };
+                let mut out = lemke.solve(p);
+                out.message = format!("active set: {why}; fell back to Lemke: {}", out.message);
+                let pivots = out.work.get("pivots").unwrap_or(0);
+                out.work = Work(vec![("iterations", count as u64), ("pivots", pivots)]);
+                out
+            }
+        }
+    }
+}
