@@ -59,6 +59,7 @@ pub mod solvers;
 pub mod source;
 pub mod status;
 pub mod sweep;
+pub mod theory;
 pub mod tolerances;
 
 pub use error::{Error, Result};

@@ -272,7 +272,9 @@ fn finish_run(
     evaluate_outcome(problem, solver, problem_size, outcome, timing, refuse, rolling).0
 }
 
-/// [`finish_run`], returning also the evaluation of an accepted solution (a load path carries its state on).
+/// Post-process a solver's outcome as `run_scene` does (evaluate a claimed solution by the solver-independent
+/// residuals, refuse it above `refuse`), returning also the evaluation of an accepted solution (a load path carries
+/// its state on).
 #[allow(clippy::too_many_arguments)]
 pub fn evaluate_outcome(
     problem: &ContactProblem,
