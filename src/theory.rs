@@ -328,12 +328,20 @@ use std::ops::Add;
 
 /// `√(c² − x²)` for |x| < c, else 0 (computed as (c − x)(c + x) for accuracy near the ends).
 fn semi(x: f64, c: f64) -> f64 {
-    if x.abs() < c { ((c - x) * (c + x)).sqrt() } else { 0.0 }
+    if x.abs() < c {
+        ((c - x) * (c + x)).sqrt()
+    } else {
+        0.0
+    }
 }
 
 /// `γ ln γ`, continuous at 0.
 fn xlogx(g: f64) -> f64 {
-    if g > 0.0 { g * g.ln() } else { 0.0 }
+    if g > 0.0 {
+        g * g.ln()
+    } else {
+        0.0
+    }
 }
 
 /// Arithmetic–geometric mean.
@@ -922,7 +930,11 @@ mod tests {
             let off = half * 2.0 * e / (1.0 + e);
             let w = FRAC_PI_2 * t.cosh() * 4.0 * e / ((1.0 + e) * (1.0 + e));
             let x = if t >= 0.0 { b - off } else { a + off };
-            if off <= 0.0 || x <= a || x >= b { 0.0 } else { w * half * f(x) }
+            if off <= 0.0 || x <= a || x >= b {
+                0.0
+            } else {
+                w * half * f(x)
+            }
         };
         let tmax = 4.0;
         let mut h = 1.0;
@@ -1223,7 +1235,11 @@ mod tests {
             (md_stick_half_width(h, mu, path, qf + eps) - md_stick_half_width(h, mu, path, qf - eps)) / (2.0 * eps);
         let kern = |th: f64| {
             let t = c2 * th.sin();
-            if t == x || t == 0.0 { 0.0 } else { ((x - t).abs() / t.abs()).ln() }
+            if t == x || t == 0.0 {
+                0.0
+            } else {
+                ((x - t).abs() / t.abs()).ln()
+            }
         };
         let mut pts = vec![-FRAC_PI_2, 0.0, FRAC_PI_2];
         if x.abs() < c2 {

@@ -71,6 +71,13 @@ fn spence_stick_zone_under_growing_normal_load() {
     let nu = 0.444;
     let beta = theory::dundurs_beta(210000.0, nu, f64::INFINITY, 0.0);
     assert!((beta - 0.1007).abs() < 1e-3, "β = {beta}");
+    // Small β/μ = 0.1: Spence's slip zones are e^(−π μ/β)-thin (c/a = 1 − 1e-13): every contact node sticks.
+    let body = "[[steps]]\nnormal_load = 20000.0\nsubsteps = 40";
+    let s = path_scene(nu, beta / 0.1, true, 200, body, r#"["lemke"]"#);
+    let l = get(&run(&s).steps.last().unwrap().runs, "lemke").clone();
+    assert_eq!(l.status, Status::Solved, "{}", l.message);
+    assert!(theory::spence_c_over_a(0.1) > 1.0 - 1e-9);
+    assert!(l.nodes.iter().all(|n| n.state != NodeState::Slip), "full stick at β/μ = 0.1");
     for ratio in [0.5, 1.0, 2.0] {
         let mu = beta / ratio;
         let body = "[[steps]]\nnormal_load = 20000.0\nsubsteps = 40";
@@ -328,6 +335,76 @@ fn rolling_from_rest_settles_on_steady_rolling() {
     assert!((l0 + r0).abs() < 1e-9, "centred at rest");
     assert!(0.5 * (l1 + r1) > 1.0, "leading edge (direction +x): stick zone [{l1}, {r1}]");
     assert!(end.nodes.iter().filter(|n| n.state == NodeState::Slip).count() > 0);
+}
+
+/// The transient under a creepage with the wheel centre held (shift 0 at the half-plane's datum depth `datum`),
+/// rolled `roll` mm in `m` substeps of one element each (60 elements on |x| ≤ 9 mm: 0.3 mm).
+fn creep_from_rest(datum: f64, roll: f64, m: usize) -> (Scene, Scene) {
+    let datum_key = "[rolling]\ndirection = 1\ncreepage = 0.002\n";
+    let wheel = |extra: &str| {
+        scene(&format!(
+            "name = \"creep\"\n[wheel]\nradius = 460.0\nyoungs_modulus = 210000.0\npoisson_ratio = 0.3\n\
+             model = \"half_plane\"\nprofile = \"parabola\"\ndatum_depth = {datum}\n[mesh]\nelement = \"constant\"\n\
+             contact_half_width = 9.0\ncontact_elements = 60\n[contact]\nfriction = 0.3\ncoupling = false\n\
+             {datum_key}{extra}\n[solvers]\nuse = [\"lemke\"]\n"
+        ))
+    };
+    (
+        wheel(&format!(
+            "mode = \"transient\"\n[[steps]]\nnormal_load = 20000.0\n\
+             [[steps]]\nnormal_load = 20000.0\nroll = {roll}\nsubsteps = {m}"
+        )),
+        wheel("mode = \"steady\"\n[drive]\nnormal_load = 20000.0"),
+    )
+}
+
+#[test]
+fn creepage_driven_rolling_from_rest_winds_up_to_steady_rolling() {
+    // Rolling from rest at creepage ξ = 0.002 (below saturation μa/R = 4.65e-3) with the wheel centre held: the
+    // tangential force builds up monotonically and the tractions reach the steady-rolling solution of the same mesh
+    // (peer computation; creepage-driven steady rolling is checked against Carter in tests/rolling.rs).
+    //
+    // How fast. The held centre sits at the datum depth D; between it and the contact the half-plane's tangential
+    // compliance λ = (2/(πE*))(ln(2D/a) + 1/2) is in series with the contact's rolling law ξ_C(Q) (Carter: ξ_C =
+    // (μa/R)(1 − √(1 − Q/(μP)))). A first-order model, ξ − ξ_C(Q) = λ dQ/dx, linearised at the steady state gives an
+    // exponential approach over the rolling distance L = λ / ξ_C'(Q) = c (ln(2D/a) + 1/2), c the steady stick
+    // half-width: ≈ 21 mm (3 contact widths) at D = R = 460 mm, ≈ 9 mm at D = 20 mm. The datum is physics here:
+    // a 2D half-plane has no tangential displacement without one. Measured decay lengths within 15 % of the model.
+    let (mut lengths, mut models) = (Vec::new(), Vec::new());
+    for (datum, roll, m) in [(20.0, 240.0, 800), (460.0, 360.0, 1200)] {
+        let (tr, st) = creep_from_rest(datum, roll, m);
+        let (a, b) = (run(&tr), run(&st));
+        let y = get(&b.runs, "lemke");
+        assert_eq!(y.status, Status::Solved, "{}", y.message);
+        let h = hertz(&st, y);
+        let q_end = y.resultants.unwrap().tangential;
+        let dist = |r: &SolverRun| {
+            r.nodes.iter().zip(&y.nodes).fold(0.0f64, |m, (u, v)| m.max((u.shear - v.shear).abs())) / h.p0
+        };
+        let along: Vec<f64> = a.steps.iter().map(|st| dist(get(&st.runs, "lemke"))).collect();
+        let qs: Vec<f64> = a.steps.iter().map(|st| get(&st.runs, "lemke").resultants.unwrap().tangential).collect();
+        // |Q| grows monotonically towards the steady value and never overshoots it.
+        for w in qs.windows(2) {
+            assert!(w[1].abs() >= w[0].abs() - 1e-9 * h.p0 && w[1].abs() <= q_end.abs() * (1.0 + 1e-9));
+        }
+        // Decay length fitted on the distance between 1e-2 and 1e-5 of p0 (substeps of 0.3 mm).
+        let k1 = along.iter().position(|d| *d < 1e-2).unwrap();
+        let k2 = along.iter().position(|d| *d < 1e-5).unwrap();
+        let fitted = (k2 - k1) as f64 * 0.3 / (along[k1] / along[k2]).ln();
+        let c = h.a * theory::carter_c_over_a(q_end / (0.3 * h.load()));
+        let model = c * ((2.0 * datum / h.a).ln() + 0.5);
+        eprintln!("D = {datum}: decay length {fitted:.2} mm, model {model:.2} mm; end distance {:.2e}", along[m]);
+        assert!((fitted / model - 1.0).abs() < 0.15, "D = {datum}: {fitted} vs model {model}");
+        lengths.push(fitted);
+        models.push(model);
+        if datum == 20.0 {
+            // 240 mm is 27 decay lengths: the start is forgotten to solver precision.
+            assert!(along[m] < 1e-8, "end {:e}", along[m]);
+        }
+    }
+    // The datum's logarithm sets the rate: ratio of the decay lengths against the model's ratio, within 5 %.
+    let ratio = models[1] / models[0];
+    assert!((lengths[1] / lengths[0] / ratio - 1.0).abs() < 0.05, "{lengths:?} vs models {models:?}");
 }
 
 #[test]
