@@ -228,3 +228,55 @@ fn walk<'a>(
     }
     Ok((last.expect("a path has at least one step"), check))
 }
+
+/// The path as CSV: one row per substep and solver (a solver whose path broke earlier has no row), in the user's
+/// units. Columns: where on the path (`step`, `substep`, `substeps`, `rolled`), the solver and its status, the
+/// resultants (`Q`, `P`, `M`), the rigid motion (`shift`, `approach`, `rotation`; `shift` empty when indeterminate at
+/// the sliding limit), the stick zone (`stick_left`, `stick_right`: midway between the outermost sticking node and
+/// its neighbour, empty when nothing sticks), node counts per state, the dissipated energy of the substep and since
+/// the start of the path (energy per unit thickness), the largest residual and the solve time in seconds.
+pub fn path_csv(report: &Report) -> String {
+    use std::fmt::Write as _;
+    let mut out = String::from(
+        "step,substep,substeps,rolled,solver,status,Q,P,M,shift,approach,rotation,stick_left,stick_right,\
+         nodes_stick,nodes_slip,nodes_separated,dissipated,dissipated_total,residual,t_solve\n",
+    );
+    // `+ 0.0` prints −0 as 0.
+    let opt = |v: Option<f64>| v.map(|v| format!("{:e}", v + 0.0)).unwrap_or_default();
+    for st in &report.steps {
+        for run in &st.runs {
+            let f = run.resultants;
+            let rb = run.rigid_body;
+            let edges = crate::references::stick_edges(&run.nodes);
+            let count = |s: crate::post::NodeState| run.nodes.iter().filter(|n| n.state == s).count();
+            let e = run.history.as_ref();
+            writeln!(
+                out,
+                "{},{},{},{:e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{:e}",
+                st.step,
+                st.substep,
+                st.substeps,
+                st.rolled,
+                run.solver,
+                run.status,
+                opt(f.map(|f| f.tangential)),
+                opt(f.map(|f| f.normal)),
+                opt(f.map(|f| f.moment)),
+                opt(rb.and_then(|r| r.tangential)),
+                opt(rb.map(|r| r.normal)),
+                opt(rb.map(|r| r.rotation)),
+                opt(edges.map(|e| e.0)),
+                opt(edges.map(|e| e.1)),
+                count(crate::post::NodeState::Stick),
+                count(crate::post::NodeState::Slip),
+                count(crate::post::NodeState::Separated),
+                opt(e.map(|e| e.dissipated)),
+                opt(e.map(|e| e.dissipated_total)),
+                opt(run.residuals.map(|r| r.max())),
+                run.timing_s.solve
+            )
+            .expect("writing to a String");
+        }
+    }
+    out
+}

@@ -44,6 +44,10 @@ enum Cmd {
         /// Override the scenes' `[solvers] use` (repeatable): `all` or a registered solver (see `rollbem solvers`).
         #[arg(long = "solver", value_parser = parse_solver)]
         solvers: Vec<String>,
+        /// Write the load path as CSV here (one scene with `[[steps]]` only): one row per substep and solver with
+        /// resultants, rigid motion, stick zone, node counts, dissipated energy, residual and solve time.
+        #[arg(long)]
+        path_csv: Option<PathBuf>,
     },
     /// List the registered solvers.
     Solvers,
@@ -263,6 +267,9 @@ fn print_report(r: &Report) {
             say!("          {}", run.message);
         }
     }
+    if !r.steps.is_empty() {
+        print_path(r);
+    }
     say!("checks:");
     for c in &r.checks {
         say!(
@@ -277,7 +284,28 @@ fn print_report(r: &Report) {
     }
 }
 
-fn run_one(scene: &Path, json: Option<&Path>, solvers: &[String]) -> rollbem::Result<Report> {
+/// A load path's summary: per solver, how far it got, the dissipated energy and its hardest substep.
+fn print_path(r: &Report) {
+    let total = r.steps.len();
+    say!(
+        "load path: {} steps, {total} substeps (the table above is the path's end; `--path-csv` writes every substep)",
+        r.scene.steps.len()
+    );
+    let names: Vec<&str> = r.runs.iter().map(|x| x.solver.0).collect();
+    for name in names {
+        let runs: Vec<&rollbem::results::SolverRun> =
+            r.steps.iter().filter_map(|st| st.runs.iter().find(|x| x.solver == name)).collect();
+        let solved = runs.iter().filter(|x| x.status == rollbem::solvers::Status::Solved).count();
+        let dissipated = runs.last().and_then(|x| x.history.as_ref()).map_or(0.0, |h| h.dissipated_total);
+        let worst = runs.iter().filter_map(|x| x.residuals.map(|res| res.max())).fold(0.0f64, f64::max);
+        let time: f64 = runs.iter().map(|x| x.timing_s.total).sum();
+        say!(
+            "  {name:<10} {solved}/{total} substeps solved, dissipated {dissipated:.6e}, largest residual {worst:.2e}, time {time:.4} s"
+        );
+    }
+}
+
+fn run_one(scene: &Path, json: Option<&Path>, path_csv: Option<&Path>, solvers: &[String]) -> rollbem::Result<Report> {
     let mut s = Scene::from_file(scene)?;
     if !solvers.is_empty() {
         s.solvers.use_ = solvers.to_vec();
@@ -286,6 +314,9 @@ fn run_one(scene: &Path, json: Option<&Path>, solvers: &[String]) -> rollbem::Re
     if let Some(path) = json {
         let text = serde_json::to_string_pretty(&report).expect("report serialises");
         write_atomic(path, &text)?;
+    }
+    if let Some(path) = path_csv {
+        write_atomic(path, &rollbem::history::path_csv(&report))?;
     }
     Ok(report)
 }
@@ -301,7 +332,7 @@ fn check(scenes: &[PathBuf], solvers: &[String]) -> ExitCode {
     let (mut passed, mut failed) = (0usize, 0usize);
     let mut code = 0u8;
     for p in scenes {
-        match run_one(p, None, solvers) {
+        match run_one(p, None, None, solvers) {
             Ok(r) => {
                 let bad = r.checks.iter().filter(|c| !c.pass).count();
                 say!(
@@ -396,16 +427,27 @@ fn main() -> ExitCode {
                 Err(e) => fail(&e),
             }
         }
-        Cmd::Run { scenes, json, out_dir, solvers } => {
+        Cmd::Run { scenes, json, out_dir, solvers, path_csv } => {
             if json.is_some() && scenes.len() > 1 {
                 eprintln!("error: --json takes one scene; use --out-dir for several");
                 return ExitCode::from(2);
             }
+            if path_csv.is_some() && scenes.len() > 1 {
+                eprintln!("error: --path-csv takes one scene");
+                return ExitCode::from(2);
+            }
             // Validate every scene before running any, so bad input writes nothing.
             for p in &scenes {
-                if let Err(e) = Scene::from_file(p) {
-                    eprintln!("error: {e}");
-                    return ExitCode::from(e.exit_code() as u8);
+                match Scene::from_file(p) {
+                    Err(e) => {
+                        eprintln!("error: {e}");
+                        return ExitCode::from(e.exit_code() as u8);
+                    }
+                    Ok(s) if path_csv.is_some() && s.steps.is_empty() => {
+                        eprintln!("error: --path-csv: scene {} has no load path (`[[steps]]`)", p.display());
+                        return ExitCode::from(2);
+                    }
+                    Ok(_) => {}
                 }
             }
             if let Some(dir) = &out_dir {
@@ -423,7 +465,7 @@ fn main() -> ExitCode {
                 if i > 0 {
                     say!("");
                 }
-                match run_one(p, target.as_deref(), &solvers) {
+                match run_one(p, target.as_deref(), path_csv.as_deref(), &solvers) {
                     Ok(report) => {
                         print_report(&report);
                         if !report.all_pass() {

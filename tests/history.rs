@@ -191,6 +191,17 @@ fn mindlin_deresiewicz_loop() {
             let max = errs.iter().fold(0.0f64, |m, e| m.max(e.abs()));
             eprintln!("{solver} {branch:?} Q = {q:.1}: c {c_num:.4} vs {c:.4}, traction RMS {rms:.2e} max {max:.2e}");
             assert!(rms < 0.01 && max < 0.06, "{solver} {branch:?} Q = {q}: RMS {rms} max {max}");
+            // The wheel's tangential shift (the hysteresis loop's abscissa) against theory. The half-plane's datum
+            // is the material point at depth D (halfplane.rs): a surface line load Q displaces the surface by
+            // −(2Q/(πE*))(ln(|x|/D) − 1/(2(1 − ν))), which is theory's log datum (u = −(2Q/(πE*)) ln(|x|/D'))
+            // with D' = D e^(1/(2(1 − ν))). The shift is the wheel's; theory's δ is the counter-body's: opposite.
+            let d_prime = s.wheel.datum() * (0.5 / (1.0 - s.wheel.poisson_ratio)).exp();
+            let delta = -theory::md_displacement(&h, mu, s.contact_modulus(), d_prime, branch, q);
+            let delta_star =
+                -theory::md_displacement(&h, mu, s.contact_modulus(), d_prime, TangentialPath::Loading, q_star);
+            let shift = r.rigid_body.unwrap().tangential.unwrap();
+            eprintln!("    shift {shift:.6e} vs theory {delta:.6e} ({:.1e} of δ*)", (shift - delta) / delta_star);
+            assert!((shift - delta).abs() < 1e-4 * delta_star.abs(), "{solver} {branch:?} Q = {q}: {shift} vs {delta}");
         }
         // The loop closes: back at +Q* the tractions are those of the first loading to +Q* (node by node, to the
         // solver's precision: the discrete problem has the same superposition structure as the continuum).
