@@ -19,6 +19,14 @@
 //! numbered from 0: grids in file order, within a grid the cartesian product with the keys in sorted order and the
 //! last key varying fastest. Every variant goes through [`Scene::from_toml`], so it is validated like a scene file.
 //!
+//! Two refinements for studies whose variants are not a plain product:
+//! - **Zipped keys**: a key made of several dotted keys joined by `&` takes an array of tuples, one value per key,
+//!   set together (`"drive.normal_load & mesh.contact_half_width" = [[1000.0, 2.0], [4000.0, 4.0]]`: the mesh grows
+//!   with the load). The CSV has one column per key.
+//! - **A grid's own base**: `base = "..."` inside a `[[grid]]` table (a string, not an array) replaces the spec's
+//!   base scene for that grid, so one sweep can compare models whose scenes differ in more than the swept keys (a
+//!   finite wheel with a hub beside a half-plane that refuses one).
+//!
 //! A sweep can be cut into shards (`k/n`: the cases with `index % n == k − 1`) that run on different machines;
 //! [`merge`] joins the shards' CSVs into the CSV the unsharded sweep writes (up to the [`TIMING_COLUMNS`]).
 
@@ -47,6 +55,14 @@ pub struct SweepSpec {
     /// The grids: each maps a dotted scene key to the (non-empty) array of values to try. Nested tables in the
     /// file are flattened to dotted keys.
     pub grid: Vec<Table>,
+    /// Per grid (same order as `grid`), its own base scene file when it names one (`base` inside `[[grid]]`); a
+    /// missing entry means the spec's `base`.
+    pub grid_base: Vec<Option<PathBuf>>,
+}
+
+/// The dotted keys of a (possibly zipped, `a & b`) grid key.
+fn zipped_keys(key: &str) -> Vec<&str> {
+    key.split('&').map(str::trim).collect()
 }
 
 /// One variant of the base scene.
@@ -125,6 +141,22 @@ const RESULT_COLUMNS_TAIL: &[&str] = &[
     "cm_c_err_elements",
     "cm_centre_elements",
     "cm_shear_err",
+    "radius",
+    "contact_modulus",
+    "friction",
+    "hertz_a",
+    "hertz_p0",
+    "shift",
+    "approach",
+    "stick_left",
+    "stick_right",
+    "creepage",
+    "carter_q_over_mup",
+    "carter_q_over_mup_exact",
+    "carter_c_over_a",
+    "carter_c_over_a_exact",
+    "carter_c_err_elements",
+    "carter_shear_rms",
 ];
 
 /// The columns after the swept keys, up to the timings: the head, the registry's work counters, the tail.
@@ -178,6 +210,50 @@ fn flatten(path: &Path, prefix: &str, table: &Table, out: &mut Table) -> Result<
                         other
                     ),
                 ))
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A path in a spec, resolved against the spec file's folder.
+fn resolve(spec_path: &Path, p: &Path) -> PathBuf {
+    if p.is_absolute() {
+        p.to_path_buf()
+    } else {
+        spec_path.parent().unwrap_or(Path::new("")).join(p)
+    }
+}
+
+/// Read a base scene as a TOML table; errors name `field` (`base` or `grid[i].base`).
+fn read_base(spec_path: &Path, base_path: &Path, field: &str) -> Result<Table> {
+    let text = std::fs::read_to_string(base_path)
+        .map_err(|e| invalid(spec_path, field, format!("cannot read the base scene {}: {e}", base_path.display())))?;
+    toml::from_str(&text).map_err(|e| {
+        invalid(spec_path, field, format!("the base scene {} is not valid TOML: {e}", base_path.display()))
+    })
+}
+
+/// Zipped keys (`a & b`) take arrays of tuples with one value per key.
+fn check_zipped(path: &Path, grid: &Table) -> Result<()> {
+    for (key, v) in grid {
+        let keys = zipped_keys(key);
+        if keys.len() < 2 {
+            continue;
+        }
+        if keys.iter().any(|k| k.is_empty()) {
+            return Err(invalid(path, &format!("grid.{key}"), "a zipped key with an empty component"));
+        }
+        for t in v.as_array().expect("grid values are arrays") {
+            match t {
+                Value::Array(t) if t.len() == keys.len() => {}
+                other => {
+                    return Err(invalid(
+                        path,
+                        &format!("grid.{key}"),
+                        format!("zipped keys take tuples of {} values (one per key), got `{other}`", keys.len()),
+                    ))
+                }
             }
         }
     }
@@ -258,33 +334,49 @@ impl SweepSpec {
             }
         };
         let mut grid = Vec::with_capacity(grids.len());
+        let mut grid_base = Vec::with_capacity(grids.len());
         for (i, g) in grids.iter().enumerate() {
             let Value::Table(t) = g else {
                 return Err(invalid(path, "grid", format!("grid {} is a {}, not a table", i + 1, g.type_str())));
             };
+            let mut t = t.clone();
+            grid_base.push(match t.remove("base") {
+                Some(Value::String(b)) => Some(PathBuf::from(b)),
+                Some(other) => {
+                    return Err(invalid(
+                        path,
+                        &format!("grid[{i}].base"),
+                        format!("must be the path of a base scene (a string), got {}", other.type_str()),
+                    ))
+                }
+                None => None,
+            });
+            let t = &t;
             let mut flat = Table::new();
             flatten(path, "", t, &mut flat)?;
             if flat.is_empty() {
                 return Err(invalid(path, "grid", format!("grid {} is empty: give at least one key to sweep", i + 1)));
             }
+            check_zipped(path, &flat)?;
             grid.push(flat);
         }
-        Ok(SweepSpec { name, description, base, grid })
+        Ok(SweepSpec { name, description, base, grid, grid_base })
     }
 
     /// The base scene file's path, resolved against the spec file's folder.
     pub fn base_path(&self, spec_path: &Path) -> PathBuf {
-        if self.base.is_absolute() {
-            self.base.clone()
-        } else {
-            spec_path.parent().unwrap_or(Path::new("")).join(&self.base)
-        }
+        resolve(spec_path, &self.base)
+    }
+
+    /// The base scene of grid `i` as written (its own `base`, else the spec's).
+    pub fn grid_base(&self, i: usize) -> &Path {
+        self.grid_base.get(i).and_then(|b| b.as_deref()).unwrap_or(&self.base)
     }
 
     /// Every swept key of every grid, sorted (the parameter columns of the CSV).
     pub fn keys(&self) -> Vec<String> {
-        let keys: BTreeSet<&String> = self.grid.iter().flat_map(|g| g.keys()).collect();
-        keys.into_iter().cloned().collect()
+        let keys: BTreeSet<&str> = self.grid.iter().flat_map(|g| g.keys()).flat_map(|k| zipped_keys(k)).collect();
+        keys.into_iter().map(str::to_string).collect()
     }
 
     /// Number of cases: the sum over the grids of the products of their arrays' lengths.
@@ -301,15 +393,12 @@ impl SweepSpec {
     /// variants' errors name `label` as their file (the spec's path, or its bare file name for CSV cells that must
     /// not depend on where a shard ran) and the base scene as written in the spec.
     fn variants(&self, spec_path: &Path, label: &Path) -> Result<Vec<Variant>> {
-        let base_path = self.base_path(spec_path);
-        let text = std::fs::read_to_string(&base_path).map_err(|e| {
-            invalid(spec_path, "base", format!("cannot read the base scene {}: {e}", base_path.display()))
-        })?;
-        let base: Table = toml::from_str(&text).map_err(|e| {
-            invalid(spec_path, "base", format!("the base scene {} is not valid TOML: {e}", base_path.display()))
-        })?;
         let mut out = Vec::with_capacity(self.len());
-        for g in &self.grid {
+        for (gi, g) in self.grid.iter().enumerate() {
+            let base_name = self.grid_base(gi).to_path_buf();
+            let own = self.grid_base.get(gi).is_some_and(Option::is_some);
+            let field = if own { format!("grid[{gi}].base") } else { "base".to_string() };
+            let base = read_base(spec_path, &resolve(spec_path, &base_name), &field)?;
             let entries: Vec<(&String, &Vec<Value>)> =
                 g.iter().map(|(k, v)| (k, v.as_array().expect("grid values are arrays"))).collect();
             let total: usize = entries.iter().map(|(_, a)| a.len()).product();
@@ -326,16 +415,23 @@ impl SweepSpec {
                 let mut params = Vec::with_capacity(entries.len());
                 let mut set_err = None;
                 for ((key, a), &p) in entries.iter().zip(&picks) {
-                    let v = a[p].clone();
-                    params.push((key.to_string(), show(&v)));
-                    if let Err(e) = set_dotted(&mut doc, key, v) {
-                        set_err.get_or_insert((key.to_string(), e));
+                    let keys = zipped_keys(key);
+                    let values = match (&a[p], keys.len()) {
+                        (v, 1) => vec![v.clone()],
+                        (Value::Array(t), _) => t.clone(),
+                        _ => unreachable!("zipped grid values are checked to be tuples"),
+                    };
+                    for (k, v) in keys.iter().zip(values) {
+                        params.push((k.to_string(), show(&v)));
+                        if let Err(e) = set_dotted(&mut doc, k, v) {
+                            set_err.get_or_insert((k.to_string(), e));
+                        }
                     }
                 }
                 let what = describe(index, &params);
                 let scene = match set_err {
                     Some((key, e)) => Err(invalid(label, &key, format!("{what}: {e}"))),
-                    None => build_scene(&doc, label, &self.base, &what),
+                    None => build_scene(&doc, label, &base_name, &what),
                 };
                 out.push(Variant { index, params, doc, scene });
             }
@@ -439,6 +535,26 @@ fn run_row(case: &Variant, keys: &[String], scene: &Scene, contact_nodes: usize,
         float(m.cm_c_err_elements),
         float(m.cm_centre_elements),
         float(m.cm_shear_err),
+    ]);
+    let hertz = r.resultants.filter(|f| f.normal > 0.0).map(|f| crate::references::hertz_at(scene, f.normal));
+    let edges = crate::references::stick_edges(&r.nodes).filter(|_| scene.contact.friction > 0.0);
+    cells.extend([
+        float(Some(scene.wheel.radius)),
+        float(Some(scene.contact_modulus())),
+        float(Some(scene.contact.friction)),
+        float(hertz.map(|h| h.half_width)),
+        float(hertz.map(|h| h.peak_pressure)),
+        float(r.rigid_body.and_then(|b| b.tangential)),
+        float(r.rigid_body.map(|b| b.normal)),
+        float(edges.map(|e| e.0)),
+        float(edges.map(|e| e.1)),
+        float(r.rolling.as_ref().and_then(|x| x.creepage)),
+        float(m.carter_q_over_mup),
+        float(m.carter_q_over_mup_exact),
+        float(m.carter_c_over_a),
+        float(m.carter_c_over_a_exact),
+        float(m.carter_c_err_elements),
+        float(m.carter_shear_rms),
     ]);
     let t = &r.timing_s;
     cells.extend([t.assembly, t.condensation, t.formulation, t.solve, t.total].map(|v| float(Some(v))));

@@ -178,6 +178,22 @@ fn shards_merge_to_the_unsharded_sweep() {
         "cm_c_err_elements",
         "cm_centre_elements",
         "cm_shear_err",
+        "radius",
+        "contact_modulus",
+        "friction",
+        "hertz_a",
+        "hertz_p0",
+        "shift",
+        "approach",
+        "stick_left",
+        "stick_right",
+        "creepage",
+        "carter_q_over_mup",
+        "carter_q_over_mup_exact",
+        "carter_c_over_a",
+        "carter_c_over_a_exact",
+        "carter_c_err_elements",
+        "carter_shear_rms",
         "t_assembly",
         "t_condensation",
         "t_formulation",
@@ -344,5 +360,65 @@ fn reference_sweeps_run() {
             .map(|r| format!("case {} {}: {} {}", r[0], r[col("solver")], r[col("status")], r[col("message")]))
             .collect();
         assert!(bad.is_empty(), "{name}: runs not solved:\n{}", bad.join("\n"));
+    }
+}
+
+#[test]
+fn zipped_keys_and_a_grid_base() {
+    // Zipped keys set several keys together (one CSV column each); a grid's own `base` replaces the spec's.
+    let dir = tempfile::tempdir().unwrap();
+    let hp = write(
+        dir.path(),
+        "hp.toml",
+        "name = \"hp\"\n[wheel]\nradius = 100.0\nyoungs_modulus = 1000.0\npoisson_ratio = 0.3\n\
+         model = \"half_plane\"\n[mesh]\nelement = \"constant\"\ncontact_half_width = 1.0\ncontact_elements = 20\n\
+         [contact]\nfriction = 0.0\n[drive]\nnormal_load = 1.0\n[solvers]\nuse = [\"lemke\"]\n",
+    );
+    let spec = write(
+        dir.path(),
+        "s.toml",
+        &format!(
+            r#"
+name = "zip"
+base = '{}'
+
+[[grid]]
+"drive.normal_load & mesh.contact_half_width" = [[1.0, 1.0], [4.0, 2.0]]
+
+[[grid]]
+base = '{}'
+"mesh.contact_elements" = [10]
+"#,
+            hp.display(),
+            scene("seed-fig6-constant.toml")
+        ),
+    );
+    let s = SweepSpec::from_file(&spec).unwrap();
+    assert_eq!(s.keys(), vec!["drive.normal_load", "mesh.contact_elements", "mesh.contact_half_width"]);
+    let cases = s.cases(&spec).unwrap();
+    assert_eq!(cases.len(), 3);
+    assert_eq!(
+        cases[1].params,
+        vec![("drive.normal_load".into(), "4.0".into()), ("mesh.contact_half_width".into(), "2.0".into())]
+    );
+    assert_eq!(cases[1].scene.drive.normal_load, Some(4.0));
+    assert_eq!(cases[1].scene.mesh.contact_half_width, Some(2.0));
+    assert_eq!(cases[0].scene.name, "hp");
+    assert_ne!(cases[2].scene.name, "hp", "the second grid's own base");
+    // A tuple of the wrong length names the key.
+    let bad = write(
+        dir.path(),
+        "bad.toml",
+        &format!(
+            "name = \"b\"\nbase = '{}'\n[[grid]]\n\"drive.normal_load & mesh.contact_half_width\" = [[1.0]]\n",
+            hp.display()
+        ),
+    );
+    match SweepSpec::from_file(&bad) {
+        Err(Error::Invalid { field, message, .. }) => {
+            assert!(field.contains("drive.normal_load & mesh.contact_half_width"), "{field}");
+            assert!(message.contains("tuples of 2"), "{message}");
+        }
+        other => panic!("{other:?}"),
     }
 }
