@@ -5,7 +5,8 @@
 //! - `condensation/constant/N` and `dense_lu/N`: one LU + the flexibility solves, against a bare faer LU of the
 //!   same size (the condensation target is within 2× of it).
 //! - `frictionless_solve/{lemke,clarabel}/n`: the frictionless load-driven problem with n contact nodes.
-//! - `lemke_frictional/{block,dense}/m`: Lemke on frictional LCPs of m = 3n + 4 unknowns (pivots to stderr).
+//! - `lemke_frictional/{block,dense,warm}/m`: Lemke on frictional LCPs of m = 3n + 4 unknowns (pivots to stderr);
+//!   `warm` is the block engine warm-started from the support of the previous load step (Q 10 % lower).
 //! - `formulation_and_normtang/{frictional_lcp,pgs,normtang_qp}/n`: building the frictional LCP, and the two
 //!   NORM-TANG solvers, with n contact nodes.
 //!
@@ -132,7 +133,17 @@ fn lemke_frictional(c: &mut Criterion) {
         g.bench_with_input(BenchmarkId::new("block", m), &lcp, |b, l| {
             b.iter(|| black_box(lemke::solve(l, &LemkeSettings::default())))
         });
-        if n <= 200 {
+        // Warm start from the previous load step (tangential load 10 % lower): its solution's support.
+        let mut prev = s.clone();
+        prev.drive.tangential_load = Some(0.9 * 18.742);
+        let prev_lcp = build_problem(&prev, &flex, Path::new("bench")).unwrap().lcp.unwrap();
+        let guess: Vec<bool> = lemke::solve(&prev_lcp, &LemkeSettings::default()).z.iter().map(|&v| v > 0.0).collect();
+        let warm = lemke::solve_warm(&lcp, &LemkeSettings::default(), &guess);
+        eprintln!("lemke_frictional/warm/{m}: {} pivots, {:?}", warm.pivots, warm.status);
+        g.bench_with_input(BenchmarkId::new("warm", m), &lcp, |b, l| {
+            b.iter(|| black_box(lemke::solve_warm(l, &LemkeSettings::default(), &guess)))
+        });
+        if n <= 400 {
             g.bench_with_input(BenchmarkId::new("dense", m), &lcp, |b, l| {
                 b.iter(|| black_box(rollbem::solvers::lemke::dense::solve_dense(l, &LemkeSettings::default())))
             });

@@ -1,22 +1,71 @@
 //! Lemke's complementary pivoting algorithm (seed §5; Cottle, Pang & Stone, *The Linear Complementarity Problem*,
-//! §4.4; Murty 1988 ch. 2) for `w = M z + q`, with the covering vector e = (1, …, 1).
+//! §4.4; Murty 1988 ch. 2) for `w = M z + q`, with the covering vector e = (1, …, 1), or warm-started from a
+//! guessed basis ([`solve_warm`]).
 //!
 //! Implementation notes:
 //! - **Scaling.** Rows and columns are equilibrated (Ruiz) before pivoting: `M' = D_r M D_c`, `q' = D_r q`,
 //!   `z = D_c z'`, `w = D_r⁻¹ w'`. Positive diagonal scalings preserve complementarity, and they bring the
-//!   unknowns to order one whatever the units of the physical problem.
-//! - **Revised form.** The inverse of the basis matrix is kept explicitly and updated by one eta (Gauss–Jordan)
-//!   step per pivot, O(m²); it is recomputed from an LU factorisation every `refactor_every` pivots, and the final
-//!   basic solution is obtained by a fresh LU solve with one step of iterative refinement, so the complementarity
-//!   of the answer is exact (every nonbasic variable is zero) and its residual is at round-off level.
+//!   unknowns to order one whatever the units of the physical problem. M' is not stored: the engines read
+//!   `dr_i M_ij dc_j` where they gather entries.
+//! - **Revised form, product form.** Both engines keep the inverse of a *base* basis B₀ and an eta file (one pivot
+//!   column per pivot since then), `B⁻¹ = E_t ⋯ E_1 B₀⁻¹`: a pivot column costs one application of B₀⁻¹ and t eta
+//!   steps, and nothing of size m² or k² is written per pivot. The block engine factorises B₀ through its z-part
+//!   (LU of the k × k block C) and refactorises every `max(refactor_every, k/4)` pivots ([`block`]); the dense
+//!   engine keeps B₀⁻¹ explicitly and absorbs the eta file into it every `refactor_every` pivots with one rank-t
+//!   product, recomputing it from scratch only when a drift check fails ([`dense`]). The final basic solution is
+//!   obtained by a fresh LU solve with one step of iterative refinement, so the complementarity of the answer is
+//!   exact (every nonbasic variable is zero) and its residual is at round-off level.
 //! - **Anti-cycling.** Ties in the minimum-ratio test are broken by the lexicographic rule: among the tied rows
-//!   choose the one whose row of `B⁻¹`, divided by the pivot column entry, is lexicographically smallest. Rows of
-//!   `B⁻¹` are linearly independent, so no tie survives and no basis repeats: the algorithm is finite on
-//!   degenerate problems. When z₀ is among the tied rows it leaves at once (termination).
+//!   choose the one whose row of `B⁻¹` (of `B⁻¹ B_init` for a warm start from B_init), divided by the pivot column
+//!   entry, is lexicographically smallest. Rows of `B⁻¹` are linearly independent, so no tie survives and no basis
+//!   repeats: the algorithm is finite on degenerate problems. When z₀ is among the tied rows it leaves at once
+//!   (termination). The rows are formed only as far as the comparison needs: `e_iᵀ E_t ⋯ E_1` is sparse, and its
+//!   product with B₀⁻¹ is read off it wherever B₀⁻¹ maps the starting basis' column to a unit vector.
 //! - **Outcome.** `Solved` (z₀ left the basis), `RayTermination` (no blocking row: for a copositive-plus M this
 //!   proves the LCP infeasible), `NotConverged` (pivot limit).
 //! - **Engines.** [`solve`] is the block-revised engine ([`block`]); the dense reference engine is
-//!   [`dense`]. Both pivot on the same scaled problem (`prepare`) and follow the same path.
+//!   [`dense`]. Both pivot on the same scaled problem (`prepare`) and follow the same path, and each computes its
+//!   final solution exactly as its previous version did, so their answers are those of the previous versions to
+//!   the bit (the recorded key figures of `tests/regression.rs` include round-off-level quantities).
+//!
+//! **Speed (rework of 2026-11).** Measured on the peer benchmark's LCPs (`benches/peer/README.md`: the coupled
+//! Cattaneo scene with 200, 400, 800, 880 contact elements), `rollbem lcp solve FILE --json` `solve_time_s`,
+//! median of 3, previous and new binaries interleaved on the project's shared 2-core machine (load average
+//! 1.6–2.3); pivots unchanged (264, 527, 1051, 1157) and z identical to the bit:
+//!
+//! | unknowns | pivots | block before (s) | block after (s) | dense before (s) | dense after (s) |
+//! |---:|---:|---:|---:|---:|---:|
+//! | 604 | 264 | 0.039 | 0.018 | 0.218 | 0.044 |
+//! | 1204 | 527 | 0.211 | 0.079 | 1.85 | 0.232 |
+//! | 2404 | 1051 | 2.25 | 0.718 | 22.7 | 3.53 |
+//! | 2644 | 1157 | 2.82 | 0.906 | 30.9 | 6.01 |
+//!
+//! Siconos' `lcp_lexicolemke` (the peer driver, same files, same pivots, right after): 11.9 s at 2404 and 16.7 s
+//! at 2644 unknowns, with the dense engine at 3.96 s and 4.91 s in the same run. (At load 5–7 the previous
+//! engines took 3.7 s and 5.4 s (block), 33 s and 51 s (dense) at 2404 and 2644.)
+//!
+//! Where the time went, and what changed:
+//! - *Block engine* (profile at m = 2644 before: 33 % the pass over all m rows of the k basic columns of M, 14 %
+//!   the row `M_{i,Z} C⁻¹`, 14 % the column `C⁻¹ c_R`, 11 % the rank-one update of C⁻¹ — four memory-bound passes
+//!   per pivot). Now one triangular solve pair with the LU of C₀ (k²) and one product with a contiguous copy of
+//!   M_{W,Z} ((m − k) k) per pivot. Then the lexicographic rule (146 ties at m = 2644, each computing some 335
+//!   columns of B⁻¹: 0.45 s) became the largest cost: rows are now formed sparsely as above (0.03 s). Then the
+//!   preparation: equilibration was scalar (`f64::max` does not vectorise) and the scaled copy of M cost 56 MB
+//!   of page faults; 0.23 s → 0.07 s.
+//! - *Dense engine* (before: an O(m³) re-inversion of the whole basis every 100 pivots, 11 of them at m = 2644,
+//!   plus two passes over the m × m inverse per pivot). Now one pass per pivot (the product B₀⁻¹ a, read only;
+//!   none at all for a w entering), a rank-100 update every 100 pivots (a matrix product at full speed), and no
+//!   re-inversion unless the residual of the basic solution or a probe of the inverse says it drifted (never on
+//!   these LCPs: residuals 1e-15 to 2e-14, probe errors 5e-12 to 1e-9 against the limit 1e-8).
+//!
+//! **Warm start** ([`solve_warm`]): from the complementary basis of a guessed support, with covering vector
+//! `d = B_g e` (Lemke with covering vector e on the principal pivotal transform of the LCP for that basis). On the
+//! same LCPs: the solution's own support solves with no pivot; a guess off by 1–10 indices takes 2–13 pivots
+//! (against 1157 cold at m = 2644); the previous load step's support (the coupled Cattaneo scene, Q raised by
+//! 0.1 μP) takes 5–28 pivots against 132–148 cold. Covering only the infeasible rows (d̄ = their indicator)
+//! was tried and dropped: on these non-copositive-plus LCPs it ended on secondary rays for guesses off by 3–30
+//! indices where d̄ = e solved. A bad guess still solves, but it can cost more than a cold start (all z's guessed
+//! basic at m = 2644: 1478 pivots, 6 s, with larger k throughout).
 //!
 //! As a contact solver ([`Lemke`]) it solves every problem's LCP and interprets its end: on the frictional LCP a
 //! ray is retried with the other slack-sign patterns of the load-driven DOFs (the same solution set, another
@@ -39,7 +88,9 @@ pub struct LemkeSettings {
     pub pivot_tolerance: f64,
     /// Ratios within `tie_tolerance` (relative) of the minimum count as tied (default 1e-9).
     pub tie_tolerance: f64,
-    /// Recompute the basis inverse from scratch every this many pivots (default 100).
+    /// Refresh the basis factorisation every this many pivots (default 100): the block engine refactorises its
+    /// base every `max(refactor_every, k/4)` pivots (k basic z's), the dense engine absorbs its eta file into the
+    /// explicit inverse (and checks it for drift) every `refactor_every` pivots.
     pub refactor_every: usize,
 }
 
@@ -85,12 +136,8 @@ pub fn equilibrate(m: &Mat<f64>) -> (Vec<f64>, Vec<f64>) {
     for _ in 0..8 {
         let mut rmax = vec![0.0_f64; n];
         let mut cmax = vec![0.0_f64; n];
-        for j in 0..n {
-            for i in 0..n {
-                let v = (dr[i] * m[(i, j)] * dc[j]).abs();
-                rmax[i] = rmax[i].max(v);
-                cmax[j] = cmax[j].max(v);
-            }
+        for (j, cm) in cmax.iter_mut().enumerate() {
+            *cm = scan_column(column(m, j), &dr, dc[j], &mut rmax);
         }
         for i in 0..n {
             if rmax[i] > 0.0 {
@@ -104,16 +151,69 @@ pub fn equilibrate(m: &Mat<f64>) -> (Vec<f64>, Vec<f64>) {
     (dr, dc)
 }
 
-/// The scaled problem both engines pivot on, and the way back to the user's variables.
+/// One column of a Ruiz sweep: `rmax_i ← max(rmax_i, |dr_i m_i dcj|)`, returns `max_i |dr_i m_i dcj|`. Written with
+/// comparisons in eight independent lanes so that it vectorises (`f64::max` does not, for its NaN rule); with
+/// finite data the result is the same to the bit.
+fn scan_column(col: &[f64], dr: &[f64], dcj: f64, rmax: &mut [f64]) -> f64 {
+    let mut lanes = [0.0_f64; 8];
+    let split = col.len() - col.len() % 8;
+    let (rc, rt) = rmax.split_at_mut(split);
+    for ((r8, d8), m8) in rc.chunks_exact_mut(8).zip(dr.chunks_exact(8)).zip(col.chunks_exact(8)) {
+        for l in 0..8 {
+            let v = (d8[l] * m8[l] * dcj).abs();
+            if v > r8[l] {
+                r8[l] = v;
+            }
+            if v > lanes[l] {
+                lanes[l] = v;
+            }
+        }
+    }
+    let mut cm = lanes.iter().fold(0.0_f64, |a, &v| if v > a { v } else { a });
+    for ((r, &dri), &mij) in rt.iter_mut().zip(&dr[split..]).zip(&col[split..]) {
+        let v = (dri * mij * dcj).abs();
+        if v > *r {
+            *r = v;
+        }
+        if v > cm {
+            cm = v;
+        }
+    }
+    cm
+}
+
+/// Column j of a faer matrix as a slice (an owned `Mat` stores its columns contiguously).
+pub(crate) fn column(m: &Mat<f64>, j: usize) -> &[f64] {
+    m.col(j).try_as_col_major().expect("faer stores the columns of a Mat contiguously").as_slice()
+}
+
+/// The scaled problem both engines pivot on, and the way back to the user's variables. The scaled matrix
+/// `M' = D_r M D_c` is not stored: engines read its entries as `dr[i] * M[i, j] * dc[j]` ([`Scaled::entry`],
+/// [`Scaled::scaled_column`]) when they gather them, which saves a copy of M (and its page faults: at m = 2644
+/// building the copy took about a tenth of the whole solve).
 pub(crate) struct Scaled<'a> {
     pub(crate) lcp: &'a Lcp,
-    pub(crate) m: Mat<f64>,
     pub(crate) q: Vec<f64>,
+    pub(crate) dr: Vec<f64>,
     pub(crate) dc: Vec<f64>,
     pub(crate) qscale: f64,
 }
 
 impl Scaled<'_> {
+    /// Entry (i, j) of the scaled matrix M'.
+    #[inline]
+    pub(crate) fn entry(&self, i: usize, j: usize) -> f64 {
+        self.dr[i] * self.lcp.m[(i, j)] * self.dc[j]
+    }
+
+    /// Column j of the scaled matrix M', times `factor`, written to `out`.
+    pub(crate) fn scaled_column(&self, j: usize, factor: f64, out: &mut [f64]) {
+        let dcj = self.dc[j];
+        for ((o, &dri), &mij) in out.iter_mut().zip(&self.dr).zip(column(&self.lcp.m, j)) {
+            *o = factor * (dri * mij * dcj);
+        }
+    }
+
     /// Unscale z, recompute w = M z + q from the original data, and wrap up.
     pub(crate) fn finish(&self, z_s: Vec<f64>, status: Status, pivots: usize, message: String) -> LemkeOutcome {
         let z: Vec<f64> = z_s.iter().zip(&self.dc).map(|(z, d)| z * d).collect();
@@ -139,10 +239,9 @@ pub(crate) fn prepare(lcp: &Lcp) -> Result<Scaled<'_>, LemkeOutcome> {
         return Err(fail("M or q has a non-finite entry (NaN or infinity)".into()));
     }
     let (dr, dc) = equilibrate(&lcp.m);
-    let m = Mat::from_fn(n, n, |i, j| dr[i] * lcp.m[(i, j)] * dc[j]);
     let q: Vec<f64> = (0..n).map(|i| dr[i] * lcp.q[i]).collect();
     let qscale = q.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
-    let sc = Scaled { lcp, m, q, dc, qscale };
+    let sc = Scaled { lcp, q, dr, dc, qscale };
     if sc.q.iter().all(|&v| v >= 0.0) {
         return Err(sc.finish(vec![0.0; n], Status::Solved, 0, "q ≥ 0: z = 0 is the solution".into()));
     }
@@ -155,6 +254,37 @@ pub fn solve(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
     match prepare(lcp) {
         Ok(sc) => block::run(&sc, settings),
         Err(out) => out,
+    }
+}
+
+/// Solve `w = M z + q ⊥ z ≥ 0` by Lemke's method warm-started from a guessed complementary basis (block-revised
+/// engine): `guess[i]` is true when z_i is expected to be basic (positive) in the solution, e.g. the support of
+/// the previous load step's solution or of a cheap iterative solve.
+///
+/// The guessed basis (z_i basic for the guessed i, w_i for the others) is factorised once and its basic solution
+/// x̄ computed. If x̄ ≥ 0 it is the solution (0 pivots). Otherwise z₀ enters with the covering vector d = B d̄,
+/// d̄ the indicator of the infeasible rows of x̄, so that z₀ only has to repair those rows ([`block`]). If the
+/// guessed basis is numerically singular, or the warm-started path does not end with z₀ leaving the basis (a ray
+/// or the pivot limit), the LCP is solved by the cold start ([`solve`]) and the message says so; the pivots of
+/// the abandoned attempt are included in the count.
+pub fn solve_warm(lcp: &Lcp, settings: &LemkeSettings, guess: &[bool]) -> LemkeOutcome {
+    let sc = match prepare(lcp) {
+        Ok(sc) => sc,
+        Err(out) => return out,
+    };
+    match block::run_warm(&sc, settings, guess) {
+        Ok(out) => out,
+        Err(failure) => {
+            let out = block::run(&sc, settings);
+            LemkeOutcome {
+                pivots: out.pivots + failure.pivots,
+                message: format!(
+                    "{} (warm start abandoned after {} pivots: {}; solved from the cold start)",
+                    out.message, failure.pivots, failure.reason
+                ),
+                ..out
+            }
+        }
     }
 }
 
