@@ -146,6 +146,9 @@ pub struct Solution {
     pub rigid: Vec<f64>,
     /// False when the tangential rigid motion is indeterminate (at the sliding limit).
     pub tangential_known: bool,
+    /// For a solution from Lemke: which LCP unknowns were positive (its basis), the warm start of the next step
+    /// of a load path. `None` from other solvers.
+    pub support: Option<Vec<bool>>,
 }
 
 impl<'a> ContactProblem<'a> {
@@ -314,7 +317,7 @@ impl<'a> ContactProblem<'a> {
             _ => None,
         };
         let tangential_known = !matches!(self.kind, ProblemKind::SlidingLimit { .. });
-        Solution { f, h, rigid, tangential_known }
+        Solution { f, h, rigid, tangential_known, support: None }
     }
 
     /// The value of a DOF in a solution (0 when the problem has no DOF of that kind).

@@ -779,7 +779,7 @@ impl Solver for ActiveSet {
                 };
                 let tangential_known = !matches!(p.kind, ProblemKind::SlidingLimit { .. });
                 Outcome {
-                    solution: Some(Solution { f: it.f, h, rigid, tangential_known }),
+                    solution: Some(Solution { f: it.f, h, rigid, tangential_known, support: None }),
                     status: Status::Solved,
                     message: format!(
                         "active sets converged in {count} iterations ({} factorisations and {} GMRES iterations on \

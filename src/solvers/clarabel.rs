@@ -67,7 +67,13 @@ impl Solver for Clarabel {
         };
         let message = format!("{msg}; active-set polish {}", if out.polished { "accepted" } else { "not accepted" });
         Outcome {
-            solution: Some(crate::formulation::Solution { f: out.f, h: None, rigid, tangential_known: true }),
+            solution: Some(crate::formulation::Solution {
+                f: out.f,
+                h: None,
+                rigid,
+                tangential_known: true,
+                support: None,
+            }),
             status,
             message,
             work: Work::one("iterations", out.iterations as u64),

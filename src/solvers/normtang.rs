@@ -681,7 +681,7 @@ fn run(p: &ContactProblem, inner: &Inner) -> super::Outcome {
     };
     let rigid = p.dofs.iter().map(|d| out.rigid[slot(d.kind)]).collect();
     super::Outcome {
-        solution: Some(Solution { f: out.f, h: out.h, rigid, tangential_known: true }),
+        solution: Some(Solution { f: out.f, h: out.h, rigid, tangential_known: true, support: None }),
         status: out.status,
         message: out.message,
         work,

@@ -92,11 +92,21 @@ pub struct LemkeSettings {
     /// base every `max(refactor_every, k/4)` pivots (k basic z's), the dense engine absorbs its eta file into the
     /// explicit inverse (and checks it for drift) every `refactor_every` pivots.
     pub refactor_every: usize,
+    /// On a load path, start each step from the previous step's basis (the support of its z, [`solve_warm`]) when
+    /// its LCP has the same size; the block engine only (default true). The cold start otherwise, and whenever the
+    /// warm start fails (the message says so).
+    pub warm_start: bool,
 }
 
 impl Default for LemkeSettings {
     fn default() -> Self {
-        LemkeSettings { max_pivots_per_unknown: 50, pivot_tolerance: 1e-11, tie_tolerance: 1e-9, refactor_every: 100 }
+        LemkeSettings {
+            max_pivots_per_unknown: 50,
+            pivot_tolerance: 1e-11,
+            tie_tolerance: 1e-9,
+            refactor_every: 100,
+            warm_start: true,
+        }
     }
 }
 
@@ -345,7 +355,7 @@ impl Solver for Lemke {
         let out = match p.kind {
             ProblemKind::Frictional => self.frictional(p).1,
             ProblemKind::SlidingLimit { .. } => {
-                let o = (self.engine)(lcp, &self.settings);
+                let o = self.first_attempt(p, lcp);
                 let message = format!(
                     "sliding limit |Q| = μP: every contact node slips (q = μp sgn Q); the tangential shift is \
                      indeterminate (reported null); {}",
@@ -353,11 +363,13 @@ impl Solver for Lemke {
                 );
                 LemkeOutcome { message, ..o }
             }
-            _ => (self.engine)(lcp, &self.settings),
+            _ => self.first_attempt(p, lcp),
         };
         let (status, message) = classify_ray(out.status, out.message, p);
+        let mut solution = p.unpack(&out.z);
+        solution.support = Some(out.z.iter().map(|&v| v > 0.0).collect());
         Outcome {
-            solution: Some(p.unpack(&out.z)),
+            solution: Some(solution),
             status,
             message,
             work: Work::one("pivots", out.pivots as u64),
@@ -367,12 +379,22 @@ impl Solver for Lemke {
 }
 
 impl Lemke {
+    /// The first attempt on a problem's LCP: warm-started from the previous step's basis when the problem carries
+    /// one of the right size and the settings allow it (block engine), else the engine's cold start.
+    fn first_attempt(&self, p: &ContactProblem, lcp: &Lcp) -> LemkeOutcome {
+        let guess = p.warm.as_ref().and_then(|w| w.support.as_ref()).filter(|g| g.len() == lcp.size());
+        match guess {
+            Some(g) if self.settings.warm_start && self.name == "lemke" => solve_warm(lcp, &self.settings, g),
+            _ => (self.engine)(lcp, &self.settings),
+        }
+    }
+
     /// Lemke on the frictional LCP with the default slack signs and, on a ray, with every other sign pattern of the
     /// load-driven DOFs (the same solution set; see [`crate::formulation::lcp`]). Returns the LCP that was solved
     /// (when a retry solved it) and the outcome, with the pivots of all attempts summed.
     pub fn frictional(&self, p: &ContactProblem) -> (Option<Lcp>, LemkeOutcome) {
         let lcp = p.lcp();
-        let mut out = (self.engine)(lcp, &self.settings);
+        let mut out = self.first_attempt(p, lcp);
         let defaults: Vec<f64> = p.load_dofs().map(|d| d.default_sign()).collect();
         let loads = defaults.len();
         if out.status != Status::RayTermination || loads == 0 {

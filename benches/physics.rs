@@ -1,0 +1,125 @@
+//! Criterion benchmarks of the problems beyond the seed's static one, with stable names:
+//!
+//! - `half_plane/end_to_end/active_set/1000`: a frictional half-plane scene of 1000 contact elements, scene to
+//!   result (influence matrix, problem, solve, post). Target: under 1 s.
+//! - `half_plane/influence/N` against `half_plane/n2_write/N`: the closed-form influence blocks (four N×N blocks,
+//!   uniform grid: Toeplitz part plus datum column) against a plain write of four N×N vectors (the memory floor).
+//! - `rolling/creep_curve/50x200`: a 50-point creep curve (steady rolling, creepage-driven, 200 contact elements),
+//!   the points in parallel (rayon). Target: under 2 s.
+//! - `rolling/{steady,static}/200`: one steady-rolling solve against the static frictional solve of the same mesh
+//!   and load (Lemke). Target: steady ≤ 1.5× static.
+//! - `history/{lemke_warm,lemke_cold,pgs}/100x200`: a Mindlin–Deresiewicz path of 100 substeps on 200 contact
+//!   elements, Lemke warm-started from the previous substep's basis, Lemke cold, and PGS (warm-started from the
+//!   previous substep's tractions). Target: under 1 s.
+//!
+//! Run one group with e.g. `cargo bench --bench physics -- history --quick`.
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use rayon::prelude::*;
+use rollbem::halfplane::HalfPlane;
+use rollbem::run::run_scene;
+use rollbem::scene::Scene;
+use std::hint::black_box;
+use std::path::Path;
+
+fn scene(text: &str) -> Scene {
+    Scene::from_toml(text, Path::new("<bench>")).expect("bench scene")
+}
+
+/// The steel wheel (R = 460 mm, E = 210 GPa, ν = 0.3, P = 20 kN/mm: a = 7.12 mm) as a half-plane, `n` constant
+/// elements on |x| ≤ 9 mm, decoupled, μ = 0.3, with the given drive/rolling/path text and solvers.
+fn half_plane(n: usize, body: &str, solvers: &str) -> Scene {
+    scene(&format!(
+        "name = \"bench\"\n[wheel]\nradius = 460.0\nyoungs_modulus = 210000.0\npoisson_ratio = 0.3\n\
+         model = \"half_plane\"\nprofile = \"parabola\"\n[mesh]\nelement = \"constant\"\ncontact_half_width = 9.0\n\
+         contact_elements = {n}\n[contact]\nfriction = 0.3\ncoupling = false\n{body}\n[solvers]\nuse = {solvers}\n"
+    ))
+}
+
+fn half_plane_group(c: &mut Criterion) {
+    let mut g = c.benchmark_group("half_plane");
+    g.sample_size(10);
+    let s = half_plane(1000, "[drive]\nnormal_load = 20000.0\ntangential_load = 3000.0", r#"["active_set"]"#);
+    g.bench_function(BenchmarkId::new("end_to_end/active_set", 1000), |b| {
+        b.iter(|| black_box(run_scene(&s, Path::new("<bench>")).unwrap()))
+    });
+    for n in [250usize, 1000] {
+        let hp = HalfPlane::new(210000.0, 0.3, 460.0);
+        let h = 18.0 / n as f64;
+        g.bench_with_input(BenchmarkId::new("influence", n), &n, |b, &n| {
+            b.iter(|| black_box(hp.influence_blocks_uniform(-9.0, h, n)))
+        });
+        g.bench_with_input(BenchmarkId::new("n2_write", n), &n, |b, &n| {
+            // Four row-major n×n blocks written once each, the layout of `InfluenceBlocks`.
+            b.iter(|| {
+                let m: Vec<Vec<f64>> = (0..4).map(|k| (0..n * n).map(|i| (i + k) as f64).collect()).collect();
+                black_box(m)
+            })
+        });
+    }
+    g.finish();
+}
+
+fn rolling_group(c: &mut Criterion) {
+    let mut g = c.benchmark_group("rolling");
+    g.sample_size(10);
+    // Creepages spanning partial slip up to twice the saturation creepage μa/R = 4.65e-3.
+    let scenes: Vec<Scene> = (0..50)
+        .map(|k| {
+            let xi = 1e-2 * (k as f64 + 0.5) / 50.0;
+            half_plane(
+                200,
+                &format!(
+                    "[drive]\nnormal_load = 20000.0\n[rolling]\nmode = \"steady\"\ndirection = 1\ncreepage = {xi}"
+                ),
+                r#"["lemke"]"#,
+            )
+        })
+        .collect();
+    g.bench_function("creep_curve/50x200", |b| {
+        b.iter(|| {
+            let q: Vec<f64> = scenes
+                .par_iter()
+                .map(|s| run_scene(s, Path::new("<bench>")).unwrap().runs[0].resultants.unwrap().tangential)
+                .collect();
+            black_box(q)
+        })
+    });
+    let load = "[drive]\nnormal_load = 20000.0\ntangential_load = -4107.56";
+    let steady = half_plane(200, &format!("{load}\n[rolling]\nmode = \"steady\"\ndirection = 1"), r#"["lemke"]"#);
+    let static_ = half_plane(200, load, r#"["lemke"]"#);
+    for (name, s) in [("steady", &steady), ("static", &static_)] {
+        g.bench_function(BenchmarkId::new(name, 200), |b| {
+            b.iter(|| black_box(run_scene(s, Path::new("<bench>")).unwrap()))
+        });
+    }
+    g.finish();
+}
+
+fn history_group(c: &mut Criterion) {
+    let mut g = c.benchmark_group("history");
+    g.sample_size(10);
+    // P, then Q to +Q* (20 substeps), to −Q* (40), back to +Q* (40): 101 substeps.
+    let path = "[[steps]]\nnormal_load = 20000.0\n\
+                [[steps]]\nnormal_load = 20000.0\ntangential_load = 3000.0\nsubsteps = 20\n\
+                [[steps]]\nnormal_load = 20000.0\ntangential_load = -3000.0\nsubsteps = 40\n\
+                [[steps]]\nnormal_load = 20000.0\ntangential_load = 3000.0\nsubsteps = 40";
+    let cases = [
+        ("lemke_warm", half_plane(200, path, r#"["lemke"]"#)),
+        ("lemke_cold", half_plane(200, &format!("{path}\n"), "[\"lemke\"]\n[solvers.lemke]\nwarm_start = false")),
+        ("pgs", half_plane(200, path, r#"["pgs"]"#)),
+    ];
+    for (name, s) in &cases {
+        let r = run_scene(s, Path::new("<bench>")).unwrap();
+        let work: u64 =
+            r.steps.iter().map(|st| st.runs[0].work.get("pivots").or(st.runs[0].work.get("sweeps")).unwrap_or(0)).sum();
+        eprintln!("history/{name}/100x200: {} substeps, work {work} (pivots or sweeps)", r.steps.len());
+        g.bench_function(BenchmarkId::new(*name, "100x200"), |b| {
+            b.iter(|| black_box(run_scene(s, Path::new("<bench>")).unwrap()))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, half_plane_group, rolling_group, history_group);
+criterion_main!(benches);
