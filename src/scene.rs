@@ -32,6 +32,10 @@ pub struct Scene {
     /// What the scene is and where its numbers come from.
     #[serde(default)]
     pub description: String,
+    /// The scene's units as a label for tables and axes, e.g. `"N, mm, MPa"` (force, length, stress): rollbem is
+    /// unit-agnostic (any consistent set works); this only says which set the numbers are in.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub units: Option<String>,
     /// The elastic wheel and its support.
     pub wheel: Wheel,
     /// Boundary-element mesh of the wheel (or the contact grid of the half-plane).

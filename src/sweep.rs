@@ -58,6 +58,10 @@ pub struct SweepSpec {
     /// Per grid (same order as `grid`), its own base scene file when it names one (`base` inside `[[grid]]`); a
     /// missing entry means the spec's `base`.
     pub grid_base: Vec<Option<PathBuf>>,
+    /// How many times a case is run for its timings (`timing_repeats`, default 1): cases whose first run took less
+    /// than [`REPEAT_BELOW_S`] are run again and their times are the median run's, with the fastest and slowest in
+    /// `t_total_min`, `t_total_max`. Results (not times) are those of the first run; they do not change.
+    pub timing_repeats: usize,
 }
 
 /// The dotted keys of a (possibly zipped, `a & b`) grid key.
@@ -120,7 +124,20 @@ impl std::fmt::Display for Shard {
 
 /// The names of the timing columns of a sweep CSV: wall-clock times, which differ from run to run (exclude them
 /// when comparing CSVs).
-pub const TIMING_COLUMNS: &[&str] = &["t_assembly", "t_condensation", "t_formulation", "t_solve", "t_total"];
+pub const TIMING_COLUMNS: &[&str] = &[
+    "t_assembly",
+    "t_condensation",
+    "t_formulation",
+    "t_solve",
+    "t_total",
+    "t_total_min",
+    "t_total_max",
+    "timing_runs",
+];
+
+/// A case is timed again (up to the spec's `timing_repeats`) only when its first run took less than this (seconds):
+/// repeating small cases is cheap and is where the noise of a busy machine dominates.
+pub const REPEAT_BELOW_S: f64 = 2.0;
 
 /// The columns after the swept keys and before the work counters.
 const RESULT_COLUMNS_HEAD: &[&str] =
@@ -141,6 +158,8 @@ const RESULT_COLUMNS_TAIL: &[&str] = &[
     "cm_c_err_elements",
     "cm_centre_elements",
     "cm_shear_err",
+    "cm_shear_l2_err",
+    "model",
     "radius",
     "contact_modulus",
     "friction",
@@ -298,11 +317,12 @@ impl SweepSpec {
         let doc: Table = toml::from_str(&text)
             .map_err(|e| Error::Parse { path: path.to_path_buf(), message: e.to_string().trim_end().to_string() })?;
         for key in doc.keys() {
-            if !["name", "description", "base", "grid"].contains(&key.as_str()) {
+            if !["name", "description", "base", "grid", "timing_repeats"].contains(&key.as_str()) {
                 return Err(invalid(
                     path,
                     key,
-                    "unknown key in a sweep spec (expected `name`, `description`, `base` and `[[grid]]` tables)",
+                    "unknown key in a sweep spec (expected `name`, `description`, `base`, `timing_repeats` and \
+                     `[[grid]]` tables)",
                 ));
             }
         }
@@ -360,7 +380,14 @@ impl SweepSpec {
             check_zipped(path, &flat)?;
             grid.push(flat);
         }
-        Ok(SweepSpec { name, description, base, grid, grid_base })
+        let timing_repeats = match doc.get("timing_repeats") {
+            None => 1,
+            Some(Value::Integer(k)) if (1..=20).contains(k) => *k as usize,
+            Some(other) => {
+                return Err(invalid(path, "timing_repeats", format!("must be an integer from 1 to 20 (got {other})")))
+            }
+        };
+        Ok(SweepSpec { name, description, base, grid, grid_base, timing_repeats })
     }
 
     /// The base scene file's path, resolved against the spec file's folder.
@@ -505,7 +532,15 @@ fn param_cells(keys: &[String], params: &[(String, String)]) -> Vec<String> {
     keys.iter().map(|k| params.iter().find(|(p, _)| p == k).map(|(_, v)| v.clone()).unwrap_or_default()).collect()
 }
 
-fn run_row(case: &Variant, keys: &[String], scene: &Scene, contact_nodes: usize, r: &SolverRun) -> Row {
+/// One result row; `spread` is (fastest, slowest, runs) of the total time when the case was timed repeatedly.
+fn run_row(
+    case: &Variant,
+    keys: &[String],
+    scene: &Scene,
+    contact_nodes: usize,
+    r: &SolverRun,
+    spread: Option<(f64, f64, usize)>,
+) -> Row {
     let m = metrics(scene, r);
     let c = r.contact.as_ref();
     let mut cells = vec![case.index.to_string()];
@@ -535,6 +570,8 @@ fn run_row(case: &Variant, keys: &[String], scene: &Scene, contact_nodes: usize,
         float(m.cm_c_err_elements),
         float(m.cm_centre_elements),
         float(m.cm_shear_err),
+        float(m.cm_shear_l2_err),
+        scene.wheel.model.name().to_string(),
     ]);
     let hertz = r.resultants.filter(|f| f.normal > 0.0).map(|f| crate::references::hertz_at(scene, f.normal));
     let edges = crate::references::stick_edges(&r.nodes).filter(|_| scene.contact.friction > 0.0);
@@ -558,6 +595,8 @@ fn run_row(case: &Variant, keys: &[String], scene: &Scene, contact_nodes: usize,
     ]);
     let t = &r.timing_s;
     cells.extend([t.assembly, t.condensation, t.formulation, t.solve, t.total].map(|v| float(Some(v))));
+    let (lo, hi, k) = spread.unwrap_or((t.total, t.total, 1));
+    cells.extend([float(Some(lo)), float(Some(hi)), k.to_string()]);
     cells.push(r.message.clone());
     Row { case: case.index, solver: r.solver.to_string(), cells }
 }
@@ -602,7 +641,7 @@ fn error_rows(case: &Variant, keys: &[String], err: &Error) -> Vec<Row> {
 }
 
 /// Run one case; `label` names the spec in error messages.
-fn run_case(case: &Variant, keys: &[String], label: &Path) -> Vec<Row> {
+fn run_case(case: &Variant, keys: &[String], label: &Path, repeats: usize) -> Vec<Row> {
     let scene = match &case.scene {
         Ok(s) => s,
         Err(e) => return error_rows(case, keys, e),
@@ -611,8 +650,14 @@ fn run_case(case: &Variant, keys: &[String], label: &Path) -> Vec<Row> {
     // A panic in one case (a bug) must not lose the others' rows.
     let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run_scene(scene, &path)));
     match result {
-        Ok(Ok(report)) => {
-            report.runs.iter().map(|r| run_row(case, keys, scene, report.mesh.contact_nodes, r)).collect()
+        Ok(Ok(mut report)) => {
+            let spreads = retime(&mut report, scene, &path, repeats);
+            report
+                .runs
+                .iter()
+                .zip(spreads)
+                .map(|(r, sp)| run_row(case, keys, scene, report.mesh.contact_nodes, r, sp))
+                .collect()
         }
         Ok(Err(e)) => error_rows(case, keys, &e),
         Err(panic) => {
@@ -625,6 +670,37 @@ fn run_case(case: &Variant, keys: &[String], label: &Path) -> Vec<Row> {
             error_rows(case, keys, &e)
         }
     }
+}
+
+/// Run a fast case again (`repeats` runs in all) and give each solver run the timing of its median run; returns per
+/// run (fastest, slowest, runs) of the total time, `None` when the case was run once.
+fn retime(
+    report: &mut crate::results::Report,
+    scene: &Scene,
+    path: &Path,
+    repeats: usize,
+) -> Vec<Option<(f64, f64, usize)>> {
+    let slowest = report.runs.iter().map(|r| r.timing_s.total).fold(0.0, f64::max);
+    if repeats <= 1 || slowest >= REPEAT_BELOW_S {
+        return vec![None; report.runs.len()];
+    }
+    let mut times: Vec<Vec<crate::results::Timing>> = report.runs.iter().map(|r| vec![r.timing_s]).collect();
+    for _ in 1..repeats {
+        let Ok(again) = run_scene(scene, path) else { break };
+        for (t, r) in times.iter_mut().zip(&again.runs) {
+            t.push(r.timing_s);
+        }
+    }
+    report
+        .runs
+        .iter_mut()
+        .zip(times)
+        .map(|(r, mut t)| {
+            t.sort_by(|a, b| a.total.total_cmp(&b.total));
+            r.timing_s = t[t.len() / 2];
+            Some((t[0].total, t[t.len() - 1].total, t.len()))
+        })
+        .collect()
 }
 
 fn sort_rows(rows: &mut [Row]) {
@@ -686,7 +762,7 @@ pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progres
     let mut rows: Vec<Row> = mine
         .par_iter()
         .flat_map_iter(|v| {
-            let rows = run_case(v, &keys, &label);
+            let rows = run_case(v, &keys, &label, spec.timing_repeats);
             bar.inc(1);
             rows
         })

@@ -179,6 +179,7 @@ impl SceneParams {
         Scene {
             name: "property".into(),
             description: format!("{self:?}"),
+            units: None,
             wheel: Wheel {
                 radius: r,
                 youngs_modulus: self.youngs,

@@ -178,6 +178,8 @@ fn shards_merge_to_the_unsharded_sweep() {
         "cm_c_err_elements",
         "cm_centre_elements",
         "cm_shear_err",
+        "cm_shear_l2_err",
+        "model",
         "radius",
         "contact_modulus",
         "friction",
@@ -199,6 +201,9 @@ fn shards_merge_to_the_unsharded_sweep() {
         "t_formulation",
         "t_solve",
         "t_total",
+        "t_total_min",
+        "t_total_max",
+        "timing_runs",
         "message",
     ]);
     assert_eq!(header, expect_header);
