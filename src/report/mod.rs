@@ -23,6 +23,11 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
+mod accuracy;
+mod paths;
+mod physics;
+mod table;
+
 /// Where to read and write.
 #[derive(Debug, Clone)]
 pub struct ReportOptions {
@@ -48,132 +53,87 @@ fn toml_files(dir: &Path) -> Result<Vec<PathBuf>> {
     Ok(v)
 }
 
-/// A CSV read into rows of named cells.
-struct Table {
-    rows: Vec<BTreeMap<String, String>>,
-}
-
-impl Table {
-    fn read(path: &Path) -> Result<Table> {
-        let mut rd = csv::Reader::from_path(path)
-            .map_err(|e| Error::Parse { path: path.to_path_buf(), message: e.to_string() })?;
-        let headers =
-            rd.headers().map_err(|e| Error::Parse { path: path.to_path_buf(), message: e.to_string() })?.clone();
-        let mut rows = Vec::new();
-        for rec in rd.records() {
-            let rec = rec.map_err(|e| Error::Parse { path: path.to_path_buf(), message: e.to_string() })?;
-            rows.push(headers.iter().zip(rec.iter()).map(|(h, v)| (h.to_string(), v.to_string())).collect());
-        }
-        Ok(Table { rows })
-    }
-}
-
-fn num(r: &BTreeMap<String, String>, k: &str) -> Option<f64> {
-    r.get(k).and_then(|v| v.parse::<f64>().ok()).filter(|v| v.is_finite())
-}
-
-fn cell<'a>(r: &'a BTreeMap<String, String>, k: &str) -> &'a str {
-    r.get(k).map(|s| s.as_str()).unwrap_or("")
-}
-
-/// The configuration a sweep row stands for: element kind, solver and (for iterative solvers) tolerance.
-fn config(r: &BTreeMap<String, String>) -> String {
-    let solver = cell(r, "solver");
-    let tol = r
-        .iter()
-        .find(|(k, v)| k.ends_with(".tolerance") && k.contains(solver) && !v.is_empty())
-        .map(|(_, v)| v.parse::<f64>().map(|t| format!(" τ={t:.0e}")).unwrap_or_else(|_| format!(" τ={v}")))
-        .unwrap_or_default();
-    format!("{} {solver}{tol}", cell(r, "element"))
-}
-
-/// Points (x, y) of the rows with both values, grouped by configuration, in mesh order (so a series' line follows
-/// the refinement).
-fn grouped(rows: &[&BTreeMap<String, String>], x: &str, y: &str) -> BTreeMap<String, Vec<(f64, f64)>> {
-    let mut g: BTreeMap<String, Vec<(f64, f64, f64)>> = BTreeMap::new();
-    for r in rows {
-        if let (Some(a), Some(b)) = (num(r, x), num(r, y)) {
-            g.entry(config(r)).or_default().push((num(r, "contact_elements").unwrap_or(0.0), a, b));
-        }
-    }
-    g.into_iter()
-        .map(|(k, mut v)| {
-            v.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
-            (k, v.into_iter().map(|(_, a, b)| (a, b)).collect())
-        })
-        .collect()
-}
-
-/// A configuration enters the Pareto front only if it improves the error by this fraction (timings are noisy, and
-/// equal-error points differing only by noise are not choices).
-const PARETO_IMPROVEMENT: f64 = 0.02;
-
-/// Pareto front of (time, error): the configurations no other beats on both.
-fn pareto<'a>(rows: &[&'a BTreeMap<String, String>], err: &str) -> Vec<&'a BTreeMap<String, String>> {
-    let mut pts: Vec<&BTreeMap<String, String>> =
-        rows.iter().copied().filter(|r| num(r, err).is_some() && num(r, "t_total").is_some()).collect();
-    pts.sort_by(|a, b| num(a, "t_total").unwrap().total_cmp(&num(b, "t_total").unwrap()));
-    let mut front = Vec::new();
-    let mut best = f64::INFINITY;
-    for r in pts {
-        let e = num(r, err).unwrap();
-        if e < best * (1.0 - PARETO_IMPROVEMENT) {
-            best = e;
-            front.push(r);
-        }
-    }
-    front
-}
-
-/// Observed order of convergence from the two finest meshes of a series (error ∝ h^order, h ∝ 1/elements).
-fn order(points: &[(f64, f64)]) -> Option<f64> {
-    let n = points.len();
-    if n < 2 {
-        return None;
-    }
-    let (a, b) = (points[n - 2], points[n - 1]);
-    (a.1 > 0.0 && b.1 > 0.0 && b.0 > a.0).then(|| (a.1 / b.1).ln() / (b.0 / a.0).ln())
-}
-
 fn fmt_e(v: Option<f64>) -> String {
     v.map(|v| format!("{v:.2e}")).unwrap_or_else(|| "–".into())
 }
 
+/// Check that `name` (a scene's or sweep's `name`, read from `path`) can name an output file: letters, digits,
+/// `-`, `_` and `.`, not starting with `.`; and that no earlier input used it (`seen`).
+fn output_name(name: &str, path: &Path, seen: &mut BTreeMap<String, PathBuf>) -> Result<()> {
+    let safe = !name.is_empty()
+        && !name.starts_with('.')
+        && name.chars().all(|c| c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.'));
+    if !safe {
+        return Err(Error::Invalid {
+            path: path.to_path_buf(),
+            field: "name".into(),
+            message: format!(
+                "{name:?} names the report's output files: use letters, digits, '-', '_' and '.', not starting with '.'"
+            ),
+        });
+    }
+    if let Some(first) = seen.insert(name.to_string(), path.to_path_buf()) {
+        return Err(Error::Invalid {
+            path: path.to_path_buf(),
+            field: "name".into(),
+            message: format!("{name:?} is also the name of {}: names must be unique within a report", first.display()),
+        });
+    }
+    Ok(())
+}
+
+/// Figures written so far: (title, file relative to the report folder).
+pub type Figures = Vec<(String, String)>;
+
 /// Regenerate everything; returns the path of the Markdown summary.
 pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
     let out = &opts.out;
+    // Every input is read and its name checked before anything is written.
+    let mut seen = BTreeMap::new();
+    for p in toml_files(&opts.reference.join("scenes"))? {
+        output_name(&Scene::from_file(&p)?.name, &p, &mut seen)?;
+    }
+    let mut seen = BTreeMap::new();
+    for p in toml_files(&opts.reference.join("sweeps"))? {
+        output_name(&crate::sweep::SweepSpec::from_file(&p)?.name, &p, &mut seen)?;
+    }
     for d in [out.clone(), out.join("runs"), out.join("sweeps"), out.join("figures")] {
         std::fs::create_dir_all(&d).map_err(|source| Error::Write { path: d.clone(), source })?;
     }
     let mut md = String::new();
     writeln!(md, "# rollbem reports\n").unwrap();
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     writeln!(
         md,
-        "Generated by `cargo run --release -- report` from `reference/` (never edit by hand). Everything is \
-         deterministic except timings: this machine has 2 noisy vCPUs and sweeps run cases in parallel, so read \
-         times as ratios between methods.\n"
+        "Generated by `rollbem report --reference {} --out {}` (never edit by hand). Everything is deterministic \
+         except timings, taken on a machine with {cores} logical CPUs while the sweeps ran their cases in parallel: \
+         read times as ratios between methods, and the benchmarks (`cargo bench`) for stable figures.\n",
+        opts.reference.display(),
+        opts.out.display()
     )
     .unwrap();
     let (reports, cmp_md) = reference_scenes(opts)?;
     let figures = seed_figures(&reports, &out.join("figures"))?;
     let (sweep_md, plots) = sweeps(opts)?;
+    let mut path_md = String::new();
+    let mut path_figs: Figures = Vec::new();
+    paths::sections(&reports, out, &mut path_md, &mut path_figs)?;
 
     // ---- Markdown ----------------------------------------------------------------------------------------------
-    writeln!(md, "## Which method for which accuracy\n").unwrap();
+    writeln!(md, "## The sweeps: accuracy against cost, and what the models change\n").unwrap();
     writeln!(
         md,
-        "Errors are measured against the analytic references (Hertz at equal load; Cattaneo–Mindlin at β = 0). \
-         They fall with the mesh until the wheel's finite size (a/R ≈ 0.015 here) and the node-based fit set a \
-         floor; a solver tolerance looser than that floor wastes accuracy, a tighter one wastes time. Direct \
-         solvers (Lemke, clarabel with polish) are exact to round-off on the discrete problem; PGS at tolerance τ \
-         adds an error of order τ. An error against theory mixes discretisation, the finite wheel's departure from \
-         the half-space, and solver error: a loose PGS tolerance can land closer to Hertz by chance, not by merit — \
-         read solver error against Lemke (solver comparison below). Times here are single runs, with \
-         cases in parallel on 2 vCPUs; criterion benchmarks (`cargo bench`) give the stable figures. A configuration \
-         enters a Pareto front only if it lowers the error by at least 2 %.\n"
+        "An error against theory mixes discretisation error, model error (a finite wheel is not a half-space) and \
+         solver error. Direct solvers (lemke, active_set, clarabel with polish) are exact to round-off on the discrete \
+         problem; PGS at tolerance τ adds an error of order τ, which can land closer to the theory by chance, not by \
+         merit — read a solver's error against Lemke in the solver comparison.\n"
     )
     .unwrap();
     md.push_str(&sweep_md);
+    if !path_md.is_empty() {
+        writeln!(md, "\n## Load paths\n").unwrap();
+        md.push_str(&path_md);
+    }
     writeln!(md, "\n## Solver comparison on the reference scenes ([CSV](solver-comparison.csv))\n").unwrap();
     writeln!(
         md,
@@ -181,18 +141,20 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
          nodes called stick/slip/separated differently from Lemke. Residuals are solver-independent (physical \
          conditions). The QP symmetrisation effect is, for clarabel, max |p_QP − p| / p_max between the interior-point \
          answer of the symmetrised QP (K_s = (K + Kᵀ)/2) and the polished answer of the nonsymmetric collocation \
-         problem: the price of the symmetric assumption, of the order of the flexibility's asymmetry (in \
-         `solver-comparison.csv`), removed by the polish.\n"
+         problem: the price of the symmetric assumption, removed by the polish. For a load path the row is the path's \
+         last substep.\n"
     )
     .unwrap();
     md.push_str(&cmp_md);
-    writeln!(md, "\n## The seed's figures, reproduced\n").unwrap();
-    for (title, file) in &figures {
-        writeln!(md, "### {title}\n\n![{title}]({file})\n").unwrap();
+    if !figures.is_empty() {
+        writeln!(md, "\n## The seed's figures, reproduced\n").unwrap();
+        for (title, file) in &figures {
+            writeln!(md, "### {title}\n\n![{title}]({file})\n").unwrap();
+        }
     }
     writeln!(md, "\n## Files\n\n- `runs/NAME.json`: result document of every reference scene").unwrap();
     writeln!(md, "- `solver-comparison.csv`, `sweeps/*.csv`: the tables behind this page").unwrap();
-    for (title, file) in plots.iter().chain(&figures) {
+    for (title, file) in plots.iter().chain(&path_figs).chain(&figures) {
         writeln!(md, "- [{title}]({file})").unwrap();
     }
     let path = out.join("README.md");
@@ -213,8 +175,15 @@ fn reference_scenes(opts: &ReportOptions) -> Result<(BTreeMap<String, Report>, S
         "| scene | solver | status | size | work | residual | Δ vs Lemke (/p0) | state mismatches | QP symmetrisation effect | solve time [s] |\n\
          |---|---|---|---|---|---|---|---|---|---|\n",
     );
+    // Read and check every scene before running any, so that a bad name writes nothing.
+    let mut seen = BTreeMap::new();
+    let mut scenes = Vec::new();
     for p in toml_files(&opts.reference.join("scenes"))? {
         let s = Scene::from_file(&p)?;
+        output_name(&s.name, &p, &mut seen)?;
+        scenes.push((p, s));
+    }
+    for (p, s) in scenes {
         let r = run_scene(&s, &p)?;
         let text = serde_json::to_string_pretty(&r).expect("report serialises");
         write_atomic(&out.join("runs").join(format!("{}.json", s.name)), &text)?;
@@ -272,113 +241,40 @@ fn reference_scenes(opts: &ReportOptions) -> Result<(BTreeMap<String, Report>, S
     Ok((reports, cmp_md))
 }
 
-/// Accuracy against time for one error measure of a sweep: the plot, the Pareto front and the cheapest
-/// configuration per accuracy target, appended to `md`.
-fn accuracy_section(
-    name: &str,
-    err: &str,
-    label: &str,
-    solved: &[&BTreeMap<String, String>],
-    out: &Path,
-    md: &mut String,
-    plots: &mut Vec<(String, String)>,
-) -> Result<()> {
-    // Accuracy against time.
-    let mut chart = Chart::new(format!("{name}: {label} against total time"), "total time [s]", label).log_x().log_y();
-    for (k, pts) in grouped(solved, "t_total", err) {
-        chart = chart.add(Series::new(k, pts, Style::LineMarkers));
-    }
-    let file = format!("figures/{name}-{err}-vs-time.svg");
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    plots.push((format!("{name}: {label} against time"), file.clone()));
-    writeln!(md, "![{label} against time]({file})\n").unwrap();
-    // Pareto front and cheapest configurations.
-    let front = pareto(solved, err);
-    writeln!(md, "Pareto front ({label} against total time): ").unwrap();
-    writeln!(md, "\n| configuration | contact elements | error | total time [s] |\n|---|---|---|---|").unwrap();
-    for r in &front {
-        writeln!(
-            md,
-            "| {} | {} | {:.2e} | {:.4} |",
-            config(r),
-            cell(r, "contact_elements"),
-            num(r, err).unwrap(),
-            num(r, "t_total").unwrap()
-        )
-        .unwrap();
-    }
-    writeln!(md, "\nCheapest configuration reaching each accuracy ({label}):\n").unwrap();
-    writeln!(md, "| target | configuration | contact elements | error | total time [s] |\n|---|---|---|---|---|")
-        .unwrap();
-    for target in [1e-2, 1e-3, 1e-4] {
-        let best = front.iter().find(|r| num(r, err).unwrap() <= target);
-        match best {
-            Some(r) => writeln!(
-                md,
-                "| {:.0e} | {} | {} | {:.2e} | {:.4} |",
-                target,
-                config(r),
-                cell(r, "contact_elements"),
-                num(r, err).unwrap(),
-                num(r, "t_total").unwrap()
-            ),
-            None => writeln!(
-                md,
-                "| {target:.0e} | not reached by any configuration of this sweep (smallest error {:.2e}) | | | |",
-                front.last().map(|r| num(r, err).unwrap()).unwrap_or(f64::NAN)
-            ),
-        }
-        .unwrap();
-    }
-    writeln!(md).unwrap();
-    Ok(())
-}
-
-/// Run every reference sweep: CSVs, plots and the Markdown sections. Returns (Markdown, plots as (title, file)).
-fn sweeps(opts: &ReportOptions) -> Result<(String, Vec<(String, String)>)> {
+/// Run every reference sweep into its CSV and its sections. Returns (Markdown, plots).
+fn sweeps(opts: &ReportOptions) -> Result<(String, Figures)> {
     let out = &opts.out;
-    let mut sweep_md = String::new();
-    let mut plots: Vec<(String, String)> = Vec::new();
-    for spec in toml_files(&opts.reference.join("sweeps"))? {
-        let name = spec.file_stem().unwrap().to_string_lossy().into_owned();
-        let csv_path = out.join("sweeps").join(format!("{name}.csv"));
-        crate::sweep::run_sweep(&spec, None, &csv_path, opts.progress)?;
-        let t = Table::read(&csv_path)?;
-        let solved: Vec<&BTreeMap<String, String>> = t.rows.iter().filter(|r| cell(r, "status") == "solved").collect();
-        writeln!(sweep_md, "\n### Sweep `{name}` ([CSV](sweeps/{name}.csv), {} rows)\n", t.rows.len()).unwrap();
-        let errs: Vec<(&str, &str)> = if solved.iter().any(|r| num(r, "hertz_l2_err").is_some()) {
-            vec![
-                ("hertz_l2_err", "L2 pressure error vs Hertz"),
-                ("hertz_a_err", "half-width error vs Hertz"),
-                ("hertz_p0_err", "peak-pressure error vs Hertz"),
-            ]
-        } else {
-            vec![("cm_shear_err", "shear error vs Cattaneo–Mindlin (/μp0, away from ±a, ±c)")]
-        };
-        for (err, label) in &errs {
-            accuracy_section(&name, err, label, &solved, out, &mut sweep_md, &mut plots)?;
-        }
-        // Convergence under refinement, with observed orders (direct solvers, or the tightest tolerance).
-        let (err, label) = errs[0];
-        let mut chart = Chart::new(format!("{name}: {label} against mesh"), "contact elements", label).log_x().log_y();
-        writeln!(sweep_md, "Observed orders of convergence ({label}, from the two finest meshes):\n").unwrap();
-        writeln!(sweep_md, "| configuration | order | finest error |\n|---|---|---|").unwrap();
-        for (k, pts) in grouped(&solved, "contact_elements", err) {
-            writeln!(
-                sweep_md,
-                "| {k} | {} | {} |",
-                fmt_e(order(&pts)).replace("e0", ""),
-                fmt_e(pts.last().map(|p| p.1))
-            )
-            .unwrap();
-            chart = chart.add(Series::new(k, pts, Style::LineMarkers));
-        }
-        let file = format!("figures/{name}-{err}-vs-mesh.svg");
-        chart.write(&out.join(&file)).map_err(plot_err)?;
-        plots.push((format!("{name}: {label} against mesh"), file.clone()));
-        writeln!(sweep_md, "\n![{label} against mesh]({file})").unwrap();
+    let mut md = String::new();
+    let mut figs: Figures = Vec::new();
+    let mut seen = BTreeMap::new();
+    let mut specs = Vec::new();
+    for spec_path in toml_files(&opts.reference.join("sweeps"))? {
+        let spec = crate::sweep::SweepSpec::from_file(&spec_path)?;
+        output_name(&spec.name, &spec_path, &mut seen)?;
+        specs.push((spec_path, spec));
     }
-    Ok((sweep_md, plots))
+    for (spec_path, spec) in specs {
+        let stem = spec.name.clone();
+        let csv_path = out.join("sweeps").join(format!("{stem}.csv"));
+        crate::sweep::run_sweep(&spec_path, None, &csv_path, opts.progress)?;
+        let mut sw = table::Sweep {
+            name: spec.name.clone(),
+            description: spec.description.clone(),
+            stem: stem.clone(),
+            keys: spec.keys(),
+            rows: table::Table::read(&csv_path)?.rows,
+        };
+        writeln!(md, "\n### {} ([CSV](sweeps/{stem}.csv), {} rows)\n\n{}\n", sw.name, sw.rows.len(), sw.description)
+            .unwrap();
+        if physics::is_creep_curve(&sw) {
+            physics::creep_curves(&sw, out, &mut md, &mut figs)?;
+        } else if physics::compares_models(&sw) {
+            physics::finite_vs_half_plane(&sw, out, &mut md, &mut figs)?;
+        } else {
+            accuracy::sections(&mut sw, out, &mut md, &mut figs)?;
+        }
+    }
+    Ok((md, figs))
 }
 
 fn lemke_of<'a>(reports: &'a BTreeMap<String, Report>, name: &str) -> Option<&'a SolverRun> {
@@ -427,7 +323,14 @@ fn seed_figures(reports: &BTreeMap<String, Report>, dir: &Path) -> Result<Vec<(S
     ];
     for (gi, (title, members)) in groups.iter().enumerate() {
         let tag = ["07-10", "11-14", "15-18"][gi];
-        let mut tr = Chart::new(format!("Seed {title}: tractions"), "x", "traction (p solid markers, q lines)");
+        let units = members
+            .first()
+            .and_then(|(n, _)| reports.get(*n))
+            .map(|r| table::Units::parse(r.scene.units.as_deref()))
+            .unwrap_or_default();
+        let mut tr = Chart::new(format!("Seed {title}: tractions"), "x", "traction (p markers, q lines)")
+            .x_unit(units.length.clone())
+            .y_unit(units.stress.clone());
         let mut sv = Chart::new(format!("Seed {title}: slip velocity s_t* (eq. 12)"), "x", "s_t*");
         let mut st = Chart::new(format!("Seed {title}: node states (2 stick, 1 slip, 0 separated)"), "x", "state");
         let mut any = false;

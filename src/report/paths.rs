@@ -1,0 +1,352 @@
+//! Load paths among the reference scenes (`[[steps]]`): the Q–δ_T hysteresis loop, the stick zone against the
+//! substep, the energy dissipated, and for rolling paths the approach to the steady-rolling solution of the same
+//! mesh. Theory is drawn only where it applies to the scene as written: Mindlin–Deresiewicz for a β = 0 half-plane
+//! under constant P and a tangential load cycled ±Q*, Spence for a coupled half-plane under a growing normal load.
+
+use super::table::Units;
+use super::{plot_err, Figures};
+use crate::error::Result;
+use crate::plot::{Chart, Series, Style};
+use crate::references::{beta_zero, stick_edges};
+use crate::results::{Report, SolverRun};
+use crate::run::run_scene;
+use crate::scene::{BodyModel, CounterBody, RollingMode, Scene};
+use crate::theory::{self, Hertz2D, TangentialPath};
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// The runs of one solver along a path, in order (a solver whose path broke has fewer).
+fn runs_of<'a>(r: &'a Report, solver: &str) -> Vec<(usize, &'a SolverRun)> {
+    r.steps.iter().enumerate().filter_map(|(k, st)| Some((k, st.runs.iter().find(|x| x.solver == solver)?))).collect()
+}
+
+/// The Mindlin–Deresiewicz pattern: step 0 loads P alone, then every step holds P and takes Q to +Q*, −Q*, +Q*, …
+/// (|Q*| ≤ μP), on a single half-plane with β = 0 and a rigid flat. Returns (P, Q*).
+fn md_pattern(s: &Scene) -> Option<(f64, f64)> {
+    let single = s.wheel.model == BodyModel::HalfPlane && matches!(s.counter_body, CounterBody::Rigid);
+    let p = s.steps.first()?.normal_load?;
+    if !single || s.rolling.is_some() || !beta_zero(s, p) || s.steps.len() < 3 {
+        return None;
+    }
+    if s.steps[0].tangential_load.unwrap_or(0.0) != 0.0 || s.steps[0].tangential_shift.is_some() {
+        return None;
+    }
+    let q_star = s.steps[1].tangential_load?;
+    let ok = q_star > 0.0
+        && q_star <= s.contact.friction * p
+        && s.steps[1..].iter().enumerate().all(|(k, st)| {
+            st.normal_load == Some(p) && st.tangential_load == Some(if k % 2 == 0 { q_star } else { -q_star })
+        });
+    ok.then_some((p, q_star))
+}
+
+/// The MD branch of substep `k` (index into `r.steps`) for the pattern of [`md_pattern`].
+fn md_branch(r: &Report, k: usize, q_star: f64) -> TangentialPath {
+    match r.steps[k].step {
+        0 | 1 => TangentialPath::Loading,
+        s if s % 2 == 0 => TangentialPath::Unloading { q_star },
+        _ => TangentialPath::Reloading { q_star },
+    }
+}
+
+/// Spence's pattern: a coupled half-plane (β ≠ 0) on a rigid flat, one or more steps raising the normal load
+/// monotonically from rest with no tangential drive. Returns β.
+fn spence_pattern(s: &Scene) -> Option<f64> {
+    let single = s.wheel.model == BodyModel::HalfPlane && matches!(s.counter_body, CounterBody::Rigid);
+    let p_end = s.steps.last()?.normal_load?;
+    let monotone = s.steps.windows(2).all(|w| w[0].normal_load.unwrap_or(0.0) <= w[1].normal_load.unwrap_or(0.0));
+    let no_tangential = s.steps.iter().all(|st| st.tangential_load.unwrap_or(0.0) == 0.0 && st.roll.is_none());
+    (single && s.contact.coupling && s.contact.friction > 0.0 && monotone && no_tangential && !beta_zero(s, p_end))
+        .then(|| s.dundurs_beta())
+}
+
+/// The path sections of every reference scene with `[[steps]]`.
+pub fn sections(reports: &BTreeMap<String, Report>, out: &Path, md: &mut String, figs: &mut Figures) -> Result<()> {
+    for (name, r) in reports.iter().filter(|(_, r)| !r.steps.is_empty()) {
+        let units = Units::parse(r.scene.units.as_deref());
+        writeln!(md, "### `{name}`\n\n{}\n", r.scene.description.split_whitespace().collect::<Vec<_>>().join(" "))
+            .unwrap();
+        summary(r, md);
+        let solver = r.runs.first().map(|x| x.solver.0).unwrap_or("lemke");
+        let runs = runs_of(r, solver);
+        if r.scene.steps.iter().any(|st| st.roll.unwrap_or(0.0) > 0.0) {
+            rolling_approach(name, r, &runs, &units, out, md, figs)?;
+        } else {
+            hysteresis(name, r, &runs, &units, out, md, figs)?;
+        }
+        stick_zone(name, r, &runs, &units, out, md, figs)?;
+    }
+    Ok(())
+}
+
+/// Per solver: substeps solved, dissipated energy, largest residual, time.
+fn summary(r: &Report, md: &mut String) {
+    writeln!(
+        md,
+        "| solver | substeps solved | dissipated (total) | largest residual | time [s] |\n|---|---|---|---|---|"
+    )
+    .unwrap();
+    for run in &r.runs {
+        let runs = runs_of(r, run.solver.0);
+        let solved = runs.iter().filter(|(_, x)| x.status == crate::solvers::Status::Solved).count();
+        let dissipated = runs.last().and_then(|(_, x)| x.history.as_ref()).map_or(0.0, |h| h.dissipated_total);
+        let worst = runs.iter().filter_map(|(_, x)| x.residuals.map(|res| res.max())).fold(0.0, f64::max);
+        let time: f64 = runs.iter().map(|(_, x)| x.timing_s.total).sum();
+        writeln!(md, "| {} | {solved}/{} | {dissipated:.4e} | {worst:.1e} | {time:.3} |", run.solver, r.steps.len())
+            .unwrap();
+    }
+    writeln!(md).unwrap();
+}
+
+/// A curve to draw: label, points, style.
+type Curve = (String, Vec<(f64, f64)>, Style);
+
+/// Q against the rigid shift, with Mindlin–Deresiewicz where it applies; the cycle's dissipation against theory.
+fn hysteresis(
+    name: &str,
+    r: &Report,
+    runs: &[(usize, &SolverRun)],
+    units: &Units,
+    out: &Path,
+    md: &mut String,
+    figs: &mut Figures,
+) -> Result<()> {
+    let pts: Vec<(f64, f64)> =
+        runs.iter().filter_map(|(_, x)| Some((x.rigid_body?.tangential?, x.resultants?.tangential))).collect();
+    if pts.iter().all(|p| p.1 == 0.0) {
+        return Ok(());
+    }
+    let solver = runs.first().map(|(_, x)| x.solver.0).unwrap_or("");
+    let mut series: Vec<Curve> = vec![(format!("{solver}, substep ends"), pts.clone(), Style::LineMarkers)];
+    let s = &r.scene;
+    if let Some((p, q_star)) = md_pattern(s) {
+        let h = Hertz2D::from_load(p, s.wheel.radius, s.contact_modulus());
+        let mu = s.contact.friction;
+        // The half-plane's datum is the material point at depth D; theory's log datum is D' = D e^(1/(2(1 − ν)))
+        // (tests/history.rs derives it); the wheel's shift is minus the counter-body's δ.
+        let d_prime = s.wheel.datum() * (0.5 / (1.0 - s.wheel.poisson_ratio)).exp();
+        let delta =
+            |path: TangentialPath, q: f64| -theory::md_displacement(&h, mu, s.contact_modulus(), d_prime, path, q);
+        let qs: Vec<f64> = (0..=100).map(|i| q_star * (i as f64 / 50.0 - 1.0)).collect();
+        let mut curve: Vec<(f64, f64)> =
+            (0..=50).map(|i| q_star * i as f64 / 50.0).map(|q| (delta(TangentialPath::Loading, q), q)).collect();
+        curve.extend(qs.iter().rev().map(|&q| (delta(TangentialPath::Unloading { q_star }, q), q)));
+        curve.extend(qs.iter().map(|&q| (delta(TangentialPath::Reloading { q_star }, q), q)));
+        series.push(("Mindlin–Deresiewicz (2D)".into(), curve, Style::Dashed));
+        let w: f64 = runs
+            .iter()
+            .filter(|(k, _)| r.steps[*k].step >= 2 && r.steps[*k].step <= 3)
+            .filter_map(|(_, x)| x.history.as_ref().map(|h| h.dissipated))
+            .sum();
+        let exact = theory::md_cycle_dissipation(mu, p, s.contact_modulus(), q_star);
+        if r.scene.steps.len() >= 4 {
+            writeln!(
+                md,
+                "Energy dissipated in the cycle +Q* → −Q* → +Q* (Q* = {q_star}, {solver}): {w:.6e}; Mindlin–Deresiewicz \
+                 in 2D, W = (2μ²P²/(πE*))[1 − γ² + 2γ ln γ] with γ = 1 − Q*/(μP): {exact:.6e} (relative difference \
+                 {:+.1e}).\n",
+                w / exact - 1.0
+            )
+            .unwrap();
+        }
+        let worst = runs
+            .iter()
+            .filter_map(|(k, x)| {
+                let q = x.resultants?.tangential;
+                Some((x.rigid_body?.tangential? - delta(md_branch(r, *k, q_star), q)).abs())
+            })
+            .fold(0.0, f64::max);
+        let span = delta(TangentialPath::Loading, q_star).abs();
+        writeln!(
+            md,
+            "Largest distance of the computed shift from the theory's loop: {:.1e} of the loop's half-span.\n",
+            worst / span
+        )
+        .unwrap();
+    }
+    let mut chart = Chart::new(format!("{name}: tangential force against rigid shift"), "rigid shift δ_T", "Q")
+        .x_unit(units.length.clone())
+        .y_unit(units.line_load());
+    for (label, p, style) in &series {
+        chart = chart.add(Series::new(label.clone(), p.clone(), *style));
+    }
+    let file = format!("figures/{name}-hysteresis.svg");
+    chart.write(&out.join(&file)).map_err(plot_err)?;
+    figs.push((format!("{name}: Q against δ_T"), file.clone()));
+    writeln!(md, "![hysteresis loop]({file})\n").unwrap();
+    // The loop is thin beside the elastic compliance: subtract the chord through the computed loop's tips
+    // (the shifts at the largest and smallest Q) so that its width can be seen.
+    let hi = pts.iter().copied().max_by(|a, b| a.1.total_cmp(&b.1));
+    let lo = pts.iter().copied().min_by(|a, b| a.1.total_cmp(&b.1));
+    if let (Some(hi), Some(lo)) = (hi, lo) {
+        if hi.1 > lo.1 {
+            let slope = (hi.0 - lo.0) / (hi.1 - lo.1);
+            let open =
+                |v: &[(f64, f64)]| v.iter().map(|&(d, q)| (d - lo.0 - slope * (q - lo.1), q)).collect::<Vec<_>>();
+            let mut chart = Chart::new(format!("{name}: loop less its chord"), "δ_T − chord(Q)", "Q")
+                .x_unit(units.length.clone())
+                .y_unit(units.line_load());
+            for (label, p, style) in &series {
+                chart = chart.add(Series::new(label.clone(), open(p), *style));
+            }
+            let file = format!("figures/{name}-hysteresis-opened.svg");
+            chart.write(&out.join(&file)).map_err(plot_err)?;
+            figs.push((format!("{name}: the loop opened"), file.clone()));
+            writeln!(
+                md,
+                "The same loop with the straight chord through its tips (δ_T at the largest and smallest Q, compliance \
+                 {slope:.3e} {}/({})) subtracted, so that its width shows:\n\n![hysteresis loop opened]({file})\n",
+                units.length,
+                units.line_load()
+            )
+            .unwrap();
+        }
+    }
+    Ok(())
+}
+
+/// The stick zone's half-width at each substep, with theory where it applies.
+fn stick_zone(
+    name: &str,
+    r: &Report,
+    runs: &[(usize, &SolverRun)],
+    units: &Units,
+    out: &Path,
+    md: &mut String,
+    figs: &mut Figures,
+) -> Result<()> {
+    let pts: Vec<(f64, f64)> = runs
+        .iter()
+        .filter_map(|(k, x)| {
+            let (l, rr) = stick_edges(&x.nodes)?;
+            Some(((k + 1) as f64, 0.5 * (rr - l)))
+        })
+        .collect();
+    if pts.is_empty() {
+        return Ok(());
+    }
+    let solver = runs.first().map(|(_, x)| x.solver.0).unwrap_or("");
+    let mut chart = Chart::new(format!("{name}: stick zone along the path"), "substep", "stick half-width")
+        .x_unit("1")
+        .y_unit(units.length.clone())
+        .add(Series::new(solver, pts.clone(), Style::Markers));
+    let s = &r.scene;
+    let mut theory_pts = Vec::new();
+    let mut what = "";
+    if let Some((p, q_star)) = md_pattern(s) {
+        let h = Hertz2D::from_load(p, s.wheel.radius, s.contact_modulus());
+        for (k, x) in runs {
+            if let Some(f) = x.resultants {
+                if r.steps[*k].step >= 1 {
+                    let c = theory::md_stick_half_width(&h, s.contact.friction, md_branch(r, *k, q_star), f.tangential);
+                    theory_pts.push(((k + 1) as f64, c));
+                }
+            }
+        }
+        what = "Mindlin–Deresiewicz: the current branch's stick zone";
+    } else if let Some(beta) = spence_pattern(s) {
+        let k_ratio = theory::spence_c_over_a(beta.abs() / s.contact.friction);
+        for (k, x) in runs {
+            if let Some(f) = x.resultants.filter(|f| f.normal > 0.0) {
+                let a = Hertz2D::from_load(f.normal, s.wheel.radius, s.contact_modulus()).a;
+                theory_pts.push(((k + 1) as f64, k_ratio * a));
+            }
+        }
+        what = "Spence: c = (c/a)(β/μ) · a(P), self-similar";
+        let last = pts.last().unwrap().1;
+        let a_end = Hertz2D::from_load(
+            runs.last().unwrap().1.resultants.map_or(0.0, |f| f.normal),
+            s.wheel.radius,
+            s.contact_modulus(),
+        )
+        .a;
+        writeln!(
+            md,
+            "Final stick half-width {last:.4} {} against Spence's {:.4} (c/a = {:.4} computed against {k_ratio:.4} for \
+             β/μ = {:.3}).\n",
+            units.length,
+            k_ratio * a_end,
+            last / a_end,
+            beta.abs() / s.contact.friction
+        )
+        .unwrap();
+    }
+    if !theory_pts.is_empty() {
+        let worst = pts
+            .iter()
+            .filter_map(|(k, c)| theory_pts.iter().find(|t| t.0 == *k).map(|t| (c - t.1).abs()))
+            .fold(0.0, f64::max);
+        let h = s.mesh.element_length(s.wheel.radius);
+        writeln!(md, "{what}; largest difference along the path {:.2} elements.\n", worst / h).unwrap();
+        chart = chart.add(Series::new(what.split(':').next().unwrap_or(what), theory_pts, Style::Dashed));
+    }
+    let file = format!("figures/{name}-stick-zone.svg");
+    chart.write(&out.join(&file)).map_err(plot_err)?;
+    figs.push((format!("{name}: stick zone along the path"), file.clone()));
+    writeln!(md, "![stick zone along the path]({file})\n").unwrap();
+    Ok(())
+}
+
+/// The steady-rolling counterpart of a rolling path: the last step's drive with `[rolling] mode = "steady"` (the
+/// tangential load kept when the path prescribes it, else the creepage with the tangential DOF free).
+fn steady_counterpart(s: &Scene) -> Scene {
+    let mut c = s.clone();
+    let last = s.steps.last().expect("a path").clone();
+    c.steps.clear();
+    c.drive = last.drive();
+    c.drive.tangential_shift = None;
+    c.drive.rotation = None;
+    c.drive.moment = None;
+    let rolling = c.rolling.as_mut().expect("a rolling path");
+    rolling.mode = RollingMode::Steady;
+    if c.drive.tangential_load.is_some() {
+        rolling.creepage = None;
+    }
+    c.solvers.use_ = vec!["lemke".into()];
+    c
+}
+
+/// Distance of the tractions to the steady-rolling solution against the distance rolled (log scale).
+fn rolling_approach(
+    name: &str,
+    r: &Report,
+    runs: &[(usize, &SolverRun)],
+    units: &Units,
+    out: &Path,
+    md: &mut String,
+    figs: &mut Figures,
+) -> Result<()> {
+    let steady = run_scene(&steady_counterpart(&r.scene), Path::new(name))?;
+    let Some(y) = steady.runs.first().filter(|y| y.status == crate::solvers::Status::Solved) else {
+        writeln!(md, "The steady-rolling counterpart did not solve; no approach plot.\n").unwrap();
+        return Ok(());
+    };
+    let p0 = y.contact.as_ref().map_or(1.0, |c| c.peak_pressure);
+    let pts: Vec<(f64, f64)> = runs
+        .iter()
+        .filter(|(k, _)| r.steps[*k].rolled > 0.0)
+        .map(|(k, x)| {
+            let d = x.nodes.iter().zip(&y.nodes).fold(0.0f64, |m, (u, v)| m.max((u.shear - v.shear).abs()));
+            (r.steps[*k].rolled, (d / p0).max(1e-17))
+        })
+        .collect();
+    let Some(&(end_x, end_d)) = pts.last() else { return Ok(()) };
+    let chart = Chart::new(format!("{name}: distance to steady rolling"), "distance rolled", "max |q − q_steady| / p0")
+        .x_unit(units.length.clone())
+        .y_unit("1")
+        .log_y()
+        .add(Series::new(runs.first().map(|(_, x)| x.solver.0).unwrap_or(""), pts, Style::Line));
+    let file = format!("figures/{name}-approach.svg");
+    chart.write(&out.join(&file)).map_err(plot_err)?;
+    figs.push((format!("{name}: approach to steady rolling"), file.clone()));
+    writeln!(
+        md,
+        "Against the steady-rolling solution of the same mesh (solved beside it, Lemke): after {end_x:.4} {} rolled \
+         the largest traction difference is {end_d:.1e} p0. With one element rolled per substep the path's fixed point \
+         is exactly the steady problem of the mesh (history module docs).\n\n![approach to steady rolling]({file})\n",
+        units.length
+    )
+    .unwrap();
+    Ok(())
+}

@@ -1,0 +1,186 @@
+//! Sweep sections about physics rather than cost: what the finite body changes against the half-plane (rows of both
+//! models at the same loads), and creep curves against Carter (steady rolling over a range of creepages).
+
+use super::table::{cell, log_slope, num, Row, Sweep};
+use super::{plot_err, Figures};
+use crate::error::Result;
+use crate::plot::{Chart, Series, Style};
+use crate::theory::{self, Hertz2D};
+use std::collections::{BTreeMap, BTreeSet};
+use std::fmt::Write as _;
+use std::path::Path;
+
+/// Whether a sweep compares the two body models at equal loads (both models among its solved rows).
+pub fn compares_models(sw: &Sweep) -> bool {
+    let models: BTreeSet<&str> =
+        sw.rows.iter().filter(|r| cell(r, "status") == "solved").map(|r| cell(r, "model")).collect();
+    models.contains("bem") && models.contains("half_plane")
+}
+
+/// Whether a sweep is a creep curve: steady rolling at five or more creepages.
+pub fn is_creep_curve(sw: &Sweep) -> bool {
+    let xs: BTreeSet<&str> = sw.rows.iter().map(|r| cell(r, "creepage")).filter(|c| !c.is_empty()).collect();
+    xs.len() >= 5
+}
+
+/// (P, Q, μ) as text.
+type LoadKey = (String, String, String);
+
+/// The key of a load case: (P, Q, μ) to nine significant digits (the resultants of two models at the same load
+/// differ in the last bits).
+fn load_key(r: &Row) -> LoadKey {
+    let k = |c: &str| num(r, c).map(|v| format!("{v:.9e}")).unwrap_or_default();
+    (k("normal_load"), k("tangential_load"), k("friction"))
+}
+
+/// Relative difference (finite − half-plane)/|half-plane|.
+fn rel(a: Option<f64>, b: Option<f64>) -> Option<f64> {
+    match (a, b) {
+        (Some(a), Some(b)) if b != 0.0 => Some((a - b) / b.abs()),
+        _ => None,
+    }
+}
+
+/// What the finite body changes: pair the finite wheel's and the half-plane's rows at the same (P, Q, μ); table and
+/// plot of the relative differences against a/R with their fitted slopes.
+pub fn finite_vs_half_plane(sw: &Sweep, out: &Path, md: &mut String, figs: &mut Figures) -> Result<()> {
+    let solved: Vec<&Row> = sw.rows.iter().filter(|r| cell(r, "status") == "solved").collect();
+    let mut pairs: BTreeMap<LoadKey, (Option<&Row>, Option<&Row>)> = BTreeMap::new();
+    for r in &solved {
+        let e = pairs.entry(load_key(r)).or_default();
+        match cell(r, "model") {
+            "bem" => e.0 = Some(r),
+            _ => e.1 = Some(r),
+        }
+    }
+    let half = |r: &Row| Some(0.5 * (num(r, "stick_right")? - num(r, "stick_left")?));
+    // (friction, a/R, Δa, Δp0, Δc, Δshift)
+    let mut data: Vec<(f64, f64, [Option<f64>; 4])> = Vec::new();
+    for (f, h) in pairs.values().filter_map(|(f, h)| Some(((*f)?, (*h)?))) {
+        let (Some(a), Some(radius)) = (num(h, "hertz_a"), num(h, "radius")) else { continue };
+        let a_over_r = a / radius;
+        let d = [
+            rel(num(f, "half_width_fit"), num(h, "half_width_fit")),
+            rel(num(f, "peak_pressure_fit"), num(h, "peak_pressure_fit")),
+            rel(half(f), half(h)),
+            rel(num(f, "shift"), num(h, "shift")),
+        ];
+        data.push((num(f, "friction").unwrap_or(0.0), a_over_r, d));
+    }
+    data.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    let unpaired = pairs.values().filter(|(f, h)| f.is_none() || h.is_none()).count();
+    writeln!(
+        md,
+        "Each load is solved on the finite wheel and on the half-plane; the table gives the finite wheel's relative \
+         difference from the half-plane, (finite − half-plane)/half-plane, at the Hertz a/R of the load{}.\n",
+        if unpaired > 0 {
+            format!(" ({unpaired} loads lack one of the two models and are left out)")
+        } else {
+            String::new()
+        }
+    )
+    .unwrap();
+    writeln!(md, "| μ | a/R | Δa | Δp0 | Δ stick half-width | Δ rigid shift |\n|---|---|---|---|---|---|").unwrap();
+    let f = |v: Option<f64>| v.map(|v| format!("{v:+.2e}")).unwrap_or_else(|| "–".into());
+    for (mu, ar, d) in &data {
+        writeln!(md, "| {mu} | {ar:.4} | {} | {} | {} | {} |", f(d[0]), f(d[1]), f(d[2]), f(d[3])).unwrap();
+    }
+    let names = ["Δa", "Δp0", "Δ stick half-width", "Δ rigid shift"];
+    writeln!(
+        md,
+        "\nFitted slopes of |difference| against a/R (least squares in log–log over every load, ± standard error):\n"
+    )
+    .unwrap();
+    writeln!(md, "| μ | quantity | loads | slope |\n|---|---|---|---|").unwrap();
+    let mut chart = Chart::new(format!("{}: finite wheel against half-plane", sw.name), "a/R", "|relative difference|")
+        .x_unit("1")
+        .y_unit("1")
+        .log_x()
+        .log_y();
+    let frictions: BTreeSet<String> = data.iter().map(|d| format!("{}", d.0)).collect();
+    for mu in &frictions {
+        for (q, name) in names.iter().enumerate() {
+            let pts: Vec<(f64, f64)> = data
+                .iter()
+                .filter(|d| format!("{}", d.0) == *mu)
+                .filter_map(|d| Some((d.1, d.2[q]?.abs())))
+                .filter(|p| p.1 > 0.0)
+                .collect();
+            if pts.is_empty() {
+                continue;
+            }
+            let slope = log_slope(&pts).map(|(s, se)| format!("{s:.2} ± {se:.2}")).unwrap_or_else(|| "–".into());
+            writeln!(md, "| {mu} | {name} | {} | {slope} |", pts.len()).unwrap();
+            chart = chart.add(Series::new(format!("{name}, μ = {mu}"), pts, Style::LineMarkers));
+        }
+    }
+    let file = format!("figures/{}-differences.svg", sw.stem);
+    chart.write(&out.join(&file)).map_err(plot_err)?;
+    figs.push((format!("{}: finite wheel against half-plane", sw.name), file.clone()));
+    writeln!(
+        md,
+        "\n![finite wheel against half-plane]({file})\n\nThe rigid shift is measured at different points — the finite \
+         wheel's hub, the half-plane's datum at depth D — so its difference is a difference of reference points as much \
+         as of bodies; a, p0 and the stick zone are local and comparable. The stick edges are read from the nodes' \
+         states, so a stick-zone difference smaller than one element over the stick half-width is mesh resolution.\n"
+    )
+    .unwrap();
+    Ok(())
+}
+
+/// Creep curves: Q/(μP) against ξR/(μa) per series, with Carter's curve; the largest departure from Carter and
+/// the free-rolling creepage (where Q changes sign) per series.
+pub fn creep_curves(sw: &Sweep, out: &Path, md: &mut String, figs: &mut Figures) -> Result<()> {
+    let solved: Vec<&Row> = sw.rows.iter().filter(|r| cell(r, "status") == "solved").collect();
+    // The creepage is the curve's abscissa, not a series.
+    let varied: Vec<String> = sw.varied(&solved).into_iter().filter(|k| !k.ends_with("creepage")).collect();
+    let mut groups: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
+    for r in &solved {
+        let (Some(xi), Some(q), Some(p), Some(mu), Some(a), Some(rad)) = (
+            num(r, "creepage"),
+            num(r, "tangential_load"),
+            num(r, "normal_load"),
+            num(r, "friction"),
+            num(r, "hertz_a"),
+            num(r, "radius"),
+        ) else {
+            continue;
+        };
+        groups.entry(sw.label(r, &varied)).or_default().push((xi * rad / (mu * a), q / (mu * p)));
+    }
+    let mut chart = Chart::new(format!("{}: creep curves", sw.name), "ξR/(μa)", "Q/(μP)").x_unit("1").y_unit("1");
+    let carter = |s: f64| theory::carter_force(&Hertz2D::new(1.0, 2.0 / std::f64::consts::PI), 1.0, 1.0, s);
+    let xs: Vec<f64> = (0..=300).map(|i| -1.6 + 3.2 * i as f64 / 300.0).collect();
+    chart = chart.add(Series::new("Carter (2D, β = 0)", xs.iter().map(|&s| (s, carter(s))).collect(), Style::Dashed));
+    writeln!(
+        md,
+        "Q/(μP) against the normalised creepage ξR/(μa) (a: Hertz at the run's load). Carter's curve is the 2D \
+         half-plane answer with β = 0; the free-rolling creepage is where Q changes sign (linear interpolation \
+         between the swept creepages).\n"
+    )
+    .unwrap();
+    writeln!(md, "| series | creepages | max \\|Q/(μP) − Carter\\| | free-rolling ξR/(μa) |\n|---|---|---|---|")
+        .unwrap();
+    for (label, mut pts) in groups {
+        pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let dev = pts.iter().map(|(s, q)| (q - carter(*s)).abs()).fold(0.0, f64::max);
+        let free = pts.windows(2).find_map(|w| {
+            let ((s0, q0), (s1, q1)) = (w[0], w[1]);
+            if q0 == 0.0 {
+                Some(s0)
+            } else if q0 * q1 < 0.0 {
+                Some(s0 + (s1 - s0) * q0 / (q0 - q1))
+            } else {
+                None
+            }
+        });
+        let free = free.map(|v| format!("{v:+.4}")).unwrap_or_else(|| "not crossed".into());
+        writeln!(md, "| {label} | {} | {dev:.2e} | {free} |", pts.len()).unwrap();
+        chart = chart.add(Series::new(label, pts, Style::Markers));
+    }
+    let file = format!("figures/{}-creep-curves.svg", sw.stem);
+    chart.write(&out.join(&file)).map_err(plot_err)?;
+    figs.push((format!("{}: creep curves", sw.name), file.clone()));
+    writeln!(md, "\n![creep curves]({file})\n").unwrap();
+    Ok(())
+}

@@ -1,0 +1,126 @@
+//! `rollbem report` on a folder that is not rollbem's own (issue 12, item 6): every sentence must be computed from
+//! the inputs it describes. The folder holds one scene and one sweep whose file names differ from their `name`s; the
+//! expected text is what those inputs imply (their names, the folder given on the command line, the number of CPUs
+//! of this machine), and the fixed phrases of the old report must be gone.
+
+use std::path::Path;
+use std::process::Command;
+
+const SCENE: &str = r#"name = "pad-hertz"
+description = "A custom frictionless half-plane case for the report test."
+units = "kN, m, kPa"
+
+[wheel]
+radius = 0.5
+youngs_modulus = 2.0e8
+poisson_ratio = 0.25
+model = "half_plane"
+profile = "parabola"
+
+[mesh]
+element = "constant"
+contact_half_width = 0.001
+contact_elements = 40
+
+[contact]
+friction = 0.0
+
+[drive]
+normal_load = 100.0
+
+[solvers]
+use = ["lemke", "active_set"]
+"#;
+
+const SWEEP: &str = r#"name = "pad-mesh-study"
+description = "pad mesh study, two direct solvers"
+base = "../scenes/a-file-name.toml"
+
+[[grid]]
+"mesh.contact_elements" = [20, 40, 80]
+"solvers.use" = [["lemke"], ["active_set"]]
+"#;
+
+fn write(p: &Path, text: &str) {
+    std::fs::create_dir_all(p.parent().unwrap()).unwrap();
+    std::fs::write(p, text).unwrap();
+}
+
+#[test]
+fn report_on_a_foreign_folder_says_only_what_its_inputs_imply() {
+    let tmp = tempfile::tempdir().unwrap();
+    let refs = tmp.path().join("my-cases");
+    write(&refs.join("scenes/a-file-name.toml"), SCENE);
+    write(&refs.join("sweeps/another-file-name.toml"), SWEEP);
+    let out = tmp.path().join("my-report");
+    let o = Command::new(env!("CARGO_BIN_EXE_rollbem"))
+        .args(["report", "--reference"])
+        .arg(&refs)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let md = std::fs::read_to_string(out.join("README.md")).unwrap();
+    // The command line as given, not "reference/".
+    assert!(md.contains(&format!("--reference {} --out {}", refs.display(), out.display())), "{md}");
+    // Sweeps are titled by their `name`, scenes' runs are filed by theirs.
+    assert!(md.contains("### pad-mesh-study"), "{md}");
+    assert!(!md.contains("another-file-name"), "the sweep's file name leaked into the text");
+    assert!(md.contains("figures/pad-mesh-study-"), "figures are named after the sweep");
+    assert!(out.join("runs/pad-hertz.json").exists());
+    assert!(out.join("sweeps/pad-mesh-study.csv").exists());
+    // The machine's CPU count, not a fixed "2 noisy vCPUs".
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    assert!(md.contains(&format!("a machine with {cores} logical CPUs")), "{md}");
+    // Phrases the old report printed whatever its input; none is true here.
+    for fixed in ["from `reference/`", "a/R ≈ 0.015", "noisy vCPUs", "seed's figures", "Load paths"] {
+        assert!(!md.contains(fixed), "fixed phrase {fixed:?} in a report about other inputs");
+    }
+    // The sweep's Pareto table names only this sweep's solvers and meshes.
+    let start = md.find("### pad-mesh-study").unwrap();
+    let sweep_part = &md[start..start + md[start..].find("\n## ").unwrap()];
+    assert!(sweep_part.contains("lemke") && sweep_part.contains("active_set"));
+    assert!(!sweep_part.contains("clarabel") && !sweep_part.contains("pgs ·"));
+}
+
+#[test]
+fn report_refuses_unsafe_or_duplicate_names_before_writing_anything() {
+    for (scene_name, sweep_name, field_file) in
+        [("../../escape", "ok-sweep", "a-file-name.toml"), ("pad-hertz", "pad/../../x", "another-file-name.toml")]
+    {
+        let tmp = tempfile::tempdir().unwrap();
+        let refs = tmp.path().join("refs");
+        write(&refs.join("scenes/a-file-name.toml"), &SCENE.replace("pad-hertz", scene_name));
+        write(&refs.join("sweeps/another-file-name.toml"), &SWEEP.replace("pad-mesh-study", sweep_name));
+        let out = tmp.path().join("out");
+        let o = Command::new(env!("CARGO_BIN_EXE_rollbem"))
+            .args(["report", "--reference"])
+            .arg(&refs)
+            .arg("--out")
+            .arg(&out)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert!(err.contains(field_file) && err.contains("`name`"), "{err}");
+        assert!(!out.exists(), "nothing may be written");
+    }
+    // Two scenes with one name.
+    let tmp = tempfile::tempdir().unwrap();
+    let refs = tmp.path().join("refs");
+    write(&refs.join("scenes/one.toml"), SCENE);
+    write(&refs.join("scenes/two.toml"), SCENE);
+    let out = tmp.path().join("out");
+    let o = Command::new(env!("CARGO_BIN_EXE_rollbem"))
+        .args(["report", "--reference"])
+        .arg(&refs)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("unique") && err.contains("one.toml"), "{err}");
+    assert!(!out.exists());
+}
