@@ -124,3 +124,39 @@ fn report_refuses_unsafe_or_duplicate_names_before_writing_anything() {
     assert!(err.contains("unique") && err.contains("one.toml"), "{err}");
     assert!(!out.exists());
 }
+
+/// Issue 10 item 6: the seed's formulation against steady rolling. In the seed's formulation a sticking node's slip
+/// velocity is the creepage plus the strain difference of a static solution, not zero (the issue's observation:
+/// "stick nodes reported a slip velocity equal to the creepage"), so a seed scene with sticking nodes must count
+/// them as inconsistent; the steady counterpart must count none (Coulomb's law holds by construction).
+#[test]
+fn report_compares_the_seed_rolling_formulation_with_steady_rolling() {
+    let tmp = tempfile::tempdir().unwrap();
+    let refs = tmp.path().join("refs");
+    let seed = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/scenes/seed-fig09-mu05.toml");
+    write(&refs.join("scenes/seed-fig09-mu05.toml"), &std::fs::read_to_string(seed).unwrap());
+    std::fs::create_dir_all(refs.join("sweeps")).unwrap();
+    let out = tmp.path().join("out");
+    let o = Command::new(env!("CARGO_BIN_EXE_rollbem"))
+        .args(["report", "--reference"])
+        .arg(&refs)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let md = std::fs::read_to_string(out.join("README.md")).unwrap();
+    let section = &md[md.find("## The seed's rolling formulation against steady rolling").expect("the section")..];
+    let row = section.lines().find(|l| l.starts_with("| seed-fig09-mu05 |")).expect("a seed-vs-steady row");
+    let cells: Vec<&str> = row.split('|').map(str::trim).collect();
+    // | scene | μ | drive | Q seed | Q steady | ξ | stick seed | stick steady | incons. seed | incons. steady |
+    let count = |c: &str| -> (usize, usize) {
+        let (a, b) = c.split_once(" / ").unwrap();
+        (a.parse().unwrap(), b.parse().unwrap())
+    };
+    let seed_bad = count(cells[9]);
+    let steady_bad = count(cells[10]);
+    assert!(seed_bad.0 > 0, "the seed's stick nodes move: {row}");
+    assert_eq!(steady_bad, (0, 0), "{row}");
+    assert!(out.join("figures/seed-vs-steady-0.svg").exists());
+}

@@ -26,6 +26,7 @@ use std::path::{Path, PathBuf};
 mod accuracy;
 mod paths;
 mod physics;
+mod rolling;
 mod table;
 
 /// Where to read and write.
@@ -118,6 +119,8 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
     let mut path_md = String::new();
     let mut path_figs: Figures = Vec::new();
     paths::sections(&reports, out, &mut path_md, &mut path_figs)?;
+    let mut roll_md = String::new();
+    rolling::seed_vs_steady(&reports, out, &mut roll_md, &mut path_figs)?;
 
     // ---- Markdown ----------------------------------------------------------------------------------------------
     writeln!(md, "## The sweeps: accuracy against cost, and what the models change\n").unwrap();
@@ -152,6 +155,7 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
             writeln!(md, "### {title}\n\n![{title}]({file})\n").unwrap();
         }
     }
+    md.push_str(&roll_md);
     writeln!(md, "\n## Files\n\n- `runs/NAME.json`: result document of every reference scene").unwrap();
     writeln!(md, "- `solver-comparison.csv`, `sweeps/*.csv`: the tables behind this page").unwrap();
     for (title, file) in plots.iter().chain(&path_figs).chain(&figures) {
