@@ -33,6 +33,18 @@ pub const HERTZ_MAX_A_OVER_R: f64 = 0.1;
 /// round-off; 1e-6 leaves room for an iterative solver at its default tolerance).
 pub const SOLVER_AGREEMENT: f64 = 1e-6;
 
+/// Subsurface stresses of the BEM wheel with constant elements ([`crate::stresses`]): a grid point closer to an
+/// element than this many of the element's lengths is refused (`near_boundary`). The Somigliana quadrature is
+/// accurate up to the boundary, but constant elements' displacements jump by about u′h between elements, and the
+/// jumps spoil the field within a few element lengths (crate::bem::stress, "Interpolation"). Measured under a Hertz
+/// contact against McEwen's field (tests/stresses.rs, 100 elements across the contact): the error beyond the
+/// finite-body difference is 21 % of p0 at one element length, 0.55 % at two and below 0.05 % from 2.3 on.
+pub const STRESS_NEAR_BOUNDARY_CONSTANT: f64 = 2.5;
+
+/// The same for discontinuous quadratic elements (smaller jumps, quadratic data): the error beyond the finite-body
+/// difference is about 1.5 % of p0 at 0.1 element lengths, 0.3 % at 0.3 and below 0.2 % from 0.5 on (same test).
+pub const STRESS_NEAR_BOUNDARY_QUADRATIC: f64 = 0.5;
+
 /// Unit invariance: the same scene in different units gives pressures equal to this relative error (every length is
 /// divided by L0 and every stress by E internally, so only round-off remains).
 pub const UNIT_INVARIANCE: f64 = 1e-9;

@@ -205,6 +205,7 @@ impl SceneParams {
             }),
             solvers: SolverSpec { use_: vec!["all".to_string()], ..SolverSpec::default() },
             checks: Expect::default(),
+            stresses: None,
         }
     }
 }
