@@ -156,7 +156,7 @@ pub fn run_history(scene: &Scene, path: &Path) -> Result<Report> {
     }
     let mut finals = Vec::new();
     let mut bounds = Vec::new();
-    let stresses = crate::stresses::StressEvaluator::new(scene, &built);
+    let stresses = crate::stresses::StressEvaluator::new(scene, &built, path)?;
     for solver in &solvers {
         let ctx = PathContext { source_time: &built.timing, scene, stresses: stresses.as_ref() };
         let (last, bound) = walk(solver.as_ref(), &subs, &rest, &problem_at, &ctx, &mut steps)?;

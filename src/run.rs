@@ -169,7 +169,7 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
     let problem_size = problem.lcp_size();
     let solvers = solvers_for(scene, &problem, path)?;
     let rolling = rolling_post(scene);
-    let stresses = crate::stresses::StressEvaluator::new(scene, &built);
+    let stresses = crate::stresses::StressEvaluator::new(scene, &built, path)?;
     let mut runs = Vec::new();
     let mut bounds = Vec::new();
     for solver in &solvers {

@@ -29,11 +29,11 @@
 //!   assembled or factorised again. The support's rigid motion is left out, since a rigid motion is stress-free.
 //!   The quadrature is accurate to ~1e-9 of the stress scale up to the boundary, but the boundary data are
 //!   discontinuous between elements (constant or discontinuous quadratic), which spoils the field within a few
-//!   element lengths of the boundary ([`crate::bem::stress`], "Interpolation"). A point closer to an element than
-//!   [`STRESS_NEAR_BOUNDARY_CONSTANT`] (2.5, constant elements) or [`STRESS_NEAR_BOUNDARY_QUADRATIC`] (0.5,
-//!   quadratic) of its lengths is therefore refused as [`PointError::NearBoundary`], never given a wrong value (the
-//!   measured error there is in tests/stresses.rs); a point outside the wheel (below its undeformed surface, or in
-//!   the hub's hole) is [`PointError::OutsideBody`].
+//!   element lengths of the boundary ([`crate::bem::stress`], "Interpolation"). A grid with a point closer to an
+//!   element than [`STRESS_NEAR_BOUNDARY_CONSTANT`] (2.5, constant elements) or [`STRESS_NEAR_BOUNDARY_QUADRATIC`]
+//!   (0.5, quadratic) of its lengths, or a point outside the wheel (below its undeformed surface, or in the hub's
+//!   hole), is therefore refused before anything is solved, as an input error naming `stresses.depth` (or
+//!   `stresses.x`) and the first such point (exit code 2, nothing written): never a wrong value.
 //!
 //! With an elastic counter-body (`[counter_body] kind = "half_plane"`) the field is the **wheel's**, from the same
 //! tractions; the counter-body's own field is not computed.
@@ -52,6 +52,7 @@
 //! (`csv` names it; `rollbem run --json` writes it, [`StressResult::spill`]).
 
 use crate::bem::stress::{InteriorStress, StressError};
+use crate::error::Error;
 use crate::halfplane::strip_stress;
 use crate::mesh::{Mesh, Shape};
 use crate::post::NodeResult;
@@ -64,6 +65,7 @@ use rayon::prelude::*;
 use serde::ser::{SerializeMap, SerializeStruct};
 use serde::{Serialize, Serializer};
 use std::collections::BTreeMap;
+use std::path::Path;
 use std::time::Instant;
 
 /// Largest grid (nx·nz points) whose field is written inline in the result document; larger fields go to a CSV file
@@ -74,10 +76,12 @@ pub const MAX_INLINE_POINTS: usize = 20_000;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum PointError {
-    /// Outside the wheel: below its undeformed surface, or in the hub's hole (BEM wheel).
+    /// Outside the wheel: below its undeformed surface, or in the hub's hole (BEM wheel; such a grid is refused
+    /// as an input error by [`StressEvaluator::new`], so a result never holds it).
     OutsideBody,
     /// Closer to an element than [`STRESS_NEAR_BOUNDARY_CONSTANT`] or [`STRESS_NEAR_BOUNDARY_QUADRATIC`] of its
-    /// lengths (BEM wheel): the discontinuous boundary data would make the value wrong there.
+    /// lengths (BEM wheel): the discontinuous boundary data would make the value wrong there (refused as an input
+    /// error by [`StressEvaluator::new`], like [`PointError::OutsideBody`]).
     NearBoundary,
     /// A singular point of the discrete field: on the surface exactly at the edge of a half-plane strip carrying
     /// shear (σ_xx infinite), or any other non-finite value.
@@ -343,12 +347,20 @@ pub struct StressEvaluator<'a> {
 
 impl<'a> StressEvaluator<'a> {
     /// The evaluator of a validated scene on its built source, or `None` when the scene has no `[stresses]`.
+    /// Called before anything is solved, so that a grid the BEM wheel cannot evaluate is refused at once.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `stresses.depth` (or `stresses.x`, `path` the scene file) when a grid point of the
+    /// BEM wheel lies outside the wheel or within [`STRESS_NEAR_BOUNDARY_CONSTANT`] (constant elements) or
+    /// [`STRESS_NEAR_BOUNDARY_QUADRATIC`] (quadratic) element lengths of its boundary, where the discontinuous
+    /// boundary data would make the value wrong (module docs). The message names the first such point, its distance
+    /// to the boundary and what would fix it.
     ///
     /// # Panics
     /// If the scene's wheel is a BEM wheel but `built` kept no boundary response (it keeps one whenever the scene
     /// has `[stresses]`, [`crate::source::build`]).
-    pub fn new(scene: &Scene, built: &'a Built) -> Option<StressEvaluator<'a>> {
-        let spec = scene.stresses.as_ref()?;
+    pub fn new(scene: &Scene, built: &'a Built, path: &Path) -> crate::error::Result<Option<StressEvaluator<'a>>> {
+        let Some(spec) = scene.stresses.as_ref() else { return Ok(None) };
         let grid = StressGrid { x: spec.x, depth: spec.depth, points: spec.points };
         let l0 = built.flex.scales.length;
         let body = match scene.wheel.model {
@@ -371,18 +383,22 @@ impl<'a> StressEvaluator<'a> {
                     })
                     .collect();
                 let mesh = &response.model.mesh;
-                let refused = points.par_iter().map(|&p| refusal(mesh, p, r / l0, hub / l0)).collect();
+                let refused: Vec<Option<PointError>> =
+                    points.par_iter().map(|&p| refusal(mesh, p, r / l0, hub / l0)).collect();
+                if let Some(k) = refused.iter().position(Option::is_some) {
+                    return Err(refused_grid(&grid, &refused, k, mesh, points[k], l0, r, path));
+                }
                 Body::Wheel { response, points, refused }
             }
         };
-        Some(StressEvaluator {
+        Ok(Some(StressEvaluator {
             grid,
             quantities: spec.quantities(),
             model: scene.wheel.model,
             nu: scene.wheel.poisson_ratio,
             modulus: scene.wheel.youngs_modulus,
             body,
-        })
+        }))
     }
 
     /// The field of a solved run from its contact nodes' tractions (`pressure`, `shear`, user's units, in contact-node
@@ -468,7 +484,7 @@ fn half_plane_field(
 /// an element of `mesh`.
 fn refusal(mesh: &Mesh, p: [f64; 2], outer: f64, hub: f64) -> Option<PointError> {
     let r = p[0].hypot(p[1]);
-    if r >= outer || r <= hub {
+    if r >= outer || (hub > 0.0 && r <= hub) {
         return Some(PointError::OutsideBody);
     }
     let reach = match mesh.kind {
@@ -480,6 +496,54 @@ fn refusal(mesh: &Mesh, p: [f64; 2], outer: f64, hub: f64) -> Option<PointError>
         d < reach * len
     });
     near.then_some(PointError::NearBoundary)
+}
+
+/// The input error for a BEM grid whose point `k` (dimensionless wheel axes `p`, length scale `l0`, wheel radius
+/// `r`) is refused: it names `stresses.depth` when the point is in the grid's shallowest row or the wheel's inner
+/// half (the hub), `stresses.x` otherwise (the grid reaches sideways to where the rim curves up into it).
+#[allow(clippy::too_many_arguments)]
+fn refused_grid(
+    grid: &StressGrid,
+    refused: &[Option<PointError>],
+    k: usize,
+    mesh: &Mesh,
+    p: [f64; 2],
+    l0: f64,
+    r: f64,
+    path: &Path,
+) -> Error {
+    let (x, z) = grid.point(k);
+    let count = refused.iter().filter(|e| e.is_some()).count();
+    let (d, len) = mesh
+        .elements
+        .iter()
+        .map(|e| distance_to_element(&e.shape, p))
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .expect("a BEM mesh has elements");
+    let reach = match mesh.kind {
+        ElementKind::Constant => STRESS_NEAR_BOUNDARY_CONSTANT,
+        ElementKind::Quadratic => STRESS_NEAR_BOUNDARY_QUADRATIC,
+    };
+    let field = if k < grid.points[0] || p[0].hypot(p[1]) * l0 < 0.5 * r { "stresses.depth" } else { "stresses.x" };
+    let why = match refused[k] {
+        Some(PointError::OutsideBody) => "lies outside the wheel (below its rim or in the hub's hole)".to_string(),
+        _ => format!(
+            "lies {:.4e} from the boundary, within {reach} lengths of an element ({:.4e} long): there the BEM \
+             field is not accurate (the boundary data jump between elements)",
+            d * l0,
+            len * l0
+        ),
+    };
+    Error::Invalid {
+        path: path.to_path_buf(),
+        field: field.to_string(),
+        message: format!(
+            "{count} of the {} grid points cannot be evaluated for the BEM wheel; the first, x = {x:.6e}, depth = \
+             {z:.6e}, {why}. Move the grid away from the boundary (start it deeper, or narrow it), or refine the mesh \
+             there (the half-plane model has values up to the surface)",
+            grid.len()
+        ),
+    }
 }
 
 /// Distance from `p` to an element and the element's length.
