@@ -20,8 +20,11 @@
 //!   ([`crate::halfplane::strip_stress`], Johnson §2.6–2.7) superposed over the contact grid's strips, each carrying
 //!   its node's (p, q). It is exact for the piecewise-uniform tractions at every depth z ≥ 0. On the surface (z = 0)
 //!   the value is the limit z → 0⁺ (σ_zz = −p, τ_xz = −q under a strip); exactly at a strip edge on the surface
-//!   σ_xx of a shear strip is infinite (a log singularity of the piecewise-uniform shear): that point is refused as
-//!   [`PointError::Singular`].
+//!   σ_xx of a shear strip is infinite (a log singularity of the piecewise-uniform shear): that point (up to
+//!   round-off, 1e-9 of a strip width) is refused as [`PointError::Singular`]. Near such an edge the surface value
+//!   of σ_xx is that of the piecewise-uniform shear, (2Δq/π) ln(h/d) away from the continuous traction's at a
+//!   distance d from an edge where the shear jumps by Δq: a surface row meant to stand for the continuous contact
+//!   is best placed at the strips' centres.
 //! * **Finite wheel** (`model = "bem"`): the Somigliana identity for stresses ([`crate::bem::stress`]) on the whole
 //!   boundary solution. After the contact solve, the boundary problem is solved again with the contact tractions as
 //!   known data and the support clamped in place, by superposition of the boundary's responses to unit contact
@@ -451,6 +454,11 @@ fn finite(s: [f64; 3]) -> Result<[f64; 3], PointError> {
     }
 }
 
+/// A surface grid node closer than this many strip widths to the edge of a half-plane strip carrying shear counts as
+/// on the edge ([`PointError::Singular`]): round-off of the edges' and nodes' coordinates is ~1e-16 relative, and
+/// the log singularity's value at such a distance would be meaningless.
+const STRIP_EDGE_SNAP: f64 = 1e-9;
+
 /// The half-plane's field: every loaded strip's closed form, superposed (user's units).
 fn half_plane_field(
     grid: &StressGrid,
@@ -467,6 +475,16 @@ fn half_plane_field(
         .into_par_iter()
         .map(|k| {
             let (x, z) = grid.point(k);
+            // On the surface at the edge of a strip carrying shear σ_xx is infinite (log singularity). The strips'
+            // edges and the grid's nodes are computed apart, so "at the edge" is up to round-off: a node within
+            // STRIP_EDGE_SNAP of a strip width from such an edge would otherwise get a finite but arbitrary value
+            // (the log of the round-off).
+            let on_edge = |&&(a, b, _, q): &&(f64, f64, f64, f64)| {
+                q != 0.0 && ((x - a).abs() <= STRIP_EDGE_SNAP * (b - a) || (x - b).abs() <= STRIP_EDGE_SNAP * (b - a))
+            };
+            if z == 0.0 && loaded.iter().any(|s| on_edge(&s)) {
+                return Err(PointError::Singular);
+            }
             let mut s = [0.0; 3];
             for &(a, b, p, q) in &loaded {
                 let st = strip_stress(a, b, p, q, x, z);

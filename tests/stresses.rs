@@ -712,3 +712,34 @@ fn near_boundary_reach_is_where_the_bem_field_goes_wrong() {
         assert!(errors[0] > 0.01, "{element}: inside the reach the refusal is not needed? {errors:?}");
     }
 }
+
+#[test]
+fn half_plane_strip_edge_on_the_surface_under_shear_is_refused_not_nan() {
+    // Reference: the closed form of a uniform shear strip (Johnson §2.6, eq. 2.28): on the surface σ_xx =
+    // (2q/π) ln|(x − b)/(x − a)|, infinite at the strip's edges. A grid node exactly on a loaded strip's edge on the
+    // surface therefore has no value: it is refused by name (`singular`, null in the document), never NaN or ∞;
+    // one row below (z > 0) every node has a finite value.
+    let h = hertz(P, R);
+    let (mu, n) = (0.3, 120);
+    let contact = format!("friction = {mu}\ncoupling = false");
+    let drive = format!("normal_load = {P}\ntangential_load = {}", mu * P);
+    // Strip edges at −9 + 0.15j mm: x = −0.15, 0, 0.15 are edges of loaded strips, equal to the grid's nodes only up
+    // to round-off (the strips are laid out in the wheel's dimensionless units), which must not give a value either.
+    let s =
+        half_plane(n, &contact, &drive, &format!("x = [-0.15, 0.15]\ndepth = [0.0, {}]\npoints = [3, 2]", 0.01 * h.a));
+    let r = run(&s);
+    let st = stresses(&r);
+    let doc = serde_json::to_value(st).unwrap();
+    eprintln!("refused: {}; surface row: {:?}", doc["refused"], &st.field.stress[..3]);
+    for k in 0..6 {
+        let v = st.field.stress[k];
+        if k < 3 {
+            assert_eq!(v, Err(rollbem::stresses::PointError::Singular), "surface node {k}: {v:?}");
+            assert!(doc["field"]["values"]["sxx"][k].is_null());
+            assert_eq!(doc["field"]["error"][k], "singular");
+        } else {
+            assert!(v.is_ok_and(|s| s.iter().all(|c| c.is_finite())), "node {k}: {v:?}");
+        }
+    }
+    assert_eq!(doc["refused"], serde_json::json!({"singular": 3}));
+}
