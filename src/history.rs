@@ -156,12 +156,22 @@ pub fn run_history(scene: &Scene, path: &Path) -> Result<Report> {
     }
     let mut finals = Vec::new();
     let mut bounds = Vec::new();
+    let stresses = crate::stresses::StressEvaluator::new(scene, &built, path)?;
     for solver in &solvers {
-        let (last, bound) = walk(solver.as_ref(), &subs, &rest, &problem_at, &built.timing, scene, &mut steps)?;
+        let ctx = PathContext { source_time: &built.timing, scene, stresses: stresses.as_ref() };
+        let (last, bound) = walk(solver.as_ref(), &subs, &rest, &problem_at, &ctx, &mut steps)?;
         finals.push(last);
         bounds.push(bound);
     }
     Ok(assemble_report(scene, &built, asym, finals, &bounds, steps))
+}
+
+/// What a walk along the path needs of the scene beyond its problems.
+struct PathContext<'s> {
+    source_time: &'s source::SourceTiming,
+    scene: &'s Scene,
+    /// The stress evaluation, when the scene asks for it (at the end of each step).
+    stresses: Option<&'s crate::stresses::StressEvaluator<'s>>,
 }
 
 /// One solver along the whole path; returns its last run and its residual check bound.
@@ -170,10 +180,10 @@ fn walk<'a>(
     subs: &[Substep],
     rest: &PathState,
     problem_at: &dyn Fn(&Substep, &PathState, &PathState) -> Result<ContactProblem<'a>>,
-    source_time: &source::SourceTiming,
-    scene: &Scene,
+    ctx: &PathContext,
     steps: &mut [StepResult],
 ) -> Result<(SolverRun, f64)> {
+    let (source_time, scene) = (ctx.source_time, ctx.scene);
     let (check, refuse) = crate::solvers::residual_bounds(solver);
     let mut state = rest.clone();
     // The state at the start of the current step: its substeps interpolate from there.
@@ -219,6 +229,9 @@ fn walk<'a>(
             state.loads = [ev.resultants.tangential, ev.resultants.normal, ev.resultants.moment];
             state.u_t = ev.u_t.clone().unwrap_or_else(|| vec![0.0; problem.n()]);
             state.solution = Some(sol);
+            if sub.substep == sub.substeps {
+                crate::run::add_stresses(&mut run, ctx.stresses);
+            }
         }
         steps[k].runs.push(run.clone());
         last = Some(run);

@@ -21,7 +21,8 @@
 //! [`scene`] → [`source`] (the flexibility: [`mesh`] → [`bem`] assembly → condensation, [`source::bem_wheel`]) →
 //! [`flexibility`] → [`formulation`] (the contact problem: LCP / QP, slip operator) → [`solvers`] (one trait, one
 //! registry) → [`post`] (residuals, resultants, states) → [`checks`] (against [`references`], [`hertz`] and between
-//! solvers) → [`results`] (the JSON document). [`run`] is the pipeline for one scene; [`sweep`] and [`report`] run
+//! solvers) → [`results`] (the JSON document); with `[stresses]`, [`stresses`] evaluates the subsurface field of each
+//! solved run. [`run`] is the pipeline for one scene; [`sweep`] and [`report`] run
 //! many.
 //!
 //! ## Conventions
@@ -49,6 +50,7 @@ pub mod lcp_io;
 pub mod lcp_residual;
 pub mod mesh;
 pub mod plot;
+pub mod plot_result;
 pub mod post;
 pub mod references;
 pub mod report;
@@ -58,6 +60,7 @@ pub mod scene;
 pub mod solvers;
 pub mod source;
 pub mod status;
+pub mod stresses;
 pub mod sweep;
 pub mod theory;
 pub mod tolerances;

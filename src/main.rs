@@ -84,6 +84,15 @@ enum Cmd {
         #[command(subcommand)]
         cmd: LcpCmd,
     },
+    /// Draw a result document's figures (written by `run --json`): per solver run the surface tractions and, with
+    /// `[stresses]`, a contour map per stress quantity with its maximum marked (SVG).
+    Plot {
+        /// Result document (JSON).
+        result: PathBuf,
+        /// Output folder (default: the result document's folder).
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
     /// Run every requested solver on each scene and check them against theory, against each other and against
     /// the scene's declared expectations; print a pass/fail table; exit 1 if any check fails.
     Check {
@@ -270,6 +279,7 @@ fn print_report(r: &Report) {
     if !r.steps.is_empty() {
         print_path(r);
     }
+    print_stresses(r);
     say!("checks:");
     for c in &r.checks {
         say!(
@@ -280,6 +290,48 @@ fn print_report(r: &Report) {
             c.reference,
             c.error,
             c.tolerance
+        );
+    }
+}
+
+/// The subsurface stresses' maxima per run (largest |value| on the grid, sign kept, and where), with `[stresses]`.
+fn print_stresses(r: &Report) {
+    let Some(spec) = &r.scene.stresses else { return };
+    say!(
+        "stresses in the wheel ({} model): {}×{} grid, x in [{:.4e}, {:.4e}], depth in [{:.4e}, {:.4e}]; maxima (largest |value|):",
+        r.scene.wheel.model.name(),
+        spec.points[0],
+        spec.points[1],
+        spec.x[0],
+        spec.x[1],
+        spec.depth[0],
+        spec.depth[1]
+    );
+    say!("{:<9} {:<17} {:>13} {:>13} {:>13}", "solver", "quantity", "max", "x", "depth");
+    for run in &r.runs {
+        let Some(st) = &run.stresses else {
+            say!("{:<9} none (not solved)", run.solver);
+            continue;
+        };
+        for (q, m) in st.maxima() {
+            match m {
+                Some(m) => {
+                    say!("{:<9} {:<17} {:>13.5e} {:>13.5e} {:>13.5e}", run.solver, q.name(), m.value, m.x, m.depth)
+                }
+                None => say!("{:<9} {:<17} {:>13}", run.solver, q.name(), "-"),
+            }
+        }
+        let refused = st.refused();
+        let n: usize = refused.values().sum();
+        let why: Vec<String> = refused.iter().map(|(k, v)| format!("{v} {k}")).collect();
+        say!(
+            "{:<9} {} of {} points evaluated in {:.3} s{}{}",
+            "",
+            st.field.grid.len() - n,
+            st.field.grid.len(),
+            st.time_s,
+            if n > 0 { format!("; refused: {}", why.join(", ")) } else { String::new() },
+            st.csv.as_ref().map(|f| format!("; field in {f}")).unwrap_or_default()
         );
     }
 }
@@ -310,8 +362,12 @@ fn run_one(scene: &Path, json: Option<&Path>, path_csv: Option<&Path>, solvers: 
     if !solvers.is_empty() {
         s.solvers.use_ = solvers.to_vec();
     }
-    let report = run_scene(&s, scene)?;
+    let mut report = run_scene(&s, scene)?;
     if let Some(path) = json {
+        // Large stress fields go to CSV files beside the document, written first: the document names them.
+        for (file, text) in report.spill_stress_fields(path) {
+            write_atomic(&file, &text)?;
+        }
         let text = serde_json::to_string_pretty(&report).expect("report serialises");
         write_atomic(path, &text)?;
     }
@@ -387,6 +443,18 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.cmd {
         Cmd::Check { scenes, solvers } => check(&scenes, &solvers),
+        Cmd::Plot { result, out } => match rollbem::plot_result::plot_result(&result, out.as_deref()) {
+            Ok(done) => {
+                for f in &done.files {
+                    say!("wrote {}", f.display());
+                }
+                for s in &done.skipped {
+                    say!("skipped {s}");
+                }
+                ExitCode::SUCCESS
+            }
+            Err(e) => fail(&e),
+        },
         Cmd::Solvers => {
             for e in rollbem::solvers::REGISTRY {
                 say!("{:<12} {}{}", e.name, e.summary, if e.in_all { "" } else { " (not in `all`)" });

@@ -92,6 +92,10 @@ pub struct SolverRun {
     /// A step of a load path: the frictional energy dissipated in the step and since the start.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub history: Option<StepEnergy>,
+    /// Subsurface stresses (only with `[stresses]`, for a solved run; a load path's at the end of each step):
+    /// [`crate::stresses`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stresses: Option<crate::stresses::StressResult>,
 }
 
 /// The frictional dissipation of a load step (energy per unit thickness, user's units): Σ −h_i Δs_i with the
@@ -211,5 +215,32 @@ impl Report {
     /// Whether every check passed.
     pub fn all_pass(&self) -> bool {
         self.checks.iter().all(|c| c.pass)
+    }
+
+    /// Move every stress field too large to be written inline ([`crate::stresses::MAX_INLINE_POINTS`]) to a CSV file
+    /// beside the result document `json`: each such run then names its file (`stresses.csv`, a name in `json`'s
+    /// folder: `STEM.SOLVER.stresses.csv`, `STEM.stepK-S.SOLVER.stresses.csv` for a load path's steps). Returns the
+    /// files to write (path, text); writing them is the caller's.
+    pub fn spill_stress_fields(&mut self, json: &std::path::Path) -> Vec<(std::path::PathBuf, String)> {
+        let stem = json.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "result".into());
+        let dir = json.parent().map(|p| p.to_path_buf()).unwrap_or_default();
+        let mut out = Vec::new();
+        let mut spill = |run: &mut SolverRun, tag: String| {
+            if let Some(s) = run.stresses.as_mut() {
+                let file = format!("{stem}.{tag}{}.stresses.csv", run.solver);
+                if let Some(text) = s.spill(&file) {
+                    out.push((dir.join(&file), text));
+                }
+            }
+        };
+        for run in &mut self.runs {
+            spill(run, String::new());
+        }
+        for st in &mut self.steps {
+            for run in &mut st.runs {
+                spill(run, format!("step{}-{}.", st.step, st.substep));
+            }
+        }
+        out
     }
 }

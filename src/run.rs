@@ -149,6 +149,9 @@ pub fn effects(scene: &Scene) -> Vec<String> {
     if !scene.steps.is_empty() {
         effects.push("history".into());
     }
+    if scene.stresses.is_some() {
+        effects.push("stresses".into());
+    }
     effects
 }
 
@@ -166,6 +169,7 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
     let problem_size = problem.lcp_size();
     let solvers = solvers_for(scene, &problem, path)?;
     let rolling = rolling_post(scene);
+    let stresses = crate::stresses::StressEvaluator::new(scene, &built, path)?;
     let mut runs = Vec::new();
     let mut bounds = Vec::new();
     for solver in &solvers {
@@ -179,10 +183,19 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
             total: built.timing.assembly + built.timing.condensation + formulation + solve_time,
         };
         let (check_bound, refuse_bound) = crate::solvers::residual_bounds(solver.as_ref());
-        runs.push(finish_run(&problem, solver.name(), problem_size, outcome, timing, refuse_bound, rolling));
+        let mut run = finish_run(&problem, solver.name(), problem_size, outcome, timing, refuse_bound, rolling);
+        add_stresses(&mut run, stresses.as_ref());
+        runs.push(run);
         bounds.push(check_bound);
     }
     Ok(assemble_report(scene, &built, normal_asymmetry(&problem), runs, &bounds, Vec::new()))
+}
+
+/// Evaluate a solved run's subsurface stresses when the scene asks for them (`[stresses]`).
+pub fn add_stresses(run: &mut SolverRun, stresses: Option<&crate::stresses::StressEvaluator>) {
+    if let (Some(ev), Status::Solved) = (stresses, run.status) {
+        run.stresses = Some(ev.evaluate(&run.nodes));
+    }
 }
 
 /// The time to build the problem's LCP if the solver uses it (built once, before the solve: see
@@ -316,6 +329,7 @@ pub fn evaluate_outcome(
         nodes: ev.as_ref().map(|e| e.nodes.clone()).unwrap_or_default(),
         polish_change,
         history: None,
+        stresses: None,
     };
     (run, ev)
 }

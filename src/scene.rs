@@ -62,6 +62,9 @@ pub struct Scene {
     /// What the scene expects of its runs.
     #[serde(default)]
     pub checks: Expect,
+    /// Subsurface stresses on a grid below the contact ([`crate::stresses`]); computed only when given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stresses: Option<StressSpec>,
 }
 
 /// Expectations a scene declares about its own outcome (`[checks]`): the status, and tolerances that override
@@ -455,6 +458,102 @@ pub enum RollingMode {
     Transient,
 }
 
+/// Largest number of grid points of `[stresses]` (`points = [nx, nz]`, nx·nz): a million points of a BEM wheel take
+/// minutes and the field about 100 MB of JSON.
+pub const MAX_STRESS_POINTS: usize = 1_000_000;
+
+/// A quantity of the subsurface stress field ([`crate::stresses`]): x along the surface, z the depth into the wheel,
+/// plane strain, tension positive, in the scene's stress unit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum StressQuantity {
+    /// σ_xx, the normal stress along the surface.
+    Sxx,
+    /// σ_zz, the normal stress along the depth.
+    Szz,
+    /// τ_xz, the in-plane shear stress.
+    Txz,
+    /// σ_yy = ν(σ_xx + σ_zz), the out-of-plane normal stress of plane strain.
+    Syy,
+    /// The in-plane principal shear τ₁ = √(((σ_xx − σ_zz)/2)² + τ_xz²) (Tresca's in-plane measure).
+    PrincipalShear,
+    /// The von Mises equivalent stress with σ_yy = ν(σ_xx + σ_zz).
+    VonMises,
+    /// The orthogonal shear τ_xz (the shear on the planes normal and parallel to the surface; the rolling-contact
+    /// fatigue measure: its amplitude as the load passes is 2 max|τ_xz|).
+    OrthogonalShear,
+}
+
+impl StressQuantity {
+    /// Every quantity, in the order of the result document and of the CSV columns.
+    pub const ALL: [StressQuantity; 7] = [
+        StressQuantity::Sxx,
+        StressQuantity::Szz,
+        StressQuantity::Txz,
+        StressQuantity::Syy,
+        StressQuantity::PrincipalShear,
+        StressQuantity::VonMises,
+        StressQuantity::OrthogonalShear,
+    ];
+
+    /// Name as written in scene files and results.
+    pub fn name(self) -> &'static str {
+        match self {
+            StressQuantity::Sxx => "sxx",
+            StressQuantity::Szz => "szz",
+            StressQuantity::Txz => "txz",
+            StressQuantity::Syy => "syy",
+            StressQuantity::PrincipalShear => "principal_shear",
+            StressQuantity::VonMises => "von_mises",
+            StressQuantity::OrthogonalShear => "orthogonal_shear",
+        }
+    }
+
+    /// The quantity of a name, if there is one.
+    pub fn from_name(name: &str) -> Option<StressQuantity> {
+        StressQuantity::ALL.into_iter().find(|q| q.name() == name)
+    }
+}
+
+fn all_stress_quantities() -> Vec<String> {
+    StressQuantity::ALL.iter().map(|q| q.name().to_string()).collect()
+}
+
+/// `[stresses]`: the subsurface stress field of the wheel on a regular grid below the contact ([`crate::stresses`]).
+/// The grid's nodes are `x = x[0] + i (x[1] − x[0])/(nx − 1)` and `depth = depth[0] + j (depth[1] − depth[0])/(nz − 1)`;
+/// depth z is measured from the flat (the line the undeformed wheel touches at x = 0), positive into the wheel:
+/// the point (x, z) is (x, z − R) in the wheel's axes. Lengths in the scene's length unit.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StressSpec {
+    /// `[min, max]` of x along the surface (length unit; for the BEM wheel inside (−R, R)).
+    pub x: [f64; 2],
+    /// `[min, max]` of the depth z ≥ 0 (length unit; for the BEM wheel below 2R).
+    pub depth: [f64; 2],
+    /// `[nx, nz]`: grid nodes along x and along depth, each ≥ 2, nx·nz ≤ [`MAX_STRESS_POINTS`].
+    pub points: [usize; 2],
+    /// Quantities to report (names of [`StressQuantity`]; default all).
+    #[serde(default = "all_stress_quantities")]
+    pub quantities: Vec<String>,
+    /// Name of the scene's length unit, for the axes of `rollbem plot` (a label only; default "length unit").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub length_unit: Option<String>,
+    /// Name of the scene's stress unit, for the colour bars of `rollbem plot` (a label only; default "stress unit").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stress_unit: Option<String>,
+}
+
+impl StressSpec {
+    /// The quantities of a validated spec, in [`StressQuantity::ALL`] order, without repeats.
+    pub fn quantities(&self) -> Vec<StressQuantity> {
+        StressQuantity::ALL.into_iter().filter(|q| self.quantities.iter().any(|n| n == q.name())).collect()
+    }
+
+    /// Number of grid points nx·nz.
+    pub fn n_points(&self) -> usize {
+        self.points[0].saturating_mul(self.points[1])
+    }
+}
+
 /// Range checks of scene values; every error names the file and the dotted key.
 struct Checker<'a> {
     path: &'a Path,
@@ -699,6 +798,7 @@ impl Scene {
             return Err(c.bad("contact.friction", format!("must be a finite number ≥ 0 (got {mu})")));
         }
         self.validate_drive(&c)?;
+        self.validate_stresses(&c)?;
         self.solvers.clone().normalize().map_err(|e| e.into_error(path))?;
         if let Some(k) = self.checks.solver_status.keys().find(|k| crate::solvers::entry(k).is_none()) {
             return Err(Error::Parse {
@@ -775,6 +875,58 @@ impl Scene {
                     );
                 }
             }
+        }
+        Ok(())
+    }
+
+    fn validate_stresses(&self, c: &Checker) -> Result<()> {
+        let Some(st) = &self.stresses else { return Ok(()) };
+        let r = self.wheel.radius;
+        let bem = self.wheel.model == BodyModel::Bem;
+        for (key, [lo, hi]) in [("stresses.x", st.x), ("stresses.depth", st.depth)] {
+            c.finite(key, lo)?;
+            c.finite(key, hi)?;
+            if lo >= hi {
+                return Err(c.bad(key, format!("[min, max] must have min < max (got [{lo}, {hi}])")));
+            }
+        }
+        if st.depth[0] < 0.0 {
+            return Err(c.bad(
+                "stresses.depth",
+                format!("depths are measured into the wheel from the flat and must be ≥ 0 (got {})", st.depth[0]),
+            ));
+        }
+        if bem && (st.x[0] <= -r || st.x[1] >= r) {
+            return Err(c.bad(
+                "stresses.x",
+                format!("the grid must lie inside the wheel: −R < x < R = {r} (got [{}, {}])", st.x[0], st.x[1]),
+            ));
+        }
+        if bem && st.depth[1] >= 2.0 * r {
+            return Err(c.bad(
+                "stresses.depth",
+                format!("the grid must lie inside the wheel: depth < 2R = {} (got {})", 2.0 * r, st.depth[1]),
+            ));
+        }
+        let [nx, nz] = st.points;
+        if nx < 2 || nz < 2 {
+            return Err(c.bad("stresses.points", format!("[nx, nz] must both be at least 2 (got [{nx}, {nz}])")));
+        }
+        if nx.checked_mul(nz).is_none_or(|n| n > MAX_STRESS_POINTS) {
+            return Err(c.bad(
+                "stresses.points",
+                format!("{nx} × {nz} points: rollbem allows at most {MAX_STRESS_POINTS} (nx·nz)"),
+            ));
+        }
+        if st.quantities.is_empty() {
+            return Err(c.bad("stresses.quantities", "must name at least one quantity (or leave it out: all)".into()));
+        }
+        if let Some(q) = st.quantities.iter().find(|q| StressQuantity::from_name(q).is_none()) {
+            let names: Vec<&str> = StressQuantity::ALL.iter().map(|q| q.name()).collect();
+            return Err(c.bad(
+                "stresses.quantities",
+                format!("unknown quantity `{q}` (expected one of: {})", names.join(", ")),
+            ));
         }
         Ok(())
     }

@@ -33,6 +33,20 @@ pub const HERTZ_MAX_A_OVER_R: f64 = 0.1;
 /// round-off; 1e-6 leaves room for an iterative solver at its default tolerance).
 pub const SOLVER_AGREEMENT: f64 = 1e-6;
 
+/// Subsurface stresses of the BEM wheel with constant elements ([`crate::stresses`]): a grid point closer to an
+/// element than this many of the element's lengths is refused (`near_boundary`). The Somigliana quadrature is
+/// accurate up to the boundary, but constant elements' displacements jump by about u′h between elements, and the
+/// jumps spoil the field within a few element lengths (crate::bem::stress, "Interpolation"). Measured under a Hertz
+/// contact against McEwen's field (tests/stresses.rs, `near_boundary_reach_is_where_the_bem_field_goes_wrong`:
+/// a/R = 0.0025, 100 elements across, points across two elements at x = 0 … 1.1a): the largest error is 19 % of
+/// p0 at 0.5 element lengths below the surface, 2.2 % at 1, 0.45 % at 2.5 and 0.42 % at 5 (what remains there is
+/// the finite wheel's difference from the half-plane).
+pub const STRESS_NEAR_BOUNDARY_CONSTANT: f64 = 2.5;
+
+/// The same for discontinuous quadratic elements (smaller jumps, quadratic data): the largest error is 5.3 % of p0
+/// at 0.1 element lengths, 2.7 % at 0.2, 0.86 % at 0.5 and 0.38 % at 1 (same test, 34 elements across).
+pub const STRESS_NEAR_BOUNDARY_QUADRATIC: f64 = 0.5;
+
 /// Unit invariance: the same scene in different units gives pressures equal to this relative error (every length is
 /// divided by L0 and every stress by E internally, so only round-off remains).
 pub const UNIT_INVARIANCE: f64 = 1e-9;

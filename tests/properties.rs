@@ -206,6 +206,7 @@ impl SceneParams {
             }),
             solvers: SolverSpec { use_: vec!["all".to_string()], ..SolverSpec::default() },
             checks: Expect::default(),
+            stresses: None,
         }
     }
 }

@@ -8,14 +8,15 @@
 //! match exactly; real figures to 1e-9 of their natural scale (the computation is deterministic on one machine;
 //! the slack covers instruction-set differences in faer's kernels): forces relative to the scene's P, the moment to
 //! P·R, lengths to R, the rotation to 1 rad, the peak pressure to itself. A figure that is zero to round-off (the
-//! moment of a symmetric contact, the shear of a frictionless one) is compared on that scale, not on its own.
+//! moment of a symmetric contact, the shear of a frictionless one) is compared on that scale, not on its own. Scenes
+//! with `[stresses]` also record the largest principal shear (to itself) and its depth (to R).
 
 use rollbem::run::run_scene;
 use rollbem::scene::Scene;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-const FIGURES: [&str; 16] = [
+const FIGURES: [&str; 18] = [
     "status",
     "normal",
     "tangential",
@@ -32,6 +33,8 @@ const FIGURES: [&str; 16] = [
     "nodes_contact",
     "nodes_stick",
     "nodes_slip",
+    "max_principal_shear",
+    "max_principal_shear_depth",
 ];
 
 fn figures() -> BTreeMap<String, Vec<String>> {
@@ -47,6 +50,9 @@ fn figures() -> BTreeMap<String, Vec<String>> {
         let l = &r.runs[0];
         let f = |v: Option<f64>| v.map(|v| format!("{v:e}")).unwrap_or_default();
         let (res, rb, c) = (l.resultants, l.rigid_body, l.contact.as_ref());
+        // With [stresses]: the maximum of the principal shear and its depth.
+        let max_tau1 =
+            l.stresses.as_ref().and_then(|st| st.field.maximum(rollbem::stresses::StressQuantity::PrincipalShear));
         out.insert(
             s.name.clone(),
             vec![
@@ -66,6 +72,8 @@ fn figures() -> BTreeMap<String, Vec<String>> {
                 c.map(|x| x.nodes_contact.to_string()).unwrap_or_default(),
                 c.map(|x| x.nodes_stick.to_string()).unwrap_or_default(),
                 c.map(|x| x.nodes_slip.to_string()).unwrap_or_default(),
+                f(max_tau1.map(|m| m.value)),
+                f(max_tau1.map(|m| m.depth)),
             ],
         );
     }
@@ -111,7 +119,7 @@ fn key_figures_match_the_recorded_values() {
                 "normal" | "tangential" => p,
                 "moment" => p * r,
                 "rotation" => 1.0,
-                "peak_pressure" => 0.0,
+                "peak_pressure" | "max_principal_shear" => 0.0,
                 _ => r,
             };
             match (a.parse::<f64>(), b.parse::<f64>()) {

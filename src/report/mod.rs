@@ -115,6 +115,7 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
     .unwrap();
     let (reports, cmp_md) = reference_scenes(opts)?;
     let figures = seed_figures(&reports, &out.join("figures"))?;
+    let maps = stress_maps(&reports, out)?;
     let (sweep_md, plots) = sweeps(opts)?;
     let mut path_md = String::new();
     let mut path_figs: Figures = Vec::new();
@@ -156,9 +157,23 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
         }
     }
     md.push_str(&roll_md);
+    if !maps.is_empty() {
+        writeln!(md, "\n## Subsurface stresses\n").unwrap();
+        writeln!(
+            md,
+            "The reference scenes with `[stresses]`: Lemke's field as filled contour maps, the maximum (largest \
+             |value|) marked. Tension positive; depth drawn downward. Every quantity's map is listed under Files.\n"
+        )
+        .unwrap();
+        for (title, file) in
+            maps.iter().filter(|(_, f)| f.ends_with(".principal_shear.svg") || f.ends_with(".von_mises.svg"))
+        {
+            writeln!(md, "### {title}\n\n![{title}]({file})\n").unwrap();
+        }
+    }
     writeln!(md, "\n## Files\n\n- `runs/NAME.json`: result document of every reference scene").unwrap();
     writeln!(md, "- `solver-comparison.csv`, `sweeps/*.csv`: the tables behind this page").unwrap();
-    for (title, file) in plots.iter().chain(&path_figs).chain(&figures) {
+    for (title, file) in plots.iter().chain(&path_figs).chain(&figures).chain(&maps) {
         writeln!(md, "- [{title}]({file})").unwrap();
     }
     let path = out.join("README.md");
@@ -243,6 +258,26 @@ fn reference_scenes(opts: &ReportOptions) -> Result<(BTreeMap<String, Report>, S
     }
     write_atomic(&out.join("solver-comparison.csv"), &cmp)?;
     Ok((reports, cmp_md))
+}
+
+/// The contour maps of every reference scene with `[stresses]` (`rollbem plot` on its `runs/NAME.json`, into
+/// `figures/`): (title, file) of Lemke's map per quantity, in the scene's and the quantities' order.
+fn stress_maps(reports: &BTreeMap<String, Report>, out: &Path) -> Result<Vec<(String, String)>> {
+    let mut maps = Vec::new();
+    for (name, r) in reports.iter().filter(|(_, r)| r.scene.stresses.is_some()) {
+        let json = out.join("runs").join(format!("{name}.json"));
+        crate::plot_result::plot_result(&json, Some(&out.join("figures")))?;
+        let Some(st) = r.runs.iter().find(|x| x.solver == "lemke").and_then(|x| x.stresses.as_ref()) else {
+            continue;
+        };
+        for q in &st.quantities {
+            let file = format!("figures/{name}.lemke.{}.svg", q.name());
+            if out.join(&file).exists() {
+                maps.push((format!("{name}: {} (Lemke)", q.name()), file));
+            }
+        }
+    }
+    Ok(maps)
 }
 
 /// Run every reference sweep into its CSV and its sections. Returns (Markdown, plots).
@@ -391,4 +426,42 @@ fn seed_figures(reports: &BTreeMap<String, Report>, dir: &Path) -> Result<Vec<(S
         }
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stress_maps_of_the_scenes_with_stresses() {
+        // A half-plane scene with [stresses] and one without: maps (one per quantity asked for) only for the first.
+        let text = |name: &str, stresses: &str| {
+            format!(
+                "name = \"{name}\"\n[wheel]\nradius = 460.0\nyoungs_modulus = 210000.0\npoisson_ratio = 0.3\n\
+                 model = \"half_plane\"\n[mesh]\nelement = \"constant\"\ncontact_half_width = 9.0\n\
+                 contact_elements = 40\n[drive]\nnormal_load = 20000.0\n[solvers]\nuse = [\"lemke\"]\n{stresses}"
+            )
+        };
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::create_dir_all(dir.path().join("runs")).unwrap();
+        std::fs::create_dir_all(dir.path().join("figures")).unwrap();
+        let mut reports = BTreeMap::new();
+        for (name, st) in [
+            ("with", "[stresses]\nx = [-10.0, 10.0]\ndepth = [0.0, 15.0]\npoints = [21, 16]\nquantities = [\"von_mises\", \"sxx\"]"),
+            ("without", ""),
+        ] {
+            let s = Scene::from_toml(&text(name, st), Path::new("<test>")).unwrap();
+            let r = run_scene(&s, Path::new("<test>")).unwrap();
+            let json = serde_json::to_string_pretty(&r).unwrap();
+            std::fs::write(dir.path().join("runs").join(format!("{name}.json")), json).unwrap();
+            reports.insert(name.to_string(), r);
+        }
+        let maps = stress_maps(&reports, dir.path()).unwrap();
+        let files: Vec<&str> = maps.iter().map(|(_, f)| f.as_str()).collect();
+        assert_eq!(files, ["figures/with.lemke.sxx.svg", "figures/with.lemke.von_mises.svg"]);
+        for f in files {
+            assert!(std::fs::read_to_string(dir.path().join(f)).unwrap().contains("<svg"));
+        }
+        assert!(!dir.path().join("figures/without.lemke.tractions.svg").exists());
+    }
 }

@@ -196,6 +196,13 @@ pub fn assemble_system(model: &Model, blocks: Blocks) -> Result<System> {
 
 /// Factorise the rearranged system once and solve for the flexibility (the condensation stage).
 pub fn solve_system(model: &Model, sys: &System) -> Result<(Flexibility, BemHealth)> {
+    solve_system_with_response(model, sys).map(|(flex, health, _)| (flex, health))
+}
+
+/// [`solve_system`], also returning the solution of every right-hand side (`A⁻¹ rhs`, 2N × columns of
+/// [`System::rhs`]): the whole boundary's response to unit contact tractions, kept for interior stresses
+/// ([`BoundaryResponse`]).
+pub fn solve_system_with_response(model: &Model, sys: &System) -> Result<(Flexibility, BemHealth, Mat<f64>)> {
     let mesh = &model.mesh;
     let nn = mesh.n_nodes();
     let nc = mesh.contact_nodes.len();
@@ -254,15 +261,90 @@ pub fn solve_system(model: &Model, sys: &System) -> Result<(Flexibility, BemHeal
         weights,
         scales: Scales { length: model.length, modulus: model.modulus },
     };
-    Ok((flex, BemHealth { system_size: 2 * nn, pivot_ratio, system_condition }))
+    Ok((flex, BemHealth { system_size: 2 * nn, pivot_ratio, system_condition }, sol))
 }
 
 /// Assemble, factorise and condense the model to the contact flexibility, timing both stages.
 pub fn condense(model: &Model, blocks: Blocks) -> Result<(Flexibility, BemHealth, SourceTiming)> {
+    condense_with_response(model, blocks).map(|(flex, health, timing, _)| (flex, health, timing))
+}
+
+/// [`condense`], also returning the whole boundary's response to unit contact tractions (the solution of every
+/// right-hand side of the rearranged system, 2N × columns of [`System::rhs`]; see [`BoundaryResponse`]).
+pub fn condense_with_response(
+    model: &Model,
+    blocks: Blocks,
+) -> Result<(Flexibility, BemHealth, SourceTiming, Mat<f64>)> {
     let t0 = std::time::Instant::now();
     let sys = assemble_system(model, blocks)?;
     let t1 = std::time::Instant::now();
-    let (flex, health) = solve_system(model, &sys)?;
+    let (flex, health, sol) = solve_system_with_response(model, &sys)?;
     let t2 = std::time::Instant::now();
-    Ok((flex, health, SourceTiming { assembly: (t1 - t0).as_secs_f64(), condensation: (t2 - t1).as_secs_f64() }))
+    let timing = SourceTiming { assembly: (t1 - t0).as_secs_f64(), condensation: (t2 - t1).as_secs_f64() };
+    Ok((flex, health, timing, sol))
+}
+
+/// The wheel's whole boundary solution per unit contact traction, kept after the condensation so that interior
+/// stresses can be computed from any solved contact tractions without assembling or factorising again
+/// ([`crate::stresses`]). Dimensionless like the [`Model`].
+///
+/// By linearity, contact tractions (p, q) with the support clamped in place give the boundary unknowns
+/// `x = Σ_c p_c X[:, c] + q_c X[:, n + c]` (X = `matrix`, n contact nodes): the support nodes' tractions and the
+/// other nodes' displacements. The support's rigid motion is left out: a rigid motion of the whole wheel is
+/// stress-free, so the stresses do not depend on it (the translations are reproduced exactly by the discrete
+/// system, a rotation only to the discretisation error, which leaving it out avoids).
+#[derive(Debug, Clone)]
+pub struct BoundaryResponse {
+    /// The model the response belongs to.
+    pub model: Model,
+    /// `A⁻¹ rhs` ([`solve_system_with_response`]): columns t_y of the contact nodes, then (with [`Blocks::All`])
+    /// their t_x, then the three rigid modes.
+    pub matrix: Mat<f64>,
+    /// Whether the t_x columns are present (the tangential problem was built).
+    pub tangential: bool,
+}
+
+impl BoundaryResponse {
+    /// Every node's displacement u and traction t (dimensionless, in node order) for contact tractions `p` (= t_y)
+    /// and `q` (= t_x) at the contact nodes (in [`Mesh::contact_nodes`] order, dimensionless: stress / E), with the
+    /// support clamped in place.
+    ///
+    /// # Panics
+    /// If `p` or `q` does not have one value per contact node, or if `q` is nonzero while the tangential columns
+    /// were not built.
+    pub fn boundary(&self, p: &[f64], q: &[f64]) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
+        let mesh = &self.model.mesh;
+        let nc = mesh.contact_nodes.len();
+        assert!(p.len() == nc && q.len() == nc, "one traction per contact node");
+        assert!(self.tangential || q.iter().all(|v| *v == 0.0), "shear without the tangential columns");
+        let rows = self.matrix.nrows();
+        let mut x = vec![0.0; rows];
+        for c in 0..nc {
+            let cols = [Some((c, p[c])), self.tangential.then(|| (nc + c, q[c]))];
+            for (col, v) in cols.into_iter().flatten().filter(|(_, v)| *v != 0.0) {
+                let m = self.matrix.col(col);
+                for (xi, mi) in x.iter_mut().zip(m.iter()) {
+                    *xi += v * mi;
+                }
+            }
+        }
+        let mut contact = vec![None; mesh.n_nodes()];
+        for (c, &i) in mesh.contact_nodes.iter().enumerate() {
+            contact[i] = Some(c);
+        }
+        let (mut u, mut t) = (vec![[0.0; 2]; mesh.n_nodes()], vec![[0.0; 2]; mesh.n_nodes()]);
+        for (i, node) in mesh.nodes.iter().enumerate() {
+            let xi = [x[2 * i], x[2 * i + 1]];
+            match node.bc {
+                Bc::Support => t[i] = xi,
+                Bc::Free => u[i] = xi,
+                Bc::Contact => {
+                    let c = contact[i].expect("contact node has an index");
+                    u[i] = xi;
+                    t[i] = [q[c], p[c]];
+                }
+            }
+        }
+        (u, t)
+    }
 }

@@ -133,6 +133,7 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
             contact_element_length: scene.mesh.element_length(w.radius),
         },
         timing: SourceTiming { assembly, condensation: 0.0 },
+        boundary: None,
     })
 }
 

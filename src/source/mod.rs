@@ -59,6 +59,9 @@ pub struct Built {
     pub info: SourceInfo,
     /// Time per stage.
     pub timing: SourceTiming,
+    /// The BEM wheel's whole boundary response to unit contact tractions, kept only when the scene asks for
+    /// interior stresses (`[stresses]`); `None` otherwise and for closed-form sources.
+    pub boundary: Option<bem_wheel::BoundaryResponse>,
 }
 
 /// Build the flexibility a (validated) scene describes, with the blocks it needs.
@@ -67,14 +70,20 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
         return half_plane::build(scene, blocks);
     }
     let model = bem_wheel::Model::new(scene);
-    let (mut flex, health, t) = bem_wheel::condense(&model, blocks)?;
+    let (mut flex, health, t, response) = bem_wheel::condense_with_response(&model, blocks)?;
     half_plane::add_counter_body(&mut flex, scene, &half_plane::Grid::of(scene));
     let mesh = &model.mesh;
+    let (elements, nodes, element) = (mesh.elements.len(), mesh.n_nodes(), mesh.kind);
+    let boundary = scene.stresses.is_some().then(|| bem_wheel::BoundaryResponse {
+        tangential: blocks == Blocks::All,
+        matrix: response,
+        model,
+    });
     Ok(Built {
         info: SourceInfo {
-            elements: mesh.elements.len(),
-            nodes: mesh.n_nodes(),
-            element: mesh.kind,
+            elements,
+            nodes,
+            element,
             system_size: Some(health.system_size),
             pivot_ratio: Some(health.pivot_ratio),
             condition: Some(health.system_condition),
@@ -82,5 +91,6 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
         },
         flex,
         timing: SourceTiming { assembly: t.assembly, condensation: t.condensation },
+        boundary,
     })
 }

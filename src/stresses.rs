@@ -1,0 +1,639 @@
+//! Subsurface stresses (`[stresses]` in a scene): the wheel's stress field on a regular grid below the contact,
+//! computed from a run's solved contact tractions, with its maxima.
+//!
+//! # Grid and axes
+//! x runs along the surface as in the node results; the depth z is measured from the flat (the line y = −R that the
+//! undeformed wheel touches at x = 0), positive into the wheel: the grid point (x, z) is the point (x, z − R) of the
+//! wheel's axes, and the point at depth z of the half-plane model. Nodes are `x_i = x₀ + i (x₁ − x₀)/(nx − 1)`,
+//! `z_j = z₀ + j (z₁ − z₀)/(nz − 1)`; every field is stored row-major, index `j·nx + i`, row 0 the shallowest.
+//!
+//! # Quantities ([`StressQuantity`])
+//! In the (x, z) axes, plane strain, **tension positive**, in the scene's stress unit: `sxx` = σ_xx, `szz` = σ_zz,
+//! `txz` = τ_xz (z points into the wheel, so on the loaded surface σ_zz = −p and τ_xz = −q for the tractions p, q
+//! acting on the wheel), `syy` = ν(σ_xx + σ_zz), `principal_shear` = τ₁ = √(((σ_xx − σ_zz)/2)² + τ_xz²),
+//! `von_mises` = √(½[(σ_xx − σ_yy)² + (σ_yy − σ_zz)² + (σ_zz − σ_xx)²] + 3τ_xz²) and `orthogonal_shear` = τ_xz.
+//! The **maximum** of a quantity is its grid value of largest magnitude, sign kept (so the maximum of σ_zz is its
+//! most compressive value), with its position; only points that have a value count.
+//!
+//! # The two models of the wheel
+//! * **Half-plane** (`[wheel] model = "half_plane"`): the closed-form field of uniform-traction strips
+//!   ([`crate::halfplane::strip_stress`], Johnson §2.6–2.7) superposed over the contact grid's strips, each carrying
+//!   its node's (p, q). It is exact for the piecewise-uniform tractions at every depth z ≥ 0. On the surface (z = 0)
+//!   the value is the limit z → 0⁺ (σ_zz = −p, τ_xz = −q under a strip); exactly at a strip edge on the surface
+//!   σ_xx of a shear strip is infinite (a log singularity of the piecewise-uniform shear): that point (up to
+//!   round-off, 1e-9 of a strip width) is refused as [`PointError::Singular`]. Near such an edge the surface value
+//!   of σ_xx is that of the piecewise-uniform shear, (2Δq/π) ln(h/d) away from the continuous traction's at a
+//!   distance d from an edge where the shear jumps by Δq: a surface row meant to stand for the continuous contact
+//!   is best placed at the strips' centres.
+//! * **Finite wheel** (`model = "bem"`): the Somigliana identity for stresses ([`crate::bem::stress`]) on the whole
+//!   boundary solution. After the contact solve, the boundary problem is solved again with the contact tractions as
+//!   known data and the support clamped in place, by superposition of the boundary's responses to unit contact
+//!   tractions that the condensation computed anyway ([`crate::source::bem_wheel::BoundaryResponse`]): nothing is
+//!   assembled or factorised again. The support's rigid motion is left out, since a rigid motion is stress-free.
+//!   The quadrature is accurate to ~1e-9 of the stress scale up to the boundary, but the boundary data are
+//!   discontinuous between elements (constant or discontinuous quadratic), which spoils the field within a few
+//!   element lengths of the boundary ([`crate::bem::stress`], "Interpolation"). A grid with a point closer to an
+//!   element than [`STRESS_NEAR_BOUNDARY_CONSTANT`] (2.5, constant elements) or [`STRESS_NEAR_BOUNDARY_QUADRATIC`]
+//!   (0.5, quadratic) of its lengths, or a point outside the wheel (below its undeformed surface, or in the hub's
+//!   hole), is therefore refused before anything is solved, as an input error naming `stresses.depth` (or
+//!   `stresses.x`) and the first such point (exit code 2, nothing written): never a wrong value.
+//!
+//! With an elastic counter-body (`[counter_body] kind = "half_plane"`) the field is the **wheel's**, from the same
+//! tractions; the counter-body's own field is not computed.
+//!
+//! # Where and when
+//! Only a scene with `[stresses]` computes anything ("simulate only the effects a scene calls for"). Every solved
+//! run gets its field ([`crate::run::run_scene`]); a load path computes it at the end of each step (its last
+//! substep; the intermediate substeps of a step are increments towards that end and are not reported), so the
+//! path's final runs carry the field at the path's end ([`crate::history`]).
+//!
+//! # Output
+//! `runs[].stresses` of the result document ([`StressResult`]): the grid, the quantities, `maxima.<quantity> =
+//! {value, x, depth}`, the number of refused points per reason, the evaluation time and the field: inline
+//! (`field.values.<quantity>`, with `null` where a point is refused and `field.error` naming the reason per point)
+//! for grids of up to [`MAX_INLINE_POINTS`] points, and for larger grids in a CSV file beside the JSON document
+//! (`csv` names it; `rollbem run --json` writes it, [`StressResult::spill`]).
+
+use crate::bem::stress::{InteriorStress, StressError};
+use crate::error::Error;
+use crate::halfplane::strip_stress;
+use crate::mesh::{Mesh, Shape};
+use crate::post::NodeResult;
+pub use crate::scene::StressQuantity;
+use crate::scene::{BodyModel, ElementKind, Scene, Support};
+use crate::source::bem_wheel::BoundaryResponse;
+use crate::source::{half_plane::Grid, Built};
+use crate::tolerances::{STRESS_NEAR_BOUNDARY_CONSTANT, STRESS_NEAR_BOUNDARY_QUADRATIC};
+use rayon::prelude::*;
+use serde::ser::{SerializeMap, SerializeStruct};
+use serde::{Serialize, Serializer};
+use std::collections::BTreeMap;
+use std::path::Path;
+use std::time::Instant;
+
+/// Largest grid (nx·nz points) whose field is written inline in the result document; larger fields go to a CSV file
+/// beside it.
+pub const MAX_INLINE_POINTS: usize = 20_000;
+
+/// Why a grid point has no value.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PointError {
+    /// Outside the wheel: below its undeformed surface, or in the hub's hole (BEM wheel; such a grid is refused
+    /// as an input error by [`StressEvaluator::new`], so a result never holds it).
+    OutsideBody,
+    /// Closer to an element than [`STRESS_NEAR_BOUNDARY_CONSTANT`] or [`STRESS_NEAR_BOUNDARY_QUADRATIC`] of its
+    /// lengths (BEM wheel): the discontinuous boundary data would make the value wrong there (refused as an input
+    /// error by [`StressEvaluator::new`], like [`PointError::OutsideBody`]).
+    NearBoundary,
+    /// A singular point of the discrete field: on the surface exactly at the edge of a half-plane strip carrying
+    /// shear (σ_xx infinite), or any other non-finite value.
+    Singular,
+}
+
+impl PointError {
+    /// Name as written in results.
+    pub fn name(self) -> &'static str {
+        match self {
+            PointError::OutsideBody => "outside_body",
+            PointError::NearBoundary => "near_boundary",
+            PointError::Singular => "singular",
+        }
+    }
+}
+
+/// The regular grid of a `[stresses]` table (user's length unit; module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct StressGrid {
+    /// `[min, max]` of x.
+    pub x: [f64; 2],
+    /// `[min, max]` of the depth.
+    pub depth: [f64; 2],
+    /// `[nx, nz]`.
+    pub points: [usize; 2],
+}
+
+impl StressGrid {
+    /// x of node column `i`.
+    pub fn x_at(&self, i: usize) -> f64 {
+        lerp(self.x, i, self.points[0])
+    }
+
+    /// Depth of node row `j`.
+    pub fn depth_at(&self, j: usize) -> f64 {
+        lerp(self.depth, j, self.points[1])
+    }
+
+    /// Number of points nx·nz.
+    pub fn len(&self) -> usize {
+        self.points[0] * self.points[1]
+    }
+
+    /// Whether the grid has no points (never, for a validated scene).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// `(x, depth)` of point `k` (row-major).
+    pub fn point(&self, k: usize) -> (f64, f64) {
+        let nx = self.points[0];
+        (self.x_at(k % nx), self.depth_at(k / nx))
+    }
+}
+
+/// Node `i` of `n` evenly spaced from `r[0]` to `r[1]` (the ends exact).
+fn lerp(r: [f64; 2], i: usize, n: usize) -> f64 {
+    if i + 1 == n {
+        r[1]
+    } else {
+        r[0] + (r[1] - r[0]) * i as f64 / (n - 1) as f64
+    }
+}
+
+/// The value of a quantity for the stress `s = [σ_xx, σ_zz, τ_xz]` and Poisson's ratio `nu` (module docs).
+pub fn quantity(q: StressQuantity, s: [f64; 3], nu: f64) -> f64 {
+    let [sxx, szz, txz] = s;
+    let syy = nu * (sxx + szz);
+    match q {
+        StressQuantity::Sxx => sxx,
+        StressQuantity::Szz => szz,
+        StressQuantity::Txz | StressQuantity::OrthogonalShear => txz,
+        StressQuantity::Syy => syy,
+        StressQuantity::PrincipalShear => (0.5 * (sxx - szz)).hypot(txz),
+        StressQuantity::VonMises => {
+            let (a, b, c) = (sxx - syy, syy - szz, szz - sxx);
+            (0.5 * (a * a + b * b + c * c) + 3.0 * txz * txz).sqrt()
+        }
+    }
+}
+
+/// The largest-magnitude value of a quantity on the grid and where it is (user's units).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Maximum {
+    /// The value (sign kept).
+    pub value: f64,
+    /// x of the point.
+    pub x: f64,
+    /// Depth of the point.
+    pub depth: f64,
+}
+
+/// The stress tensor at every grid point, or why a point has none (user's units).
+#[derive(Debug, Clone, PartialEq)]
+pub struct StressField {
+    /// The grid.
+    pub grid: StressGrid,
+    /// Poisson's ratio of the wheel (for σ_yy and von Mises).
+    pub nu: f64,
+    /// `[σ_xx, σ_zz, τ_xz]` per point, row-major.
+    pub stress: Vec<Result<[f64; 3], PointError>>,
+}
+
+impl StressField {
+    /// The value of `q` at point `k`, if the point has one.
+    pub fn value(&self, q: StressQuantity, k: usize) -> Option<f64> {
+        self.stress[k].ok().map(|s| quantity(q, s, self.nu))
+    }
+
+    /// The maximum of `q` (largest magnitude, first in row-major order on ties), if any point has a value.
+    pub fn maximum(&self, q: StressQuantity) -> Option<Maximum> {
+        let mut best: Option<(usize, f64)> = None;
+        for k in 0..self.stress.len() {
+            if let Some(v) = self.value(q, k) {
+                if best.is_none_or(|(_, b)| v.abs() > b.abs()) {
+                    best = Some((k, v));
+                }
+            }
+        }
+        best.map(|(k, value)| {
+            let (x, depth) = self.grid.point(k);
+            Maximum { value, x, depth }
+        })
+    }
+
+    /// The field as CSV: columns `x, depth`, one per quantity, and `error` (empty unless the point is refused,
+    /// then its reason and empty values); one row per point, row-major.
+    pub fn csv(&self, quantities: &[StressQuantity]) -> String {
+        use std::fmt::Write as _;
+        let mut out = String::from("x,depth");
+        for q in quantities {
+            out.push(',');
+            out.push_str(q.name());
+        }
+        out.push_str(",error\n");
+        for (k, s) in self.stress.iter().enumerate() {
+            let (x, z) = self.grid.point(k);
+            write!(out, "{x:e},{z:e}").expect("writing to a String");
+            for &q in quantities {
+                match s {
+                    Ok(s) => write!(out, ",{:e}", quantity(q, *s, self.nu)).expect("writing to a String"),
+                    Err(_) => out.push(','),
+                }
+            }
+            writeln!(out, ",{}", s.err().map_or("", |e| e.name())).expect("writing to a String");
+        }
+        out
+    }
+}
+
+/// The subsurface stresses of one run (`runs[].stresses` in the result document; module docs).
+#[derive(Debug, Clone, PartialEq)]
+pub struct StressResult {
+    /// Which model of the wheel produced the field.
+    pub model: BodyModel,
+    /// The quantities reported.
+    pub quantities: Vec<StressQuantity>,
+    /// The field (kept in memory even when it is written to a CSV file).
+    pub field: StressField,
+    /// Wall-clock time of the evaluation, seconds.
+    pub time_s: f64,
+    /// The CSV file beside the result document that holds the field, once [`StressResult::spill`] moved it there.
+    pub csv: Option<String>,
+}
+
+impl StressResult {
+    /// The maximum of every reported quantity, in the order of [`StressResult::quantities`].
+    pub fn maxima(&self) -> Vec<(StressQuantity, Option<Maximum>)> {
+        self.quantities.iter().map(|&q| (q, self.field.maximum(q))).collect()
+    }
+
+    /// Number of refused points per reason.
+    pub fn refused(&self) -> BTreeMap<&'static str, usize> {
+        let mut out = BTreeMap::new();
+        for e in self.field.stress.iter().filter_map(|s| s.err()) {
+            *out.entry(e.name()).or_insert(0) += 1;
+        }
+        out
+    }
+
+    /// For a grid of more than [`MAX_INLINE_POINTS`] points: name the CSV file `file` (a name beside the result
+    /// document) in place of the inline field and return its text; `None` (and nothing changed) for a small grid.
+    pub fn spill(&mut self, file: &str) -> Option<String> {
+        if self.field.grid.len() <= MAX_INLINE_POINTS {
+            return None;
+        }
+        self.csv = Some(file.to_string());
+        Some(self.field.csv(&self.quantities))
+    }
+}
+
+/// `maxima` as a JSON object keyed by quantity name, in the quantities' order.
+struct Maxima(Vec<(StressQuantity, Option<Maximum>)>);
+
+impl Serialize for Maxima {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut m = s.serialize_map(Some(self.0.len()))?;
+        for (q, v) in &self.0 {
+            m.serialize_entry(q.name(), v)?;
+        }
+        m.end()
+    }
+}
+
+/// The inline field: node coordinates, one array per quantity (null where refused) and the reason per point.
+struct InlineField<'a>(&'a StressField, &'a [StressQuantity]);
+
+impl Serialize for InlineField<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let (f, qs) = (self.0, self.1);
+        let g = f.grid;
+        let values: BTreeMap<&str, Vec<Option<f64>>> =
+            qs.iter().map(|&q| (q.name(), (0..f.stress.len()).map(|k| f.value(q, k)).collect())).collect();
+        let mut m = s.serialize_map(Some(4))?;
+        m.serialize_entry("x", &(0..g.points[0]).map(|i| g.x_at(i)).collect::<Vec<f64>>())?;
+        m.serialize_entry("depth", &(0..g.points[1]).map(|j| g.depth_at(j)).collect::<Vec<f64>>())?;
+        m.serialize_entry("values", &values)?;
+        m.serialize_entry("error", &f.stress.iter().map(|s| s.err()).collect::<Vec<Option<PointError>>>())?;
+        m.end()
+    }
+}
+
+impl Serialize for StressResult {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let names: Vec<&str> = self.quantities.iter().map(|q| q.name()).collect();
+        let mut st = s.serialize_struct("StressResult", 9)?;
+        st.serialize_field("body", "wheel")?;
+        st.serialize_field("model", &self.model)?;
+        st.serialize_field("grid", &self.field.grid)?;
+        st.serialize_field("quantities", &names)?;
+        st.serialize_field("maxima", &Maxima(self.maxima()))?;
+        st.serialize_field("refused", &self.refused())?;
+        st.serialize_field("time_s", &self.time_s)?;
+        match &self.csv {
+            None => st.serialize_field("field", &InlineField(&self.field, &self.quantities))?,
+            Some(_) => st.serialize_field("field", &Option::<()>::None)?,
+        }
+        st.serialize_field("csv", &self.csv)?;
+        st.end()
+    }
+}
+
+/// What the evaluation needs of the wheel model.
+#[derive(Debug)]
+enum Body<'a> {
+    /// The half-plane's strips `[a_j, b_j]` (user's length unit), one per contact node.
+    HalfPlane { a: Vec<f64>, b: Vec<f64> },
+    /// The BEM wheel: its boundary response, the dimensionless grid points and, per point, why it is refused.
+    Wheel { response: &'a BoundaryResponse, points: Vec<[f64; 2]>, refused: Vec<Option<PointError>> },
+}
+
+/// The stress evaluation of a scene, set up once and applied to every solved run ([`StressEvaluator::evaluate`]).
+#[derive(Debug)]
+pub struct StressEvaluator<'a> {
+    grid: StressGrid,
+    quantities: Vec<StressQuantity>,
+    model: BodyModel,
+    nu: f64,
+    modulus: f64,
+    body: Body<'a>,
+}
+
+impl<'a> StressEvaluator<'a> {
+    /// The evaluator of a validated scene on its built source, or `None` when the scene has no `[stresses]`.
+    /// Called before anything is solved, so that a grid the BEM wheel cannot evaluate is refused at once.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `stresses.depth` (or `stresses.x`, `path` the scene file) when a grid point of the
+    /// BEM wheel lies outside the wheel or within [`STRESS_NEAR_BOUNDARY_CONSTANT`] (constant elements) or
+    /// [`STRESS_NEAR_BOUNDARY_QUADRATIC`] (quadratic) element lengths of its boundary, where the discontinuous
+    /// boundary data would make the value wrong (module docs). The message names the first such point, its distance
+    /// to the boundary and what would fix it.
+    ///
+    /// # Panics
+    /// If the scene's wheel is a BEM wheel but `built` kept no boundary response (it keeps one whenever the scene
+    /// has `[stresses]`, [`crate::source::build`]).
+    pub fn new(scene: &Scene, built: &'a Built, path: &Path) -> crate::error::Result<Option<StressEvaluator<'a>>> {
+        let Some(spec) = scene.stresses.as_ref() else { return Ok(None) };
+        let grid = StressGrid { x: spec.x, depth: spec.depth, points: spec.points };
+        let l0 = built.flex.scales.length;
+        let body = match scene.wheel.model {
+            BodyModel::HalfPlane => {
+                let g = Grid::of(scene);
+                Body::HalfPlane { a: g.a.iter().map(|v| v * l0).collect(), b: g.b.iter().map(|v| v * l0).collect() }
+            }
+            BodyModel::Bem => {
+                let response =
+                    built.boundary.as_ref().expect("a BEM source keeps its boundary response for [stresses]");
+                let r = scene.wheel.radius;
+                let hub = match scene.wheel.support() {
+                    Support::Hub { radius } => radius,
+                    Support::TopArc { .. } => 0.0,
+                };
+                let points: Vec<[f64; 2]> = (0..grid.len())
+                    .map(|k| {
+                        let (x, z) = grid.point(k);
+                        [x / l0, (z - r) / l0]
+                    })
+                    .collect();
+                let mesh = &response.model.mesh;
+                let refused: Vec<Option<PointError>> =
+                    points.par_iter().map(|&p| refusal(mesh, p, r / l0, hub / l0)).collect();
+                if let Some(k) = refused.iter().position(Option::is_some) {
+                    return Err(refused_grid(&grid, &refused, k, mesh, points[k], l0, r, path));
+                }
+                Body::Wheel { response, points, refused }
+            }
+        };
+        Ok(Some(StressEvaluator {
+            grid,
+            quantities: spec.quantities(),
+            model: scene.wheel.model,
+            nu: scene.wheel.poisson_ratio,
+            modulus: scene.wheel.youngs_modulus,
+            body,
+        }))
+    }
+
+    /// The field of a solved run from its contact nodes' tractions (`pressure`, `shear`, user's units, in contact-node
+    /// order), evaluated in parallel over the grid points.
+    ///
+    /// # Panics
+    /// If `nodes` does not have one entry per contact node of the source.
+    pub fn evaluate(&self, nodes: &[NodeResult]) -> StressResult {
+        let t0 = Instant::now();
+        let stress = match &self.body {
+            Body::HalfPlane { a, b } => half_plane_field(&self.grid, a, b, nodes),
+            Body::Wheel { response, points, refused } => {
+                let e = self.modulus;
+                let p: Vec<f64> = nodes.iter().map(|n| n.pressure / e).collect();
+                let q: Vec<f64> = nodes.iter().map(|n| n.shear / e).collect();
+                let (u, t) = response.boundary(&p, &q);
+                let model = &response.model;
+                let ev = InteriorStress::new(&model.mesh, &model.kelvin, &u, &t);
+                let todo: Vec<usize> = (0..points.len()).filter(|&k| refused[k].is_none()).collect();
+                let sub: Vec<[f64; 2]> = todo.iter().map(|&k| points[k]).collect();
+                let mut out: Vec<Result<[f64; 3], PointError>> =
+                    refused.iter().map(|r| Err(r.unwrap_or(PointError::Singular))).collect();
+                for (k, s) in todo.into_iter().zip(ev.evaluate_par(&sub)) {
+                    out[k] = match s {
+                        Ok(s) => finite([s[0] * e, s[1] * e, s[2] * e]),
+                        Err(StressError::OutsideBody) => Err(PointError::OutsideBody),
+                        Err(StressError::OnBoundary { .. }) => Err(PointError::NearBoundary),
+                        Err(StressError::NotFinite) => Err(PointError::Singular),
+                    };
+                }
+                out
+            }
+        };
+        StressResult {
+            model: self.model,
+            quantities: self.quantities.clone(),
+            field: StressField { grid: self.grid, nu: self.nu, stress },
+            time_s: t0.elapsed().as_secs_f64(),
+            csv: None,
+        }
+    }
+}
+
+/// A stress with every component finite, else [`PointError::Singular`].
+fn finite(s: [f64; 3]) -> Result<[f64; 3], PointError> {
+    if s.iter().all(|v| v.is_finite()) {
+        Ok(s)
+    } else {
+        Err(PointError::Singular)
+    }
+}
+
+/// A surface grid node closer than this many strip widths to the edge of a half-plane strip carrying shear counts as
+/// on the edge ([`PointError::Singular`]): round-off of the edges' and nodes' coordinates is ~1e-16 relative, and
+/// the log singularity's value at such a distance would be meaningless.
+const STRIP_EDGE_SNAP: f64 = 1e-9;
+
+/// The half-plane's field: every loaded strip's closed form, superposed (user's units).
+fn half_plane_field(
+    grid: &StressGrid,
+    a: &[f64],
+    b: &[f64],
+    nodes: &[NodeResult],
+) -> Vec<Result<[f64; 3], PointError>> {
+    assert_eq!(nodes.len(), a.len(), "one contact node per half-plane strip");
+    let loaded: Vec<(f64, f64, f64, f64)> = (0..a.len())
+        .filter(|&j| nodes[j].pressure != 0.0 || nodes[j].shear != 0.0)
+        .map(|j| (a[j], b[j], nodes[j].pressure, nodes[j].shear))
+        .collect();
+    (0..grid.len())
+        .into_par_iter()
+        .map(|k| {
+            let (x, z) = grid.point(k);
+            // On the surface at the edge of a strip carrying shear σ_xx is infinite (log singularity). The strips'
+            // edges and the grid's nodes are computed apart, so "at the edge" is up to round-off: a node within
+            // STRIP_EDGE_SNAP of a strip width from such an edge would otherwise get a finite but arbitrary value
+            // (the log of the round-off).
+            let on_edge = |&&(a, b, _, q): &&(f64, f64, f64, f64)| {
+                q != 0.0 && ((x - a).abs() <= STRIP_EDGE_SNAP * (b - a) || (x - b).abs() <= STRIP_EDGE_SNAP * (b - a))
+            };
+            if z == 0.0 && loaded.iter().any(|s| on_edge(&s)) {
+                return Err(PointError::Singular);
+            }
+            let mut s = [0.0; 3];
+            for &(a, b, p, q) in &loaded {
+                let st = strip_stress(a, b, p, q, x, z);
+                s[0] += st.sxx;
+                s[1] += st.szz;
+                s[2] += st.txz;
+            }
+            finite(s)
+        })
+        .collect()
+}
+
+/// Why a BEM grid point (dimensionless wheel axes) is refused, if it is: outside the wheel's circles (radius
+/// `outer`, hub radius `hub`, 0 for none), or within [`STRESS_NEAR_BOUNDARY_CONSTANT`] (or `_QUADRATIC`) lengths of
+/// an element of `mesh`.
+fn refusal(mesh: &Mesh, p: [f64; 2], outer: f64, hub: f64) -> Option<PointError> {
+    let r = p[0].hypot(p[1]);
+    if r >= outer || (hub > 0.0 && r <= hub) {
+        return Some(PointError::OutsideBody);
+    }
+    let reach = match mesh.kind {
+        ElementKind::Constant => STRESS_NEAR_BOUNDARY_CONSTANT,
+        ElementKind::Quadratic => STRESS_NEAR_BOUNDARY_QUADRATIC,
+    };
+    let near = mesh.elements.iter().any(|e| {
+        let (d, len) = distance_to_element(&e.shape, p);
+        d < reach * len
+    });
+    near.then_some(PointError::NearBoundary)
+}
+
+/// The input error for a BEM grid whose point `k` (dimensionless wheel axes `p`, length scale `l0`, wheel radius
+/// `r`) is refused: it names `stresses.depth` when the point is in the grid's shallowest row or the wheel's inner
+/// half (the hub), `stresses.x` otherwise (the grid reaches sideways to where the rim curves up into it).
+#[allow(clippy::too_many_arguments)]
+fn refused_grid(
+    grid: &StressGrid,
+    refused: &[Option<PointError>],
+    k: usize,
+    mesh: &Mesh,
+    p: [f64; 2],
+    l0: f64,
+    r: f64,
+    path: &Path,
+) -> Error {
+    let (x, z) = grid.point(k);
+    let count = refused.iter().filter(|e| e.is_some()).count();
+    let (d, len) = mesh
+        .elements
+        .iter()
+        .map(|e| distance_to_element(&e.shape, p))
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .expect("a BEM mesh has elements");
+    let reach = match mesh.kind {
+        ElementKind::Constant => STRESS_NEAR_BOUNDARY_CONSTANT,
+        ElementKind::Quadratic => STRESS_NEAR_BOUNDARY_QUADRATIC,
+    };
+    let field = if k < grid.points[0] || p[0].hypot(p[1]) * l0 < 0.5 * r { "stresses.depth" } else { "stresses.x" };
+    let why = match refused[k] {
+        Some(PointError::OutsideBody) => "lies outside the wheel (below its rim or in the hub's hole)".to_string(),
+        _ => format!(
+            "lies {:.4e} from the boundary, within {reach} lengths of an element ({:.4e} long): there the BEM \
+             field is not accurate (the boundary data jump between elements)",
+            d * l0,
+            len * l0
+        ),
+    };
+    Error::Invalid {
+        path: path.to_path_buf(),
+        field: field.to_string(),
+        message: format!(
+            "{count} of the {} grid points cannot be evaluated for the BEM wheel; the first, x = {x:.6e}, depth = \
+             {z:.6e}, {why}. Move the grid away from the boundary (start it deeper, or narrow it), or refine the mesh \
+             there (the half-plane model has values up to the surface)",
+            grid.len()
+        ),
+    }
+}
+
+/// Distance from `p` to an element and the element's length.
+fn distance_to_element(shape: &Shape, p: [f64; 2]) -> (f64, f64) {
+    match *shape {
+        Shape::Straight { a, b } => {
+            let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+            let len2 = dx * dx + dy * dy;
+            let t = (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0);
+            let (cx, cy) = (a[0] + t * dx, a[1] + t * dy);
+            ((p[0] - cx).hypot(p[1] - cy), len2.sqrt())
+        }
+        Shape::Arc(arc) => {
+            let (dx, dy) = (p[0] - arc.centre[0], p[1] - arc.centre[1]);
+            let (lo, hi) = (arc.theta0.min(arc.theta1), arc.theta0.max(arc.theta1));
+            // The point's polar angle brought into [lo, lo + 2π).
+            let phi = lo + (dy.atan2(dx) - lo).rem_euclid(std::f64::consts::TAU);
+            let d = if phi <= hi {
+                (dx.hypot(dy) - arc.radius).abs()
+            } else {
+                let e = |xi: f64| {
+                    let q = arc.position(xi);
+                    (p[0] - q[0]).hypot(p[1] - q[1])
+                };
+                e(-1.0).min(e(1.0))
+            };
+            (d, arc.length())
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::ArcElement;
+
+    #[test]
+    fn quantities_of_a_known_tensor() {
+        // σ = diag(−3, −1) + τ 1: τ₁ = √(1 + 1) , σ_yy = 0.25·(−4) = −1, von Mises by hand.
+        let s = [-3.0, -1.0, 1.0];
+        let nu = 0.25;
+        assert_eq!(quantity(StressQuantity::Syy, s, nu), -1.0);
+        assert!((quantity(StressQuantity::PrincipalShear, s, nu) - 2f64.sqrt()).abs() < 1e-15);
+        let vm = (0.5 * ((-3.0f64 + 1.0).powi(2) + 0.0 + 4.0) + 3.0).sqrt();
+        assert!((quantity(StressQuantity::VonMises, s, nu) - vm).abs() < 1e-15);
+        assert_eq!(quantity(StressQuantity::OrthogonalShear, s, nu), 1.0);
+    }
+
+    #[test]
+    fn distances_to_straight_and_arc_elements() {
+        let seg = Shape::Straight { a: [0.0, 0.0], b: [2.0, 0.0] };
+        assert_eq!(distance_to_element(&seg, [1.0, 0.5]), (0.5, 2.0));
+        assert_eq!(distance_to_element(&seg, [3.0, 0.0]).0, 1.0);
+        // A quarter arc of the unit circle, counter-clockwise and clockwise.
+        for (t0, t1) in [(0.0, std::f64::consts::FRAC_PI_2), (std::f64::consts::FRAC_PI_2, 0.0)] {
+            let arc = Shape::Arc(ArcElement { centre: [0.0, 0.0], radius: 1.0, theta0: t0, theta1: t1 });
+            assert!((distance_to_element(&arc, [0.5, 0.5]).0 - (1.0 - 0.5f64.sqrt())).abs() < 1e-15);
+            assert!((distance_to_element(&arc, [0.0, -1.0]).0 - 2f64.sqrt()).abs() < 1e-15);
+            assert!((distance_to_element(&arc, [0.0, 0.0]).1 - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn maximum_is_the_largest_magnitude_with_its_sign() {
+        let grid = StressGrid { x: [0.0, 1.0], depth: [0.0, 1.0], points: [2, 2] };
+        let f = StressField {
+            grid,
+            nu: 0.3,
+            stress: vec![Ok([1.0, 0.0, 0.0]), Err(PointError::NearBoundary), Ok([-2.0, 0.0, 0.0]), Ok([1.5, 0.0, 0.0])],
+        };
+        assert_eq!(f.maximum(StressQuantity::Sxx), Some(Maximum { value: -2.0, x: 0.0, depth: 1.0 }));
+        let csv = f.csv(&[StressQuantity::Sxx]);
+        assert_eq!(csv.lines().nth(2), Some("1e0,0e0,,near_boundary"));
+    }
+}
