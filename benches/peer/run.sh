@@ -150,6 +150,30 @@ for m in $sizes; do
     rm -f "$work/base.dat"
   fi
 
+  # The active-set solver works on the contact problem's physical unknowns, not on an LCP file: time it on the
+  # scene the file was exported from (`timing_s.solve`: the solve alone, the flexibility already built) and
+  # compare its nodal tractions with Lemke's run of the same scene.
+  say "  rollbem active_set on the scene (${repeats} runs)"
+  as_json="$work/peer-$m.active_set.json"
+  "$rollbem" run "$scene" --solver lemke --solver active_set --json "$as_json" >/dev/null || true
+  as_st=$(jq -r '.runs[] | select(.solver == "active_set") | .status' "$as_json")
+  as_it=$(jq -r '.runs[] | select(.solver == "active_set") | .work.iterations // "?"' "$as_json")
+  as_d=$(jq -r '[.runs[] | select(.solver == "lemke") | .nodes[] | .pressure] as $lp
+      | [.runs[] | select(.solver == "lemke") | .nodes[] | .shear] as $lq
+      | [.runs[] | select(.solver == "active_set") | .nodes[] | .pressure] as $ap
+      | [.runs[] | select(.solver == "active_set") | .nodes[] | .shear] as $aq
+      | ([$lp[] | fabs] | max) as $p0
+      | [range(0; $lp | length) | ([($lp[.] - $ap[.]), ($lq[.] - $aq[.])] | map(fabs) | max)] | max / $p0' \
+      "$as_json" 2>/dev/null || echo n/a)
+  [[ $as_d == n/a ]] || as_d=$(awk -v d="$as_d" 'BEGIN { printf "%.1e", d }')
+  as_ts=()
+  for ((r = 0; r < repeats; r++)); do
+    "$rollbem" run "$scene" --solver active_set --json "$as_json.t" >/dev/null || true
+    as_ts+=("$(jq -r '.runs[0].timing_s.solve' "$as_json.t")")
+  done
+  t_as=$(printf '%s\n' "${as_ts[@]}" | median)
+  say "  rollbem active_set: $as_st, $as_it iterations, $t_as s, max|Δ traction|/p0 vs lemke $as_d"
+
   say "  Siconos lcp_lexicolemke and lcp_pgs (${repeats} runs each)"
   "$work/peer" "$lcp" "$work/peer-$m.siconos" "$pgs_tol" "$pgs_max_iter" "$repeats" >"$work/peer-$m.siconos.kv"
   kvf="$work/peer-$m.siconos.kv"
@@ -173,6 +197,7 @@ for m in $sizes; do
   d_dense=$(rel_diff "$work/peer-$m.lemke.z" "$work/peer-$m.lemke_dense.z")
   fastest=$(awk -v a="${t[lemke]}" -v b="${t[lemke_dense]}" 'BEGIN { print (a < b ? a : b) }')
   ratio=$(awk -v p="$p_lemke_t" -v f="$fastest" 'BEGIN { if (f > 0) printf "%.3g", p / f; else print "n/a" }')
+  ratio_as=$(awk -v p="$p_lemke_t" -v f="$t_as" 'BEGIN { if (f > 0) printf "%.3g", p / f; else print "n/a" }')
   cell() { # pivots, with the status when not solved and the run count when not repeated
     local c=$1
     [[ $2 == solved ]] || c="$c ($2)"
@@ -181,13 +206,13 @@ for m in $sizes; do
   for solver in lemke lemke_dense; do
     ((runs[$solver] == repeats)) || notes+=("size $n: rollbem $solver timed on ${runs[$solver]} run(s) (first run over ${skip_after} s).")
   done
-  rows+=("| $n | $(cell "${piv[lemke]}" "${st[lemke]}") | $(cell "${piv[lemke_dense]}" "${st[lemke_dense]}") | $(cell "$((p_lemke_it + 1))" "$p_lemke_st") | $p_pgs_it | $(fmt_s "${t[lemke]}") | $(fmt_s "${t[lemke_dense]}") | $(fmt_s "$p_lemke_t") | $(fmt_s "$p_pgs_t") | $ratio | $d_lemke | $d_pgs | $d_dense | $(fmt_s "$baseline") | $p_lemke_err |")
+  rows+=("| $n | $(cell "${piv[lemke]}" "${st[lemke]}") | $(cell "${piv[lemke_dense]}" "${st[lemke_dense]}") | $(cell "$((p_lemke_it + 1))" "$p_lemke_st") | $p_pgs_it | $(fmt_s "${t[lemke]}") | $(fmt_s "${t[lemke_dense]}") | $(fmt_s "$p_lemke_t") | $(fmt_s "$p_pgs_t") | $ratio | $d_lemke | $d_pgs | $d_dense | $(fmt_s "$baseline") | $p_lemke_err | $(cell "$as_it" "$as_st") | $(fmt_s "$t_as") | $ratio_as | $as_d |")
   unset t piv st runs
 done
 
 {
-  echo "| unknowns | rollbem lemke pivots | rollbem lemke_dense pivots | Siconos Lemke pivots | Siconos PGS iterations | rollbem lemke [s] | rollbem lemke_dense [s] | Siconos Lemke [s] | Siconos PGS [s] | speed ratio (Siconos Lemke / fastest rollbem) | max\\|z − z_Siconos Lemke\\| / max\\|z\\| | vs Siconos PGS | lemke vs lemke_dense | read + setup [s] | Siconos Lemke error |"
-  echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+  echo "| unknowns | rollbem lemke pivots | rollbem lemke_dense pivots | Siconos Lemke pivots | Siconos PGS iterations | rollbem lemke [s] | rollbem lemke_dense [s] | Siconos Lemke [s] | Siconos PGS [s] | speed ratio (Siconos Lemke / fastest rollbem) | max\\|z − z_Siconos Lemke\\| / max\\|z\\| | vs Siconos PGS | lemke vs lemke_dense | read + setup [s] | Siconos Lemke error | rollbem active_set iterations | rollbem active_set [s] | speed ratio (Siconos Lemke / active_set) | active_set vs lemke: max\\|Δ traction\\| / p0 |"
+  echo "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
   printf '%s\n' "${rows[@]}"
   echo
   echo "Scenes: reference/scenes/cattaneo-decoupled.toml with \`[contact] coupling = true\` and \`[mesh] contact_elements\` = $sizes (hub support, μ = 0.3, load-driven P and Q, rotation held). Siconos numerics $siconos_version (Debian libsiconos-numerics-dev); PGS tolerance $pgs_tol on lcp_compute_error, at most $pgs_max_iter iterations."
@@ -197,6 +222,7 @@ done
   else
     echo "rollbem: \`rollbem lcp solve\` reports no solve time yet, so its times are the external wall time minus the 'read + setup' column (the same command on the same M with q ≥ 0: reading the file, equilibration, writing the JSON)."
   fi
+  echo "active_set: \`rollbem run\` on the scene the LCP was exported from, \`timing_s.solve\` (the solve alone; the flexibility is built before it), median of $repeats runs; it solves the same contact problem on its physical unknowns, so its agreement is measured on the nodal tractions against Lemke's run of the scene (relative to Lemke's peak pressure)."
   echo "Pivots: Siconos' iteration count + 1 (it does not count the pivot that brings z0 into the basis; rollbem does)."
   for note in "${notes[@]}"; do echo "Note: $note"; done
 } | tee "$table_out"
