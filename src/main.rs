@@ -219,7 +219,7 @@ fn print_report(r: &Report) {
     }
     let frictional = r.effects.iter().any(|e| e == "friction");
     say!(
-        "{:<9} {:<16} {:>5} {:>9} {:>9} {:>12} {:>12} {:>12} {:>12} {:>12} {:>9}",
+        "{:<11} {:<16} {:>5} {:>9} {:>9} {:>12} {:>12} {:>12} {:>20} {:>12} {:>9}",
         "solver",
         "status",
         "size",
@@ -230,7 +230,7 @@ fn print_report(r: &Report) {
         if frictional { "peak p" } else { "p0 (fit)" },
         if frictional { "stick zone" } else { "contact" },
         "d_N",
-        "time [s]"
+        "total [s]"
     );
     let opt = |v: Option<f64>| v.map(|v| format!("{v:.5e}")).unwrap_or_else(|| "-".into());
     for run in &r.runs {
@@ -238,7 +238,7 @@ fn print_report(r: &Report) {
         let (Some(res), Some(f), Some(c), Some(rb)) = (&run.residuals, &run.resultants, &run.contact, &run.rigid_body)
         else {
             say!(
-                "{:<9} {:<16} {:>5} {:>9} {:>9} {:>12} {:>12} {:>12} {:>12} {:>12} {:>9.4}",
+                "{:<11} {:<16} {:>5} {:>9} {:>9} {:>12} {:>12} {:>12} {:>20} {:>12} {:>9.4}",
                 run.solver,
                 run.status.name(),
                 run.problem_size,
@@ -251,7 +251,7 @@ fn print_report(r: &Report) {
                 "-",
                 run.timing_s.total
             );
-            say!("          {}", run.message);
+            say!("            {}", run.message);
             continue;
         };
         let range = |a: Option<f64>, b: Option<f64>| match (a, b) {
@@ -259,7 +259,7 @@ fn print_report(r: &Report) {
             _ => "none".into(),
         };
         say!(
-            "{:<9} {:<16} {:>5} {:>9} {:>9.2e} {:>12.5e} {:>12} {:>12} {:>12} {:>12.5e} {:>9.4}",
+            "{:<11} {:<16} {:>5} {:>9} {:>9.2e} {:>12.5e} {:>12} {:>12} {:>20} {:>12.5e} {:>9.4}",
             run.solver,
             run.status.name(),
             run.problem_size,
@@ -273,7 +273,7 @@ fn print_report(r: &Report) {
             run.timing_s.total
         );
         if run.status != rollbem::solvers::Status::Solved || run.message.contains("sliding limit") {
-            say!("          {}", run.message);
+            say!("            {}", run.message);
         }
     }
     if !r.steps.is_empty() {

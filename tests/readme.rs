@@ -1,0 +1,69 @@
+//! The README's worked example is a tested artefact (issue 12, item 11): the command it shows is run and its output
+//! compared, line by line, with the block in the README. Only the timing column of the solver table is masked (the
+//! machine decides it); every other character must match. The README block may end with a line `  ...` after which
+//! the remaining output lines are not shown.
+
+use std::path::Path;
+use std::process::Command;
+
+const COMMAND: &str = "$ rollbem run reference/scenes/hertz-hub-fine.toml --json hertz.json";
+
+/// Mask the last column (`total [s]`) of the solver table's rows: the lines after the header that starts with
+/// `solver` and before `checks:`.
+fn mask(lines: &[String]) -> Vec<String> {
+    let mut in_table = false;
+    lines
+        .iter()
+        .map(|l| {
+            if l.starts_with("solver ") {
+                in_table = true;
+                return l.clone();
+            }
+            if l.starts_with("checks:") {
+                in_table = false;
+            }
+            if in_table && !l.starts_with(' ') {
+                match l.trim_end().rfind(' ') {
+                    Some(k) => format!("{} <time>", l[..k].trim_end()),
+                    None => l.clone(),
+                }
+            } else {
+                l.trim_end().to_string()
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn readme_worked_example_output_is_what_rollbem_prints() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
+    let start = readme.find(&format!("```text\n{COMMAND}\n")).expect("the worked example block in README.md");
+    let body = &readme[start + "```text\n".len() + COMMAND.len() + 1..];
+    let block: Vec<String> = body[..body.find("```").unwrap()].lines().map(String::from).collect();
+    let (shown, elided) = match block.iter().position(|l| l.trim() == "...") {
+        Some(k) => (block[..k].to_vec(), true),
+        None => (block.clone(), false),
+    };
+
+    let tmp = tempfile::tempdir().unwrap();
+    let o = Command::new(env!("CARGO_BIN_EXE_rollbem"))
+        .current_dir(root)
+        .args(["run", "reference/scenes/hertz-hub-fine.toml", "--json"])
+        .arg(tmp.path().join("hertz.json"))
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let actual: Vec<String> = String::from_utf8(o.stdout).unwrap().lines().map(String::from).collect();
+    assert!(tmp.path().join("hertz.json").exists());
+
+    let (want, got) = (mask(&shown), mask(&actual));
+    if elided {
+        assert!(got.len() > want.len(), "the README elides lines, but the output has no more");
+    } else {
+        assert_eq!(got.len(), want.len(), "line count: the README block is stale");
+    }
+    for (k, (w, g)) in want.iter().zip(&got).enumerate() {
+        assert_eq!(w, g, "README worked example, line {}: stale (update the block from the command's output)", k + 1);
+    }
+}
