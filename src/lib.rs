@@ -34,6 +34,7 @@
 // Index loops over 2×2 blocks and matrix rows read like the formulas they implement.
 #![allow(clippy::needless_range_loop)]
 
+pub mod admissible;
 pub mod bem;
 pub mod checks;
 pub mod condition;
@@ -50,6 +51,7 @@ pub mod lcp_residual;
 pub mod mesh;
 pub mod plot;
 pub mod post;
+pub mod progress;
 pub mod references;
 pub mod report;
 pub mod results;
@@ -61,5 +63,6 @@ pub mod status;
 pub mod sweep;
 pub mod theory;
 pub mod tolerances;
+pub mod validity;
 
 pub use error::{Error, Result};
