@@ -136,7 +136,7 @@ fn lemke_frictional(c: &mut Criterion) {
         // Warm start from the previous load step (tangential load 10 % lower): its solution's support.
         let mut prev = s.clone();
         prev.drive.tangential_load = Some(0.9 * 18.742);
-        let prev_lcp = build_problem(&prev, &flex, Path::new("bench")).unwrap().lcp.unwrap();
+        let prev_lcp = build_problem(&prev, &flex, Path::new("bench")).unwrap().lcp().clone();
         let guess: Vec<bool> = lemke::solve(&prev_lcp, &LemkeSettings::default()).z.iter().map(|&v| v > 0.0).collect();
         let warm = lemke::solve_warm(&lcp, &LemkeSettings::default(), &guess);
         eprintln!("lemke_frictional/warm/{m}: {} pivots, {:?}", warm.pivots, warm.status);

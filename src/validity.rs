@@ -45,7 +45,7 @@ fn kinematics(scene: &Scene, problem: &ContactProblem, ev: &Evaluation) -> Optio
         return None;
     }
     let mut msg = format!(
-        "the wheel turned by φ = {phi:.3e} rad, which moves its contact points by φR = {arc:.3e}, {:.1} contact \
+        "the wheel turned by φ = {phi:.3e} rad, which moves its contact points by φR = {arc:.3e}, {:.2} contact \
          half-widths (a ≈ {a:.3e}); the linearised kinematics hold only for φR ≤ {ROTATION_ARC_MAX}a (they tilt the \
          gaps by φx where a round wheel turning about its centre changes none, and keep the undeformed lever arms of \
          the moment), so this answer is not the wheel's",
