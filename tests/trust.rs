@@ -485,3 +485,25 @@ fn run_csv_writes_the_nodal_table_and_progress_stays_off_stderr_when_it_is_not_a
     let o = bin().arg("--quiet").arg("run").arg(&scene).args(["--solver", "lemke"]).output().unwrap();
     assert_eq!(o.status.code(), Some(0));
 }
+
+#[test]
+fn item3_report_refuses_two_scenes_with_one_name_before_running() {
+    let dir = tempfile::tempdir().unwrap();
+    let scenes = dir.path().join("reference/scenes");
+    std::fs::create_dir_all(&scenes).unwrap();
+    write(&scenes, "a.toml", &steel("same", "1e-3"));
+    write(&scenes, "b.toml", &steel("same", "1e-3"));
+    let out = dir.path().join("out");
+    let o = bin()
+        .arg("report")
+        .arg("--reference")
+        .arg(dir.path().join("reference"))
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    let (_, err) = text(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("a.toml") && err.contains("b.toml") && err.contains("unique"), "{err}");
+    assert!(!out.join("runs").exists());
+}
