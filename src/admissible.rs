@@ -9,7 +9,7 @@
 //! (the equilibrium rows of [`crate::formulation::RigidDof`]: 1ᵀf = P, 1ᵀh = Q, xᵀf − yᵀh = M). So when this
 //! LP has no solution, no static state exists, and Farkas' lemma gives the proof: multipliers δ_d, one per
 //! equilibrium row — a *virtual rigid motion* of the support (approach, shift, rotation) — such that every node's
-//! virtual motion (a_i, b_i) = Σ_d δ_d (row_n,d[i], row_t,d[i]) lies in the dual friction cone a_i ≥ μ|b_i| (every
+//! virtual motion (a_i, b_i) = Σ_d δ_d (row_n,d(i), row_t,d(i)) lies in the dual friction cone a_i ≥ μ|b_i| (every
 //! admissible contact force does non-negative work on it) while the prescribed loads do negative work, Σ_d L_d δ_d
 //! < 0. clarabel finds the certificate; [`admissibility`] re-checks it in its own arithmetic
 //! ([`crate::tolerances::FARKAS_MARGIN`]) before calling the problem infeasible.

@@ -46,7 +46,7 @@ impl Status {
         }
     }
 
-    /// Every status, in the order of the README's table.
+    /// Every status: `solved`, then the failures of the solve, then the answers that are not the wheel's.
     pub const ALL: [Status; 7] = [
         Status::Solved,
         Status::Infeasible,
