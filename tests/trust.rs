@@ -293,6 +293,8 @@ fn item4_a_free_wheel_under_a_tangential_load_is_never_solved() {
     let run = &run_scene(&s, &p).unwrap().runs[0];
     assert_eq!(run.status, Status::Infeasible, "{}", run.message);
     assert!(run.message.contains("Farkas") && run.message.contains("pressure centre"), "{}", run.message);
+    // Lemke's own words are kept, naming the variable as the LCP does (issue: "entering Z(Z(123))").
+    assert!(run.message.contains("entering z[") && !run.message.contains("Z("), "{}", run.message);
     let built = rollbem::source::build(&s, rollbem::run::blocks_for(&s)).unwrap();
     let problem = rollbem::run::build_problem(&s, &built.flex, &p).unwrap();
     let zone = 0.46 * 0.5f64.to_radians().sin();
