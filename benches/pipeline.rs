@@ -10,6 +10,12 @@
 //! - `formulation_and_normtang/{frictional_lcp,pgs,normtang_qp}/n`: building the frictional LCP, and the two
 //!   NORM-TANG solvers, with n contact nodes.
 //!
+//! - `scale/active_set_solve/3300` and `scale/condensation/3300`: the issue-14 size, a frictional LCP of 9904
+//!   unknowns (the Cattaneo wheel with coupling on and 3300 contact elements, BEM system 6762×6762): the active-set
+//!   solve alone (target under 10 s) and the condensation (one LU of the BEM system and 6603 solves,
+//!   ≈ 8.1e11 flops), both with faer's parallelism on. Each sample takes seconds: run it on its own
+//!   (`cargo bench --bench pipeline -- scale`).
+//!
 //! Run one group with e.g. `cargo bench --bench pipeline -- assembly --quick`.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
@@ -183,6 +189,30 @@ fn formulation_and_normtang(c: &mut Criterion) {
     g.finish();
 }
 
+/// The issue-14 size: 3300 contact nodes on the finite wheel (9904 LCP unknowns).
+fn scale(c: &mut Criterion) {
+    use rollbem::solvers::active_set::ActiveSet;
+    use rollbem::solvers::{Solver, Status};
+    faer::set_global_parallelism(faer::Par::rayon(0));
+    let mut g = c.benchmark_group("scale");
+    g.sample_size(10);
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/scenes/cattaneo-decoupled.toml");
+    let mut s = Scene::from_file(&path).unwrap();
+    s.contact.coupling = true;
+    s.mesh.contact_elements = 3300;
+    let model = Model::new(&s);
+    g.bench_function(BenchmarkId::new("condensation", 3300), |b| {
+        b.iter(|| black_box(condense(&model, Blocks::All).unwrap()))
+    });
+    let (flex, _, _) = condense(&model, Blocks::All).unwrap();
+    let prob = build_problem(&s, &flex, Path::new("bench")).unwrap();
+    let solver = ActiveSet { settings: Default::default() };
+    let first = solver.solve(&prob);
+    assert_eq!(first.status, Status::Solved, "{}", first.message);
+    g.bench_with_input(BenchmarkId::new("active_set_solve", 3300), &prob, |b, p| b.iter(|| black_box(solver.solve(p))));
+    g.finish();
+}
+
 criterion_group!(
     benches,
     end_to_end,
@@ -190,6 +220,7 @@ criterion_group!(
     condensation,
     frictionless_solve,
     lemke_frictional,
-    formulation_and_normtang
+    formulation_and_normtang,
+    scale
 );
 criterion_main!(benches);

@@ -5,7 +5,7 @@
 
 use crate::hertz::Hertz;
 use crate::post::NodeResult;
-use crate::results::{Check, SolverRun};
+use crate::results::{Check, CheckKind, SolverRun};
 use crate::scene::{Dof, ElementKind, Scene};
 use crate::tolerances as tol;
 
@@ -42,7 +42,123 @@ pub fn compare(a: &SolverRun, b: &SolverRun, mu: f64) -> Comparison {
 
 fn check(name: String, measured: f64, reference: f64, tolerance: f64) -> Check {
     let error = if reference != 0.0 { (measured - reference).abs() / reference.abs() } else { measured.abs() };
-    Check { name, measured, reference, error, tolerance, pass: error <= tolerance }
+    figure(name, measured, reference, error, tolerance, error <= tolerance)
+}
+
+/// A figure against a reference (the numbers mean what they say).
+fn figure(name: String, measured: f64, reference: f64, error: f64, tolerance: f64, pass: bool) -> Check {
+    Check { name, measured, reference, error, tolerance, pass, kind: CheckKind::Figure, note: None }
+}
+
+/// A verdict without a figure: measured/error 0 when it passes, 1 when it fails; `note` says what was found.
+fn verdict(name: String, pass: bool, note: Option<String>) -> Check {
+    let e = if pass { 0.0 } else { 1.0 };
+    Check { name, measured: e, reference: 0.0, error: e, tolerance: 0.0, pass, kind: CheckKind::Verdict, note }
+}
+
+/// A reference that does not apply to this run: it passes, and the note says why.
+fn not_applicable(name: String, why: String) -> Check {
+    Check {
+        name,
+        measured: 0.0,
+        reference: 0.0,
+        error: 0.0,
+        tolerance: 0.0,
+        pass: true,
+        kind: CheckKind::NotApplicable,
+        note: Some(why),
+    }
+}
+
+/// A count that may be fractional (quadratic elements: nodes / 3), shown with at most three decimals.
+fn round3(v: f64) -> String {
+    let t = format!("{v:.3}");
+    t.trim_end_matches('0').trim_end_matches('.').to_string()
+}
+
+/// Contact nodes per element of a family (nodes in contact / this = elements across the contact).
+pub fn nodes_per_element(element: ElementKind) -> f64 {
+    match element {
+        ElementKind::Constant => 1.0,
+        ElementKind::Quadratic => 3.0,
+    }
+}
+
+/// The resolution check of a run with a loaded contact: at least `checks.contact_elements` (default
+/// [`tol::MIN_CONTACT_ELEMENTS`]) elements across it. `None` when nothing is in contact.
+pub fn resolution_check(scene: &Scene, element: ElementKind, element_length: f64, r: &SolverRun) -> Option<Check> {
+    let contact = r.contact.as_ref().filter(|c| c.nodes_contact > 0)?;
+    let across = contact.nodes_contact as f64 / nodes_per_element(element);
+    let min = scene.checks.contact_elements.unwrap_or(tol::MIN_CONTACT_ELEMENTS);
+    let pass = across >= min;
+    let mut c = figure(
+        format!("{}: elements across the contact (at least)", r.solver),
+        across,
+        min,
+        (min - across).max(0.0),
+        0.0,
+        pass,
+    );
+    if !pass {
+        let p = r.resultants.map_or(0.0, |x| x.normal);
+        let a = crate::references::hertz_at(scene, p).half_width;
+        let needed = (scene.mesh.contact_elements as f64 * element_length * min / (2.0 * a)).ceil();
+        c.note = Some(format!(
+            "the contact spans {} element(s) ({} loaded node(s)); at least {min} are needed for its width and \
+             pressures to mean anything: refine the contact mesh (about contact_elements ≥ {needed:.0} for Hertz's \
+             width 2a = {:.3e} at P = {p:.4e}) or narrow the candidate zone",
+            round3(across),
+            contact.nodes_contact,
+            2.0 * a
+        ));
+    }
+    Some(c)
+}
+
+/// Hertz's a and p0 for a run of a frictionless scene: figures when the reference applies and the elliptic fit
+/// exists, a failed verdict when it applies and the fit fails, a note when the reference does not apply (too few
+/// elements across Hertz's width, or a/R beyond the half-space theory).
+fn hertz_checks(scene: &Scene, element: ElementKind, element_length: f64, r: &SolverRun, h: &Hertz) -> Vec<Check> {
+    let Some(contact) = &r.contact else { return Vec::new() };
+    let across = 2.0 * h.half_width / element_length;
+    let a_over_r = h.half_width / scene.wheel.radius;
+    let t = scene.checks.hertz.unwrap_or(match element {
+        ElementKind::Constant => tol::HERTZ_CONSTANT,
+        ElementKind::Quadratic => tol::HERTZ_QUADRATIC,
+    });
+    let name = |what: &str| format!("{}: Hertz {what}", r.solver);
+    if across < tol::HERTZ_MIN_ELEMENTS {
+        return vec![not_applicable(
+            name("a and p0 (fit)"),
+            format!(
+                "{across:.3} elements across Hertz's contact width 2a = {:.3e}; its tolerance ({t:.1e}) needs at \
+                 least {}",
+                2.0 * h.half_width,
+                tol::HERTZ_MIN_ELEMENTS
+            ),
+        )];
+    }
+    if a_over_r > tol::HERTZ_MAX_A_OVER_R {
+        return vec![not_applicable(
+            name("a and p0 (fit)"),
+            format!("a/R = {a_over_r:.3} > {}: beyond the half-space theory", tol::HERTZ_MAX_A_OVER_R),
+        )];
+    }
+    match (contact.fit_half_width, contact.fit_peak_pressure) {
+        (Some(a), Some(p0)) => vec![
+            check(name("half-width a (fit)"), a, h.half_width, t),
+            check(name("peak pressure p0 (fit)"), p0, h.peak_pressure, t),
+        ],
+        _ => vec![verdict(
+            name("a and p0 (fit)"),
+            false,
+            Some(format!(
+                "cannot be evaluated: the elliptic fit p² = p0²(1 − x²/a²) to the {} loaded node(s) failed (fewer than \
+                 two, or a pressure that is not elliptic: not a Hertz-like contact)",
+                contact.nodes_contact
+            )),
+        )],
+    }
 }
 
 /// Every check of a scene's runs. `bounds[k]` is run k's residual check bound ([`crate::solvers::residual_bounds`]),
@@ -59,48 +175,25 @@ pub fn make_checks(
     for (r, &bound) in runs.iter().zip(bounds) {
         let expected = scene.checks.status_for(r.solver.0);
         let ok = r.status == expected;
-        out.push(Check {
-            name: format!("{}: status {} (expected {})", r.solver, r.status, expected),
-            measured: if ok { 0.0 } else { 1.0 },
-            reference: 0.0,
-            error: if ok { 0.0 } else { 1.0 },
-            tolerance: 0.0,
-            pass: ok,
-        });
-        let (Some(res), Some(resultants), Some(contact)) = (&r.residuals, &r.resultants, &r.contact) else {
+        out.push(verdict(format!("{}: status {} (expected {})", r.solver, r.status, expected), ok, None));
+        let (Some(res), Some(_)) = (&r.residuals, &r.resultants) else {
             continue;
         };
         let bound = scene.checks.residual.unwrap_or(bound);
-        out.push(Check {
-            name: format!("{}: largest residual (absolute)", r.solver),
-            measured: res.max(),
-            reference: 0.0,
-            error: res.max(),
-            tolerance: bound,
-            pass: res.max() <= bound,
-        });
-        if let Dof::Load(p) = scene.drive.normal() {
-            out.push(check(
-                format!("{}: resultant P = normal_load", r.solver),
-                resultants.normal,
-                p,
-                tol::LOAD_RESULTANT,
-            ));
+        out.push(figure(
+            format!("{}: largest residual (absolute)", r.solver),
+            res.max(),
+            0.0,
+            res.max(),
+            bound,
+            res.max() <= bound,
+        ));
+        if let (Dof::Load(p), Some(f)) = (scene.drive.normal(), &r.resultants) {
+            out.push(check(format!("{}: resultant P = normal_load", r.solver), f.normal, p, tol::LOAD_RESULTANT));
         }
+        out.extend(resolution_check(scene, element, element_length, r));
         if let Some(h) = hertz {
-            let across = 2.0 * h.half_width / element_length;
-            let applies =
-                across >= tol::HERTZ_MIN_ELEMENTS && h.half_width / scene.wheel.radius <= tol::HERTZ_MAX_A_OVER_R;
-            let t = scene.checks.hertz.unwrap_or(match element {
-                ElementKind::Constant => tol::HERTZ_CONSTANT,
-                ElementKind::Quadratic => tol::HERTZ_QUADRATIC,
-            });
-            if applies {
-                if let (Some(a), Some(p0)) = (contact.fit_half_width, contact.fit_peak_pressure) {
-                    out.push(check(format!("{}: Hertz half-width a (fit)", r.solver), a, h.half_width, t));
-                    out.push(check(format!("{}: Hertz peak pressure p0 (fit)", r.solver), p0, h.peak_pressure, t));
-                }
-            }
+            out.extend(hertz_checks(scene, element, element_length, r, h));
         }
     }
     // Cattaneo–Mindlin where it applies.
@@ -111,31 +204,28 @@ pub fn make_checks(
             if let (Some(c), Some(ce), Some(err), Some(centre)) =
                 (m.cm_c_over_a, m.cm_c_over_a_exact, m.cm_c_err_elements, m.cm_centre_elements)
             {
-                out.push(Check {
-                    name: format!("{}: Cattaneo–Mindlin c/a (error in elements)", r.solver),
-                    measured: c,
-                    reference: ce,
-                    error: err.abs(),
-                    tolerance: t,
-                    pass: err.abs() <= t,
-                });
-                out.push(Check {
-                    name: format!("{}: Cattaneo–Mindlin stick-zone centre (elements)", r.solver),
-                    measured: centre,
-                    reference: 0.0,
-                    error: centre.abs(),
-                    tolerance: t,
-                    pass: centre.abs() <= t,
-                });
+                out.push(figure(
+                    format!("{}: Cattaneo–Mindlin c/a (error in elements)", r.solver),
+                    c,
+                    ce,
+                    err.abs(),
+                    t,
+                    err.abs() <= t,
+                ));
+                out.push(figure(
+                    format!("{}: Cattaneo–Mindlin stick-zone centre (elements)", r.solver),
+                    centre,
+                    0.0,
+                    centre.abs(),
+                    t,
+                    centre.abs() <= t,
+                ));
             } else {
-                out.push(Check {
-                    name: format!("{}: Cattaneo–Mindlin stick zone exists", r.solver),
-                    measured: 0.0,
-                    reference: 1.0,
-                    error: 1.0,
-                    tolerance: 0.0,
-                    pass: false,
-                });
+                out.push(verdict(
+                    format!("{}: Cattaneo–Mindlin stick zone exists", r.solver),
+                    false,
+                    Some("cannot be evaluated: no node sticks, where Cattaneo–Mindlin has a stick zone".into()),
+                ));
             }
         }
     }
@@ -152,31 +242,24 @@ pub fn make_checks(
         let a = crate::references::hertz_at(scene, r.resultants.map_or(0.0, |x| x.normal)).half_width;
         // One element of stick zone moves Q/(μP) = 1 − (c/a)² by about 2(c/a)(h/a) + (h/a)².
         let tq = t * (2.0 * ce * elem / a + (elem / a).powi(2));
-        out.push(Check {
-            name: format!("{}: Carter Q/(μP)", r.solver),
-            measured: qm,
-            reference: qe,
-            error: (qm - qe).abs(),
-            tolerance: tq,
-            pass: (qm - qe).abs() <= tq,
-        });
-        out.push(Check {
-            name: format!("{}: Carter stick-zone half-width c (error in elements)", r.solver),
-            measured: m.carter_c_over_a.unwrap_or(0.0),
-            reference: ce,
-            error: cerr.abs(),
-            tolerance: t,
-            pass: cerr.abs() <= t,
-        });
+        out.push(figure(format!("{}: Carter Q/(μP)", r.solver), qm, qe, (qm - qe).abs(), tq, (qm - qe).abs() <= tq));
+        out.push(figure(
+            format!("{}: Carter stick-zone half-width c (error in elements)", r.solver),
+            m.carter_c_over_a.unwrap_or(0.0),
+            ce,
+            cerr.abs(),
+            t,
+            cerr.abs() <= t,
+        ));
         if let Some(centre) = m.carter_centre_err_elements {
-            out.push(Check {
-                name: format!("{}: Carter stick zone at the leading edge (centre error, elements)", r.solver),
-                measured: centre,
-                reference: 0.0,
-                error: centre.abs(),
-                tolerance: t,
-                pass: centre.abs() <= t,
-            });
+            out.push(figure(
+                format!("{}: Carter stick zone at the leading edge (centre error, elements)", r.solver),
+                centre,
+                0.0,
+                centre.abs(),
+                t,
+                centre.abs() <= t,
+            ));
         }
     }
     // Solvers against each other: pressures and shears relative to the peak pressure, and active sets.
@@ -187,22 +270,23 @@ pub fn make_checks(
             let (a, b) = (solved[i], solved[j]);
             let c = compare(a, b, mu);
             let t = scene.checks.agreement.unwrap_or(tol::SOLVER_AGREEMENT);
-            out.push(Check {
-                name: format!("{} vs {}: max |Δp|, |Δq| / p_max", a.solver, b.solver),
-                measured: c.max_dtraction,
-                reference: 0.0,
-                error: c.max_dtraction,
-                tolerance: t,
-                pass: c.max_dtraction <= t,
-            });
-            out.push(Check {
-                name: format!("{} vs {}: nodes in different states (stick/slip/separated)", a.solver, b.solver),
-                measured: c.state_mismatches as f64,
-                reference: 0.0,
-                error: c.state_mismatches as f64,
-                tolerance: 0.0,
-                pass: c.state_mismatches == 0,
-            });
+            out.push(figure(
+                format!("{} vs {}: max |Δp|, |Δq| / p_max", a.solver, b.solver),
+                c.max_dtraction,
+                0.0,
+                c.max_dtraction,
+                t,
+                c.max_dtraction <= t,
+            ));
+            let mism = c.state_mismatches as f64;
+            out.push(figure(
+                format!("{} vs {}: nodes in different states", a.solver, b.solver),
+                mism,
+                0.0,
+                mism,
+                0.0,
+                c.state_mismatches == 0,
+            ));
         }
     }
     out

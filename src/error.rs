@@ -6,8 +6,8 @@ use std::path::PathBuf;
 /// Everything that stops rollbem before it can produce a result.
 #[derive(Debug, thiserror::Error)]
 pub enum Error {
-    /// A scene file could not be read.
-    #[error("cannot read scene file {path}: {source}")]
+    /// An input file (a scene, a sweep spec, an LCP file, a CSV to merge) could not be read.
+    #[error("cannot read {path}: {source}")]
     Io {
         /// The file.
         path: PathBuf,

@@ -140,7 +140,7 @@ pub fn run_history(scene: &Scene, path: &Path) -> Result<Report> {
     };
     let first = problem_at(&subs[0], &rest, &rest)?;
     let solvers = solvers_for(scene, &first, path)?;
-    let asym = normal_asymmetry(&first);
+    let asym = normal_asymmetry(&first, scene.wheel.model == crate::scene::BodyModel::HalfPlane);
     let mut steps: Vec<StepResult> = Vec::with_capacity(subs.len());
     let mut rolled = 0.0;
     for sub in &subs {
@@ -212,7 +212,7 @@ fn walk<'a>(
         });
         let size = problem.lcp_size();
         let solution = outcome.solution.clone();
-        let (mut run, ev) = evaluate_outcome(&problem, solver.name(), size, outcome, timing, refuse, rolling);
+        let (mut run, ev) = evaluate_outcome(scene, &problem, solver.name(), size, outcome, timing, refuse, rolling);
         let solved = run.status == Status::Solved;
         if let (true, Some(ev), Some(sol)) = (solved, ev, solution) {
             let sc = problem.flex.scales;

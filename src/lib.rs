@@ -35,6 +35,7 @@
 // Index loops over 2×2 blocks and matrix rows read like the formulas they implement.
 #![allow(clippy::needless_range_loop)]
 
+pub mod admissible;
 pub mod bem;
 pub mod checks;
 pub mod condition;
@@ -52,6 +53,7 @@ pub mod mesh;
 pub mod plot;
 pub mod plot_result;
 pub mod post;
+pub mod progress;
 pub mod references;
 pub mod report;
 pub mod results;
@@ -64,5 +66,6 @@ pub mod stresses;
 pub mod sweep;
 pub mod theory;
 pub mod tolerances;
+pub mod validity;
 
 pub use error::{Error, Result};

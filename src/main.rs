@@ -1,9 +1,11 @@
-//! The `rollbem` command line. Exit codes: 0 success (every check passed), 1 a check failed or a solver did not
-//! solve, 2 bad input, 3 an output file could not be written, 4 numerical failure of the BEM system.
+//! The `rollbem` command line. Exit codes: 0 success, 1 a check failed (`check`: any check, including a status
+//! other than the expected one, `solved` unless declared; `run`: a check of a scene that declares expectations in
+//! `[checks]`; `lcp solve`: not solved), 2 bad input, 3 an output file could not be written, 4 numerical failure of
+//! the BEM system. Progress goes to stderr when it is a terminal, unless `--quiet`.
 
 use clap::{Parser, Subcommand};
 use rollbem::io::write_atomic;
-use rollbem::results::Report;
+use rollbem::results::{Check, CheckKind, Report};
 use rollbem::run::run_scene;
 use rollbem::scene::Scene;
 use std::path::{Path, PathBuf};
@@ -26,6 +28,9 @@ macro_rules! say {
 struct Cli {
     #[command(subcommand)]
     cmd: Cmd,
+    /// No progress on stderr (progress is shown only when stderr is a terminal anyway).
+    #[arg(long, global = true)]
+    quiet: bool,
 }
 
 #[derive(Subcommand)]
@@ -48,6 +53,10 @@ enum Cmd {
         /// resultants, rigid motion, stick zone, node counts, dissipated energy, residual and solve time.
         #[arg(long)]
         path_csv: Option<PathBuf>,
+        /// Write the nodal table as CSV here (one scene only): one row per contact node and solver with x, y,
+        /// pressure, shear, u_x, u_y, gap, slip, state and slip_velocity (a run that did not solve has no rows).
+        #[arg(long)]
+        csv: Option<PathBuf>,
     },
     /// List the registered solvers.
     Solvers,
@@ -111,7 +120,7 @@ enum LcpCmd {
     Export {
         /// Scene file (TOML).
         scene: PathBuf,
-        /// Output file (default: the scene's name with `.lcp.dat`).
+        /// Output file (default: next to the scene file, with its extension replaced by `.lcp.dat`).
         #[arg(long)]
         out: Option<PathBuf>,
     },
@@ -179,7 +188,7 @@ fn lcp_cmd(cmd: LcpCmd) -> rollbem::Result<i32> {
                 });
                 write_atomic(&path, &serde_json::to_string_pretty(&doc).expect("json"))?;
             }
-            Ok(if out.status == rollbem::solvers::Status::Solved { 0 } else { 1 })
+            Ok(out.status.exit_code())
         }
     }
 }
@@ -192,6 +201,8 @@ fn parse_solver(s: &str) -> Result<String, String> {
     }
 }
 
+/// The `run` table of one scene. Its two time columns: `solve [s]`, the solver alone (what the solvers are compared
+/// by), and `total [s]`, the whole pipeline of that run (assembly, condensation, formulation and solve).
 fn print_report(r: &Report) {
     say!("scene {} — {}", r.scene.name, r.scene.description);
     say!(
@@ -211,7 +222,7 @@ fn print_report(r: &Report) {
         d.tangential_condition.map(|k| format!(", κ₁(K_TT) ≈ {k:.2e}")).unwrap_or_default(),
         d.flexibility_asymmetry
     );
-    for w in &d.warnings {
+    for w in d.warnings.iter().cloned().chain(run_warnings(r)) {
         say!("WARNING: {w}");
     }
     if let Some(h) = &r.references.hertz {
@@ -219,7 +230,7 @@ fn print_report(r: &Report) {
     }
     let frictional = r.effects.iter().any(|e| e == "friction");
     say!(
-        "{:<11} {:<16} {:>5} {:>9} {:>9} {:>12} {:>12} {:>12} {:>20} {:>12} {:>9}",
+        "{:<11} {:<23} {:>5} {:>9} {:>9} {:>12} {:>12} {:>12} {:>20} {:>12} {:>9} {:>9}",
         "solver",
         "status",
         "size",
@@ -230,6 +241,7 @@ fn print_report(r: &Report) {
         if frictional { "peak p" } else { "p0 (fit)" },
         if frictional { "stick zone" } else { "contact" },
         "d_N",
+        "solve [s]",
         "total [s]"
     );
     let opt = |v: Option<f64>| v.map(|v| format!("{v:.5e}")).unwrap_or_else(|| "-".into());
@@ -238,7 +250,7 @@ fn print_report(r: &Report) {
         let (Some(res), Some(f), Some(c), Some(rb)) = (&run.residuals, &run.resultants, &run.contact, &run.rigid_body)
         else {
             say!(
-                "{:<11} {:<16} {:>5} {:>9} {:>9} {:>12} {:>12} {:>12} {:>20} {:>12} {:>9.4}",
+                "{:<11} {:<23} {:>5} {:>9} {:>9} {:>12} {:>12} {:>12} {:>20} {:>12} {:>9.4} {:>9.4}",
                 run.solver,
                 run.status.name(),
                 run.problem_size,
@@ -249,6 +261,7 @@ fn print_report(r: &Report) {
                 "-",
                 "-",
                 "-",
+                run.timing_s.solve,
                 run.timing_s.total
             );
             say!("            {}", run.message);
@@ -259,7 +272,7 @@ fn print_report(r: &Report) {
             _ => "none".into(),
         };
         say!(
-            "{:<11} {:<16} {:>5} {:>9} {:>9.2e} {:>12.5e} {:>12} {:>12} {:>20} {:>12.5e} {:>9.4}",
+            "{:<11} {:<23} {:>5} {:>9} {:>9.2e} {:>12.5e} {:>12} {:>12} {:>20} {:>12.5e} {:>9.4} {:>9.4}",
             run.solver,
             run.status.name(),
             run.problem_size,
@@ -270,6 +283,7 @@ fn print_report(r: &Report) {
             if frictional { format!("{:.5e}", c.peak_pressure) } else { opt(c.fit_peak_pressure) },
             if frictional { range(c.stick_x_min, c.stick_x_max) } else { range(c.x_min, c.x_max) },
             rb.normal,
+            run.timing_s.solve,
             run.timing_s.total
         );
         if run.status != rollbem::solvers::Status::Solved || run.message.contains("sliding limit") {
@@ -282,15 +296,7 @@ fn print_report(r: &Report) {
     print_stresses(r);
     say!("checks:");
     for c in &r.checks {
-        say!(
-            "  [{}] {:<48} measured {:>12.6e}  reference {:>12.6e}  error {:>9.2e}  tol {:>8.1e}",
-            if c.pass { "pass" } else { "FAIL" },
-            c.name,
-            c.measured,
-            c.reference,
-            c.error,
-            c.tolerance
-        );
+        say!("  {}", check_line(c));
     }
 }
 
@@ -336,6 +342,40 @@ fn print_stresses(r: &Report) {
     }
 }
 
+/// One check as a line of the `run` table: a figure with its numbers, a verdict or a reference that does not apply
+/// with what was found.
+fn check_line(c: &Check) -> String {
+    let mark = match (c.kind, c.pass) {
+        (CheckKind::NotApplicable, _) => "n/a ",
+        (_, true) => "pass",
+        (_, false) => "FAIL",
+    };
+    let note = c.note.as_ref().map(|n| format!(": {n}")).unwrap_or_default();
+    match c.kind {
+        CheckKind::Figure => format!(
+            "[{mark}] {:<48} measured {:>12.6e}  reference {:>12.6e}  error {:>9.2e}  tol {:>8.1e}{note}",
+            c.name, c.measured, c.reference, c.error, c.tolerance
+        ),
+        CheckKind::Verdict | CheckKind::NotApplicable => format!("[{mark}] {}{note}", c.name),
+    }
+}
+
+/// The run-level warnings of a report: a contact with too few elements across it (a failed check in `check`, a
+/// warning in `run`), one line per distinct finding with the solvers it concerns.
+fn run_warnings(r: &Report) -> Vec<String> {
+    let mut found: Vec<(String, Vec<&str>)> = Vec::new();
+    for run in &r.runs {
+        let c = rollbem::checks::resolution_check(&r.scene, r.mesh.element, r.mesh.contact_element_length, run);
+        if let Some(note) = c.filter(|c| !c.pass).and_then(|c| c.note) {
+            match found.iter_mut().find(|(n, _)| *n == note) {
+                Some((_, solvers)) => solvers.push(run.solver.0),
+                None => found.push((note, vec![run.solver.0])),
+            }
+        }
+    }
+    found.into_iter().map(|(note, solvers)| format!("{}: {note}", solvers.join(", "))).collect()
+}
+
 /// A load path's summary: per solver, how far it got, the dissipated energy and its hardest substep.
 fn print_path(r: &Report) {
     let total = r.steps.len();
@@ -357,13 +397,21 @@ fn print_path(r: &Report) {
     }
 }
 
-fn run_one(scene: &Path, json: Option<&Path>, path_csv: Option<&Path>, solvers: &[String]) -> rollbem::Result<Report> {
+/// Where `run` writes a scene's outputs (each written atomically, only when the run completes).
+#[derive(Default)]
+struct Outputs<'a> {
+    json: Option<&'a Path>,
+    path_csv: Option<&'a Path>,
+    csv: Option<&'a Path>,
+}
+
+fn run_one(scene: &Path, out: &Outputs, solvers: &[String]) -> rollbem::Result<Report> {
     let mut s = Scene::from_file(scene)?;
     if !solvers.is_empty() {
         s.solvers.use_ = solvers.to_vec();
     }
     let mut report = run_scene(&s, scene)?;
-    if let Some(path) = json {
+    if let Some(path) = out.json {
         // Large stress fields go to CSV files beside the document, written first: the document names them.
         for (file, text) in report.spill_stress_fields(path) {
             write_atomic(&file, &text)?;
@@ -371,44 +419,76 @@ fn run_one(scene: &Path, json: Option<&Path>, path_csv: Option<&Path>, solvers: 
         let text = serde_json::to_string_pretty(&report).expect("report serialises");
         write_atomic(path, &text)?;
     }
-    if let Some(path) = path_csv {
+    if let Some(path) = out.path_csv {
         write_atomic(path, &rollbem::history::path_csv(&report))?;
+    }
+    if let Some(path) = out.csv {
+        write_atomic(path, &report.nodes_csv())?;
     }
     Ok(report)
 }
 
+/// Read and validate every scene of a command before any runs, refusing unsafe or repeated names (they name the
+/// output files); the error to print and exit with otherwise.
+fn load_all(scenes: &[PathBuf]) -> Result<Vec<Scene>, rollbem::Error> {
+    let loaded = scenes.iter().map(|p| Scene::from_file(p)).collect::<rollbem::Result<Vec<Scene>>>()?;
+    rollbem::scene::unique_names(scenes.iter().map(PathBuf::as_path).zip(&loaded))?;
+    Ok(loaded)
+}
+
+/// `report` writes `runs/NAME.json` per scene of `REFERENCE/scenes/`: refuse two scenes with one name before
+/// anything runs (a folder that cannot be read is left to the report to diagnose).
+fn report_scene_names(reference: &Path) -> Result<(), rollbem::Error> {
+    let Ok(entries) = std::fs::read_dir(reference.join("scenes")) else { return Ok(()) };
+    let mut paths: Vec<PathBuf> = entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    paths.sort();
+    load_all(&paths).map(|_| ())
+}
+
+/// Whether a scene file declares expectations (a `[checks]` table): only then does `run` exit 1 on a failed check.
+fn declares_checks(path: &Path) -> bool {
+    std::fs::read_to_string(path)
+        .ok()
+        .and_then(|t| toml::from_str::<toml::Table>(&t).ok())
+        .is_some_and(|t| t.contains_key("checks"))
+}
+
 /// `rollbem check`: one table of checks per scene, a closing count line, exit 1 on any failure.
 fn check(scenes: &[PathBuf], solvers: &[String]) -> ExitCode {
-    for p in scenes {
-        if let Err(e) = Scene::from_file(p) {
-            eprintln!("error: {e}");
-            return ExitCode::from(e.exit_code() as u8);
-        }
+    if let Err(e) = load_all(scenes) {
+        return fail(&e);
     }
-    let (mut passed, mut failed) = (0usize, 0usize);
+    let (mut passed, mut failed, mut na) = (0usize, 0usize, 0usize);
     let mut code = 0u8;
     for p in scenes {
-        match run_one(p, None, None, solvers) {
+        match run_one(p, &Outputs::default(), solvers) {
             Ok(r) => {
                 let bad = r.checks.iter().filter(|c| !c.pass).count();
+                let skipped = r.checks.iter().filter(|c| c.kind == CheckKind::NotApplicable).count();
                 say!(
-                    "{} {} ({} checks, {} failed; solvers: {})",
+                    "{} {} ({} checks, {} failed, {} not applicable; solvers: {})",
                     if bad == 0 { "PASS" } else { "FAIL" },
                     r.scene.name,
                     r.checks.len(),
                     bad,
+                    skipped,
                     r.runs.iter().map(|x| format!("{} {}", x.solver, x.status)).collect::<Vec<_>>().join(", ")
                 );
-                for c in &r.checks {
-                    if !c.pass {
-                        say!(
-                            "    FAIL {}: measured {:.6e}, reference {:.6e}, error {:.3e} > tolerance {:.1e}",
+                for c in r.checks.iter().filter(|c| !c.pass) {
+                    let note = c.note.as_ref().map(|n| format!(": {n}")).unwrap_or_default();
+                    match c.kind {
+                        CheckKind::Figure => say!(
+                            "    FAIL {}: measured {:.6e}, reference {:.6e}, error {:.3e} > tolerance {:.1e}{note}",
                             c.name,
                             c.measured,
                             c.reference,
                             c.error,
                             c.tolerance
-                        );
+                        ),
+                        _ => say!("    FAIL {}{note}", c.name),
                     }
                 }
                 for run in
@@ -416,8 +496,9 @@ fn check(scenes: &[PathBuf], solvers: &[String]) -> ExitCode {
                 {
                     say!("    {}: {}", run.solver, run.message);
                 }
-                passed += r.checks.len() - bad;
+                passed += r.checks.len() - bad - skipped;
                 failed += bad;
+                na += skipped;
                 if bad > 0 {
                     code = code.max(1);
                 }
@@ -429,7 +510,60 @@ fn check(scenes: &[PathBuf], solvers: &[String]) -> ExitCode {
             }
         }
     }
-    say!("checks: {passed} passed, {failed} failed");
+    say!("checks: {passed} passed, {failed} failed, {na} not applicable");
+    ExitCode::from(code)
+}
+
+/// `rollbem run`: validate every scene (and the options that take one scene) before running any, then run and print
+/// each; exit 1 only when a scene that declares expectations fails a check.
+fn run(
+    scenes: &[PathBuf],
+    json: Option<PathBuf>,
+    out_dir: Option<PathBuf>,
+    solvers: &[String],
+    csvs: [Option<PathBuf>; 2],
+) -> ExitCode {
+    let [path_csv, csv] = csvs;
+    for (flag, given) in [("--json", json.is_some()), ("--path-csv", path_csv.is_some()), ("--csv", csv.is_some())] {
+        if given && scenes.len() > 1 {
+            eprintln!("error: {flag} takes one scene; use --out-dir for the JSON of several");
+            return ExitCode::from(2);
+        }
+    }
+    let loaded = match load_all(scenes) {
+        Ok(l) => l,
+        Err(e) => return fail(&e),
+    };
+    if let (Some(_), Some((p, _))) = (&path_csv, scenes.iter().zip(&loaded).find(|(_, s)| s.steps.is_empty())) {
+        eprintln!("error: --path-csv: scene {} has no load path (`[[steps]]`)", p.display());
+        return ExitCode::from(2);
+    }
+    if let Some(dir) = &out_dir {
+        if let Err(e) = std::fs::create_dir_all(dir) {
+            eprintln!("error: cannot create {}: {e}", dir.display());
+            return ExitCode::from(3);
+        }
+    }
+    let mut code = 0u8;
+    for (i, (p, s)) in scenes.iter().zip(&loaded).enumerate() {
+        let target = json.clone().or_else(|| out_dir.as_ref().map(|d| d.join(format!("{}.json", s.name))));
+        if i > 0 {
+            say!("");
+        }
+        let out = Outputs { json: target.as_deref(), path_csv: path_csv.as_deref(), csv: csv.as_deref() };
+        match run_one(p, &out, solvers) {
+            Ok(report) => {
+                print_report(&report);
+                if declares_checks(p) && !report.all_pass() {
+                    code = code.max(1);
+                }
+            }
+            Err(e) => {
+                eprintln!("error: {e}");
+                code = code.max(e.exit_code() as u8);
+            }
+        }
+    }
     ExitCode::from(code)
 }
 
@@ -441,6 +575,7 @@ fn fail(e: &rollbem::Error) -> ExitCode {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    rollbem::progress::enable(!cli.quiet);
     match cli.cmd {
         Cmd::Check { scenes, solvers } => check(&scenes, &solvers),
         Cmd::Plot { result, out } => match rollbem::plot_result::plot_result(&result, out.as_deref()) {
@@ -470,9 +605,16 @@ fn main() -> ExitCode {
                 Some(s) => spec.with_extension(format!("shard-{}-of-{}.csv", s.k, s.n)),
                 None => spec.with_extension("csv"),
             });
-            match rollbem::sweep::run_sweep(&spec, shard, &out, true) {
+            match rollbem::sweep::run_sweep(&spec, shard, &out, !cli.quiet) {
                 Ok(rows) => {
                     say!("{rows} rows written to {}", out.display());
+                    let errors = rollbem::sweep::error_rows_in(&out);
+                    if errors > 0 {
+                        eprintln!(
+                            "warning: {errors} of the {rows} rows have status `error` (a variant that could not run, \
+                             e.g. a solver that does not apply to it): see their `message` column"
+                        );
+                    }
                     ExitCode::SUCCESS
                 }
                 Err(e) => fail(&e),
@@ -486,7 +628,10 @@ fn main() -> ExitCode {
             Err(e) => fail(&e),
         },
         Cmd::Report { reference, out } => {
-            let opts = rollbem::report::ReportOptions { reference, out, progress: true };
+            if let Err(e) = report_scene_names(&reference) {
+                return fail(&e);
+            }
+            let opts = rollbem::report::ReportOptions { reference, out, progress: !cli.quiet };
             match rollbem::report::generate(&opts) {
                 Ok(path) => {
                     say!("report written: {}", path.display());
@@ -495,58 +640,8 @@ fn main() -> ExitCode {
                 Err(e) => fail(&e),
             }
         }
-        Cmd::Run { scenes, json, out_dir, solvers, path_csv } => {
-            if json.is_some() && scenes.len() > 1 {
-                eprintln!("error: --json takes one scene; use --out-dir for several");
-                return ExitCode::from(2);
-            }
-            if path_csv.is_some() && scenes.len() > 1 {
-                eprintln!("error: --path-csv takes one scene");
-                return ExitCode::from(2);
-            }
-            // Validate every scene before running any, so bad input writes nothing.
-            for p in &scenes {
-                match Scene::from_file(p) {
-                    Err(e) => {
-                        eprintln!("error: {e}");
-                        return ExitCode::from(e.exit_code() as u8);
-                    }
-                    Ok(s) if path_csv.is_some() && s.steps.is_empty() => {
-                        eprintln!("error: --path-csv: scene {} has no load path (`[[steps]]`)", p.display());
-                        return ExitCode::from(2);
-                    }
-                    Ok(_) => {}
-                }
-            }
-            if let Some(dir) = &out_dir {
-                if let Err(e) = std::fs::create_dir_all(dir) {
-                    eprintln!("error: cannot create {}: {e}", dir.display());
-                    return ExitCode::from(3);
-                }
-            }
-            let mut code = 0u8;
-            for (i, p) in scenes.iter().enumerate() {
-                let target = json.clone().or_else(|| {
-                    let name = Scene::from_file(p).map(|s| s.name).unwrap_or_default();
-                    out_dir.as_ref().map(|d| d.join(format!("{name}.json")))
-                });
-                if i > 0 {
-                    say!("");
-                }
-                match run_one(p, target.as_deref(), path_csv.as_deref(), &solvers) {
-                    Ok(report) => {
-                        print_report(&report);
-                        if !report.all_pass() {
-                            code = code.max(1);
-                        }
-                    }
-                    Err(e) => {
-                        eprintln!("error: {e}");
-                        code = code.max(e.exit_code() as u8);
-                    }
-                }
-            }
-            ExitCode::from(code)
+        Cmd::Run { scenes, json, out_dir, solvers, path_csv, csv } => {
+            run(&scenes, json, out_dir, &solvers, [path_csv, csv])
         }
     }
 }

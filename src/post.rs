@@ -6,8 +6,8 @@
 //! (no penetration, no tension, complementarity of gap and pressure, Coulomb's law on the slip, equilibrium with the
 //! drive loads). Values are returned in the user's units.
 //!
-//! Node states: `separated` when the pressure is zero, else `slip` when |q| = μp (always the case without
-//! friction, where q = μp = 0: the node slides freely), else `stick`.
+//! Node states: `separated` when the pressure is zero; without friction `contact` (no friction law, so neither
+//! stick nor slip); with friction `slip` when |q| = μp, else `stick`.
 
 use crate::flexibility::ModeKind;
 use crate::formulation::{ContactProblem, Dof, Solution};
@@ -21,8 +21,10 @@ use serde::Serialize;
 pub enum NodeState {
     /// In contact, |q| < μp.
     Stick,
-    /// In contact, |q| = μp (every contact node when μ = 0).
+    /// In contact, |q| = μp (μ > 0).
     Slip,
+    /// In contact without friction (μ = 0): the contact law has no stick or slip.
+    Contact,
     /// Not in contact: p = 0.
     Separated,
 }
@@ -46,7 +48,7 @@ pub struct NodeResult {
     pub gap: f64,
     /// Slip of the wheel relative to the flat (u_x at a contact node; null when separated or not computed).
     pub slip: Option<f64>,
-    /// Stick / slip / separated.
+    /// Stick / slip / contact (frictionless) / separated.
     pub state: NodeState,
     /// Slip velocity s_t* (seed eq. 12), null unless the scene has `[rolling]`.
     pub slip_velocity: Option<f64>,
@@ -100,7 +102,7 @@ pub struct ContactSummary {
     pub nodes_contact: usize,
     /// Number of sticking nodes.
     pub nodes_stick: usize,
-    /// Number of slipping nodes.
+    /// Number of slipping nodes (0 without friction, where contact nodes neither stick nor slip).
     pub nodes_slip: usize,
 }
 
@@ -273,6 +275,8 @@ pub fn evaluate(problem: &ContactProblem, sol: &Solution, rolling: Option<Rollin
     let state = |i: usize| {
         if !in_contact[i] {
             NodeState::Separated
+        } else if mu == 0.0 {
+            NodeState::Contact
         } else if h.is_some() && k.q[i].abs() < mu * k.p[i] * (1.0 - STICK_MARGIN) {
             NodeState::Stick
         } else {
@@ -490,6 +494,6 @@ fn summary(nodes: &[NodeResult], peak_pressure: f64, pressure_scale: f64) -> Con
         stick_x_max: sticking.last().map(|nd| nd.x),
         nodes_contact: loaded.len(),
         nodes_stick: sticking.len(),
-        nodes_slip: loaded.len() - sticking.len(),
+        nodes_slip: nodes.iter().filter(|nd| nd.state == NodeState::Slip).count(),
     }
 }

@@ -172,6 +172,19 @@ pub struct References {
     pub dundurs_beta: f64,
 }
 
+/// What a check compares.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CheckKind {
+    /// A measured figure against a reference within a tolerance (the numbers mean what they say).
+    Figure,
+    /// A verdict without a figure (a status against the expected one, a reference that could not be evaluated):
+    /// `measured`, `reference` and `tolerance` are 0/1 placeholders and `note` says what was found.
+    Verdict,
+    /// A reference that does not apply to this scene or run (it passes; `note` says why it does not apply).
+    NotApplicable,
+}
+
 /// One check: a measured figure against a reference.
 #[derive(Debug, Clone, Serialize)]
 pub struct Check {
@@ -185,8 +198,14 @@ pub struct Check {
     pub error: f64,
     /// Tolerance (from [`crate::tolerances`]).
     pub tolerance: f64,
-    /// error ≤ tolerance.
+    /// error ≤ tolerance (for a verdict: the verdict; a reference that does not apply passes).
     pub pass: bool,
+    /// Whether this is a figure, a verdict or a reference that does not apply.
+    pub kind: CheckKind,
+    /// What was found, for a verdict or a reference that could not be evaluated or does not apply; what to do about
+    /// a failed figure where there is advice (null otherwise).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
 }
 
 /// The JSON document of one scene run (`DESIGN.md`, "Result files").
@@ -242,5 +261,38 @@ impl Report {
             }
         }
         out
+    }
+
+    /// The nodal table as CSV (`rollbem run --csv`): one row per contact node and solver run that has nodes (a run
+    /// that did not solve has none), with the keys of `runs[].nodes[]` in the user's units; empty cells where a
+    /// value is null (u_x without the tangential problem, the slip of a separated node, the slip velocity without
+    /// rolling).
+    pub fn nodes_csv(&self) -> String {
+        let mut w = csv::Writer::from_writer(Vec::new());
+        let head =
+            ["solver", "node", "x", "y", "pressure", "shear", "u_x", "u_y", "gap", "slip", "state", "slip_velocity"];
+        w.write_record(head).expect("CSV into memory");
+        let opt = |v: Option<f64>| v.map(|v| format!("{v:e}")).unwrap_or_default();
+        for run in &self.runs {
+            for (i, n) in run.nodes.iter().enumerate() {
+                let state = serde_json::to_value(n.state).expect("a state serialises");
+                w.write_record([
+                    run.solver.0.to_string(),
+                    i.to_string(),
+                    format!("{:e}", n.x),
+                    format!("{:e}", n.y),
+                    format!("{:e}", n.pressure),
+                    format!("{:e}", n.shear),
+                    opt(n.u_x),
+                    format!("{:e}", n.u_y),
+                    format!("{:e}", n.gap),
+                    opt(n.slip),
+                    state.as_str().unwrap_or_default().to_string(),
+                    opt(n.slip_velocity),
+                ])
+                .expect("CSV into memory");
+            }
+        }
+        String::from_utf8(w.into_inner().expect("CSV into memory")).expect("CSV of UTF-8 cells is UTF-8")
     }
 }

@@ -12,7 +12,7 @@ use crate::formulation::{ContactProblem, DriveIssue, Lcp, ProblemKind, SlipOpera
 use crate::hertz::Hertz;
 use crate::post::{evaluate, RollingPost};
 use crate::results::{MeshInfo, References, Report, SolverName, SolverRun, Timing};
-use crate::scene::{Dof, RollingMode, Scene};
+use crate::scene::{BodyModel, Dof, RollingMode, Scene};
 use crate::solvers::{Outcome, Solver, Status, Work, REGISTRY};
 use crate::source::{self, Blocks};
 use std::path::Path;
@@ -183,12 +183,20 @@ pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
             total: built.timing.assembly + built.timing.condensation + formulation + solve_time,
         };
         let (check_bound, refuse_bound) = crate::solvers::residual_bounds(solver.as_ref());
-        let mut run = finish_run(&problem, solver.name(), problem_size, outcome, timing, refuse_bound, rolling);
+        let (mut run, _) =
+            evaluate_outcome(scene, &problem, solver.name(), problem_size, outcome, timing, refuse_bound, rolling);
         add_stresses(&mut run, stresses.as_ref());
         runs.push(run);
         bounds.push(check_bound);
     }
-    Ok(assemble_report(scene, &built, normal_asymmetry(&problem), runs, &bounds, Vec::new()))
+    Ok(assemble_report(
+        scene,
+        &built,
+        normal_asymmetry(&problem, scene.wheel.model == BodyModel::HalfPlane),
+        runs,
+        &bounds,
+        Vec::new(),
+    ))
 }
 
 /// Evaluate a solved run's subsurface stresses when the scene asks for them (`[stresses]`).
@@ -212,8 +220,10 @@ pub fn lcp_time(solver: &dyn Solver, problem: &ContactProblem) -> f64 {
 /// a problem beyond gross sliding is `infeasible` without a solve.
 pub fn solve_timed(solver: &dyn Solver, problem: &ContactProblem) -> (Outcome, f64) {
     if solver.uses_lcp() && !matches!(problem.kind, ProblemKind::GrossSliding { .. }) {
+        let _stage = crate::progress::stage(|| format!("building the LCP ({} unknowns)", problem.lcp_size()));
         problem.lcp();
     }
+    let _stage = crate::progress::stage(|| format!("{}: solving ({} unknowns)", solver.name(), problem.lcp_size()));
     let t0 = Instant::now();
     let outcome = match &problem.kind {
         ProblemKind::GrossSliding { message } => Outcome {
@@ -228,13 +238,40 @@ pub fn solve_timed(solver: &dyn Solver, problem: &ContactProblem) -> (Outcome, f
     (outcome, t0.elapsed().as_secs_f64())
 }
 
-/// The asymmetry of the normal matrix a problem solves (K_NN, or K_NN + σμK_NT at the sliding limit).
-pub fn normal_asymmetry(problem: &ContactProblem) -> f64 {
-    match (&problem.kind, &problem.normal) {
-        (_, Some(np)) => asymmetry(&np.k),
-        (ProblemKind::Frictional, _) => asymmetry(&problem.flex.k_nn),
-        _ => 0.0,
+/// The asymmetry of the normal flexibility K_NN: the collocation asymmetry the mesh controls, whatever problem is
+/// solved (at the sliding limit the normal problem's matrix K_NN + σμK_NT is nonsymmetric by friction, not by the
+/// mesh; beyond it no problem is solved, and the flexibility's health is still reported).
+///
+/// On the half-plane model (`half_plane`) the displacements are relative to a datum point below the contact, which
+/// adds a rank-one column term u cᵀ to K_NN (u the approach's gap vector: every node moves by the datum's motion
+/// under the load at node j, c_j). It is physics, not a mesh error, and under load control the approach absorbs it
+/// (K_NN p and (K_NN + u cᵀ) p differ by the uniform (cᵀp)u). So when the normal load is prescribed, the asymmetry is
+/// measured on the part that matters, P K_NN P with P = I − ûûᵀ the projector orthogonal to the approach's gap
+/// vector (P u cᵀ P = 0); with the approach prescribed the full K_NN is measured and the warning says what it is
+/// ([`crate::diagnostics::diagnose`]).
+pub fn normal_asymmetry(problem: &ContactProblem, half_plane: bool) -> f64 {
+    let k = &problem.flex.k_nn;
+    let load_driven = matches!(problem.drive.normal, crate::formulation::Dof::Load(_));
+    let approach = problem.flex.mode(crate::flexibility::ModeKind::Approach);
+    match (half_plane && load_driven, approach) {
+        (true, Some(m)) => asymmetry(&project_out(k, &m.normal)),
+        _ => asymmetry(k),
     }
+}
+
+/// P K P with P = I − ûûᵀ, û = u/|u| (K unchanged when u = 0).
+fn project_out(k: &faer::Mat<f64>, u: &[f64]) -> faer::Mat<f64> {
+    let n = k.nrows();
+    let norm = u.iter().map(|v| v * v).sum::<f64>().sqrt();
+    if norm == 0.0 || u.len() != n {
+        return k.clone();
+    }
+    let uh: Vec<f64> = u.iter().map(|v| v / norm).collect();
+    // K P = K − (K û) ûᵀ, then P (K P) = K P − û (ûᵀ K P).
+    let ku: Vec<f64> = (0..n).map(|i| (0..n).map(|j| k[(i, j)] * uh[j]).sum()).collect();
+    let kp = faer::Mat::from_fn(n, n, |i, j| k[(i, j)] - ku[i] * uh[j]);
+    let ukp: Vec<f64> = (0..n).map(|j| (0..n).map(|i| uh[i] * kp[(i, j)]).sum()).collect();
+    faer::Mat::from_fn(n, n, |i, j| kp[(i, j)] - uh[i] * ukp[j])
 }
 
 /// The result document of a scene from its runs (and a load path's steps): references, checks, mesh facts and
@@ -271,25 +308,14 @@ pub fn assemble_report(
     }
 }
 
-/// Post-process a solver's outcome: evaluate a claimed solution by the solver-independent residuals and refuse it
-/// (`numerical_error`) above `refuse`.
-fn finish_run(
-    problem: &ContactProblem,
-    solver: &'static str,
-    problem_size: usize,
-    outcome: Outcome,
-    timing: Timing,
-    refuse: f64,
-    rolling: Option<RollingPost>,
-) -> SolverRun {
-    evaluate_outcome(problem, solver, problem_size, outcome, timing, refuse, rolling).0
-}
-
-/// Post-process a solver's outcome as `run_scene` does (evaluate a claimed solution by the solver-independent
-/// residuals, refuse it above `refuse`), returning also the evaluation of an accepted solution (a load path carries
-/// its state on).
+/// Post-process a solver's outcome as `run_scene` does — evaluate a claimed solution by the solver-independent
+/// residuals and refuse it above `refuse` (`numerical_error`); judge an accepted one by the range of the model
+/// ([`crate::validity::judge`]: linearised kinematics, candidate zone); decide a failed load-driven solve exactly
+/// ([`crate::validity::decide`]) — returning also the evaluation of an accepted solution (a load path carries its
+/// state on).
 #[allow(clippy::too_many_arguments)]
 pub fn evaluate_outcome(
+    scene: &Scene,
     problem: &ContactProblem,
     solver: &'static str,
     problem_size: usize,
@@ -311,6 +337,16 @@ pub fn evaluate_outcome(
                 "solver reported success but the independent residual is {worst:.3e} > {refuse:.0e}; {message}"
             );
         }
+    }
+    if let (Some(ev), Status::Solved) = (&ev, status) {
+        if let Some((judged, why)) = crate::validity::judge(scene, problem, ev) {
+            status = judged;
+            message = format!("{why}; {solver}: {message}");
+        }
+    }
+    if let Some((decided, why)) = crate::validity::decide(problem, solver, status, &message) {
+        status = decided;
+        message = why;
     }
     let ev = ev.filter(|_| status == Status::Solved);
     let run = SolverRun {

@@ -91,6 +91,10 @@ pub struct Expect {
     /// Cattaneo–Mindlin stick-zone half-width and centre, in contact elements (default 1).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub cattaneo_elements: Option<f64>,
+    /// Fewest contact elements across a loaded contact (default
+    /// [`crate::tolerances::MIN_CONTACT_ELEMENTS`]; e.g. 1 for a scene about a one-node contact).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub contact_elements: Option<f64>,
 }
 
 fn default_status() -> Status {
@@ -106,6 +110,7 @@ impl Default for Expect {
             agreement: None,
             residual: None,
             cattaneo_elements: None,
+            contact_elements: None,
         }
     }
 }
@@ -787,8 +792,8 @@ impl Scene {
     /// Check every value's range; the error names the dotted key.
     pub fn validate(&self, path: &Path) -> Result<()> {
         let c = Checker { path };
-        if self.name.trim().is_empty() {
-            return Err(c.bad("name", "must not be empty".into()));
+        if let Err(why) = safe_name(&self.name) {
+            return Err(c.bad("name", why));
         }
         self.validate_wheel(&c)?;
         self.validate_mesh(&c)?;
@@ -812,6 +817,7 @@ impl Scene {
             ("checks.agreement", ck.agreement),
             ("checks.residual", ck.residual),
             ("checks.cattaneo_elements", ck.cattaneo_elements),
+            ("checks.contact_elements", ck.contact_elements),
         ] {
             if let Some(v) = v {
                 c.positive(field, v)?;
@@ -1185,6 +1191,50 @@ impl Scene {
     pub fn code_path() -> PathBuf {
         PathBuf::from("<scene>")
     }
+}
+
+/// Whether a scene name is a safe file name: it names output files (`NAME.json` in `run --out-dir` and in
+/// `report`), so it must stay inside the folder it is written to. Letters, digits, `-`, `_`, `.` and `+`, not
+/// starting with `.`, at most 100 characters.
+pub fn safe_name(name: &str) -> std::result::Result<(), String> {
+    let ok = |ch: char| ch.is_ascii_alphanumeric() || matches!(ch, '-' | '_' | '.' | '+');
+    if name.is_empty() {
+        return Err("must not be empty".into());
+    }
+    if let Some(ch) = name.chars().find(|&ch| !ok(ch)) {
+        return Err(format!(
+            "`{name}` names the output files (NAME.json) and may contain only letters, digits, `-`, `_`, `.` and `+` \
+             (found {ch:?})"
+        ));
+    }
+    if name.starts_with('.') {
+        return Err(format!("`{name}` names the output files (NAME.json) and must not start with `.`"));
+    }
+    if name.len() > 100 {
+        return Err(format!("`{name}` is longer than 100 characters (it names the output files)"));
+    }
+    Ok(())
+}
+
+/// Refuse two scenes of one command with the same name (their outputs, NAME.json, would overwrite each other):
+/// `scenes` are (file, scene) pairs; the error names both files and the key `name`.
+pub fn unique_names<'a>(scenes: impl IntoIterator<Item = (&'a Path, &'a Scene)>) -> Result<()> {
+    let mut seen: std::collections::BTreeMap<&str, &Path> = std::collections::BTreeMap::new();
+    for (path, s) in scenes {
+        if let Some(first) = seen.insert(&s.name, path) {
+            return Err(Error::Invalid {
+                path: path.to_path_buf(),
+                field: "name".into(),
+                message: format!(
+                    "`{}` is also the name of {}: scene names must be unique within a command (they name the output \
+                     files)",
+                    s.name,
+                    first.display()
+                ),
+            });
+        }
+    }
+    Ok(())
 }
 
 impl Expect {

@@ -723,29 +723,35 @@ fn write_csv(out_csv: &Path, header: &[String], rows: &[Vec<String>]) -> Result<
 /// (hidden when `progress` is false or stderr is not a terminal), and write the CSV atomically: one row per
 /// (case, solver run), sorted by case then solver name. Returns the number of rows written.
 ///
-/// The spec and the base scene must read; a variant with a value out of range ([`Error::Invalid`]) stops the sweep
-/// before anything runs. A variant this build cannot parse (e.g. a solver or settings table it does not know yet)
-/// or cannot run (e.g. [`Error::Unsupported`]) does not: its rows get status `error` and the message in the last
-/// column, `message` (which holds the solver's message for the runs that did run).
+/// The spec and the base scene must read, and every variant of every grid (not only this shard's) must parse and
+/// validate as a scene: an unknown key, a value of the wrong type or out of range, an unknown solver stops the sweep
+/// before anything runs ([`Error::Parse`] or [`Error::Invalid`], naming the case and its keys). A valid variant
+/// that cannot run (e.g. a named solver that does not apply to it, [`Error::Unsupported`]) gets rows with status
+/// `error` and the message in the last column, `message` (which holds the solver's message for the runs that did
+/// run); [`error_rows_in`] counts them for the caller.
 ///
 /// Sets faer's global parallelism to sequential: the cases are the parallel unit.
 pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progress: bool) -> Result<usize> {
     let spec = SweepSpec::from_file(spec_path)?;
     // Per-case messages name the spec by its file name only: the CSV must not depend on where a shard ran.
     let label = PathBuf::from(spec_path.file_name().unwrap_or(spec_path.as_os_str()));
-    let variants = spec.variants(spec_path, &label)?;
-    if let Some(e) = variants.iter().find_map(|v| match &v.scene {
-        Err(e @ Error::Invalid { .. }) => Some(e),
-        _ => None,
-    }) {
-        // Re-raise the first out-of-range variant (Error is not Clone).
-        let Error::Invalid { field, message, .. } = e else { unreachable!() };
-        return Err(invalid(spec_path, field, message.clone()));
+    let mut variants = spec.variants(spec_path, &label)?;
+    // Every grid point is validated before anything runs (in every shard alike): a misspelt key, a value of the
+    // wrong type or out of range, an unknown solver is the spec's error, not a row.
+    if let Some(bad) = variants.iter().position(|v| v.scene.is_err()) {
+        let e = variants.swap_remove(bad).scene.expect_err("a variant that failed");
+        return Err(match e {
+            Error::Invalid { field, message, .. } => invalid(spec_path, &field, message),
+            Error::Parse { message, .. } => Error::Parse { path: spec_path.to_path_buf(), message },
+            other => other,
+        });
     }
     let mine: Vec<&Variant> = variants.iter().filter(|v| shard.is_none_or(|s| s.contains(v.index))).collect();
     let keys = spec.keys();
 
     faer::set_global_parallelism(faer::Par::Seq);
+    // The cases run in parallel: their stage spinners would draw over each other and over the bar below.
+    let _no_stages = crate::progress::suppress();
     let bar = if progress && std::io::stderr().is_terminal() {
         ProgressBar::with_draw_target(Some(mine.len() as u64), ProgressDrawTarget::stderr())
     } else {
@@ -772,6 +778,13 @@ pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progres
     let cells: Vec<Vec<String>> = rows.into_iter().map(|r| r.cells).collect();
     write_csv(out_csv, &header(&keys), &cells)?;
     Ok(cells.len())
+}
+
+/// The number of rows with status `error` in a sweep CSV written by [`run_sweep`] (0 when it cannot be read).
+pub fn error_rows_in(csv_path: &Path) -> usize {
+    let Ok(mut r) = csv::Reader::from_path(csv_path) else { return 0 };
+    let Some(col) = r.headers().ok().and_then(|h| h.iter().position(|c| c == "status")) else { return 0 };
+    r.records().filter_map(|x| x.ok()).filter(|x| x.get(col) == Some(ERROR_STATUS)).count()
 }
 
 /// Join shard CSVs (the same header required, else an error) into one CSV sorted by (case, solver) — identical to

@@ -111,3 +111,32 @@ pub const BOX_FREE_FRACTION: f64 = 1e-7;
 /// bound is violated by more than this fraction of the box scale and no gradient sign is wrong by more than this
 /// fraction of the gradient scale.
 pub const BOX_POLISH_ACCEPT: f64 = 1e-9;
+
+/// A solution is refused as `kinematics_out_of_range` when the wheel's rigid rotation φ moves its contact points by
+/// more than this many contact half-widths: |φ|R > ROTATION_ARC_MAX · a. The linearised kinematics give a node
+/// at x the gap change φx, the exact rotation of a round wheel about its centre changes no gap at all; the
+/// difference puts the lever arms of the moment equilibrium off by φR (the pressure centre, which the moment
+/// equation places, is off by φR of a contact whose scale is a) and the approach off by R(1 − cos φ) ≈ Rφ²/2, i.e.
+/// (φR/a)² times the contact's gap scale a²/(2R). At φR = a/10 both are at most 10 % and 1 % of the contact's own
+/// scales; beyond that the answer says more about the linearisation than about the wheel. (The reference and hard
+/// scenes that hold or do not load the rotation have φ = 0; a free wheel under Q = 0.1P reaches φR ≈ 6a.)
+pub const ROTATION_ARC_MAX: f64 = 0.1;
+
+/// When a contact reaches the edge of the candidate zone, the zone suggested is this factor times the half-width
+/// the contact needs, |x_c| + a (pressure centre offset plus Hertz's half-width at the run's load): Hertz's a is a
+/// half-space estimate (a finite wheel's contact, friction and a moment change it by a few to some tens of per
+/// cent) and the outermost node must end up separated, with room to spare, for the run to pass.
+pub const ZONE_WIDTH_FACTOR: f64 = 1.5;
+
+/// Fewest contact elements across a loaded contact (contact nodes in contact / nodes per element) for a run to
+/// pass its resolution check: with k elements across, each edge is known to ±h/2, so the width 2a only to ±1/k;
+/// below 4 (±25 %) the nodal answer does not approximate a pressure distribution (a one-node contact has no width
+/// at all). The seed's own coarse meshes resolve their frictional contacts with 4–5 nodes (figs. 12–17), where its
+/// figures are still read. Override per scene with `[checks] contact_elements`.
+pub const MIN_CONTACT_ELEMENTS: f64 = 4.0;
+
+/// A Farkas certificate of the static-admissibility LP ([`crate::admissible`]) is accepted only if it verifies in
+/// our own arithmetic: every node's virtual motion inside the dual friction cone to this fraction of the largest
+/// virtual displacement, and the loads' virtual work negative by more than this fraction of |load|·|motion|
+/// (round-off of the certificate's O(n) sums is ~1e-14; a certificate violated by more is not a proof).
+pub const FARKAS_MARGIN: f64 = 1e-9;

@@ -50,6 +50,18 @@ fn run(s: &Scene) -> Report {
     run_scene(s, Path::new("<test>")).expect("runs")
 }
 
+/// Lemke's solution of the scene's discrete problem, evaluated, whatever the verdict about the model's range
+/// (`contact_at_zone_edge`, `kinematics_out_of_range`: the discrete answer is still the LCP's, which is what the
+/// solver tests below compare). Also returns the run's status from `run_scene`.
+fn lemke_discrete(s: &Scene) -> (Status, rollbem::post::Evaluation) {
+    let status = lemke(&run(s)).status;
+    let fl = source::build(s, rollbem::run::blocks_for(s)).unwrap().flex;
+    let problem = rollbem::run::build_problem(s, &fl, Path::new("<test>")).unwrap();
+    let out = rollbem::solvers::build("lemke", None).unwrap().solve(&problem);
+    assert_eq!(out.status, Status::Solved, "{}", out.message);
+    (status, rollbem::post::evaluate(&problem, out.solution.as_ref().unwrap(), rollbem::run::rolling_post(s)))
+}
+
 #[test]
 fn displacement_and_loading_formulations_describe_one_physics() {
     // Solve with all three rigid DOFs prescribed (eq. 38), feed the resultants P, Q, M back as loads (eq. 49), and
@@ -163,13 +175,15 @@ fn every_node_obeys_coulomb_and_its_state() {
         // M = R·Q + P·e with the pressure centre e = 0.01R inside the contact (a ≈ 0.05R).
         base(0.0, 1.5, "normal_load = 187.42\ntangential_load = -30.0\nmoment = -28.1258", ""),
     ];
-    for s in &cases {
-        let r = run(s);
-        let l = lemke(&r);
-        assert_eq!(l.status, Status::Solved, "{}", l.message);
-        assert!(l.residuals.unwrap().max() <= 1e-10, "residuals {:?}", l.residuals);
+    for (k, s) in cases.iter().enumerate() {
+        let (status, l) = lemke_discrete(s);
+        // The moment case turns the wheel by φR ≈ 0.14a (M ≠ RQ: a wheel free to turn would roll), beyond the
+        // linearised kinematics' range, so it is flagged; its discrete answer must still obey Coulomb node by node.
+        let expected = if k == 4 { Status::KinematicsOutOfRange } else { Status::Solved };
+        assert_eq!(status, expected, "case {k}");
+        assert!(l.residuals.max() <= 1e-10, "residuals {:?}", l.residuals);
         let mu = s.contact.friction;
-        let pmax = l.contact.as_ref().unwrap().peak_pressure;
+        let pmax = l.contact.peak_pressure;
         let smax = l.nodes.iter().filter_map(|n| n.slip).fold(0.0_f64, |a, s| a.max(s.abs())).max(1e-300);
         for n in &l.nodes {
             assert!(n.shear.abs() <= mu * n.pressure + 1e-10 * pmax, "cone at x={}", n.x);
@@ -182,6 +196,7 @@ fn every_node_obeys_coulomb_and_its_state() {
                     assert!((n.shear.abs() - mu * n.pressure).abs() <= 1e-9 * pmax);
                     assert!(n.slip.unwrap() * n.shear <= 1e-12 * smax * pmax, "slip along friction at x={}", n.x);
                 }
+                NodeState::Contact => panic!("a frictional contact node must stick or slip (x = {})", n.x),
                 NodeState::Separated => {
                     assert!(n.pressure == 0.0 || n.pressure.abs() <= 1e-12 * pmax);
                     assert!(n.shear.abs() <= 1e-12 * pmax);
@@ -388,9 +403,10 @@ use = ["lemke"]
         ));
         let sols = oracle(&s);
         assert!(!sols.is_empty(), "case {case}: enumeration found no solution");
-        let r = run(&s);
-        let l = lemke(&r);
-        assert_eq!(l.status, Status::Solved, "case {case}: {}", l.message);
+        // These small meshes are often in contact up to the edge of their candidate zone: `run` flags that, and
+        // Lemke's tractions on the discrete problem are compared with the enumeration's all the same.
+        let (status, l) = lemke_discrete(&s);
+        assert!(matches!(status, Status::Solved | Status::ContactAtZoneEdge), "case {case}: {status}");
         let fl = source::build(&s, Blocks::Normal).unwrap().flex;
         let scale = 1000.0 * 2.0; // E · L0: nodal force unit
         let fmax = sols[0].0.iter().fold(0.0_f64, |a, v| a.max(v.abs())).max(1e-300);

@@ -423,7 +423,7 @@ fn seed_figures(reports: &BTreeMap<String, Report>, dir: &Path) -> Result<Vec<(S
             ));
             let code = |s: NodeState| match s {
                 NodeState::Stick => 2.0,
-                NodeState::Slip => 1.0,
+                NodeState::Slip | NodeState::Contact => 1.0,
                 NodeState::Separated => 0.0,
             } + 0.06 * k as f64;
             st = st.add(Series::new(

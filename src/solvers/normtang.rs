@@ -468,7 +468,11 @@ fn norm(
                 if !ok {
                     return Err(Failure(
                         Status::NotConverged,
-                        format!("projected Gauss–Seidel did not converge in {} sweeps", s.max_sweeps),
+                        format!(
+                            "projected Gauss–Seidel did not converge in {} sweeps of one inner solve (max_sweeps; {} \
+                             sweeps in all, counting the inner solves before it)",
+                            s.max_sweeps, *sweeps
+                        ),
                     ));
                 }
                 Ok(f.iter().sum())
@@ -578,7 +582,11 @@ fn tang(
                 if !ok {
                     return Err(Failure(
                         Status::NotConverged,
-                        format!("projected Gauss–Seidel did not converge in {} sweeps", s.max_sweeps),
+                        format!(
+                            "projected Gauss–Seidel did not converge in {} sweeps of one inner solve (max_sweeps; {} \
+                             sweeps in all, counting the inner solves before it)",
+                            s.max_sweeps, *sweeps
+                        ),
                     ));
                 }
                 Ok(x.iter().sum())

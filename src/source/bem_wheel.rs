@@ -275,10 +275,15 @@ pub fn condense_with_response(
     model: &Model,
     blocks: Blocks,
 ) -> Result<(Flexibility, BemHealth, SourceTiming, Mat<f64>)> {
+    let nn = model.mesh.n_nodes();
     let t0 = std::time::Instant::now();
+    let stage = crate::progress::stage(|| format!("assembling the BEM system ({nn} nodes, {0}×{0})", 2 * nn));
     let sys = assemble_system(model, blocks)?;
+    drop(stage);
     let t1 = std::time::Instant::now();
+    let stage = crate::progress::stage(|| format!("condensing: LU of the {0}×{0} BEM system and its solves", 2 * nn));
     let (flex, health, sol) = solve_system_with_response(model, &sys)?;
+    drop(stage);
     let t2 = std::time::Instant::now();
     let timing = SourceTiming { assembly: (t1 - t0).as_secs_f64(), condensation: (t2 - t1).as_secs_f64() };
     Ok((flex, health, timing, sol))

@@ -67,6 +67,8 @@ pub struct Built {
 /// Build the flexibility a (validated) scene describes, with the blocks it needs.
 pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
     if scene.wheel.model == BodyModel::HalfPlane {
+        let n = scene.mesh.contact_elements;
+        let _stage = crate::progress::stage(|| format!("building the half-plane influence matrices ({n} elements)"));
         return half_plane::build(scene, blocks);
     }
     let model = bem_wheel::Model::new(scene);

@@ -47,6 +47,17 @@ enum Var {
     Z0,
 }
 
+/// As the messages name it: `w[i]`, `z[i]` (0-based LCP indices), `z0`.
+impl std::fmt::Display for Var {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Var::W(i) => write!(f, "w[{i}]"),
+            Var::Z(i) => write!(f, "z[{i}]"),
+            Var::Z0 => write!(f, "z0"),
+        }
+    }
+}
+
 impl Var {
     /// The complement of a leaving variable: the variable that enters next.
     fn complement(self) -> Var {
@@ -606,7 +617,7 @@ fn lemke_loop(e: &mut Engine, sc: &Scaled, settings: &LemkeSettings) -> LemkeOut
                 e.z_vector(),
                 Status::RayTermination,
                 pivots,
-                format!("secondary ray: entering {entering:?} is unblocked after {pivots} pivots"),
+                format!("secondary ray: entering {entering} is unblocked after {pivots} pivots"),
             );
         };
         let step = e.x[r].max(0.0) / d[r];

@@ -42,6 +42,17 @@ enum Var {
     Z0,
 }
 
+/// As the messages name it: `w[i]`, `z[i]` (0-based LCP indices), `z0`.
+impl std::fmt::Display for Var {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Var::W(i) => write!(f, "w[{i}]"),
+            Var::Z(i) => write!(f, "z[{i}]"),
+            Var::Z0 => write!(f, "z0"),
+        }
+    }
+}
+
 /// The explicit inverse is recomputed from scratch when the relative residual ‖q − B x‖∞ / (‖q‖∞ + ‖x‖∞) of the
 /// basic solution exceeds `DRIFT`, or when the probe error ‖B₀⁻¹ (B 1) − 1‖∞ exceeds both [`PROBE_LIMIT`] and
 /// [`PROBE_GROWTH`] times its value after the last inversion from scratch. (The probe error of a fresh inverse
@@ -385,7 +396,7 @@ pub fn solve_dense(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
                 z,
                 Status::RayTermination,
                 pivots,
-                format!("secondary ray: entering {entering:?} is unblocked after {pivots} pivots"),
+                format!("secondary ray: entering {entering} is unblocked after {pivots} pivots"),
             );
         };
         leaving = wk.basis[r];
