@@ -99,7 +99,13 @@ impl Sweep {
     pub fn varied(&self, rows: &[&Row]) -> Vec<String> {
         let mut out = Vec::new();
         let mut columns: Vec<String> = vec!["element".into(), "solver".into(), "model".into()];
-        columns.extend(self.keys.iter().filter(|k| *k != REFINEMENT_KEY && *k != "solvers.use").cloned());
+        // A grid key that sets one of those columns (`mesh.element`, `solvers.use`) would label it twice.
+        columns.extend(
+            self.keys
+                .iter()
+                .filter(|k| *k != REFINEMENT_KEY && *k != "solvers.use" && *k != "mesh.element" && *k != "wheel.model")
+                .cloned(),
+        );
         for k in columns {
             let values: BTreeSet<&str> = rows.iter().map(|r| cell(r, &k)).collect();
             if values.len() > 1 || (k == "solver" && !values.is_empty()) {
