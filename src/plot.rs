@@ -614,7 +614,9 @@ impl Chart {
         let mut builder = ChartBuilder::on(&root);
         builder.margin(MARGIN).margin_right(margin_right).x_label_area_size(x_area).y_label_area_size(y_area);
         if !self.title.is_empty() {
-            builder.caption(&self.title, (FONT, fit_font(TITLE_SIZE, &self.title, f64::from(width) - 20.0)));
+            // The caption is centred over the area left of a legend placed outside: fit it to that width.
+            let avail = f64::from(width) - 2.0 * f64::from(MARGIN) - f64::from(margin_right) + 20.0;
+            builder.caption(&self.title, (FONT, fit_font(TITLE_SIZE, &self.title, avail.max(100.0))));
         }
         let mut chart = builder.build_cartesian_2d(prep.x.clone(), prep.y.clone()).map_err(|e| err(&e))?;
         let mut mesh = chart.configure_mesh();

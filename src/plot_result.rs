@@ -1,13 +1,16 @@
 //! `rollbem plot RESULT.json [--out DIR]`: the figures of a result document written by `rollbem run --json`.
 //!
 //! Per solver run (`runs[]`, for a load path the runs at its end): the surface tractions p and q against x
-//! (`STEM.SOLVER.tractions.svg`), and, when the run has subsurface stresses ([`crate::stresses`]), one filled contour
+//! (`STEM.SOLVER.tractions.svg`) with Hertz's pressure when the document carries it (`references.hertz`); the node
+//! states against x (`STEM.SOLVER.states.svg`: separated / contact or slip / stick); the slip velocity against x
+//! when the scene rolls (`STEM.SOLVER.slip_velocity.svg`); and, when the run has subsurface stresses ([`crate::stresses`]), one filled contour
 //! map per quantity (`STEM.SOLVER.QUANTITY.svg`) with the maximum (largest |value|, as in the result document)
 //! marked and captioned. STEM is the result file's name without `.json`; DIR defaults to the result file's folder.
 //! A field written to a CSV file beside the document (large grids) is read from there.
 //!
-//! The axes carry the scene's units when its `[stresses]` names them (`length_unit`, `stress_unit`), else the
-//! words "length unit" and "stress unit" (rollbem's units are the user's, consistent, and a scene need not name
+//! The axes carry the scene's units: its `[stresses]` `length_unit` and `stress_unit` when given, else the length
+//! and stress of its `units` label ("N, mm, MPa": force, length, stress), else the words "length unit" and "stress
+//! unit" (rollbem's units are the user's, consistent, and a scene need not name
 //! them). Depth is drawn downward, x and depth to the same scale when the grid's aspect ratio is moderate.
 //!
 //! The document is read as plain JSON (`serde_json::Value`), so any result document with the keys of `DESIGN.md`
@@ -79,7 +82,21 @@ pub fn plot_result(json: &Path, out: Option<&Path>) -> Result<Plotted> {
     let unit = |key: &str, default: &str| {
         doc.pointer(&format!("/scene/stresses/{key}")).and_then(Value::as_str).unwrap_or(default).to_string()
     };
-    let (lu, su) = (unit("length_unit", "length unit"), unit("stress_unit", "stress unit"));
+    // The scene's `units` label, "force, length, stress".
+    let label_units: Vec<String> = doc
+        .pointer("/scene/units")
+        .and_then(Value::as_str)
+        .map(|u| u.split(',').map(|p| p.trim().to_string()).collect())
+        .unwrap_or_default();
+    let from_label =
+        |k: usize, default: &str| label_units.get(k).filter(|u| !u.is_empty()).cloned().unwrap_or(default.into());
+    let (lu, su) =
+        (unit("length_unit", &from_label(1, "length unit")), unit("stress_unit", &from_label(2, "stress unit")));
+    // Hertz's pressure at the document's load, when the references carry it.
+    let hertz = doc.pointer("/references/hertz").and_then(|h| {
+        Some((h.get("half_width")?.as_f64()?, h.get("peak_pressure")?.as_f64()?))
+            .filter(|(a, p0)| *a > 0.0 && *p0 > 0.0)
+    });
     let mut done = Plotted::default();
     for (k, run) in runs.iter().enumerate() {
         let solver = run.get("solver").and_then(Value::as_str).unwrap_or("run").to_string();
@@ -92,14 +109,51 @@ pub fn plot_result(json: &Path, out: Option<&Path>) -> Result<Plotted> {
             done.skipped.push(format!("{solver}: no solved tractions (status {})", run["status"]));
             continue;
         }
-        let chart = Chart::new(format!("{name}, {solver}: surface tractions on the wheel"), "x", "traction")
+        let mut chart = Chart::new(format!("{name}, {solver}: surface tractions on the wheel"), "x", "traction")
             .x_unit(lu.as_str())
             .y_unit(su.as_str())
             .add(Series::new("pressure p", p, Style::LineMarkers))
             .add(Series::new("shear q", q, Style::LineMarkers));
+        if let Some((a, p0)) = hertz {
+            let xs = (0..=200).map(|i| -a + 2.0 * a * f64::from(i) / 200.0);
+            let curve = xs.map(|x| (x, p0 * (1.0 - (x / a).powi(2)).max(0.0).sqrt())).collect();
+            chart = chart.add(Series::new("Hertz pressure", curve, Style::Dashed));
+        }
         let file = out.join(format!("{stem}.{solver}.tractions.svg"));
         chart.write(&file).map_err(plot_err)?;
         done.files.push(file);
+        // Node states on a categorical axis.
+        let states: Vec<(f64, f64)> = nodes
+            .iter()
+            .filter_map(|n| {
+                let y = match n.get("state")?.as_str()? {
+                    "separated" => 0.0,
+                    "slip" | "contact" => 1.0,
+                    "stick" => 2.0,
+                    _ => return None,
+                };
+                Some((n.get("x")?.as_f64()?, y))
+            })
+            .collect();
+        if !states.is_empty() {
+            let chart = Chart::new(format!("{name}, {solver}: node states"), "x", "state")
+                .x_unit(lu.as_str())
+                .categories_y(&["separated", "contact / slip", "stick"])
+                .add(Series::new(solver.as_str(), states, Style::Markers));
+            let file = out.join(format!("{stem}.{solver}.states.svg"));
+            chart.write(&file).map_err(plot_err)?;
+            done.files.push(file);
+        }
+        let sv = series("slip_velocity");
+        if !sv.is_empty() {
+            let chart = Chart::new(format!("{name}, {solver}: slip velocity"), "x", "slip velocity s")
+                .x_unit(lu.as_str())
+                .y_unit("1")
+                .add(Series::new(solver.as_str(), sv, Style::LineMarkers));
+            let file = out.join(format!("{stem}.{solver}.slip_velocity.svg"));
+            chart.write(&file).map_err(plot_err)?;
+            done.files.push(file);
+        }
         let Some(st) = run.get("stresses").filter(|s| s.is_object()) else { continue };
         let at = format!("runs[{k}].stresses");
         let maps = StressMaps::read(json, &dir, st, &at)?;

@@ -176,3 +176,33 @@ fn edge_case_maps_render() {
     let fine = hertz_shear_map().bands(40).size(700, 420);
     keep("map-fine-bands.svg", &fine.to_svg().unwrap());
 }
+
+/// Issue 12 item 9: `rollbem plot RESULT.json` draws, per run, the tractions (with Hertz's pressure when the result
+/// carries it), the node states on a categorical axis and, for a rolling scene, the slip velocity.
+#[test]
+fn plot_of_a_result_draws_tractions_with_hertz_states_and_slip_velocity() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let tmp = tempfile::tempdir().unwrap();
+    let bin = env!("CARGO_BIN_EXE_rollbem");
+    let run = |scene: &str, json: &str| {
+        let o = std::process::Command::new(bin)
+            .args(["run", "--solver", "lemke"])
+            .arg(root.join(scene))
+            .arg("--json")
+            .arg(tmp.path().join(json))
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let o = std::process::Command::new(bin).arg("plot").arg(tmp.path().join(json)).output().unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    };
+    run("reference/scenes/hertz-hub-fine.toml", "h.json");
+    let tr = std::fs::read_to_string(tmp.path().join("h.lemke.tractions.svg")).unwrap();
+    assert!(tr.contains("Hertz pressure"));
+    let st = std::fs::read_to_string(tmp.path().join("h.lemke.states.svg")).unwrap();
+    assert!(st.contains("separated") && st.contains("stick"));
+    assert!(!tmp.path().join("h.lemke.slip_velocity.svg").exists(), "no rolling, no slip-velocity figure");
+    run("reference/scenes/seed-fig13-mu03.toml", "r.json");
+    assert!(tmp.path().join("r.lemke.slip_velocity.svg").exists());
+    assert!(tmp.path().join("r.lemke.states.svg").exists());
+}

@@ -383,8 +383,12 @@ fn seed_figures(reports: &BTreeMap<String, Report>, dir: &Path) -> Result<Vec<(S
         let mut tr = Chart::new(format!("Seed {title}: tractions"), "x", "traction (p markers, q lines)")
             .x_unit(units.length.clone())
             .y_unit(units.stress.clone());
-        let mut sv = Chart::new(format!("Seed {title}: slip velocity s_t* (eq. 12)"), "x", "s_t*");
-        let mut st = Chart::new(format!("Seed {title}: node states (2 stick, 1 slip, 0 separated)"), "x", "state");
+        let mut sv = Chart::new(format!("Seed {title}: slip velocity s_t* (eq. 12)"), "x", "s_t*")
+            .x_unit(units.length.clone())
+            .y_unit("1");
+        let mut st = Chart::new(format!("Seed {title}: node states"), "x", "state")
+            .x_unit(units.length.clone())
+            .categories_y(&["separated", "slip", "stick"]);
         let mut any = false;
         for (k, (name, label)) in members.iter().enumerate() {
             let Some(l) = lemke_of(reports, name) else { continue };
