@@ -58,7 +58,8 @@ pub struct SweepSpec {
     /// Per grid (same order as `grid`), its own base scene file when it names one (`base` inside `[[grid]]`); a
     /// missing entry means the spec's `base`.
     pub grid_base: Vec<Option<PathBuf>>,
-    /// How many times a case is run for its timings (`timing_repeats`, default 1): cases whose first run took less
+    /// How many times a case is run for its timings (`timing_repeats`, default 1; above 1 the cases run one at a
+    /// time instead of in parallel, for timings free of contention): cases whose first run took less
     /// than [`REPEAT_BELOW_S`] are run again and their times are the median run's, with the fastest and slowest in
     /// `t_total_min`, `t_total_max`. Results (not times) are those of the first run; they do not change.
     pub timing_repeats: usize,
@@ -765,14 +766,19 @@ pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progres
         Some(s) => format!("{} {s}", spec.name),
         None => spec.name.clone(),
     });
-    let mut rows: Vec<Row> = mine
-        .par_iter()
-        .flat_map_iter(|v| {
-            let rows = run_case(v, &keys, &label, spec.timing_repeats);
-            bar.inc(1);
-            rows
-        })
-        .collect();
+    let one = |v: &&Variant| {
+        let rows = run_case(v, &keys, &label, spec.timing_repeats);
+        bar.inc(1);
+        rows
+    };
+    // A sweep that asks for repeated timings runs its cases one at a time, so that no case is timed while another
+    // competes for the cores (on 2 cores, parallel cases moved timings by tens of percent between report runs and
+    // reordered configurations on the Pareto front); other sweeps run their cases in parallel.
+    let mut rows: Vec<Row> = if spec.timing_repeats > 1 {
+        mine.iter().flat_map(one).collect()
+    } else {
+        mine.par_iter().flat_map_iter(one).collect()
+    };
     bar.finish_and_clear();
     sort_rows(&mut rows);
     let cells: Vec<Vec<String>> = rows.into_iter().map(|r| r.cells).collect();
