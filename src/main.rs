@@ -203,6 +203,17 @@ fn parse_solver(s: &str) -> Result<String, String> {
 
 /// The `run` table of one scene. Its two time columns: `solve [s]`, the solver alone (what the solvers are compared
 /// by), and `total [s]`, the whole pipeline of that run (assembly, condensation, formulation and solve).
+/// The memory line is printed from this peak resident size on (bytes): small runs need no memory figure.
+const MEMORY_LINE_FROM: u64 = 100_000_000;
+
+/// The process's peak resident set size (Linux `VmHWM` in `/proc/self/status`), `None` where it cannot be read.
+fn peak_resident_bytes() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kb * 1024)
+}
+
 fn print_report(r: &Report) {
     say!("scene {} — {}", r.scene.name, r.scene.description);
     say!(
@@ -222,6 +233,12 @@ fn print_report(r: &Report) {
         d.tangential_condition.map(|k| format!(", κ₁(K_TT) ≈ {k:.2e}")).unwrap_or_default(),
         d.flexibility_asymmetry
     );
+    if let Some(bytes) = peak_resident_bytes().filter(|b| *b >= MEMORY_LINE_FROM) {
+        say!(
+            "memory: peak resident {:.2} GB (this process so far: the BEM system, its LU and the solvers' work)",
+            bytes as f64 / 1e9
+        );
+    }
     for w in d.warnings.iter().cloned().chain(run_warnings(r)) {
         say!("WARNING: {w}");
     }
