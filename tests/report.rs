@@ -41,6 +41,17 @@ base = "../scenes/a-file-name.toml"
 "solvers.use" = [["lemke"], ["active_set"]]
 "#;
 
+/// `rollbem report --reference REFS --out OUT`.
+fn report(refs: &Path, out: &Path) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_rollbem"))
+        .args(["report", "--reference"])
+        .arg(refs)
+        .arg("--out")
+        .arg(out)
+        .output()
+        .unwrap()
+}
+
 fn write(p: &Path, text: &str) {
     std::fs::create_dir_all(p.parent().unwrap()).unwrap();
     std::fs::write(p, text).unwrap();
@@ -53,13 +64,7 @@ fn report_on_a_foreign_folder_says_only_what_its_inputs_imply() {
     write(&refs.join("scenes/a-file-name.toml"), SCENE);
     write(&refs.join("sweeps/another-file-name.toml"), SWEEP);
     let out = tmp.path().join("my-report");
-    let o = Command::new(env!("CARGO_BIN_EXE_rollbem"))
-        .args(["report", "--reference"])
-        .arg(&refs)
-        .arg("--out")
-        .arg(&out)
-        .output()
-        .unwrap();
+    let o = report(&refs, &out);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let md = std::fs::read_to_string(out.join("README.md")).unwrap();
     // The command line as given, not "reference/".
@@ -94,13 +99,7 @@ fn report_refuses_unsafe_or_duplicate_names_before_writing_anything() {
         write(&refs.join("scenes/a-file-name.toml"), &SCENE.replace("pad-hertz", scene_name));
         write(&refs.join("sweeps/another-file-name.toml"), &SWEEP.replace("pad-mesh-study", sweep_name));
         let out = tmp.path().join("out");
-        let o = Command::new(env!("CARGO_BIN_EXE_rollbem"))
-            .args(["report", "--reference"])
-            .arg(&refs)
-            .arg("--out")
-            .arg(&out)
-            .output()
-            .unwrap();
+        let o = report(&refs, &out);
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(o.status.code(), Some(2), "{err}");
         assert!(err.contains(field_file) && err.contains("`name`"), "{err}");
@@ -112,13 +111,7 @@ fn report_refuses_unsafe_or_duplicate_names_before_writing_anything() {
     write(&refs.join("scenes/one.toml"), SCENE);
     write(&refs.join("scenes/two.toml"), SCENE);
     let out = tmp.path().join("out");
-    let o = Command::new(env!("CARGO_BIN_EXE_rollbem"))
-        .args(["report", "--reference"])
-        .arg(&refs)
-        .arg("--out")
-        .arg(&out)
-        .output()
-        .unwrap();
+    let o = report(&refs, &out);
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(err.contains("unique") && err.contains("one.toml"), "{err}");
@@ -137,13 +130,7 @@ fn report_compares_the_seed_rolling_formulation_with_steady_rolling() {
     write(&refs.join("scenes/seed-fig09-mu05.toml"), &std::fs::read_to_string(seed).unwrap());
     std::fs::create_dir_all(refs.join("sweeps")).unwrap();
     let out = tmp.path().join("out");
-    let o = Command::new(env!("CARGO_BIN_EXE_rollbem"))
-        .args(["report", "--reference"])
-        .arg(&refs)
-        .arg("--out")
-        .arg(&out)
-        .output()
-        .unwrap();
+    let o = report(&refs, &out);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let md = std::fs::read_to_string(out.join("README.md")).unwrap();
     let section = &md[md.find("## The seed's rolling formulation against steady rolling").expect("the section")..];
