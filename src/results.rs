@@ -83,7 +83,9 @@ pub struct SolverRun {
     /// (null without rolling, or unless solved).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rolling: Option<RollingResult>,
-    /// Per contact node (empty unless solved).
+    /// Per contact node: empty unless solved, or judged `contact_at_zone_edge` / `kinematics_out_of_range` (then the
+    /// discrete answer that was judged, kept as the evidence for the verdict; such a run has no resultants, contact
+    /// summary or residuals).
     pub nodes: Vec<NodeResult>,
     /// For clarabel: max |p − p_unpolished| / p_max, the effect of solving the symmetrised QP before the
     /// active-set polish with the nonsymmetric flexibility.

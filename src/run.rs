@@ -348,6 +348,14 @@ pub fn evaluate_outcome(
         status = decided;
         message = why;
     }
+    // A run judged `contact_at_zone_edge` or `kinematics_out_of_range` keeps its nodal values (and only those:
+    // no resultants, contact summary or residuals, so no check, comparison or metric treats it as an answer): they
+    // are the evidence for the verdict (the pressure at the zone's edge, the collapsed contact) that the user
+    // needs to see in the JSON, `run --csv` and `rollbem plot`.
+    let flagged_nodes = match (&ev, status) {
+        (Some(e), Status::ContactAtZoneEdge | Status::KinematicsOutOfRange) => e.nodes.clone(),
+        _ => Vec::new(),
+    };
     let ev = ev.filter(|_| status == Status::Solved);
     let run = SolverRun {
         solver: SolverName(solver),
@@ -362,7 +370,7 @@ pub fn evaluate_outcome(
         rigid_body: ev.as_ref().map(|e| e.rigid_body),
         contact: ev.as_ref().map(|e| e.contact.clone()),
         rolling: ev.as_ref().and_then(|e| e.rolling),
-        nodes: ev.as_ref().map(|e| e.nodes.clone()).unwrap_or_default(),
+        nodes: ev.as_ref().map(|e| e.nodes.clone()).unwrap_or(flagged_nodes),
         polish_change,
         history: None,
         stresses: None,

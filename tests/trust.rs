@@ -129,6 +129,13 @@ fn item1_a_contact_cut_off_by_the_candidate_zone_is_not_solved_and_says_how_wide
     let run = &r.runs[0];
     assert_eq!(run.status, Status::ContactAtZoneEdge, "{}", run.message);
     assert!(run.message.contains("edge of the candidate zone"), "{}", run.message);
+    // The evidence is kept: the nodal answer that was judged, loaded up to the zone's last node (the issue: the
+    // edge pressure 2.97 GPa against 1.30 GPa at mid-width), but no resultants or contact summary to be mistaken for
+    // an answer.
+    assert_eq!(run.nodes.len(), 100);
+    let (first, last) = (&run.nodes[0], &run.nodes[99]);
+    assert!(first.pressure > 0.0 && last.pressure > 0.0, "contact reaches both ends of the zone");
+    assert!(run.resultants.is_none() && run.contact.is_none() && run.residuals.is_none());
     // The zone suggested must hold Hertz's contact: 2 asin(a/R) = 1.255° at P = 1e7 (a = 5.04 mm), more than 1°.
     let arc = number_after(&run.message, "contact_arc_deg ≥");
     let hertz_arc = 2.0 * (hertz_a(1e7, 0.46, 210e9, 0.3) / 0.46).asin().to_degrees();
