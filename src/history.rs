@@ -260,8 +260,11 @@ pub fn path_csv(report: &Report) -> String {
         for run in &st.runs {
             let f = run.resultants;
             let rb = run.rigid_body;
-            let edges = crate::references::stick_edges(&run.nodes);
-            let count = |s: crate::post::NodeState| run.nodes.iter().filter(|n| n.state == s).count();
+            // A substep judged not an answer keeps its nodes as evidence; its row reports no stick zone or counts.
+            let solved = run.status == crate::solvers::Status::Solved;
+            let edges = crate::references::stick_edges(&run.nodes).filter(|_| solved);
+            let count =
+                |s: crate::post::NodeState| if solved { run.nodes.iter().filter(|n| n.state == s).count() } else { 0 };
             let e = run.history.as_ref();
             writeln!(
                 out,

@@ -54,7 +54,8 @@ enum Cmd {
         #[arg(long)]
         path_csv: Option<PathBuf>,
         /// Write the nodal table as CSV here (one scene only): one row per contact node and solver with x, y,
-        /// pressure, shear, u_x, u_y, gap, slip, state and slip_velocity (a run that did not solve has no rows).
+        /// pressure, shear, u_x, u_y, gap, slip, state and slip_velocity, and the run's status (a run that did not solve
+        /// has no rows, except one judged contact_at_zone_edge or kinematics_out_of_range: its rows are the evidence).
         #[arg(long)]
         csv: Option<PathBuf>,
     },

@@ -105,15 +105,20 @@ pub fn plot_result(json: &Path, out: Option<&Path>) -> Result<Plotted> {
             nodes.iter().filter_map(|n| Some((n.get("x")?.as_f64()?, n.get(key)?.as_f64()?))).collect()
         };
         let (p, q) = (series("pressure"), series("shear"));
+        // A run judged not an answer (contact at the zone's edge, kinematics out of range) keeps its nodes as
+        // evidence: its titles say so.
+        let status = run.get("status").and_then(Value::as_str).unwrap_or("unknown");
+        let verdict = if status == "solved" { String::new() } else { format!(" ({status}: not an answer)") };
         if p.is_empty() {
-            done.skipped.push(format!("{solver}: no solved tractions (status {})", run["status"]));
+            done.skipped.push(format!("{solver}: no tractions (status {})", run["status"]));
             continue;
         }
-        let mut chart = Chart::new(format!("{name}, {solver}: surface tractions on the wheel"), "x", "traction")
-            .x_unit(lu.as_str())
-            .y_unit(su.as_str())
-            .add(Series::new("pressure p", p, Style::LineMarkers))
-            .add(Series::new("shear q", q, Style::LineMarkers));
+        let mut chart =
+            Chart::new(format!("{name}, {solver}: surface tractions on the wheel{verdict}"), "x", "traction")
+                .x_unit(lu.as_str())
+                .y_unit(su.as_str())
+                .add(Series::new("pressure p", p, Style::LineMarkers))
+                .add(Series::new("shear q", q, Style::LineMarkers));
         if let Some((a, p0)) = hertz {
             let xs = (0..=200).map(|i| -a + 2.0 * a * f64::from(i) / 200.0);
             let curve = xs.map(|x| (x, p0 * (1.0 - (x / a).powi(2)).max(0.0).sqrt())).collect();
@@ -136,7 +141,7 @@ pub fn plot_result(json: &Path, out: Option<&Path>) -> Result<Plotted> {
             })
             .collect();
         if !states.is_empty() {
-            let chart = Chart::new(format!("{name}, {solver}: node states"), "x", "state")
+            let chart = Chart::new(format!("{name}, {solver}: node states{verdict}"), "x", "state")
                 .x_unit(lu.as_str())
                 .categories_y(&["separated", "contact / slip", "stick"])
                 .add(Series::new(solver.as_str(), states, Style::Markers));
@@ -146,7 +151,7 @@ pub fn plot_result(json: &Path, out: Option<&Path>) -> Result<Plotted> {
         }
         let sv = series("slip_velocity");
         if !sv.is_empty() {
-            let chart = Chart::new(format!("{name}, {solver}: slip velocity"), "x", "slip velocity s")
+            let chart = Chart::new(format!("{name}, {solver}: slip velocity{verdict}"), "x", "slip velocity s")
                 .x_unit(lu.as_str())
                 .y_unit("1")
                 .add(Series::new(solver.as_str(), sv, Style::LineMarkers));

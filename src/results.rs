@@ -266,13 +266,27 @@ impl Report {
     }
 
     /// The nodal table as CSV (`rollbem run --csv`): one row per contact node and solver run that has nodes (a run
-    /// that did not solve has none), with the keys of `runs[].nodes[]` in the user's units; empty cells where a
+    /// that did not solve has none, except the evidence kept by a run judged `contact_at_zone_edge` or
+    /// `kinematics_out_of_range`: the `status` column tells them apart), with the keys of `runs[].nodes[]` in the user's units; empty cells where a
     /// value is null (u_x without the tangential problem, the slip of a separated node, the slip velocity without
     /// rolling).
     pub fn nodes_csv(&self) -> String {
         let mut w = csv::Writer::from_writer(Vec::new());
-        let head =
-            ["solver", "node", "x", "y", "pressure", "shear", "u_x", "u_y", "gap", "slip", "state", "slip_velocity"];
+        let head = [
+            "solver",
+            "status",
+            "node",
+            "x",
+            "y",
+            "pressure",
+            "shear",
+            "u_x",
+            "u_y",
+            "gap",
+            "slip",
+            "state",
+            "slip_velocity",
+        ];
         w.write_record(head).expect("CSV into memory");
         let opt = |v: Option<f64>| v.map(|v| format!("{v:e}")).unwrap_or_default();
         for run in &self.runs {
@@ -280,6 +294,7 @@ impl Report {
                 let state = serde_json::to_value(n.state).expect("a state serialises");
                 w.write_record([
                     run.solver.0.to_string(),
+                    run.status.name().to_string(),
                     i.to_string(),
                     format!("{:e}", n.x),
                     format!("{:e}", n.y),

@@ -72,7 +72,16 @@ fn active_set_agrees_with_lemke_on_every_reference_scene_and_hard_case() {
             if let Some(d) = compare(what, l, a) {
                 worst = worst.max(d);
             }
-            if a.message.contains("fell back") || a.message.contains("fall back") {
+            // A fallback runs Lemke inside the active-set solver (its pivots are counted): it must say so.
+            let fell_back = a.message.contains("fell back to Lemke");
+            assert_eq!(
+                a.work.get("pivots").unwrap_or(0) > 0,
+                fell_back,
+                "{what}: Lemke pivots {:?} but message {:?}",
+                a.work.get("pivots"),
+                a.message
+            );
+            if fell_back {
                 fallbacks.push(what.clone());
             }
             compared += 1;

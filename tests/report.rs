@@ -77,7 +77,7 @@ fn report_on_a_foreign_folder_says_only_what_its_inputs_imply() {
     assert!(out.join("sweeps/pad-mesh-study.csv").exists());
     // The machine's CPU count, not a fixed "2 noisy vCPUs".
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
-    assert!(md.contains(&format!("a machine with {cores} logical CPUs")), "{md}");
+    assert!(md.contains(&format!("with {cores} logical CPUs available to the process")), "{md}");
     // Phrases the old report printed whatever its input; none is true here.
     for fixed in ["from `reference/`", "a/R ≈ 0.015", "noisy vCPUs", "seed's figures", "Load paths"] {
         assert!(!md.contains(fixed), "fixed phrase {fixed:?} in a report about other inputs");

@@ -480,16 +480,30 @@ fn run_csv_writes_the_nodal_table_and_progress_stays_off_stderr_when_it_is_not_a
     let head: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
     assert_eq!(
         head,
-        ["solver", "node", "x", "y", "pressure", "shear", "u_x", "u_y", "gap", "slip", "state", "slip_velocity"]
+        [
+            "solver",
+            "status",
+            "node",
+            "x",
+            "y",
+            "pressure",
+            "shear",
+            "u_x",
+            "u_y",
+            "gap",
+            "slip",
+            "state",
+            "slip_velocity"
+        ]
     );
     let rows: Vec<csv::StringRecord> = r.records().map(|x| x.unwrap()).collect();
     // 24 contact elements on a 30° arc of R = 1: one row per contact node, and Σ p h = P (constant elements of
     // length h = 2R sin(15°/24)... taken as the arc length Rθ/n to the accuracy of the chord, 1e-4).
     assert_eq!(rows.len(), 24);
     let h = 30f64.to_radians() / 24.0;
-    let total: f64 = rows.iter().map(|x| x[4].parse::<f64>().unwrap() * h).sum();
+    let total: f64 = rows.iter().map(|x| x[5].parse::<f64>().unwrap() * h).sum();
     assert!((total - 749.70).abs() < 1e-4 * 749.70, "Σ p h = {total}");
-    assert!(rows.iter().all(|x| matches!(&x[10], "contact" | "separated")));
+    assert!(rows.iter().all(|x| matches!(&x[11], "contact" | "separated") && &x[1] == "solved"));
     // --quiet is accepted everywhere (a global flag).
     let o = bin().arg("--quiet").arg("run").arg(&scene).args(["--solver", "lemke"]).output().unwrap();
     assert_eq!(o.status.code(), Some(0));

@@ -69,7 +69,20 @@ pub fn sections(reports: &BTreeMap<String, Report>, out: &Path, md: &mut String,
             .unwrap();
         summary(r, md);
         let solver = r.runs.first().map(|x| x.solver.0).unwrap_or("lemke");
-        let runs = runs_of(r, solver);
+        // The figures and theory comparisons use the solved substeps only (a path that broke, or a substep judged
+        // not an answer, has no tractions to compare); the summary above says how many there are.
+        let all = runs_of(r, solver);
+        let runs: Vec<(usize, &SolverRun)> =
+            all.iter().copied().filter(|(_, x)| x.status == crate::solvers::Status::Solved).collect();
+        if runs.len() < all.len() {
+            writeln!(
+                md,
+                "{solver} solved {} of the path's {} substeps; the figures below show the solved ones.\n",
+                runs.len(),
+                r.steps.len()
+            )
+            .unwrap();
+        }
         if r.scene.steps.iter().any(|st| st.roll.unwrap_or(0.0) > 0.0) {
             rolling_approach(name, r, &runs, &units, out, md, figs)?;
         } else {
@@ -90,7 +103,13 @@ fn summary(r: &Report, md: &mut String) {
     for run in &r.runs {
         let runs = runs_of(r, run.solver.0);
         let solved = runs.iter().filter(|(_, x)| x.status == crate::solvers::Status::Solved).count();
-        let dissipated = runs.last().and_then(|(_, x)| x.history.as_ref()).map_or(0.0, |h| h.dissipated_total);
+        // The total dissipated up to the last solved substep.
+        let dissipated = runs
+            .iter()
+            .rev()
+            .find(|(_, x)| x.status == crate::solvers::Status::Solved)
+            .and_then(|(_, x)| x.history.as_ref())
+            .map_or(0.0, |h| h.dissipated_total);
         let worst = runs.iter().filter_map(|(_, x)| x.residuals.map(|res| res.max())).fold(0.0, f64::max);
         let time: f64 = runs.iter().map(|(_, x)| x.timing_s.total).sum();
         writeln!(md, "| {} | {solved}/{} | {dissipated:.4e} | {worst:.1e} | {time:.3} |", run.solver, r.steps.len())
@@ -140,7 +159,13 @@ fn hysteresis(
             .filter_map(|(_, x)| x.history.as_ref().map(|h| h.dissipated))
             .sum();
         let exact = theory::md_cycle_dissipation(mu, p, s.contact_modulus(), q_star);
-        if r.scene.steps.len() >= 4 {
+        let in_cycle = |k: usize| (2..=3).contains(&r.steps[k].step);
+        let complete =
+            runs.iter().filter(|(k, _)| in_cycle(*k)).count() == (0..r.steps.len()).filter(|&k| in_cycle(k)).count();
+        if r.scene.steps.len() >= 4 && !complete {
+            writeln!(md, "The cycle +Q* → −Q* → +Q* did not complete ({solver} failed in it): no cycle energy.\n")
+                .unwrap();
+        } else if r.scene.steps.len() >= 4 {
             writeln!(
                 md,
                 "Energy dissipated in the cycle +Q* → −Q* → +Q* (Q* = {q_star}, {solver}): {w:.6e}; Mindlin–Deresiewicz \
@@ -254,13 +279,14 @@ fn stick_zone(
             }
         }
         what = "Spence: c = (c/a)(β/μ) · a(P), self-similar";
-        let last = pts.last().unwrap().1;
-        let a_end = Hertz2D::from_load(
-            runs.last().unwrap().1.resultants.map_or(0.0, |f| f.normal),
-            s.wheel.radius,
-            s.contact_modulus(),
-        )
-        .a;
+        // The last substep with a stick zone, and Hertz's a at its own load.
+        let (k_last, last) = *pts.last().unwrap();
+        let p_last = runs
+            .iter()
+            .find(|(k, _)| (k + 1) as f64 == k_last)
+            .and_then(|(_, x)| x.resultants)
+            .map_or(0.0, |f| f.normal);
+        let a_end = Hertz2D::from_load(p_last, s.wheel.radius, s.contact_modulus()).a;
         writeln!(
             md,
             "Final stick half-width {last:.4} {} against Spence's {:.4} (c/a = {:.4} computed against {k_ratio:.4} for \

@@ -67,6 +67,15 @@ pub fn finite_vs_half_plane(sw: &Sweep, out: &Path, md: &mut String, figs: &mut 
         ];
         data.push((num(f, "friction").unwrap_or(0.0), a_over_r, d));
     }
+    if data.is_empty() {
+        writeln!(
+            md,
+            "No load was solved on both models (rows are paired by their resultant P, Q and μ), so there is nothing \
+             to compare.\n"
+        )
+        .unwrap();
+        return Ok(());
+    }
     data.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
     let unpaired = pairs.values().filter(|(f, h)| f.is_none() || h.is_none()).count();
     writeln!(

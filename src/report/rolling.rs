@@ -117,8 +117,12 @@ pub fn seed_vs_steady(
                 ));
             }
             None => {
-                let (status, message) =
-                    sr.runs.first().map(|r| (r.status.to_string(), r.message.clone())).unwrap_or_default();
+                let (status, message) = sr
+                    .runs
+                    .iter()
+                    .find(|r| r.solver == "lemke")
+                    .map(|r| (r.status.to_string(), r.message.clone()))
+                    .unwrap_or_else(|| ("not run".into(), "the steady counterpart has no Lemke run".into()));
                 writeln!(
                     rows,
                     "| {name} | {} | {how} | {} | {status}: {message} | | | | | |",
