@@ -454,18 +454,6 @@ fn load_all(scenes: &[PathBuf]) -> Result<Vec<Scene>, rollbem::Error> {
     Ok(loaded)
 }
 
-/// `report` writes `runs/NAME.json` per scene of `REFERENCE/scenes/`: refuse two scenes with one name before
-/// anything runs (a folder that cannot be read is left to the report to diagnose).
-fn report_scene_names(reference: &Path) -> Result<(), rollbem::Error> {
-    let Ok(entries) = std::fs::read_dir(reference.join("scenes")) else { return Ok(()) };
-    let mut paths: Vec<PathBuf> = entries
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    paths.sort();
-    load_all(&paths).map(|_| ())
-}
-
 /// Whether a scene file declares expectations (a `[checks]` table): only then does `run` exit 1 on a failed check.
 fn declares_checks(path: &Path) -> bool {
     std::fs::read_to_string(path)
@@ -646,9 +634,6 @@ fn main() -> ExitCode {
             Err(e) => fail(&e),
         },
         Cmd::Report { reference, out } => {
-            if let Err(e) = report_scene_names(&reference) {
-                return fail(&e);
-            }
             let opts = rollbem::report::ReportOptions { reference, out, progress: !cli.quiet };
             match rollbem::report::generate(&opts) {
                 Ok(path) => {

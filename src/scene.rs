@@ -1219,16 +1219,21 @@ pub fn safe_name(name: &str) -> std::result::Result<(), String> {
 /// Refuse two scenes of one command with the same name (their outputs, NAME.json, would overwrite each other):
 /// `scenes` are (file, scene) pairs; the error names both files and the key `name`.
 pub fn unique_names<'a>(scenes: impl IntoIterator<Item = (&'a Path, &'a Scene)>) -> Result<()> {
+    unique_output_names(scenes.into_iter().map(|(p, s)| (p, s.name.as_str())))
+}
+
+/// Refuse two inputs of one command (scenes, sweep specs) with the same `name`, which names their output files:
+/// `items` are (file, name) pairs; the error names both files and the key `name`.
+pub fn unique_output_names<'a>(items: impl IntoIterator<Item = (&'a Path, &'a str)>) -> Result<()> {
     let mut seen: std::collections::BTreeMap<&str, &Path> = std::collections::BTreeMap::new();
-    for (path, s) in scenes {
-        if let Some(first) = seen.insert(&s.name, path) {
+    for (path, name) in items {
+        if let Some(first) = seen.insert(name, path) {
             return Err(Error::Invalid {
                 path: path.to_path_buf(),
                 field: "name".into(),
                 message: format!(
-                    "`{}` is also the name of {}: scene names must be unique within a command (they name the output \
+                    "`{name}` is also the name of {}: names must be unique within a command (they name the output \
                      files)",
-                    s.name,
                     first.display()
                 ),
             });

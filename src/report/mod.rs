@@ -58,46 +58,31 @@ fn fmt_e(v: Option<f64>) -> String {
     v.map(|v| format!("{v:.2e}")).unwrap_or_else(|| "–".into())
 }
 
-/// Check that `name` (a scene's or sweep's `name`, read from `path`) can name an output file: letters, digits,
-/// `-`, `_` and `.`, not starting with `.`; and that no earlier input used it (`seen`).
-fn output_name(name: &str, path: &Path, seen: &mut BTreeMap<String, PathBuf>) -> Result<()> {
-    let safe = !name.is_empty()
-        && !name.starts_with('.')
-        && name.chars().all(|c| c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.'));
-    if !safe {
-        return Err(Error::Invalid {
-            path: path.to_path_buf(),
-            field: "name".into(),
-            message: format!(
-                "{name:?} names the report's output files: use letters, digits, '-', '_' and '.', not starting with '.'"
-            ),
-        });
-    }
-    if let Some(first) = seen.insert(name.to_string(), path.to_path_buf()) {
-        return Err(Error::Invalid {
-            path: path.to_path_buf(),
-            field: "name".into(),
-            message: format!("{name:?} is also the name of {}: names must be unique within a report", first.display()),
-        });
-    }
-    Ok(())
-}
-
 /// Figures written so far: (title, file relative to the report folder).
 pub type Figures = Vec<(String, String)>;
 
 /// Regenerate everything; returns the path of the Markdown summary.
 pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
     let out = &opts.out;
-    // Every input is read and its name checked before anything is written.
-    let mut seen = BTreeMap::new();
+    // Every input is read and checked before anything is written: scene names are safe file names by validation,
+    // sweep names are checked here, and both must be unique (they name the output files).
+    let mut scenes = Vec::new();
     for p in toml_files(&opts.reference.join("scenes"))? {
-        output_name(&Scene::from_file(&p)?.name, &p, &mut seen)?;
+        let s = Scene::from_file(&p)?;
+        scenes.push((p, s));
     }
-    let mut seen = BTreeMap::new();
+    crate::scene::unique_names(scenes.iter().map(|(p, s)| (p.as_path(), s)))?;
+    let mut specs = Vec::new();
     for p in toml_files(&opts.reference.join("sweeps"))? {
-        output_name(&crate::sweep::SweepSpec::from_file(&p)?.name, &p, &mut seen)?;
+        let spec = crate::sweep::SweepSpec::from_file(&p)?;
+        crate::scene::safe_name(&spec.name).map_err(|message| Error::Invalid {
+            path: p.clone(),
+            field: "name".into(),
+            message,
+        })?;
+        specs.push((p, spec));
     }
+    crate::scene::unique_output_names(specs.iter().map(|(p, s)| (p.as_path(), s.name.as_str())))?;
     for d in [out.clone(), out.join("runs"), out.join("sweeps"), out.join("figures")] {
         std::fs::create_dir_all(&d).map_err(|source| Error::Write { path: d.clone(), source })?;
     }
@@ -114,10 +99,10 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
         opts.out.display()
     )
     .unwrap();
-    let (reports, cmp_md) = reference_scenes(opts)?;
+    let (reports, cmp_md) = reference_scenes(opts, scenes)?;
     let figures = seed_figures(&reports, &out.join("figures"))?;
     let maps = stress_maps(&reports, out)?;
-    let (sweep_md, plots) = sweeps(opts)?;
+    let (sweep_md, plots) = sweeps(opts, specs)?;
     let mut path_md = String::new();
     let mut path_figs: Figures = Vec::new();
     paths::sections(&reports, out, &mut path_md, &mut path_figs)?;
@@ -196,7 +181,7 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
 }
 
 /// Run every reference scene: its JSON, `solver-comparison.csv`, and the comparison table (Markdown).
-fn reference_scenes(opts: &ReportOptions) -> Result<(BTreeMap<String, Report>, String)> {
+fn reference_scenes(opts: &ReportOptions, scenes: Vec<(PathBuf, Scene)>) -> Result<(BTreeMap<String, Report>, String)> {
     let out = &opts.out;
     // ---- reference scenes: JSON, solver comparison, seed figures -----------------------------------------------
     let mut reports: BTreeMap<String, Report> = BTreeMap::new();
@@ -208,14 +193,6 @@ fn reference_scenes(opts: &ReportOptions) -> Result<(BTreeMap<String, Report>, S
         "| scene | solver | status | size | work | residual | Δ vs Lemke (/p0) | state mismatches | QP symmetrisation effect | solve time [s] |\n\
          |---|---|---|---|---|---|---|---|---|---|\n",
     );
-    // Read and check every scene before running any, so that a bad name writes nothing.
-    let mut seen = BTreeMap::new();
-    let mut scenes = Vec::new();
-    for p in toml_files(&opts.reference.join("scenes"))? {
-        let s = Scene::from_file(&p)?;
-        output_name(&s.name, &p, &mut seen)?;
-        scenes.push((p, s));
-    }
     for (p, s) in scenes {
         let r = run_scene(&s, &p)?;
         let text = serde_json::to_string_pretty(&r).expect("report serialises");
@@ -295,17 +272,10 @@ fn stress_maps(reports: &BTreeMap<String, Report>, out: &Path) -> Result<Vec<(St
 }
 
 /// Run every reference sweep into its CSV and its sections. Returns (Markdown, plots).
-fn sweeps(opts: &ReportOptions) -> Result<(String, Figures)> {
+fn sweeps(opts: &ReportOptions, specs: Vec<(PathBuf, crate::sweep::SweepSpec)>) -> Result<(String, Figures)> {
     let out = &opts.out;
     let mut md = String::new();
     let mut figs: Figures = Vec::new();
-    let mut seen = BTreeMap::new();
-    let mut specs = Vec::new();
-    for spec_path in toml_files(&opts.reference.join("sweeps"))? {
-        let spec = crate::sweep::SweepSpec::from_file(&spec_path)?;
-        output_name(&spec.name, &spec_path, &mut seen)?;
-        specs.push((spec_path, spec));
-    }
     for (spec_path, spec) in specs {
         let stem = spec.name.clone();
         let csv_path = out.join("sweeps").join(format!("{stem}.csv"));
