@@ -94,8 +94,12 @@ pub fn plot_result(json: &Path, out: Option<&Path>) -> Result<Plotted> {
         (unit("length_unit", &from_label(1, "length unit")), unit("stress_unit", &from_label(2, "stress unit")));
     // Hertz's pressure at the document's load, when the references carry it.
     let hertz = doc.pointer("/references/hertz").and_then(|h| {
-        Some((h.get("half_width")?.as_f64()?, h.get("peak_pressure")?.as_f64()?))
-            .filter(|(a, p0)| *a > 0.0 && *p0 > 0.0)
+        let hertz = crate::hertz::Hertz {
+            half_width: h.get("half_width")?.as_f64()?,
+            peak_pressure: h.get("peak_pressure")?.as_f64()?,
+            load: h.get("load")?.as_f64()?,
+        };
+        (hertz.half_width > 0.0 && hertz.peak_pressure > 0.0).then_some(hertz)
     });
     let mut done = Plotted::default();
     for (k, run) in runs.iter().enumerate() {
@@ -119,9 +123,9 @@ pub fn plot_result(json: &Path, out: Option<&Path>) -> Result<Plotted> {
                 .y_unit(su.as_str())
                 .add(Series::new("pressure p", p, Style::LineMarkers))
                 .add(Series::new("shear q", q, Style::LineMarkers));
-        if let Some((a, p0)) = hertz {
-            let xs = (0..=200).map(|i| -a + 2.0 * a * f64::from(i) / 200.0);
-            let curve = xs.map(|x| (x, p0 * (1.0 - (x / a).powi(2)).max(0.0).sqrt())).collect();
+        if let Some(h) = hertz {
+            let a = h.half_width;
+            let curve = (0..=200).map(|i| -a + 2.0 * a * f64::from(i) / 200.0).map(|x| (x, h.pressure(x))).collect();
             chart = chart.add(Series::new("Hertz pressure", curve, Style::Dashed));
         }
         let file = out.join(format!("{stem}.{solver}.tractions.svg"));

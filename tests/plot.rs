@@ -199,8 +199,25 @@ fn plot_of_a_result_draws_tractions_with_hertz_states_and_slip_velocity() {
     run("reference/scenes/hertz-hub-fine.toml", "h.json");
     let tr = std::fs::read_to_string(tmp.path().join("h.lemke.tractions.svg")).unwrap();
     assert!(tr.contains("Hertz pressure"));
+    // The states chart puts one marker per node on its category's row: the markers' rows must hold as many nodes
+    // as the result document calls separated and in contact (the document is the peer of the plot).
     let st = std::fs::read_to_string(tmp.path().join("h.lemke.states.svg")).unwrap();
     assert!(st.contains("separated") && st.contains("stick"));
+    let doc: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(tmp.path().join("h.json")).unwrap()).unwrap();
+    let nodes = doc["runs"][0]["nodes"].as_array().unwrap();
+    let count = |state: &str| nodes.iter().filter(|n| n["state"] == state).count();
+    let mut rows: std::collections::BTreeMap<String, usize> = std::collections::BTreeMap::new();
+    for circle in st.split("<circle").skip(1) {
+        let cy = circle.split("cy=\"").nth(1).unwrap().split('"').next().unwrap().to_string();
+        *rows.entry(cy).or_default() += 1;
+    }
+    let mut sizes: Vec<usize> = rows.values().copied().filter(|&n| n > 1).collect();
+    sizes.sort();
+    let mut want = vec![count("separated"), count("contact")];
+    want.sort();
+    assert!(want[0] > 0 && want[1] > 0);
+    assert_eq!(sizes, want, "markers per category row (the legend's one marker aside)");
     assert!(!tmp.path().join("h.lemke.slip_velocity.svg").exists(), "no rolling, no slip-velocity figure");
     run("reference/scenes/seed-fig13-mu03.toml", "r.json");
     assert!(tmp.path().join("r.lemke.slip_velocity.svg").exists());

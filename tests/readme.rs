@@ -1,6 +1,7 @@
 //! The README's worked example is a tested artefact (issue 12, item 11): the command it shows is run and its output
 //! compared, line by line, with the block in the README. Only the two timing columns of the solver table are masked
-//! (the machine decides them); every other character must match. The README block may end with a line `  ...` after which
+//! (the machine decides them) and the solver table's rows are compared cell by cell (their column widths are not);
+//! every other line must match character for character. The README block may end with a line `  ...` after which
 //! the remaining output lines are not shown.
 
 use std::path::Path;

@@ -301,7 +301,12 @@ fn sweeps(opts: &ReportOptions, specs: Vec<(PathBuf, crate::sweep::SweepSpec)>) 
 }
 
 fn lemke_of<'a>(reports: &'a BTreeMap<String, Report>, name: &str) -> Option<&'a SolverRun> {
-    reports.get(name)?.runs.iter().find(|r| r.solver == "lemke" && r.contact.is_some())
+    lemke_run(reports.get(name)?)
+}
+
+/// Lemke's solved run of a report (the reference every comparison in the report is made against).
+fn lemke_run(r: &Report) -> Option<&SolverRun> {
+    r.runs.iter().find(|r| r.solver == "lemke" && r.contact.is_some())
 }
 
 /// The seed's figures from the reference scenes' Lemke runs. Returns (title, file) pairs.

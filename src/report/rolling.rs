@@ -14,7 +14,7 @@
 //! are inconsistencies of Coulomb's law; a steady solution has none.
 
 use super::table::Units;
-use super::{plot_err, Figures};
+use super::{lemke_run as lemke, plot_err, Figures};
 use crate::error::Result;
 use crate::plot::{Chart, Series, Style};
 use crate::post::NodeState;
@@ -43,10 +43,6 @@ fn steady_counterpart(s: &Scene) -> Option<(Scene, &'static str)> {
     t.rolling = Some(roll);
     t.name = format!("{}-steady", s.name);
     Some((t, how))
-}
-
-fn lemke(r: &Report) -> Option<&SolverRun> {
-    r.runs.iter().find(|x| x.solver == "lemke" && x.contact.is_some())
 }
 
 fn stick_range(run: &SolverRun) -> String {
