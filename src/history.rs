@@ -261,10 +261,9 @@ pub fn path_csv(report: &Report) -> String {
             let f = run.resultants;
             let rb = run.rigid_body;
             // A substep judged not an answer keeps its nodes as evidence; its row reports no stick zone or counts.
-            let solved = run.status == crate::solvers::Status::Solved;
-            let edges = crate::references::stick_edges(&run.nodes).filter(|_| solved);
-            let count =
-                |s: crate::post::NodeState| if solved { run.nodes.iter().filter(|n| n.state == s).count() } else { 0 };
+            let nodes = run.answer_nodes();
+            let edges = crate::references::stick_edges(nodes);
+            let count = |s: crate::post::NodeState| nodes.iter().filter(|n| n.state == s).count();
             let e = run.history.as_ref();
             writeln!(
                 out,

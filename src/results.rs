@@ -100,6 +100,19 @@ pub struct SolverRun {
     pub stresses: Option<crate::stresses::StressResult>,
 }
 
+impl SolverRun {
+    /// The nodes of the answer: the run's nodes when it solved, none otherwise (a run judged
+    /// `contact_at_zone_edge` or `kinematics_out_of_range` keeps its nodes as evidence, not as an answer). Every
+    /// figure derived from the nodes (stick edges, node counts) reads them through this.
+    pub fn answer_nodes(&self) -> &[crate::post::NodeResult] {
+        if self.status == crate::solvers::Status::Solved {
+            &self.nodes
+        } else {
+            &[]
+        }
+    }
+}
+
 /// The frictional dissipation of a load step (energy per unit thickness, user's units): Σ −h_i Δs_i with the
 /// step's end forces (backward Euler; converges with the substeps).
 #[derive(Debug, Clone, Copy, Serialize)]

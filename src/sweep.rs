@@ -575,8 +575,7 @@ fn run_row(
         scene.wheel.model.name().to_string(),
     ]);
     let hertz = r.resultants.filter(|f| f.normal > 0.0).map(|f| crate::references::hertz_at(scene, f.normal));
-    let edges = crate::references::stick_edges(&r.nodes)
-        .filter(|_| scene.contact.friction > 0.0 && r.status == crate::solvers::Status::Solved);
+    let edges = crate::references::stick_edges(r.answer_nodes()).filter(|_| scene.contact.friction > 0.0);
     cells.extend([
         float(Some(scene.wheel.radius)),
         float(Some(scene.contact_modulus())),
