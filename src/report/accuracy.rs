@@ -28,10 +28,10 @@ const MEASURES: &[(&str, &str)] = &[
     ("hertz_l2_err", "L2 pressure error vs Hertz"),
     ("hertz_a_err", "half-width error vs Hertz"),
     ("hertz_p0_err", "peak-pressure error vs Hertz"),
-    ("disc_a_err", "half-width discretisation error (vs the extrapolated a of the same model)"),
-    ("disc_p0_err", "peak-pressure discretisation error (vs the extrapolated p0 of the same model)"),
+    ("disc_a_err", "half-width error vs its mesh limit a∞"),
+    ("disc_p0_err", "peak-pressure error vs its mesh limit p0∞"),
     ("cm_shear_l2_err", "L2 shear error vs Cattaneo–Mindlin (/‖μp‖)"),
-    ("cm_shear_err", "worst shear error vs Cattaneo–Mindlin away from ±a, ±c (/μp0)"),
+    ("cm_shear_err", "max shear error vs C–M off ±a, ±c (/μp0)"),
 ];
 
 /// Rows grouped into series by label, each in refinement order as (elements, row).

@@ -133,7 +133,14 @@ fn hysteresis(
 ) -> Result<()> {
     let pts: Vec<(f64, f64)> =
         runs.iter().filter_map(|(_, x)| Some((x.rigid_body?.tangential?, x.resultants?.tangential))).collect();
-    if pts.iter().all(|p| p.1 == 0.0) {
+    // A loop exists only when the path drives the tangential DOF (Q or δ_T); a purely normal path (Spence's) has
+    // Q at round-off, which is no loop.
+    let tangential = r
+        .scene
+        .steps
+        .iter()
+        .any(|st| st.tangential_load.is_some_and(|q| q != 0.0) || st.tangential_shift.is_some_and(|d| d != 0.0));
+    if !tangential || pts.is_empty() {
         return Ok(());
     }
     let solver = runs.first().map(|(_, x)| x.solver.0).unwrap_or("");
