@@ -12,15 +12,16 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
 
-/// Errors within this fraction of each other are equal for the front: a configuration is beaten on error only by one
-/// at least this much more accurate (equal-error points that differ only by timing noise are not choices).
+/// Errors within this fraction of each other are equal: a configuration is beaten on error only by one at least this
+/// much more accurate (equal-error points that differ only by round-off are not choices), and a recommendation among
+/// configurations tied in time prefers none of them for an error this close.
 const PARETO_IMPROVEMENT: f64 = 0.02;
 
-/// Relative timing noise assumed beyond the spread of a configuration's own repeated runs: its time interval
-/// [fastest, slowest] is widened to [fastest/(1 + n), slowest·(1 + n)] before two configurations are compared, and
-/// they are ordered in time only when the widened intervals do not overlap. Chosen by measurement: two consecutive
-/// `report` runs on the project's 2-core machine gave identical Pareto fronts in 1 of 10 (error measure, sweep)
-/// pairs with n = 0.25, 6 with 0.5 and 0.75, 9 with 1.0 (and 1.5); the recommendations per target were identical.
+/// Relative timing noise assumed for the recommendations: two configurations are tied in time when their median
+/// times, each widened to [t/(1 + n), t·(1 + n)], overlap (with n = 1: within a factor 4 of each other). Chosen by
+/// measurement on the project's 2-core machine: the same configuration's median time moved by up to 1.5× between
+/// consecutive sweeps (5 % typical). Medians, not the fastest–slowest range: the slowest of five runs is an outlier
+/// often enough (10× the median) to make ties depend on it.
 const TIMING_NOISE: f64 = 1.0;
 
 /// The error measures a sweep may carry: CSV column and label.
@@ -76,7 +77,140 @@ pub fn sections(sw: &mut Sweep, out: &Path, md: &mut String, figs: &mut Figures)
     Ok(())
 }
 
-/// Accuracy against time for one error measure: plot, Pareto front, cheapest configuration per target with ties.
+/// Whether a swept key (or a series column) chooses the method — the mesh, the solver and its settings — rather than
+/// the problem. Configurations are compared (fronts, recommendations) only within one problem: two friction
+/// coefficients or two loads are not choices a user makes to save time.
+fn is_method_key(k: &str) -> bool {
+    k.starts_with("mesh.") || k.starts_with("solvers.") || k == "element" || k == "solver"
+}
+
+/// A configuration's time for comparisons (seconds): the time of its setup (BEM assembly and condensation, or the
+/// half-plane's influence blocks) taken as the fastest median setup among the configurations that compute that same
+/// setup — the same scene, model and mesh, only the solver or its settings differ — plus its own median formulation
+/// and solve times. The setup is the same computation for all of them, so pooling its measurements removes noise
+/// that would otherwise order configurations differently from run to run (measured over four consecutive sweeps of
+/// the four accuracy specs, 60 (pair of sweeps, sweep, error measure) comparisons: the fronts of [`Class`]es were
+/// identical in 52 of 60 with each configuration's own total, in 60 of 60 with the pooled setup). `lo`, `hi`: the fastest and slowest of its repeated runs, as ratios to their median, applied to `time`.
+#[derive(Debug, Clone, Copy)]
+struct Cost {
+    time: f64,
+    lo: f64,
+    hi: f64,
+    runs: usize,
+}
+
+/// The [`Cost`] of every row (same order); `None` for a row without a total time.
+fn costs(sw: &Sweep, rows: &[&Row]) -> Vec<Option<Cost>> {
+    let setup_of = |r: &Row| Some(num(r, "t_assembly")? + num(r, "t_condensation")?);
+    let shared = |r: &Row| {
+        let mut k: Vec<&str> = vec![cell(r, "scene"), cell(r, "model"), cell(r, "element")];
+        k.extend(sw.keys.iter().filter(|k| !k.starts_with("solvers.")).map(|k| cell(r, k)));
+        k.join("\u{1f}")
+    };
+    let mut pooled: BTreeMap<String, f64> = BTreeMap::new();
+    for r in rows {
+        if let Some(t) = setup_of(r) {
+            let e = pooled.entry(shared(r)).or_insert(t);
+            *e = e.min(t);
+        }
+    }
+    rows.iter()
+        .map(|r| {
+            let total = num(r, "t_total")?;
+            let own = || Some(pooled.get(&shared(r))? + num(r, "t_formulation")? + num(r, "t_solve")?);
+            let time = own().unwrap_or(total);
+            let scale = if total > 0.0 { time / total } else { 1.0 };
+            Some(Cost {
+                time,
+                lo: num(r, "t_total_min").unwrap_or(total) * scale,
+                hi: num(r, "t_total_max").unwrap_or(total) * scale,
+                runs: num(r, "timing_runs").unwrap_or(1.0) as usize,
+            })
+        })
+        .collect()
+}
+
+/// Solvers in the order a recommendation prefers them among those tied in time on the same answer: the direct
+/// solvers first (exact on the discrete problem, no tolerance to choose), fastest at scale first (issue 14's
+/// measurements: active_set 4–95× faster than Lemke from 1000 unknowns), then the iterative ones. Solvers not named
+/// here come after, by name. Measured: preferring `lemke` instead (the registry's order) flipped the recommended
+/// solver between consecutive sweeps where Lemke's time sat near 4× active_set's (2 of 30 comparisons over three sweeps).
+const SOLVER_PREFERENCE: &[&str] = &["active_set", "lemke", "clarabel", "lemke_dense", "pgs", "normtang_qp"];
+
+/// Configurations that compute the same answer: the same problem and discretisation (scene, model, element kind,
+/// every mesh key), only the solver or its settings differ, with errors within [`PARETO_IMPROVEMENT`] of the
+/// smallest. Its time is its fastest member's. The front and the recommendations compare these classes, not
+/// solvers that return the same answer: comparing single configurations, lemke and active_set on 25 half-plane
+/// elements — 40 µs each, 15 % apart, in either order from one sweep to the next — entered and left the front
+/// between consecutive sweeps (identical fronts in 36 of the 60 comparisons of [`Cost`]'s measurement, against 60
+/// of 60 for classes; the rule before both changes — each configuration's own total, ranges widened by 2× — 31 of
+/// 60).
+struct Class<'a> {
+    /// The members, in [`SOLVER_PREFERENCE`] order.
+    members: Vec<&'a Row>,
+    /// The fastest member.
+    fastest: &'a Row,
+    /// The smallest error of the members.
+    error: f64,
+}
+
+/// The key of a row's discretisation within one problem (everything but the solver and its settings).
+fn discretisation(sw: &Sweep, r: &Row) -> String {
+    let mut k: Vec<&str> = vec![cell(r, "scene"), cell(r, "model"), cell(r, "element"), cell(r, "contact_elements")];
+    k.extend(sw.keys.iter().filter(|k| !k.starts_with("solvers.")).map(|k| cell(r, k)));
+    k.join("\u{1f}")
+}
+
+/// The rank of a solver in [`SOLVER_PREFERENCE`].
+fn preference(r: &Row) -> usize {
+    let s = cell(r, "solver");
+    SOLVER_PREFERENCE.iter().position(|p| *p == s).unwrap_or(SOLVER_PREFERENCE.len())
+}
+
+/// Two configurations of one solver ordered by their swept settings (`solvers.NAME.KEY` cells, numerically where
+/// both are numbers: the loosest tolerance last).
+fn settings(sw: &Sweep, a: &Row, b: &Row) -> std::cmp::Ordering {
+    sw.keys
+        .iter()
+        .filter(|k| k.starts_with("solvers.") && *k != "solvers.use")
+        .map(|k| match (num(a, k), num(b, k)) {
+            (Some(x), Some(y)) => x.total_cmp(&y),
+            _ => cell(a, k).cmp(cell(b, k)),
+        })
+        .find(|o| o.is_ne())
+        .unwrap_or(std::cmp::Ordering::Equal)
+}
+
+/// One problem's rows grouped into [`Class`]es.
+fn classes<'a>(sw: &Sweep, rows: &[&'a Row], err: &str, cost: &dyn Fn(&Row) -> Cost) -> Vec<Class<'a>> {
+    let e = |r: &Row| num(r, err).unwrap();
+    let mut by_disc: BTreeMap<String, Vec<&Row>> = BTreeMap::new();
+    for r in rows {
+        by_disc.entry(discretisation(sw, r)).or_default().push(r);
+    }
+    let mut out = Vec::new();
+    for (_, mut g) in by_disc {
+        g.sort_by(|a, b| e(a).total_cmp(&e(b)));
+        let mut rest = g.as_slice();
+        while let Some(first) = rest.first() {
+            let n = rest.iter().take_while(|r| e(r) <= e(first) * (1.0 + PARETO_IMPROVEMENT)).count();
+            let mut members = rest[..n].to_vec();
+            rest = &rest[n..];
+            members.sort_by(|a, b| {
+                preference(a)
+                    .cmp(&preference(b))
+                    .then(cell(a, "solver").cmp(cell(b, "solver")))
+                    .then(settings(sw, a, b))
+            });
+            let fastest = members.iter().copied().min_by(|a, b| cost(a).time.total_cmp(&cost(b).time)).unwrap();
+            out.push(Class { error: e(first), fastest, members });
+        }
+    }
+    out
+}
+
+/// Accuracy against time for one error measure: plot, and per problem the Pareto front and the cheapest
+/// configuration per target with the configurations tied with it.
 fn front_and_cheapest(
     sw: &Sweep,
     solved: &[&Row],
@@ -86,13 +220,19 @@ fn front_and_cheapest(
     md: &mut String,
     figs: &mut Figures,
 ) -> Result<()> {
+    let rows: Vec<&Row> =
+        solved.iter().copied().filter(|r| num(r, err).is_some() && num(r, "t_total").is_some()).collect();
+    let cost_of = costs(sw, &rows);
+    let by_row: BTreeMap<*const Row, Cost> =
+        rows.iter().zip(&cost_of).filter_map(|(r, c)| Some((*r as *const Row, (*c)?))).collect();
+    let cost = |r: &Row| by_row[&(r as *const Row)];
     let mut chart = Chart::new(format!("{}: {label} against total time", sw.name), "total time", label)
         .x_unit("s")
         .y_unit("1")
         .log_x()
         .log_y();
-    for (k, pts) in series(sw, solved) {
-        let p: Vec<(f64, f64)> = pts.iter().filter_map(|(_, r)| Some((num(r, "t_total")?, num(r, err)?))).collect();
+    for (k, pts) in series(sw, &rows) {
+        let p: Vec<(f64, f64)> = pts.iter().filter_map(|(_, r)| Some((cost(r).time, num(r, err)?))).collect();
         if !p.is_empty() {
             chart = chart.add(Series::new(k, p, Style::LineMarkers));
         }
@@ -101,114 +241,264 @@ fn front_and_cheapest(
     chart.write(&out.join(&file)).map_err(plot_err)?;
     figs.push((format!("{}: {label} against time", sw.name), file.clone()));
     writeln!(md, "#### {label}\n\n![{label} against time]({file})\n").unwrap();
-    let varied = sw.varied(solved);
-    let rows: Vec<&Row> =
-        solved.iter().copied().filter(|r| num(r, err).is_some() && num(r, "t_total").is_some()).collect();
-    let time = |r: &Row| {
-        let t = num(r, "t_total").unwrap();
-        let (lo, hi) = (num(r, "t_total_min").unwrap_or(t), num(r, "t_total_max").unwrap_or(t));
-        (t, lo, hi, num(r, "timing_runs").unwrap_or(1.0) as usize)
-    };
-    // The widened time interval of a row, and "a is clearly faster than b".
-    let widened = |r: &Row| {
-        let (_, lo, hi, _) = time(r);
-        (lo / (1.0 + TIMING_NOISE), hi * (1.0 + TIMING_NOISE))
-    };
-    let faster = |a: &Row, b: &Row| widened(a).1 < widened(b).0;
-    let tied_in_time = |a: &Row, b: &Row| !faster(a, b) && !faster(b, a);
-    // The front: every configuration that no other beats — clearly faster at no worse an error (within
-    // PARETO_IMPROVEMENT), or tied in time and clearly more accurate. Membership does not depend on the order of
-    // configurations whose times the noise cannot separate.
-    let beats = |a: &Row, b: &Row| {
-        let (ea, eb) = (num(a, err).unwrap(), num(b, err).unwrap());
-        (faster(a, b) && ea <= eb * (1.0 + PARETO_IMPROVEMENT))
-            || (tied_in_time(a, b) && ea < eb * (1.0 - PARETO_IMPROVEMENT))
-    };
-    let mut front: Vec<&Row> = rows.iter().copied().filter(|b| !rows.iter().any(|a| beats(a, b))).collect();
-    if front.is_empty() {
-        // `beats` is not transitive (tolerances), so with very wide timing spreads every row can be beaten by
-        // another: fall back to plain dominance on the medians (faster and at least as accurate, one strictly).
-        let t = |r: &Row| num(r, "t_total").unwrap();
-        let e = |r: &Row| num(r, err).unwrap();
-        front = rows
-            .iter()
-            .copied()
-            .filter(|b| !rows.iter().any(|a| t(a) <= t(b) && e(a) <= e(b) && (t(a) < t(b) || e(a) < e(b))))
-            .collect();
+    let varied = sw.varied(&rows);
+    let problem_keys: Vec<String> = varied.iter().filter(|k| !is_method_key(k)).cloned().collect();
+    // A discretisation is labelled by what varies among the non-solver method keys; its solvers are listed apart.
+    let disc_keys: Vec<String> =
+        varied.iter().filter(|k| is_method_key(k) && *k != "solver" && !k.starts_with("solvers.")).cloned().collect();
+    let solver_keys: Vec<String> =
+        varied.iter().filter(|k| *k == "solver" || k.starts_with("solvers.")).cloned().collect();
+    let mut problems: BTreeMap<String, Vec<&Row>> = BTreeMap::new();
+    for r in &rows {
+        problems.entry(sw.label(r, &problem_keys)).or_default().push(r);
     }
-    front.sort_by(|a, b| {
-        num(a, "t_total")
-            .unwrap()
-            .total_cmp(&num(b, "t_total").unwrap())
-            .then(sw.label(a, &varied).cmp(&sw.label(b, &varied)))
-    });
-    let show_time = |r: &Row| {
-        let (t, lo, hi, k) = time(r);
-        if k > 1 {
-            format!("{t:.2e} ({lo:.2e}–{hi:.2e}, {k} runs)")
+    writeln!(
+        md,
+        "Times: a configuration's total time is its setup (assembly and condensation: the same computation for every \
+         configuration on the same scene and mesh, so the fastest median among them) plus its own formulation and \
+         solve time (the median of repeated runs where the sweep asks for them; their fastest and slowest in \
+         brackets). Configurations that differ only in the solver or its settings and whose errors agree within \
+         {imp:.0} % compute the same answer: they are one entry, as fast as its fastest solver. Pareto front: the \
+         entries no other beats, where an entry beats another if it is faster at an error no more than {imp:.0} % \
+         larger, or no slower and at least {imp:.0} % more accurate. {}\n",
+        if problems.len() > 1 {
+            format!(
+                "Entries are compared only within one problem ({} {} several values: a different problem, not a \
+                 cheaper method).",
+                problem_keys.iter().map(|k| format!("`{k}`")).collect::<Vec<_>>().join(", "),
+                if problem_keys.len() == 1 { "takes" } else { "take" }
+            )
         } else {
-            format!("{t:.2e} (1 run)")
+            String::new()
+        },
+        imp = 100.0 * PARETO_IMPROVEMENT,
+    )
+    .unwrap();
+    let names = Names { sw, disc_keys: &disc_keys, solver_keys: &solver_keys, cost: &cost };
+    for (problem, rows) in &problems {
+        if problems.len() > 1 {
+            writeln!(md, "##### {problem}\n").unwrap();
         }
-    };
-    writeln!(
-        md,
-        "Pareto front: the configurations no other beats, where a configuration beats another if it is faster beyond \
-         the timing noise at an error no more than {:.0} % larger, or tied in time and at least {:.0} % more accurate \
-         (times: the median of repeated runs where the sweep asks for them, with the fastest and slowest; two \
-         configurations are tied in time when their ranges, widened by a factor {} on each side for the machine's noise, \
-         overlap):\n",
-        100.0 * PARETO_IMPROVEMENT,
-        100.0 * PARETO_IMPROVEMENT,
-        1.0 + TIMING_NOISE
-    )
-    .unwrap();
-    writeln!(md, "| configuration | contact elements | error | total time [s] |\n|---|---|---|---|").unwrap();
-    for r in &front {
-        let e = num(r, err).unwrap();
-        writeln!(md, "| {} | {} | {e:.2e} | {} |", sw.label(r, &varied), cell(r, "contact_elements"), show_time(r))
-            .unwrap();
+        let cl = classes(sw, rows, err, &cost);
+        front_table(&cl, &names, md);
+        cheapest_table(&cl, &names, md);
     }
+    Ok(())
+}
+
+/// How the tables name and time things.
+struct Names<'a> {
+    sw: &'a Sweep,
+    /// Varied keys that label a discretisation.
+    disc_keys: &'a [String],
+    /// Varied keys that label a solver configuration.
+    solver_keys: &'a [String],
+    cost: &'a dyn Fn(&Row) -> Cost,
+}
+
+impl Names<'_> {
+    /// A discretisation's label (`constant`, `quadratic · contact_half_width 4`): what varies besides the number
+    /// of elements, or the element kind when nothing does.
+    fn discretisation(&self, r: &Row) -> String {
+        let l = self.sw.label(r, self.disc_keys);
+        if l.is_empty() {
+            cell(r, "element").into()
+        } else {
+            l
+        }
+    }
+
+    /// A solver configuration's label (`pgs · τ 1e-8`).
+    fn solver(&self, r: &Row) -> String {
+        let l = self.sw.label(r, self.solver_keys);
+        if l.is_empty() {
+            cell(r, "solver").into()
+        } else {
+            l
+        }
+    }
+
+    /// A time with its spread: `3.45e-5 (3.38e-5–4.03e-5, 5 runs)`.
+    fn time(&self, r: &Row) -> String {
+        let c = (self.cost)(r);
+        if c.runs > 1 {
+            format!("{:.2e} ({:.2e}–{:.2e}, {} runs)", c.time, c.lo, c.hi, c.runs)
+        } else {
+            format!("{:.2e} (1 run)", c.time)
+        }
+    }
+
+    /// The members of a class with their times, in preference order: `active_set 3.4e-5 s, lemke 4.1e-5 s`.
+    fn members(&self, c: &Class) -> String {
+        c.members
+            .iter()
+            .map(|r| format!("{} {:.1e} s", self.solver(r), (self.cost)(r).time))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+}
+
+/// The classes no other beats: `a` beats `b` if it is faster at an error no more than [`PARETO_IMPROVEMENT`]
+/// larger, or no slower and at least that much more accurate. Never empty for non-empty `cl`: a chain of "beats"
+/// never returns to where it started (each step is strictly faster, or no slower and strictly more accurate), so it
+/// ends at an unbeaten class. Times are compared as they are, without a tie band: measured over consecutive sweeps,
+/// a band (a factor 1.5 or 2) moved more classes in and out of the front than it kept (45 of 60 identical fronts
+/// against 60 of 60 without, in [`Cost`]'s measurement), because the times of refined meshes and tightened tolerances are spread over every
+/// ratio, so some pair always sits near the band's edge, while two classes whose times are within the noise rarely
+/// have errors that make the order matter.
+fn pareto_front<'a, 'b>(cl: &'b [Class<'a>], cost: &dyn Fn(&Row) -> Cost) -> Vec<&'b Class<'a>> {
+    let t = |c: &Class| cost(c.fastest).time;
+    let beats = |a: &Class, b: &Class| {
+        (t(a) < t(b) && a.error <= b.error * (1.0 + PARETO_IMPROVEMENT))
+            || (t(a) <= t(b) && a.error < b.error * (1.0 - PARETO_IMPROVEMENT))
+    };
+    cl.iter().filter(|b| !cl.iter().any(|a| beats(a, b))).collect()
+}
+
+/// Whether two configurations are tied in time: their median times, each widened by the factor 1 + [`TIMING_NOISE`]
+/// on both sides, overlap.
+fn tied(a: Cost, b: Cost) -> bool {
+    let k = (1.0 + TIMING_NOISE).powi(2);
+    a.time <= b.time * k && b.time <= a.time * k
+}
+
+/// The solver a class is computed with: its first member in [`SOLVER_PREFERENCE`] order tied in time with its
+/// fastest member.
+fn chosen_solver<'a>(c: &Class<'a>, cost: &dyn Fn(&Row) -> Cost) -> &'a Row {
+    c.members.iter().copied().find(|r| tied(cost(r), cost(c.fastest))).expect("the fastest member is tied with itself")
+}
+
+/// The recommendation among the classes `reach` that reach a target: of the classes tied in time with the fastest,
+/// the fewest elements, then the preferred solver ([`chosen_solver`], [`SOLVER_PREFERENCE`]: an exact solver before
+/// an iterative one whose loose tolerance happens to land nearer the theory), then the smallest error (errors
+/// within [`PARETO_IMPROVEMENT`] equal: round-off must not choose), then the first by label. Returns (class, its
+/// solver, the other tied classes that are on `front`: a dominated entry is never the better choice, and listing
+/// every tied entry would make the list change whenever one of them sits at the edge of the tie); `None` when
+/// `reach` is empty.
+fn recommend<'a, 'b>(
+    reach: &[&'b Class<'a>],
+    front: &[&'b Class<'a>],
+    names: &Names,
+) -> Option<(&'b Class<'a>, &'a Row, Vec<&'b Class<'a>>)> {
+    let cost = names.cost;
+    let fastest = reach.iter().copied().min_by(|a, b| cost(a.fastest).time.total_cmp(&cost(b.fastest).time))?;
+    let tied_set: Vec<&Class> =
+        reach.iter().copied().filter(|c| tied(cost(c.fastest), cost(fastest.fastest))).collect();
+    let fewest = tied_set.iter().map(|c| elements(c.fastest)).fold(f64::INFINITY, f64::min);
+    let few: Vec<&Class> = tied_set.iter().copied().filter(|c| elements(c.fastest) == fewest).collect();
+    let rank = |c: &Class| preference(chosen_solver(c, cost));
+    let best_rank = few.iter().map(|c| rank(c)).min().expect("the fastest is tied with itself");
+    let preferred: Vec<&Class> = few.iter().copied().filter(|c| rank(c) == best_rank).collect();
+    let best_err = preferred.iter().map(|c| c.error).fold(f64::INFINITY, f64::min);
+    let best = preferred
+        .iter()
+        .copied()
+        .filter(|c| c.error <= best_err * (1.0 + PARETO_IMPROVEMENT))
+        .min_by_key(|c| names.discretisation(c.fastest))
+        .expect("the class of the smallest error is in the set");
+    let others = tied_set
+        .into_iter()
+        .filter(|c| !std::ptr::eq(*c, best) && front.iter().any(|f| std::ptr::eq(*f, *c)))
+        .collect();
+    Some((best, chosen_solver(best, cost), others))
+}
+
+/// The contact elements of a row (∞ when absent).
+fn elements(r: &Row) -> f64 {
+    num(r, "contact_elements").unwrap_or(f64::INFINITY)
+}
+
+/// The Pareto front of one problem, fastest first.
+fn front_table(cl: &[Class], names: &Names, md: &mut String) {
+    let cost = names.cost;
+    let mut front = pareto_front(cl, cost);
+    front.sort_by(|a, b| {
+        cost(a.fastest)
+            .time
+            .total_cmp(&cost(b.fastest).time)
+            .then(names.discretisation(a.fastest).cmp(&names.discretisation(b.fastest)))
+    });
     writeln!(
         md,
-        "\nCheapest configurations reaching each accuracy: the fastest, and every other configuration reaching it \
-         that is tied with the fastest in time (the machine's noise cannot order them); the recommendation is the \
-         tied configuration with the fewest elements, then the smallest error:\n"
+        "Pareto front:\n\n| discretisation | contact elements | error | total time [s] | solvers with this answer \
+         (time each) |\n|---|---|---|---|---|"
     )
     .unwrap();
-    writeln!(md, "| target | recommended | elements | error | total time [s] | tied with |\n|---|---|---|---|---|---|")
+    for c in &front {
+        writeln!(
+            md,
+            "| {} | {} | {:.2e} | {} | {} |",
+            names.discretisation(c.fastest),
+            cell(c.fastest, "contact_elements"),
+            c.error,
+            names.time(c.fastest),
+            names.members(c)
+        )
         .unwrap();
-    let smallest = rows.iter().filter_map(|r| num(r, err)).fold(f64::INFINITY, f64::min);
+    }
+    writeln!(md).unwrap();
+}
+
+/// The cheapest configuration of one problem per target error, with the entries tied with it in time.
+fn cheapest_table(cl: &[Class], names: &Names, md: &mut String) {
+    // The preference order of the solvers this problem ran, not of every solver rollbem has.
+    let mut present: Vec<&Row> = cl.iter().flat_map(|c| c.members.iter().copied()).collect();
+    present.sort_by(|a, b| preference(a).cmp(&preference(b)).then(cell(a, "solver").cmp(cell(b, "solver"))));
+    let mut present: Vec<&str> = present.iter().map(|r| cell(r, "solver")).collect();
+    present.dedup();
+    writeln!(
+        md,
+        "Cheapest configurations reaching each accuracy: of the entries reaching it that are tied in time with the \
+         fastest (median times within a factor {:.0} of each other: the noise measured between consecutive sweeps \
+         reached 1.5×), the one with the fewest elements, then the preferred solver, then the smallest error (errors \
+         within {:.0} % are equal). An entry's solver is the first of {} (in this order of preference) tied in time \
+         with its fastest. \"Tied with\": the other entries of the front that reach the accuracy and are tied with \
+         the fastest:\n",
+        (1.0 + TIMING_NOISE).powi(2),
+        100.0 * PARETO_IMPROVEMENT,
+        present.join(", ")
+    )
+    .unwrap();
+    writeln!(
+        md,
+        "| target | recommended | solver | elements | error | total time [s] | tied with |\n|---|---|---|---|---|---|---|"
+    )
+    .unwrap();
+    let smallest = cl.iter().map(|c| c.error).fold(f64::INFINITY, f64::min);
+    let front = pareto_front(cl, names.cost);
     for target in [1e-2, 1e-3, 1e-4] {
-        let reach: Vec<&Row> = rows.iter().copied().filter(|r| num(r, err).unwrap() <= target).collect();
-        let Some(fastest) = reach.iter().copied().min_by(|a, b| time(a).0.total_cmp(&time(b).0)) else {
-            writeln!(md, "| {target:.0e} | not reached by this sweep (smallest error {smallest:.2e}) | | | | |")
+        let reach: Vec<&Class> = cl.iter().filter(|c| c.error <= target).collect();
+        let Some((best, solver, mut others)) = recommend(&reach, &front, names) else {
+            writeln!(md, "| {target:.0e} | not reached by this sweep (smallest error {smallest:.2e}) | | | | | |")
                 .unwrap();
             continue;
         };
-        let mut tied: Vec<&Row> = reach.iter().copied().filter(|r| tied_in_time(r, fastest)).collect();
-        let elements = |r: &Row| num(r, "contact_elements").unwrap_or(f64::INFINITY);
-        tied.sort_by(|a, b| {
-            elements(a)
-                .total_cmp(&elements(b))
-                .then(num(a, err).unwrap().total_cmp(&num(b, err).unwrap()))
-                .then(sw.label(a, &varied).cmp(&sw.label(b, &varied)))
+        others.sort_by(|a, b| {
+            elements(a.fastest)
+                .total_cmp(&elements(b.fastest))
+                .then(a.error.total_cmp(&b.error))
+                .then(names.discretisation(a.fastest).cmp(&names.discretisation(b.fastest)))
         });
-        let best = tied[0];
-        let others: Vec<String> =
-            tied[1..].iter().map(|r| format!("{} ({})", sw.label(r, &varied), cell(r, "contact_elements"))).collect();
+        let others: Vec<String> = others
+            .iter()
+            .map(|c| {
+                let r = chosen_solver(c, names.cost);
+                format!("{} {} · {}", names.discretisation(r), cell(r, "contact_elements"), names.solver(r))
+            })
+            .collect();
         writeln!(
             md,
-            "| {target:.0e} | {} | {} | {:.2e} | {} | {} |",
-            sw.label(best, &varied),
-            cell(best, "contact_elements"),
-            num(best, err).unwrap(),
-            show_time(best),
+            "| {target:.0e} | {} | {} | {} | {:.2e} | {} | {} |",
+            names.discretisation(best.fastest),
+            names.solver(solver),
+            cell(best.fastest, "contact_elements"),
+            best.error,
+            names.time(solver),
             if others.is_empty() { "–".into() } else { others.join(", ") }
         )
         .unwrap();
     }
     writeln!(md).unwrap();
-    Ok(())
 }
 
 /// Error against the mesh per series, with the least-squares order over all meshes and its standard error.
@@ -348,7 +638,148 @@ fn discretisation_errors(sw: &mut Sweep, md: &mut String) -> bool {
 
 #[cfg(test)]
 mod tests {
-    use super::extrapolate;
+    use super::*;
+
+    /// A sweep row from (column, cell) pairs.
+    fn row(cells: &[(&str, &str)]) -> Row {
+        cells.iter().map(|(k, v)| (k.to_string(), v.to_string())).collect()
+    }
+
+    fn plain_cost(r: &Row) -> Cost {
+        let t = num(r, "t_total").unwrap();
+        Cost { time: t, lo: num(r, "t_total_min").unwrap_or(t), hi: num(r, "t_total_max").unwrap_or(t), runs: 1 }
+    }
+
+    fn sweep(keys: &[&str], rows: Vec<Row>) -> Sweep {
+        Sweep {
+            name: "s".into(),
+            description: String::new(),
+            stem: "s".into(),
+            keys: keys.iter().map(|k| k.to_string()).collect(),
+            rows,
+        }
+    }
+
+    /// A configuration on its own mesh (`n` contact elements) with a median time and an error in `err`.
+    fn config(n: &str, solver: &str, time: f64, err: f64) -> Row {
+        row(&[
+            ("mesh.contact_elements", n),
+            ("contact_elements", n),
+            ("solver", solver),
+            ("t_total", &time.to_string()),
+            ("err", &err.to_string()),
+        ])
+    }
+
+    fn names<'a>(sw: &'a Sweep, cost: &'a dyn Fn(&Row) -> Cost) -> Names<'a> {
+        Names { sw, disc_keys: &[], solver_keys: &[], cost }
+    }
+
+    /// Expected memberships worked out by hand from the definition (faster at an error at most 2 % larger, or no
+    /// slower and at least 2 % more accurate).
+    #[test]
+    fn the_front_keeps_exactly_the_unbeaten_entries() {
+        let rows = [
+            config("1", "lemke", 1.0, 0.1),    // a: fast
+            config("2", "lemke", 2.0, 0.1005), // b: slower than a at an error within 2 % → beaten by a
+            config("3", "lemke", 2.0, 0.01),   // c: 10× more accurate → on the front
+            config("4", "lemke", 3.0, 0.02),   // d: slower and less accurate than c → beaten
+            config("5", "lemke", 1.0, 0.099),  // e: as fast as a, 1 % more accurate: neither beats the other
+            config("6", "lemke", 0.5, 0.5),    // f: fastest of all → on the front
+        ];
+        let sw = sweep(&["mesh.contact_elements"], Vec::new());
+        let refs: Vec<&Row> = rows.iter().collect();
+        let cl = classes(&sw, &refs, "err", &plain_cost);
+        assert_eq!(cl.len(), 6, "six meshes, six entries");
+        let mut on: Vec<&str> =
+            pareto_front(&cl, &plain_cost).iter().map(|c| cell(c.fastest, "contact_elements")).collect();
+        on.sort();
+        assert_eq!(on, vec!["1", "3", "5", "6"]);
+    }
+
+    /// Solvers on one mesh with errors within 2 % are one entry as fast as the fastest of them; a solver whose
+    /// error differs by more (a loose tolerance) is an entry of its own; members are listed in preference order.
+    #[test]
+    fn solvers_with_the_same_answer_are_one_entry() {
+        let rows = [
+            config("30", "lemke", 2.0, 1.0e-3),
+            config("30", "active_set", 1.0, 1.000001e-3),
+            config("30", "pgs", 0.5, 1.5e-3),
+            config("60", "active_set", 3.0, 4e-4),
+        ];
+        let sw = sweep(&["mesh.contact_elements", "solvers.use"], Vec::new());
+        let refs: Vec<&Row> = rows.iter().collect();
+        let cl = classes(&sw, &refs, "err", &plain_cost);
+        assert_eq!(cl.len(), 3);
+        let direct = cl.iter().find(|c| c.members.len() == 2).expect("lemke and active_set together");
+        assert!(std::ptr::eq(direct.fastest, &rows[1]));
+        assert_eq!(direct.members.iter().map(|r| cell(r, "solver")).collect::<Vec<_>>(), vec!["active_set", "lemke"]);
+        assert!((direct.error - 1.0e-3).abs() < 1e-15);
+    }
+
+    /// The recommendation among entries tied in time (medians within a factor 4): fewest elements, then the preferred
+    /// solver (an exact one before a loose-tolerance PGS that lands nearer the theory by luck), then the smallest
+    /// error; within the entry, the preferred solver tied with its fastest. An entry 20× slower is not tied.
+    #[test]
+    fn recommendation_prefers_fewer_elements_then_preferred_solver_then_error() {
+        let rows = [
+            config("100", "active_set", 1.0, 5e-4),       // x: the fastest
+            config("50", "lemke", 3.0, 1e-3),             // y: tied with x (3× apart), fewer elements
+            config("50", "active_set", 3.5, 1.000001e-3), // y's answer with the preferred solver, tied with lemke
+            config("50", "pgs", 3.1, 8e-4),               // another entry on 50 elements, by luck more accurate
+            config("25", "lemke", 20.0, 9e-4),            // z: fewest elements but 20× slower: not tied
+        ];
+        let sw = sweep(&["mesh.contact_elements", "solvers.use"], Vec::new());
+        let refs: Vec<&Row> = rows.iter().collect();
+        let cl = classes(&sw, &refs, "err", &plain_cost);
+        let reach: Vec<&Class> = cl.iter().collect();
+        let nm = names(&sw, &plain_cost);
+        let everything: Vec<&Class> = cl.iter().collect();
+        let (best, solver, others) = recommend(&reach, &everything, &nm).unwrap();
+        assert_eq!(best.members.len(), 2);
+        assert!(std::ptr::eq(solver, &rows[2]), "active_set, preferred and tied with lemke");
+        assert_eq!(others.len(), 2, "x and the pgs entry are tied, z is not");
+        assert!(others.iter().all(|c| !std::ptr::eq(c.fastest, &rows[4])));
+        // Only front entries are listed as tied: with a front of x alone, the pgs entry is left out.
+        let x: Vec<&Class> = cl.iter().filter(|c| std::ptr::eq(c.fastest, &rows[0])).collect();
+        let (_, _, others) = recommend(&reach, &x, &nm).unwrap();
+        assert_eq!(others.len(), 1);
+        assert!(recommend(&[], &everything, &nm).is_none());
+    }
+
+    /// Two friction coefficients are two problems: a configuration of μ = 0.5 is on its problem's front even when a
+    /// μ = 0.3 configuration is faster and more accurate (compared across problems it would have been beaten).
+    #[test]
+    fn fronts_are_per_problem() {
+        let r = |mu: &str, n: &str, t: f64, e: f64| {
+            row(&[
+                ("contact.friction", mu),
+                ("mesh.contact_elements", n),
+                ("contact_elements", n),
+                ("element", "constant"),
+                ("solver", "lemke"),
+                ("status", "solved"),
+                ("scene", "x"),
+                ("t_total", &t.to_string()),
+                ("cm_shear_err", &e.to_string()),
+            ])
+        };
+        let rows = vec![r("0.3", "30", 1.0, 1e-3), r("0.5", "30", 2.0, 2e-3), r("0.5", "60", 4.0, 1e-3)];
+        let sw = sweep(&["contact.friction", "mesh.contact_elements"], rows);
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::create_dir(dir.path().join("figures")).unwrap();
+        let (mut md, mut figs) = (String::new(), Figures::default());
+        let refs: Vec<&Row> = sw.rows.iter().collect();
+        front_and_cheapest(&sw, &refs, "cm_shear_err", "shear", dir.path(), &mut md, &mut figs).unwrap();
+        assert!(md.contains("##### friction 0.3") && md.contains("##### friction 0.5"), "{md}");
+        let half = &md[md.find("##### friction 0.5").unwrap()..];
+        let front = &half[..half.find("Cheapest").unwrap()];
+        assert!(
+            front.contains("| constant | 30 | 2.00e-3 |") && front.contains("| constant | 60 | 1.00e-3 |"),
+            "{front}"
+        );
+        assert!(md.contains("`contact.friction`"), "the text names the key that makes the problems: {md}");
+    }
 
     #[test]
     fn extrapolation_recovers_the_limit_of_a_power_law() {
