@@ -6,7 +6,8 @@ Usage:
     python3 reference/tools/front_stability.py /tmp/rep-a/README.md /tmp/rep-b/README.md
 
 For every (sweep, error measure, problem) it extracts the front (discretisation, elements, error, solvers with this
-answer) and the recommendations (target, recommended, solver, elements, error, tied with), drops every time, and
+answer) and the recommendations (target, recommended, solver, elements, error, alternatives), drops every time and time
+ratio, and
 reports per pair of reports how many fronts and recommendation tables are identical, printing the differences.
 Exit status 0 when all are identical, 1 otherwise. This is how the front's stability was measured (issue 12): the
 times differ between runs by construction; membership and recommendations must not.
@@ -16,6 +17,7 @@ import re
 import sys
 
 TIME = re.compile(r" [0-9.]+e-?[0-9]+ s")
+RATIO = re.compile(r" \([0-9.]+×\)")
 
 
 def tables(path):
@@ -39,7 +41,7 @@ def tables(path):
             if kind == "front" and len(cells) == 5:
                 row = (cells[0], cells[1], cells[2], TIME.sub("", cells[4]))
             elif kind == "recommendations" and len(cells) == 7:
-                row = tuple(cells[:5]) + (cells[6],)
+                row = tuple(cells[:5]) + (RATIO.sub("", cells[6]),)
             else:
                 row = tuple(cells)
             out.setdefault((sweep, measure, problem, kind), []).append(row)
