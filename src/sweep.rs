@@ -60,8 +60,9 @@ pub struct SweepSpec {
     pub grid_base: Vec<Option<PathBuf>>,
     /// How many times a case is run for its timings (`timing_repeats`, default 1; above 1 the cases run one at a
     /// time instead of in parallel, for timings free of contention): cases whose first run took less
-    /// than [`REPEAT_BELOW_S`] are run `timing_repeats` more times and their times are the median repeat's, with the
-    /// fastest and slowest repeat in `t_total_min`, `t_total_max` (the first, cold run is not timed). Results (not
+    /// than [`REPEAT_BELOW_S`] are run `timing_repeats` more times, in rounds over all such cases, and their times are
+    /// the median repeat's, with the fastest and slowest repeat in `t_total_min`, `t_total_max` (the first, cold run
+    /// is not timed). Results (not
     /// times) are those of the first run; they do not change.
     pub timing_repeats: usize,
 }
@@ -642,26 +643,19 @@ fn error_rows(case: &Variant, keys: &[String], err: &Error) -> Vec<Row> {
         .collect()
 }
 
-/// Run one case; `label` names the spec in error messages.
-fn run_case(case: &Variant, keys: &[String], label: &Path, repeats: usize) -> Vec<Row> {
+/// The first run of one case: its report, or the rows that say why it has none (`label` names the spec in error
+/// messages).
+fn first_run(case: &Variant, keys: &[String], label: &Path) -> std::result::Result<crate::results::Report, Vec<Row>> {
     let scene = match &case.scene {
         Ok(s) => s,
-        Err(e) => return error_rows(case, keys, e),
+        Err(e) => return Err(error_rows(case, keys, e)),
     };
-    let path = PathBuf::from(format!("{} [case {}]", label.display(), case.index));
+    let path = case_path(case, label);
     // A panic in one case (a bug) must not lose the others' rows.
     let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run_scene(scene, &path)));
     match result {
-        Ok(Ok(mut report)) => {
-            let spreads = retime(&mut report, scene, &path, repeats);
-            report
-                .runs
-                .iter()
-                .zip(spreads)
-                .map(|(r, sp)| run_row(case, keys, scene, report.mesh.contact_nodes, r, sp))
-                .collect()
-        }
-        Ok(Err(e)) => error_rows(case, keys, &e),
+        Ok(Ok(report)) => Ok(report),
+        Ok(Err(e)) => Err(error_rows(case, keys, &e)),
         Err(panic) => {
             let what = panic
                 .downcast_ref::<String>()
@@ -669,48 +663,103 @@ fn run_case(case: &Variant, keys: &[String], label: &Path, repeats: usize) -> Ve
                 .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
                 .unwrap_or_default();
             let e = Error::Numerical { stage: "sweep", message: format!("panic: {what}") };
-            error_rows(case, keys, &e)
+            Err(error_rows(case, keys, &e))
         }
     }
 }
 
-/// Run a fast case again, `repeats` more times, and give each solver run the timing of its median repeat; returns per
-/// run (fastest, slowest, repeats) of the total time, `None` when the case was not repeated.
-///
-/// The first run's times are left out when the case is repeated: it runs cold (first touches of the allocator's
-/// pages, caches) and was measured 2–50× slower than the repeats on small cases (e.g. 1.2 ms against 0.11 ms for
-/// lemke on 50 half-plane elements), so its time would only stretch the spread and make configurations look tied
-/// in time that are not.
-fn retime(
-    report: &mut crate::results::Report,
-    scene: &Scene,
-    path: &Path,
-    repeats: usize,
-) -> Vec<Option<(f64, f64, usize)>> {
-    let slowest = report.runs.iter().map(|r| r.timing_s.total).fold(0.0, f64::max);
-    if repeats <= 1 || slowest >= REPEAT_BELOW_S {
-        return vec![None; report.runs.len()];
-    }
-    let mut times: Vec<Vec<crate::results::Timing>> = vec![Vec::new(); report.runs.len()];
-    for _ in 0..repeats {
-        let Ok(again) = run_scene(scene, path) else { break };
-        for (t, r) in times.iter_mut().zip(&again.runs) {
-            t.push(r.timing_s);
-        }
-    }
+/// The path a case's messages name.
+fn case_path(case: &Variant, label: &Path) -> PathBuf {
+    PathBuf::from(format!("{} [case {}]", label.display(), case.index))
+}
+
+/// A case's rows from its report, with per run (fastest, slowest, repeats) of the total time where it was retimed.
+fn case_rows(
+    case: &Variant,
+    keys: &[String],
+    report: &crate::results::Report,
+    spreads: &[Option<(f64, f64, usize)>],
+) -> Vec<Row> {
+    let scene = case.scene.as_ref().expect("a case that ran has a scene");
     report
         .runs
-        .iter_mut()
-        .zip(times)
-        .map(|(r, mut t)| {
-            if t.is_empty() {
-                return None;
-            }
-            t.sort_by(|a, b| a.total.total_cmp(&b.total));
-            r.timing_s = t[t.len() / 2];
-            Some((t[0].total, t[t.len() - 1].total, t.len()))
-        })
+        .iter()
+        .enumerate()
+        .map(|(i, r)| run_row(case, keys, scene, report.mesh.contact_nodes, r, spreads.get(i).copied().flatten()))
         .collect()
+}
+
+/// Run one case once (no retiming).
+fn run_case(case: &Variant, keys: &[String], label: &Path) -> Vec<Row> {
+    match first_run(case, keys, label) {
+        Ok(report) => case_rows(case, keys, &report, &[]),
+        Err(rows) => rows,
+    }
+}
+
+/// Run the cases one at a time, then time the fast ones (first run under [`REPEAT_BELOW_S`]) `repeats` more times
+/// in rounds — every fast case once per round — and give each solver run the timing of its median repeat, with the
+/// fastest and slowest. Results (not times) are the first run's.
+///
+/// The first run's times are left out: it runs cold (first touches of the allocator's pages, caches) and was
+/// measured 2–50× slower than the repeats on small cases (e.g. 1.2 ms against 0.11 ms for lemke on 50 half-plane
+/// elements). The repeats go in rounds rather than back to back so that a slow spell of the machine lands on one
+/// repeat of many cases instead of on every repeat of the few cases running during it: back to back, all of one
+/// sweep's active_set cases (a block of the grid) once came out 1.6× slower than in the next sweep while the lemke
+/// cases before them did not, and a Pareto front changed with it.
+fn run_cases_timed(cases: &[&Variant], keys: &[String], label: &Path, repeats: usize, bar: &ProgressBar) -> Vec<Row> {
+    let mut firsts: Vec<std::result::Result<crate::results::Report, Vec<Row>>> = Vec::new();
+    for case in cases {
+        firsts.push(first_run(case, keys, label));
+        bar.inc(1);
+    }
+    let fast =
+        |r: &crate::results::Report| r.runs.iter().map(|x| x.timing_s.total).fold(0.0, f64::max) < REPEAT_BELOW_S;
+    // Per case, per solver run: the timings of its repeats.
+    let mut times: Vec<Vec<Vec<crate::results::Timing>>> =
+        firsts.iter().map(|f| f.as_ref().map_or(Vec::new(), |r| vec![Vec::new(); r.runs.len()])).collect();
+    if repeats > 1 {
+        let n_fast = firsts.iter().filter(|f| f.as_ref().is_ok_and(fast)).count();
+        bar.inc_length((repeats * n_fast) as u64);
+        for _ in 0..repeats {
+            for ((case, first), t) in cases.iter().zip(&firsts).zip(times.iter_mut()) {
+                let Ok(report) = first else { continue };
+                if !fast(report) {
+                    continue;
+                }
+                let scene = case.scene.as_ref().expect("a case that ran has a scene");
+                let again = run_scene(scene, &case_path(case, label));
+                bar.inc(1);
+                let Ok(again) = again else { continue };
+                for (ti, r) in t.iter_mut().zip(&again.runs) {
+                    ti.push(r.timing_s);
+                }
+            }
+        }
+    }
+    let mut rows = Vec::new();
+    for ((case, first), t) in cases.iter().zip(firsts).zip(times) {
+        match first {
+            Err(r) => rows.extend(r),
+            Ok(mut report) => {
+                let spreads: Vec<Option<(f64, f64, usize)>> = report
+                    .runs
+                    .iter_mut()
+                    .zip(t)
+                    .map(|(r, mut t)| {
+                        if t.is_empty() {
+                            return None;
+                        }
+                        t.sort_by(|a, b| a.total.total_cmp(&b.total));
+                        r.timing_s = t[t.len() / 2];
+                        Some((t[0].total, t[t.len() - 1].total, t.len()))
+                    })
+                    .collect();
+                rows.extend(case_rows(case, keys, &report, &spreads));
+            }
+        }
+    }
+    rows
 }
 
 fn sort_rows(rows: &mut [Row]) {
@@ -768,7 +817,7 @@ pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progres
         ProgressBar::hidden()
     };
     bar.set_style(
-        ProgressStyle::with_template("{prefix} [{elapsed_precise}] {wide_bar} {pos}/{len} cases (eta {eta})")
+        ProgressStyle::with_template("{prefix} [{elapsed_precise}] {wide_bar} {pos}/{len} runs (eta {eta})")
             .expect("valid template"),
     );
     bar.set_prefix(match shard {
@@ -776,7 +825,7 @@ pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progres
         None => spec.name.clone(),
     });
     let one = |v: &&Variant| {
-        let rows = run_case(v, &keys, &label, spec.timing_repeats);
+        let rows = run_case(v, &keys, &label);
         bar.inc(1);
         rows
     };
@@ -784,7 +833,7 @@ pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progres
     // competes for the cores (on 2 cores, parallel cases moved timings by tens of percent between report runs and
     // reordered configurations on the Pareto front); other sweeps run their cases in parallel.
     let mut rows: Vec<Row> = if spec.timing_repeats > 1 {
-        mine.iter().flat_map(one).collect()
+        run_cases_timed(&mine, &keys, &label, spec.timing_repeats, &bar)
     } else {
         mine.par_iter().flat_map_iter(one).collect()
     };

@@ -423,3 +423,36 @@ base = '{}'
         other => panic!("{other:?}"),
     }
 }
+
+/// `timing_repeats = 3`: every (fast) run is timed by three warm repeats (the cold first run is not counted), its
+/// total time is the median repeat's between the fastest and slowest, and the results are those of a sweep without
+/// repeats (the repeats change times, never answers).
+#[test]
+fn repeated_timings_change_times_not_results() {
+    let dir = tempfile::tempdir().unwrap();
+    let spec = small_spec(dir.path());
+    let text =
+        std::fs::read_to_string(&spec).unwrap().replace("name = \"small\"", "name = \"small\"\ntiming_repeats = 3");
+    // The same file name in another folder: error messages name the spec's file.
+    let other = dir.path().join("repeated");
+    std::fs::create_dir(&other).unwrap();
+    let repeated_spec = write(&other, "small.toml", &text);
+    let (once, thrice) = (dir.path().join("once.csv"), dir.path().join("thrice.csv"));
+    run_sweep(&spec, None, &once, false).unwrap();
+    run_sweep(&repeated_spec, None, &thrice, false).unwrap();
+    let (h1, r1) = read_csv(&once);
+    let (h3, r3) = read_csv(&thrice);
+    assert_eq!(h1, h3);
+    assert_eq!(without_timing(&h1, &r1), without_timing(&h3, &r3));
+    let col = |name: &str| h3.iter().position(|h| h == name).unwrap();
+    let status = col("status");
+    assert!(r3.iter().filter(|r| r[status] == "solved").count() >= 8);
+    for row in r3.iter().filter(|r| r[status] == "solved") {
+        assert_eq!(row[col("timing_runs")], "3", "{row:?}");
+        let t = |name: &str| row[col(name)].parse::<f64>().unwrap();
+        assert!(t("t_total_min") <= t("t_total") && t("t_total") <= t("t_total_max"), "{row:?}");
+    }
+    for row in r1.iter().filter(|r| r[status] == "solved") {
+        assert_eq!(row[col("timing_runs")], "1", "a sweep without repeats times each run once: {row:?}");
+    }
+}
