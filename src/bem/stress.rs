@@ -361,7 +361,7 @@ pub struct InteriorStress {
     /// Circles (centre, radius) carrying the arc elements.
     circles: Vec<([f64; 2], f64)>,
     far: Vec<FarPoint>,
-    /// far[far_off[e] + tri(n)..][..n] is element e's n-point rule (orders N_MIN..=far_order_max()).
+    /// `far[far_off[e] + tri(n)..][..n]` is element e's n-point rule (orders N_MIN..=far_order_max()).
     far_off: Vec<usize>,
     wind: Vec<WindPiece>,
     orders: OrderTable,

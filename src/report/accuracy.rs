@@ -92,7 +92,8 @@ fn is_method_key(k: &str) -> bool {
 /// and solve times. The setup is the same computation for all of them, so pooling its measurements removes noise
 /// that would otherwise order configurations differently from run to run (measured over four consecutive sweeps of
 /// the four accuracy specs, 60 (pair of sweeps, sweep, error measure) comparisons: the fronts of [`Class`]es were
-/// identical in 52 of 60 with each configuration's own total, in 60 of 60 with the pooled setup). `lo`, `hi`: the fastest and slowest of its repeated runs, as ratios to their median, applied to `time`.
+/// identical in 52 of 60 with each configuration's own total, in 60 of 60 with the pooled setup). `lo`, `hi`: the
+/// fastest and slowest of its repeated runs, as ratios to their median, applied to `time`.
 #[derive(Debug, Clone, Copy)]
 struct Cost {
     time: f64,
@@ -104,11 +105,8 @@ struct Cost {
 /// The [`Cost`] of every row (same order); `None` for a row without a total time.
 fn costs(sw: &Sweep, rows: &[&Row]) -> Vec<Option<Cost>> {
     let setup_of = |r: &Row| Some(num(r, "t_assembly")? + num(r, "t_condensation")?);
-    let shared = |r: &Row| {
-        let mut k: Vec<&str> = vec![cell(r, "scene"), cell(r, "model"), cell(r, "element")];
-        k.extend(sw.keys.iter().filter(|k| !k.starts_with("solvers.")).map(|k| cell(r, k)));
-        k.join("\u{1f}")
-    };
+    // The same setup: the same discretisation of the same problem.
+    let shared = |r: &Row| discretisation(sw, r);
     let mut pooled: BTreeMap<String, f64> = BTreeMap::new();
     for r in rows {
         if let Some(t) = setup_of(r) {
@@ -136,7 +134,8 @@ fn costs(sw: &Sweep, rows: &[&Row]) -> Vec<Option<Cost>> {
 /// solvers first (exact on the discrete problem, no tolerance to choose), fastest at scale first (issue 14's
 /// measurements: active_set 4–95× faster than Lemke from 1000 unknowns), then the iterative ones. Solvers not named
 /// here come after, by name. Measured: preferring `lemke` instead (the registry's order) flipped the recommended
-/// solver between consecutive sweeps where Lemke's time sat near 4× active_set's (2 of 30 comparisons over three sweeps).
+/// solver between consecutive sweeps where Lemke's time sat near 4× active_set's (2 of 30 comparisons over three
+/// sweeps).
 const SOLVER_PREFERENCE: &[&str] = &["active_set", "lemke", "clarabel", "lemke_dense", "pgs", "normtang_qp"];
 
 /// Configurations that compute the same answer: the same problem and discretisation (scene, model, element kind,
@@ -345,9 +344,9 @@ impl Names<'_> {
 /// never returns to where it started (each step is strictly faster, or no slower and strictly more accurate), so it
 /// ends at an unbeaten class. Times are compared as they are, without a tie band: measured over consecutive sweeps,
 /// a band (a factor 1.5 or 2) moved more classes in and out of the front than it kept (45 of 60 identical fronts
-/// against 60 of 60 without, in [`Cost`]'s measurement), because the times of refined meshes and tightened tolerances are spread over every
-/// ratio, so some pair always sits near the band's edge, while two classes whose times are within the noise rarely
-/// have errors that make the order matter.
+/// against 60 of 60 without, in [`Cost`]'s measurement), because the times of refined meshes and tightened
+/// tolerances are spread over every ratio, so some pair always sits near the band's edge, while two classes whose
+/// times are within the noise rarely have errors that make the order matter.
 fn pareto_front<'a, 'b>(cl: &'b [Class<'a>], cost: &dyn Fn(&Row) -> Cost) -> Vec<&'b Class<'a>> {
     let t = |c: &Class| cost(c.fastest).time;
     let beats = |a: &Class, b: &Class| {

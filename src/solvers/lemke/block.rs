@@ -335,7 +335,7 @@ impl<'a> Engine<'a> {
     }
 
     /// Make the current basis the base: LU of C, the contiguous M_{W,Z}, slots renumbered (w_i in slot i, the z at
-    /// position p in slot R[p]), basic values recomputed (x_Z = −C⁻¹ q_R refined once, x_W = q_W + M_{W,Z} x_Z) and
+    /// position p in slot `R[p]`), basic values recomputed (x_Z = −C⁻¹ q_R refined once, x_W = q_W + M_{W,Z} x_Z) and
     /// the eta file emptied. False if C is numerically singular.
     fn refactor(&mut self) -> bool {
         let n = self.n;
