@@ -58,10 +58,10 @@ pub struct SweepSpec {
     /// Per grid (same order as `grid`), its own base scene file when it names one (`base` inside `[[grid]]`); a
     /// missing entry means the spec's `base`.
     pub grid_base: Vec<Option<PathBuf>>,
-    /// How many times a case is run for its timings (`timing_repeats`, default 1; above 1 the cases run one at a
-    /// time instead of in parallel, for timings free of contention): cases whose first run took less
+    /// How many warm repeats time a case (`timing_repeats`, default 1: the case runs once and that run is timed;
+    /// above 1 the cases run one at a time instead of in parallel, for timings free of contention): cases whose first run took less
     /// than [`REPEAT_BELOW_S`] are run `timing_repeats` more times, in rounds over all such cases, and their times are
-    /// the median repeat's, with the fastest and slowest repeat in `t_total_min`, `t_total_max` (the first, cold run
+    /// the median repeat's (the upper middle one for an even count; all stages from that repeat), with the fastest and slowest repeat in `t_total_min`, `t_total_max` (the first, cold run
     /// is not timed). Results (not
     /// times) are those of the first run; they do not change.
     pub timing_repeats: usize,
@@ -728,9 +728,12 @@ fn run_cases_timed(cases: &[&Variant], keys: &[String], label: &Path, repeats: u
                     continue;
                 }
                 let scene = case.scene.as_ref().expect("a case that ran has a scene");
-                let again = run_scene(scene, &case_path(case, label));
+                // A repeat that fails or panics (a bug) only loses that repeat's timing, never the sweep's rows.
+                let again = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                    run_scene(scene, &case_path(case, label))
+                }));
                 bar.inc(1);
-                let Ok(again) = again else { continue };
+                let Ok(Ok(again)) = again else { continue };
                 for (ti, r) in t.iter_mut().zip(&again.runs) {
                     ti.push(r.timing_s);
                 }

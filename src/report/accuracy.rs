@@ -243,7 +243,11 @@ fn front_and_cheapest(
     figs.push((format!("{}: {label} against time", sw.name), file.clone()));
     writeln!(md, "#### {label}\n\n![{label} against time]({file})\n").unwrap();
     let varied = sw.varied(&rows);
-    let problem_keys: Vec<String> = varied.iter().filter(|k| !is_method_key(k)).cloned().collect();
+    let mut problem_keys: Vec<String> = varied.iter().filter(|k| !is_method_key(k)).cloned().collect();
+    // Grids with their own base scenes pose different problems even when no swept key says so.
+    if rows.iter().map(|r| cell(r, "scene")).collect::<std::collections::BTreeSet<_>>().len() > 1 {
+        problem_keys.insert(0, "scene".into());
+    }
     // A discretisation is labelled by what varies among the non-solver method keys; its solvers are listed apart.
     let disc_keys: Vec<String> =
         varied.iter().filter(|k| is_method_key(k) && *k != "solver" && !k.starts_with("solvers.")).cloned().collect();
@@ -282,7 +286,7 @@ fn front_and_cheapest(
         }
         let cl = classes(sw, rows, err, &cost);
         front_table(&cl, &names, md);
-        cheapest_table(&cl, &names, md);
+        cheapest_table(&cl, err, &names, md);
     }
     Ok(())
 }
@@ -347,13 +351,13 @@ impl Names<'_> {
 /// against 60 of 60 without, in [`Cost`]'s measurement), because the times of refined meshes and tightened
 /// tolerances are spread over every ratio, so some pair always sits near the band's edge, while two classes whose
 /// times are within the noise rarely have errors that make the order matter.
-fn pareto_front<'a, 'b>(cl: &'b [Class<'a>], cost: &dyn Fn(&Row) -> Cost) -> Vec<&'b Class<'a>> {
+fn pareto_front<'a, 'b>(cl: &[&'b Class<'a>], cost: &dyn Fn(&Row) -> Cost) -> Vec<&'b Class<'a>> {
     let t = |c: &Class| cost(c.fastest).time;
     let beats = |a: &Class, b: &Class| {
         (t(a) < t(b) && a.error <= b.error * (1.0 + PARETO_IMPROVEMENT))
             || (t(a) <= t(b) && a.error < b.error * (1.0 - PARETO_IMPROVEMENT))
     };
-    cl.iter().filter(|b| !cl.iter().any(|a| beats(a, b))).collect()
+    cl.iter().copied().filter(|b| !cl.iter().any(|a| beats(a, b))).collect()
 }
 
 /// Whether two configurations are tied in time: their median times, each widened by the factor 1 + [`TIMING_NOISE`]
@@ -363,29 +367,41 @@ fn tied(a: Cost, b: Cost) -> bool {
     a.time <= b.time * k && b.time <= a.time * k
 }
 
-/// The solver a class is computed with: its first member in [`SOLVER_PREFERENCE`] order tied in time with its
-/// fastest member.
-fn chosen_solver<'a>(c: &Class<'a>, cost: &dyn Fn(&Row) -> Cost) -> &'a Row {
-    c.members.iter().copied().find(|r| tied(cost(r), cost(c.fastest))).expect("the fastest member is tied with itself")
+/// The solver a class is recommended with for a target error: among its members whose own error reaches the target,
+/// the first in [`SOLVER_PREFERENCE`] order whose median time is within the tie factor of the fastest of them.
+fn chosen_solver<'a>(c: &Class<'a>, target: f64, err: &str, cost: &dyn Fn(&Row) -> Cost) -> Option<&'a Row> {
+    let reaching: Vec<&Row> = c.members.iter().copied().filter(|r| num(r, err).is_some_and(|e| e <= target)).collect();
+    let fastest = reaching.iter().copied().min_by(|a, b| cost(a).time.total_cmp(&cost(b).time))?;
+    reaching.into_iter().find(|r| tied(cost(r), cost(fastest)))
 }
 
-/// The recommendation among the front's classes `reach` that reach a target: the fastest of them. Along a Pareto
-/// front time falls as the error rises (an entry both slower and clearly less accurate than another is beaten), so
-/// the fastest is the least accurate entry that reaches the target, and that is how it is chosen — by error, which
-/// repeats exactly from run to run, not by times that the noise reorders. Entries whose errors are within
-/// [`PARETO_IMPROVEMENT`] of that largest error are one choice: the preferred solver ([`chosen_solver`],
-/// [`SOLVER_PREFERENCE`]: an exact solver before an iterative one), then the fewest elements, then the first by
-/// label. Returns the class and its solver; `None` when `reach` is empty.
-fn recommend<'a, 'b>(reach: &[&'b Class<'a>], names: &Names) -> Option<(&'b Class<'a>, &'a Row)> {
+/// The recommendation for a target among the classes `reach` whose error reaches it: the fastest entry of their
+/// Pareto front. Along a front time falls as the error rises (an entry both slower and clearly less accurate than
+/// another is beaten), so the fastest is the least accurate entry of that front, and it is chosen that way — by
+/// error, which repeats exactly from run to run, not by times that the noise reorders (equal errors: the preferred
+/// solver, then the fewest elements, then the label). Returns the class, its solver ([`chosen_solver`]) and the
+/// other entries of that front; `None` when `reach` is empty.
+#[allow(clippy::type_complexity)]
+fn recommend<'a, 'b>(
+    reach: &[&'b Class<'a>],
+    target: f64,
+    err: &str,
+    names: &Names,
+) -> Option<(&'b Class<'a>, &'a Row, Vec<&'b Class<'a>>)> {
     let cost = names.cost;
-    let largest = reach.iter().map(|c| c.error).fold(f64::NEG_INFINITY, f64::max);
-    let best = reach.iter().copied().filter(|c| c.error * (1.0 + PARETO_IMPROVEMENT) >= largest).min_by(|a, b| {
-        preference(chosen_solver(a, cost))
-            .cmp(&preference(chosen_solver(b, cost)))
-            .then(elements(a.fastest).total_cmp(&elements(b.fastest)))
-            .then(names.discretisation(a.fastest).cmp(&names.discretisation(b.fastest)))
+    let front = pareto_front(reach, cost);
+    let solver_of = |c: &Class<'a>| chosen_solver(c, target, err, cost);
+    let best = front.iter().copied().filter(|c| solver_of(c).is_some()).max_by(|a, b| {
+        a.error.total_cmp(&b.error).then_with(|| {
+            let rank = |c: &Class<'a>| preference(solver_of(c).expect("filtered"));
+            rank(b)
+                .cmp(&rank(a))
+                .then(elements(b.fastest).total_cmp(&elements(a.fastest)))
+                .then_with(|| names.discretisation(b.fastest).cmp(&names.discretisation(a.fastest)))
+        })
     })?;
-    Some((best, chosen_solver(best, cost)))
+    let others = front.into_iter().filter(|c| !std::ptr::eq(*c, best)).collect();
+    Some((best, solver_of(best)?, others))
 }
 
 /// The contact elements of a row (∞ when absent).
@@ -396,7 +412,8 @@ fn elements(r: &Row) -> f64 {
 /// The Pareto front of one problem, fastest first.
 fn front_table(cl: &[Class], names: &Names, md: &mut String) {
     let cost = names.cost;
-    let mut front = pareto_front(cl, cost);
+    let all: Vec<&Class> = cl.iter().collect();
+    let mut front = pareto_front(&all, cost);
     front.sort_by(|a, b| {
         cost(a.fastest)
             .time
@@ -425,7 +442,7 @@ fn front_table(cl: &[Class], names: &Names, md: &mut String) {
 }
 
 /// The cheapest configuration of one problem per target error, with the other front entries reaching it.
-fn cheapest_table(cl: &[Class], names: &Names, md: &mut String) {
+fn cheapest_table(cl: &[Class], err: &str, names: &Names, md: &mut String) {
     // The preference order of the solvers this problem ran, not of every solver rollbem has.
     let mut present: Vec<&Row> = cl.iter().flat_map(|c| c.members.iter().copied()).collect();
     present.sort_by(|a, b| preference(a).cmp(&preference(b)).then(cell(a, "solver").cmp(cell(b, "solver"))));
@@ -433,36 +450,38 @@ fn cheapest_table(cl: &[Class], names: &Names, md: &mut String) {
     present.dedup();
     writeln!(
         md,
-        "Cheapest configurations reaching each accuracy: the fastest entry of the front that reaches it — the least \
-         accurate front entry that does, since along the front time falls as the error rises; chosen by its error, \
-         which repeats exactly from run to run (errors within {imp:.0} % are one choice: the preferred solver, then \
-         the fewest elements). An entry's solver is the first of {} (in this order of preference) whose median time \
-         is within a factor {tie:.0} of its fastest solver's (the noise between consecutive sweeps reached 1.5×). \
-         Alternatives: the other entries of the front that reach the accuracy, with their time as a multiple of the \
-         recommended one's; a multiple below 1.5 is within that noise.\n",
+        "Recommended configuration per accuracy: among the entries reaching it, the fastest entry of their Pareto \
+         front — the least accurate entry of that front, since along a front time falls as the error rises; chosen by \
+         its error, which repeats exactly from run to run. Its solver is the first of {} (in this order of \
+         preference) that reaches the accuracy and whose median time is within a factor {tie:.0} of the fastest \
+         solver of the same answer (the noise between consecutive sweeps reached 1.5×), so it can be up to {tie:.0}× \
+         slower than that solver (all are listed with their times in the front above); error and time are the \
+         recommended solver's own. Alternatives: the other entries of that front, with their time as a multiple of \
+         the recommended one's; a multiple between 1/1.5 and 1.5 is within the noise.\n",
         present.join(", "),
-        imp = 100.0 * PARETO_IMPROVEMENT,
         tie = (1.0 + TIMING_NOISE).powi(2),
     )
     .unwrap();
     writeln!(
         md,
-        "| target | recommended | solver | elements | error | total time [s] | alternatives on the front |\n|---|---|---|---|---|---|---|"
+        "| target | recommended | solver | elements | error | total time [s] | alternatives |\n|---|---|---|---|---|---|---|"
     )
     .unwrap();
     let smallest = cl.iter().map(|c| c.error).fold(f64::INFINITY, f64::min);
-    let front = pareto_front(cl, names.cost);
     for target in [1e-2, 1e-3, 1e-4] {
-        let reach: Vec<&Class> = front.iter().copied().filter(|c| c.error <= target).collect();
-        let Some((best, solver)) = recommend(&reach, names) else {
-            writeln!(md, "| {target:.0e} | not reached by this sweep (smallest error {smallest:.2e}) | | | | | |")
-                .unwrap();
+        let reach: Vec<&Class> = cl.iter().filter(|c| c.error <= target).collect();
+        let Some((best, solver, mut others)) = recommend(&reach, target, err, names) else {
+            let why = if err.starts_with("disc_") {
+                format!(
+                    "not resolved by this sweep (errors below their limit's uncertainty are not reported; smallest \
+                     reported {smallest:.2e})"
+                )
+            } else {
+                format!("not reached by this sweep (smallest error {smallest:.2e})")
+            };
+            writeln!(md, "| {target:.0e} | {why} | | | | | |").unwrap();
             continue;
         };
-        // The alternatives: every other front entry reaching the target (a set the front fixes, not the timing
-        // noise), in order of elements, with its time relative to the recommendation's.
-        let mut others: Vec<&Class> =
-            front.iter().copied().filter(|c| c.error <= target && !std::ptr::eq(*c, best)).collect();
         others.sort_by(|a, b| {
             elements(a.fastest)
                 .total_cmp(&elements(b.fastest))
@@ -472,15 +491,15 @@ fn cheapest_table(cl: &[Class], names: &Names, md: &mut String) {
         let t_best = (names.cost)(solver).time;
         let others: Vec<String> = others
             .iter()
-            .map(|c| {
-                let r = chosen_solver(c, names.cost);
-                format!(
+            .filter_map(|c| {
+                let r = chosen_solver(c, target, err, names.cost)?;
+                Some(format!(
                     "{} {} · {} ({:.1}×)",
                     names.discretisation(r),
                     cell(r, "contact_elements"),
                     names.solver(r),
                     (names.cost)(r).time / t_best
-                )
+                ))
             })
             .collect();
         writeln!(
@@ -489,7 +508,7 @@ fn cheapest_table(cl: &[Class], names: &Names, md: &mut String) {
             names.discretisation(best.fastest),
             names.solver(solver),
             cell(best.fastest, "contact_elements"),
-            best.error,
+            num(solver, err).unwrap_or(best.error),
             names.time(solver),
             if others.is_empty() { "–".into() } else { others.join(", ") }
         )
@@ -537,6 +556,11 @@ fn convergence(
     Ok(())
 }
 
+/// The range of orders [`extrapolate`] searches (a 0.01 grid from `P_MIN` to `P_MAX`).
+const P_MIN: f64 = 0.5;
+/// See [`P_MIN`].
+const P_MAX: f64 = 4.0;
+
 /// x(n) ≈ x∞ + C n^(−p): least squares in (x∞, C) for each p on a grid, the p of smallest residual. Returns (x∞, p).
 fn extrapolate(points: &[(f64, f64)]) -> Option<(f64, f64)> {
     if points.len() < 3 {
@@ -544,7 +568,7 @@ fn extrapolate(points: &[(f64, f64)]) -> Option<(f64, f64)> {
     }
     let mut best: Option<(f64, f64, f64)> = None;
     for k in 0..=350 {
-        let p = 0.5 + 0.01 * k as f64;
+        let p = P_MIN + 0.01 * k as f64;
         let xs: Vec<f64> = points.iter().map(|(n, _)| n.powf(-p)).collect();
         let m = xs.len() as f64;
         let (mx, my) = (xs.iter().sum::<f64>() / m, points.iter().map(|q| q.1).sum::<f64>() / m);
@@ -592,8 +616,10 @@ struct MeshLimit {
 fn mesh_limit(points: &[(f64, f64)]) -> Option<MeshLimit> {
     let [.., (_, x1), (_, x2), (_, x3)] = points else { return None };
     let (e21, e32) = (x2 - x1, x3 - x2);
-    if e21 * e32 > 0.0 && e32.abs() < e21.abs() {
-        let (value, order) = extrapolate(&points[points.len() - 3..])?;
+    let fit = if e21 * e32 > 0.0 && e32.abs() < e21.abs() { extrapolate(&points[points.len() - 3..]) } else { None };
+    // An order at the edge of the search range means the power law did not pass through the three points: no
+    // extrapolation then either.
+    if let Some((value, order)) = fit.filter(|&(_, p)| p > P_MIN + 1e-9 && p < P_MAX - 1e-9) {
         Some(MeshLimit { value, uncertainty: RICHARDSON_SAFETY * (value - x3).abs(), order: Some(order) })
     } else {
         Some(MeshLimit { value: *x3, uncertainty: e21.abs().max(e32.abs()), order: None })
@@ -719,15 +745,22 @@ mod tests {
             config("4", "lemke", 3.0, 0.02),   // d: slower and less accurate than c → beaten
             config("5", "lemke", 1.0, 0.099),  // e: as fast as a, 1 % more accurate: neither beats the other
             config("6", "lemke", 0.5, 0.5),    // f: fastest of all → on the front
+            config("7", "lemke", 1.0, 0.05),   // h: as fast as a and e, ≥ 2 % more accurate → beats both
         ];
         let sw = sweep(&["mesh.contact_elements"], Vec::new());
         let refs: Vec<&Row> = rows.iter().collect();
         let cl = classes(&sw, &refs, "err", &plain_cost);
-        assert_eq!(cl.len(), 6, "six meshes, six entries");
+        assert_eq!(cl.len(), 7, "seven meshes, seven entries");
+        let all: Vec<&Class> = cl.iter().collect();
         let mut on: Vec<&str> =
-            pareto_front(&cl, &plain_cost).iter().map(|c| cell(c.fastest, "contact_elements")).collect();
+            pareto_front(&all[..6], &plain_cost).iter().map(|c| cell(c.fastest, "contact_elements")).collect();
         on.sort();
         assert_eq!(on, vec!["1", "3", "5", "6"]);
+        // With h: equal time and clearly more accurate beats (the second rule); a and e leave the front.
+        let mut on: Vec<&str> =
+            pareto_front(&all, &plain_cost).iter().map(|c| cell(c.fastest, "contact_elements")).collect();
+        on.sort();
+        assert_eq!(on, vec!["3", "6", "7"]);
     }
 
     /// Solvers on one mesh with errors within 2 % are one entry as fast as the fastest of them; a solver whose
@@ -750,36 +783,44 @@ mod tests {
         assert!((direct.error - 1.0e-3).abs() < 1e-15);
     }
 
-    /// The recommendation among front entries reaching a target: the least accurate (= the fastest on a front);
-    /// entries within 2 % of that error are one choice, decided by the preferred solver before the number of
-    /// elements; within the entry, the preferred solver whose time is within 4× of its fastest.
+    /// The recommendation for a target: the fastest entry of the front of the entries reaching it, with a solver of
+    /// the entry that itself reaches the target (preferred order, within 4× of the fastest such).
     #[test]
-    fn recommendation_is_the_least_accurate_front_entry_reaching_the_target() {
+    fn recommendation_is_the_fastest_entry_of_the_front_reaching_the_target() {
         let rows = [
-            config("100", "active_set", 1.0, 5e-4),       // x: more accurate
-            config("50", "lemke", 3.0, 1e-3),             // y: the least accurate reaching 1e-3 …
-            config("50", "active_set", 3.5, 1.000001e-3), // … computed by the preferred solver, tied with lemke
-            config("25", "pgs", 0.5, 1.01e-3),            // w: error within 2 % of y's, fewer elements, iterative
-            config("200", "active_set", 9.0, 2e-4),       // v: the most accurate
+            config("25", "lemke", 1.0, 9e-4),            // p: least accurate reaching 1e-3 …
+            config("25", "active_set", 3.5, 9.00001e-4), // … preferred solver, within 4× of lemke
+            config("50", "active_set", 2.0, 5e-4),       // q
+            config("100", "active_set", 6.0, 2e-4),      // r
+            config("12", "active_set", 0.5, 2e-3),       // z: does not reach 1e-3
+            config("10", "lemke", 0.4, 1.01e-3),         // w: beats the next one on the whole front, not at 1e-3
+            config("20", "lemke", 0.45, 9.99e-4),        // u
+            config("40", "lemke", 0.9, 9.95e-4),         // one answer: lemke reaches 1e-3 …
+            config("40", "active_set", 0.95, 1.012e-3),  // … active_set (within 2 %) does not
         ];
         let sw = sweep(&["mesh.contact_elements", "solvers.use"], Vec::new());
         let refs: Vec<&Row> = rows.iter().collect();
         let cl = classes(&sw, &refs, "err", &plain_cost);
         let nm = names(&sw, &plain_cost);
-        let pick = |rows_in: &[usize]| {
+        let pick = |among: &[usize], target: f64| {
             let reach: Vec<&Class> = cl
                 .iter()
-                .filter(|c| c.members.iter().any(|m| rows_in.iter().any(|&i| std::ptr::eq(*m, &rows[i]))))
+                .filter(|c| c.error <= target)
+                .filter(|c| c.members.iter().any(|m| among.iter().any(|&i| std::ptr::eq(*m, &rows[i]))))
                 .collect();
-            recommend(&reach, &nm).map(|(_, solver)| solver)
+            recommend(&reach, target, "err", &nm).map(|(_, solver, others)| (solver, others.len()))
         };
-        // y's entry, not x or v; and active_set (preferred, within 4× of lemke), not the faster lemke.
-        assert!(std::ptr::eq(pick(&[0, 1, 4]).unwrap(), &rows[2]));
-        // w's error is within 2 % of y's: one choice, and the exact solver wins over fewer elements.
-        assert!(std::ptr::eq(pick(&[0, 1, 3]).unwrap(), &rows[2]));
-        // Without y, w is the least accurate.
-        assert!(std::ptr::eq(pick(&[0, 3, 4]).unwrap(), &rows[3]));
-        assert!(recommend(&[], &nm).is_none());
+        let is = |r: &Row, i: usize| std::ptr::eq(r, &rows[i]);
+        // p is the least accurate on the front of p, q, r: recommended with active_set (preferred, 3.5× lemke).
+        let (solver, others) = pick(&[0, 2, 3, 4], 1e-3).unwrap();
+        assert!(is(solver, 1) && others == 2);
+        // At 1e-2, z reaches the target and is the fastest.
+        assert!(is(pick(&[0, 2, 3, 4], 1e-2).unwrap().0, 4));
+        // w does not reach 1e-3; u, which w beats on the whole front, is the cheapest that does.
+        assert!(is(pick(&[2, 5, 6], 1e-3).unwrap().0, 6));
+        // Of one answer, only the solver whose own error reaches the target is recommended.
+        assert!(is(pick(&[7, 8], 1e-3).unwrap().0, 7));
+        assert!(recommend(&[], 1e-3, "err", &nm).is_none());
     }
 
     /// Two friction coefficients are two problems: a configuration of μ = 0.5 is on its problem's front even when a
@@ -808,7 +849,7 @@ mod tests {
         front_and_cheapest(&sw, &refs, "cm_shear_err", "shear", dir.path(), &mut md, &mut figs).unwrap();
         assert!(md.contains("##### friction 0.3") && md.contains("##### friction 0.5"), "{md}");
         let half = &md[md.find("##### friction 0.5").unwrap()..];
-        let front = &half[..half.find("Cheapest").unwrap()];
+        let front = &half[..half.find("Recommended configuration").unwrap()];
         assert!(
             front.contains("| constant | 30 | 2.00e-3 |") && front.contains("| constant | 60 | 1.00e-3 |"),
             "{front}"
