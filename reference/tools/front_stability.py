@@ -34,7 +34,7 @@ def tables(path):
             problem, kind = line, None
         elif line.startswith("Pareto front:"):
             kind = "front"
-        elif line.startswith("Cheapest configurations"):
+        elif line.startswith(("Cheapest configurations", "Recommended configuration")):
             kind = "recommendations"
         elif kind and line.startswith("| ") and not line.startswith(("| discretisation", "| target")):
             cells = [c.strip() for c in line.strip("|").split("|")]
