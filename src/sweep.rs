@@ -718,25 +718,22 @@ fn run_cases_timed(cases: &[&Variant], keys: &[String], label: &Path, repeats: u
     // Per case, per solver run: the timings of its repeats.
     let mut times: Vec<Vec<Vec<crate::results::Timing>>> =
         firsts.iter().map(|f| f.as_ref().map_or(Vec::new(), |r| vec![Vec::new(); r.runs.len()])).collect();
-    if repeats > 1 {
-        let n_fast = firsts.iter().filter(|f| f.as_ref().is_ok_and(fast)).count();
-        bar.inc_length((repeats * n_fast) as u64);
-        for _ in 0..repeats {
-            for ((case, first), t) in cases.iter().zip(&firsts).zip(times.iter_mut()) {
-                let Ok(report) = first else { continue };
-                if !fast(report) {
-                    continue;
-                }
-                let scene = case.scene.as_ref().expect("a case that ran has a scene");
-                // A repeat that fails or panics (a bug) only loses that repeat's timing, never the sweep's rows.
-                let again = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-                    run_scene(scene, &case_path(case, label))
-                }));
-                bar.inc(1);
-                let Ok(Ok(again)) = again else { continue };
-                for (ti, r) in t.iter_mut().zip(&again.runs) {
-                    ti.push(r.timing_s);
-                }
+    let n_fast = firsts.iter().filter(|f| f.as_ref().is_ok_and(fast)).count();
+    bar.inc_length((repeats * n_fast) as u64);
+    for _ in 0..repeats {
+        for ((case, first), t) in cases.iter().zip(&firsts).zip(times.iter_mut()) {
+            let Ok(report) = first else { continue };
+            if !fast(report) {
+                continue;
+            }
+            let scene = case.scene.as_ref().expect("a case that ran has a scene");
+            // A repeat that fails or panics (a bug) only loses that repeat's timing, never the sweep's rows.
+            let again =
+                std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run_scene(scene, &case_path(case, label))));
+            bar.inc(1);
+            let Ok(Ok(again)) = again else { continue };
+            for (ti, r) in t.iter_mut().zip(&again.runs) {
+                ti.push(r.timing_s);
             }
         }
     }

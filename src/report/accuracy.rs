@@ -102,8 +102,8 @@ struct Cost {
     runs: usize,
 }
 
-/// The [`Cost`] of every row (same order); `None` for a row without a total time.
-fn costs(sw: &Sweep, rows: &[&Row]) -> Vec<Option<Cost>> {
+/// The [`Cost`] of every row, keyed by the row's address (rows without a total time get none).
+fn costs(sw: &Sweep, rows: &[&Row]) -> BTreeMap<*const Row, Cost> {
     let setup_of = |r: &Row| Some(num(r, "t_assembly")? + num(r, "t_condensation")?);
     // The same setup: the same discretisation of the same problem.
     let shared = |r: &Row| discretisation(sw, r);
@@ -115,17 +115,18 @@ fn costs(sw: &Sweep, rows: &[&Row]) -> Vec<Option<Cost>> {
         }
     }
     rows.iter()
-        .map(|r| {
+        .filter_map(|r| {
             let total = num(r, "t_total")?;
             let own = || Some(pooled.get(&shared(r))? + num(r, "t_formulation")? + num(r, "t_solve")?);
             let time = own().unwrap_or(total);
             let scale = if total > 0.0 { time / total } else { 1.0 };
-            Some(Cost {
+            let cost = Cost {
                 time,
                 lo: num(r, "t_total_min").unwrap_or(total) * scale,
                 hi: num(r, "t_total_max").unwrap_or(total) * scale,
                 runs: num(r, "timing_runs").unwrap_or(1.0) as usize,
-            })
+            };
+            Some((*r as *const Row, cost))
         })
         .collect()
 }
@@ -223,9 +224,7 @@ fn front_and_cheapest(
 ) -> Result<()> {
     let rows: Vec<&Row> =
         solved.iter().copied().filter(|r| num(r, err).is_some() && num(r, "t_total").is_some()).collect();
-    let cost_of = costs(sw, &rows);
-    let by_row: BTreeMap<*const Row, Cost> =
-        rows.iter().zip(&cost_of).filter_map(|(r, c)| Some((*r as *const Row, (*c)?))).collect();
+    let by_row = costs(sw, &rows);
     let cost = |r: &Row| by_row[&(r as *const Row)];
     let mut chart = Chart::new(format!("{}: {label} against total time", sw.name), "total time", label)
         .x_unit("s")
@@ -302,25 +301,25 @@ struct Names<'a> {
 }
 
 impl Names<'_> {
-    /// A discretisation's label (`constant`, `quadratic · contact_half_width 4`): what varies besides the number
-    /// of elements, or the element kind when nothing does.
-    fn discretisation(&self, r: &Row) -> String {
-        let l = self.sw.label(r, self.disc_keys);
+    /// The label of `r` by `keys`, or its `column` when none of them varies.
+    fn label_or(&self, r: &Row, keys: &[String], column: &str) -> String {
+        let l = self.sw.label(r, keys);
         if l.is_empty() {
-            cell(r, "element").into()
+            cell(r, column).into()
         } else {
             l
         }
     }
 
+    /// A discretisation's label (`constant`, `quadratic · contact_half_width 4`): what varies besides the number
+    /// of elements, or the element kind when nothing does.
+    fn discretisation(&self, r: &Row) -> String {
+        self.label_or(r, self.disc_keys, "element")
+    }
+
     /// A solver configuration's label (`pgs · τ 1e-8`).
     fn solver(&self, r: &Row) -> String {
-        let l = self.sw.label(r, self.solver_keys);
-        if l.is_empty() {
-            cell(r, "solver").into()
-        } else {
-            l
-        }
+        self.label_or(r, self.solver_keys, "solver")
     }
 
     /// A time with its spread: `3.45e-5 (3.38e-5–4.03e-5, 5 runs)`.
@@ -761,6 +760,42 @@ mod tests {
             pareto_front(&all, &plain_cost).iter().map(|c| cell(c.fastest, "contact_elements")).collect();
         on.sort();
         assert_eq!(on, vec!["3", "6", "7"]);
+    }
+
+    /// Setup times pooled among configurations that differ only in the solver: each gets the fastest setup of its
+    /// group plus its own formulation and solve; a different mesh is not pooled with them. Expected values by hand.
+    #[test]
+    fn shared_setup_is_pooled_only_across_solvers() {
+        let r = |mesh: &str, solver: &str, setup: f64, solve: f64| {
+            let total = setup + solve;
+            row(&[
+                ("mesh.contact_elements", mesh),
+                ("contact_elements", mesh),
+                ("solvers.use", solver),
+                ("scene", "x"),
+                ("model", "bem"),
+                ("element", "constant"),
+                ("t_assembly", &(setup / 2.0).to_string()),
+                ("t_condensation", &(setup / 2.0).to_string()),
+                ("t_formulation", "0"),
+                ("t_solve", &solve.to_string()),
+                ("t_total", &total.to_string()),
+                ("t_total_min", &(0.9 * total).to_string()),
+                ("t_total_max", &(1.2 * total).to_string()),
+                ("timing_runs", "5"),
+            ])
+        };
+        let rows = [r("30", "lemke", 1.0, 0.5), r("30", "pgs", 1.6, 0.1), r("60", "lemke", 4.0, 2.0)];
+        let sw = sweep(&["mesh.contact_elements", "solvers.use"], Vec::new());
+        let refs: Vec<&Row> = rows.iter().collect();
+        let by_row = costs(&sw, &refs);
+        let c: Vec<Cost> = rows.iter().map(|r| by_row[&(r as *const Row)]).collect();
+        assert!((c[0].time - 1.5).abs() < 1e-12);
+        assert!((c[1].time - 1.1).abs() < 1e-12, "pgs gets lemke's faster setup: {}", c[1].time);
+        assert!((c[2].time - 6.0).abs() < 1e-12);
+        // The spread is the run's own, as ratios of its median.
+        assert!((c[1].lo - 0.9 * 1.1).abs() < 1e-12 && (c[1].hi - 1.2 * 1.1).abs() < 1e-12);
+        assert_eq!(c[1].runs, 5);
     }
 
     /// Solvers on one mesh with errors within 2 % are one entry as fast as the fastest of them; a solver whose
