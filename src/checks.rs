@@ -89,7 +89,7 @@ pub fn nodes_per_element(element: ElementKind) -> f64 {
 pub fn resolution_check(scene: &Scene, element: ElementKind, element_length: f64, r: &SolverRun) -> Option<Check> {
     let contact = r.contact.as_ref().filter(|c| c.nodes_contact > 0)?;
     let across = contact.nodes_contact as f64 / nodes_per_element(element);
-    let min = scene.checks.contact_elements.unwrap_or(tol::MIN_CONTACT_ELEMENTS);
+    let min = scene.expect().contact_elements.unwrap_or(tol::MIN_CONTACT_ELEMENTS);
     let pass = across >= min;
     let mut c = figure(
         format!("{}: elements across the contact (at least)", r.solver),
@@ -102,7 +102,7 @@ pub fn resolution_check(scene: &Scene, element: ElementKind, element_length: f64
     if !pass {
         let p = r.resultants.map_or(0.0, |x| x.normal);
         let a = crate::references::hertz_at(scene, p).half_width;
-        let needed = (scene.mesh.contact_elements as f64 * element_length * min / (2.0 * a)).ceil();
+        let needed = (scene.zone().elements as f64 * element_length * min / (2.0 * a)).ceil();
         c.note = Some(format!(
             "the contact spans {} element(s) ({} loaded node(s)); at least {min} are needed for its width and \
              pressures to mean anything: refine the contact mesh (about contact_elements ≥ {needed:.0} for Hertz's \
@@ -121,8 +121,8 @@ pub fn resolution_check(scene: &Scene, element: ElementKind, element_length: f64
 fn hertz_checks(scene: &Scene, element: ElementKind, element_length: f64, r: &SolverRun, h: &Hertz) -> Vec<Check> {
     let Some(contact) = &r.contact else { return Vec::new() };
     let across = 2.0 * h.half_width / element_length;
-    let a_over_r = h.half_width / scene.wheel.radius;
-    let t = scene.checks.hertz.unwrap_or(match element {
+    let a_over_r = h.half_width / scene.radius();
+    let t = scene.expect().hertz.unwrap_or(match element {
         ElementKind::Constant => tol::HERTZ_CONSTANT,
         ElementKind::Quadratic => tol::HERTZ_QUADRATIC,
     });
@@ -173,13 +173,13 @@ pub fn make_checks(
 ) -> Vec<Check> {
     let mut out = Vec::new();
     for (r, &bound) in runs.iter().zip(bounds) {
-        let expected = scene.checks.status_for(r.solver.0);
+        let expected = scene.expect().status_for(r.solver);
         let ok = r.status == expected;
         out.push(verdict(format!("{}: status {} (expected {})", r.solver, r.status, expected), ok, None));
         let (Some(res), Some(_)) = (&r.residuals, &r.resultants) else {
             continue;
         };
-        let bound = scene.checks.residual.unwrap_or(bound);
+        let bound = scene.expect().residual.unwrap_or(bound);
         out.push(figure(
             format!("{}: largest residual (absolute)", r.solver),
             res.max(),
@@ -188,7 +188,7 @@ pub fn make_checks(
             bound,
             res.max() <= bound,
         ));
-        if let (Dof::Load(p), Some(f)) = (scene.drive.normal(), &r.resultants) {
+        if let (Some(Dof::Load(p)), Some(f)) = (scene.drive().map(|d| d.normal), &r.resultants) {
             out.push(check(format!("{}: resultant P = normal_load", r.solver), f.normal, p, tol::LOAD_RESULTANT));
         }
         out.extend(resolution_check(scene, element, element_length, r));
@@ -198,7 +198,7 @@ pub fn make_checks(
     }
     // Cattaneo–Mindlin where it applies.
     if crate::references::cattaneo_applies(scene) {
-        let t = scene.checks.cattaneo_elements.unwrap_or(tol::CATTANEO_ELEMENTS);
+        let t = scene.expect().cattaneo_elements.unwrap_or(tol::CATTANEO_ELEMENTS);
         for r in runs.iter().filter(|r| r.contact.is_some()) {
             let m = crate::references::metrics(scene, r);
             if let (Some(c), Some(ce), Some(err), Some(centre)) =
@@ -238,7 +238,7 @@ pub fn make_checks(
         else {
             continue;
         };
-        let t = scene.checks.cattaneo_elements.unwrap_or(tol::CATTANEO_ELEMENTS);
+        let t = scene.expect().cattaneo_elements.unwrap_or(tol::CATTANEO_ELEMENTS);
         let a = crate::references::hertz_at(scene, r.resultants.map_or(0.0, |x| x.normal)).half_width;
         // One element of stick zone moves Q/(μP) = 1 − (c/a)² by about 2(c/a)(h/a) + (h/a)².
         let tq = t * (2.0 * ce * elem / a + (elem / a).powi(2));
@@ -264,12 +264,12 @@ pub fn make_checks(
     }
     // Solvers against each other: pressures and shears relative to the peak pressure, and active sets.
     let solved: Vec<&SolverRun> = runs.iter().filter(|r| r.contact.is_some()).collect();
-    let mu = scene.contact.friction;
+    let mu = scene.friction();
     for i in 0..solved.len() {
         for j in i + 1..solved.len() {
             let (a, b) = (solved[i], solved[j]);
             let c = compare(a, b, mu);
-            let t = scene.checks.agreement.unwrap_or(tol::SOLVER_AGREEMENT);
+            let t = scene.expect().agreement.unwrap_or(tol::SOLVER_AGREEMENT);
             out.push(figure(
                 format!("{} vs {}: max |Δp|, |Δq| / p_max", a.solver, b.solver),
                 c.max_dtraction,

@@ -22,7 +22,7 @@
 use crate::hertz::Hertz;
 use crate::post::NodeState;
 use crate::results::SolverRun;
-use crate::scene::{BodyModel, Dof, RollingMode, Scene};
+use crate::scene::{BodyModel, Dof, Rolling, Scene};
 use crate::tolerances::{CATTANEO_EDGE_ELEMENTS, CATTANEO_MAX_A_OVER_R_AT_NU_HALF};
 use serde::Serialize;
 
@@ -79,13 +79,13 @@ pub fn stick_edges(nodes: &[crate::post::NodeResult]) -> Option<(f64, f64)> {
 
 /// Hertz at load `p` with the scene's pair modulus E*.
 pub fn hertz_at(scene: &Scene, p: f64) -> Hertz {
-    Hertz::with_modulus(scene.wheel.radius, scene.contact_modulus(), p)
+    Hertz::with_modulus(scene.radius(), scene.contact_modulus(), p)
 }
 
 /// Whether Carter applies: steady rolling with μ > 0, the normal and tangential problems decoupled ([`beta_zero`]).
 pub fn carter_applies(scene: &Scene, p: f64) -> bool {
-    let steady = scene.rolling.as_ref().is_some_and(|r| r.mode == RollingMode::Steady);
-    steady && scene.contact.friction > 0.0 && p > 0.0 && beta_zero(scene, p)
+    let steady = matches!(scene.rolling(), Some(Rolling::Steady { .. }));
+    steady && scene.friction() > 0.0 && p > 0.0 && beta_zero(scene, p)
 }
 
 /// Carter's solution for a steady-rolling run: (c/a, Q/(μP), ξ, stick-zone centre d, Hertz). `None` when it does
@@ -95,30 +95,29 @@ fn carter_solution(scene: &Scene, run: &SolverRun) -> Option<(f64, f64, f64, f64
     if !carter_applies(scene, p) {
         return None;
     }
-    let r = scene.rolling.as_ref()?;
-    let mu = scene.contact.friction;
-    let h = Hertz::with_modulus(scene.wheel.radius, scene.contact_modulus(), p);
-    let crit = mu * h.half_width / scene.wheel.radius;
-    let (c_over_a, xi) = match (r.creepage, scene.drive.tangential_load) {
-        (Some(xi), _) => ((1.0 - xi.abs() / crit).max(0.0), xi),
-        (None, Some(q)) => {
+    let direction = scene.rolling()?.direction();
+    let mu = scene.friction();
+    let h = Hertz::with_modulus(scene.radius(), scene.contact_modulus(), p);
+    let crit = mu * h.half_width / scene.radius();
+    let (c_over_a, xi) = match scene.drive()?.tangential {
+        Dof::Displacement(xi) => ((1.0 - xi.abs() / crit).max(0.0), xi),
+        Dof::Load(q) => {
             let ca = (1.0 - (q.abs() / (mu * p)).min(1.0)).sqrt();
             (ca, -q.signum() * crit * (1.0 - ca))
         }
-        (None, None) => return None,
     };
     let q_over = -xi.signum() * (1.0 - c_over_a * c_over_a);
-    let d = r.direction as f64 * h.half_width * (1.0 - c_over_a);
+    let d = direction as f64 * h.half_width * (1.0 - c_over_a);
     Some((c_over_a, q_over, xi, d, h))
 }
 
 /// Hertz at the run's load P, when the scene is frictionless and the run solved with P > 0.
 pub fn hertz_for(scene: &Scene, run: &SolverRun) -> Option<Hertz> {
-    if scene.contact.friction > 0.0 {
+    if scene.friction() > 0.0 {
         return None;
     }
     let p = run.resultants?.normal;
-    (p > 0.0).then(|| Hertz::with_modulus(scene.wheel.radius, scene.contact_modulus(), p))
+    (p > 0.0).then(|| Hertz::with_modulus(scene.radius(), scene.contact_modulus(), p))
 }
 
 /// Whether the normal and tangential problems decouple as the half-plane theories (Cattaneo–Mindlin, Carter)
@@ -127,21 +126,22 @@ pub fn hertz_for(scene: &Scene, run: &SolverRun) -> Option<Hertz> {
 /// [`CATTANEO_MAX_A_OVER_R_AT_NU_HALF`] (a finite wheel keeps a coupling of order a/R through its curvature and
 /// bending even where β = 0). `p` is the normal load.
 pub fn beta_zero(scene: &Scene, p: f64) -> bool {
-    let w = &scene.wheel;
-    let a_over_r = Hertz::with_modulus(w.radius, scene.contact_modulus(), p).half_width / w.radius;
+    let r = scene.radius();
+    let a_over_r = Hertz::with_modulus(r, scene.contact_modulus(), p).half_width / r;
     let beta_vanishes = scene.dundurs_beta().abs() < 1e-12;
-    let finite_ok = w.model == BodyModel::HalfPlane || a_over_r <= CATTANEO_MAX_A_OVER_R_AT_NU_HALF;
-    !scene.contact.coupling || (beta_vanishes && finite_ok)
+    let finite_ok = scene.model() == BodyModel::HalfPlane || a_over_r <= CATTANEO_MAX_A_OVER_R_AT_NU_HALF;
+    !scene.law().coupling || (beta_vanishes && finite_ok)
 }
 
 /// Whether Cattaneo–Mindlin applies: a static problem (no steady rolling), β = 0 ([`beta_zero`]), P and Q
 /// prescribed with the rotation held (or no rotation: the half-plane), 0 < |Q| < μP.
 pub fn cattaneo_applies(scene: &Scene) -> bool {
-    if scene.rolling.as_ref().is_some_and(|r| r.mode == RollingMode::Steady) {
+    let Some(d) = scene.drive() else { return false };
+    if matches!(scene.rolling(), Some(Rolling::Steady { .. })) {
         return false;
     }
-    let mu = scene.contact.friction;
-    match (scene.drive.normal(), scene.drive.tangential(), scene.drive.rotational()) {
+    let mu = scene.friction();
+    match (d.normal, d.tangential, d.rotational) {
         (Dof::Load(p), Dof::Load(q), Dof::Displacement(_)) => {
             beta_zero(scene, p) && mu > 0.0 && q != 0.0 && q.abs() < mu * p
         }
@@ -151,7 +151,7 @@ pub fn cattaneo_applies(scene: &Scene) -> bool {
 
 /// Contact element length (user's unit).
 pub fn element_length(scene: &Scene) -> f64 {
-    scene.mesh.element_length(scene.wheel.radius)
+    scene.zone().element_length(scene.radius())
 }
 
 /// Tributary length of node i from the node spacing (user's unit).
@@ -182,7 +182,7 @@ pub fn metrics(scene: &Scene, run: &SolverRun) -> Metrics {
         m.hertz_l2_err = (den > 0.0).then(|| (num / den).sqrt());
     }
     if let Some((ca, qmup, xi, d, h)) = carter_solution(scene, run) {
-        let mu = scene.contact.friction;
+        let mu = scene.friction();
         let elem = element_length(scene);
         let res = run.resultants.expect("solved");
         m.carter_q_over_mup = Some(res.tangential / (mu * res.normal));
@@ -220,9 +220,9 @@ pub fn metrics(scene: &Scene, run: &SolverRun) -> Metrics {
         m.carter_creepage_err = computed.filter(|_| xi != 0.0).map(|x| (x - xi).abs() / xi.abs());
     }
     if cattaneo_applies(scene) {
-        if let (Dof::Load(p), Dof::Load(q)) = (scene.drive.normal(), scene.drive.tangential()) {
-            let mu = scene.contact.friction;
-            let h = Hertz::with_modulus(scene.wheel.radius, scene.contact_modulus(), p);
+        if let Some((Dof::Load(p), Dof::Load(q))) = scene.drive().map(|d| (d.normal, d.tangential)) {
+            let mu = scene.friction();
+            let h = Hertz::with_modulus(scene.radius(), scene.contact_modulus(), p);
             let ce = h.half_width * (1.0 - q.abs() / (mu * p)).sqrt();
             let elem = element_length(scene);
             m.cm_c_over_a_exact = Some(ce / h.half_width);

@@ -359,25 +359,31 @@ impl<'a> StressEvaluator<'a> {
     /// boundary data would make the value wrong (module docs). The message names the first such point, its distance
     /// to the boundary and what would fix it.
     ///
-    /// # Panics
-    /// If the scene's wheel is a BEM wheel but `built` kept no boundary response (it keeps one whenever the scene
-    /// has `[stresses]`, [`crate::source::build`]).
-    pub fn new(scene: &Scene, built: &'a Built, path: &Path) -> crate::error::Result<Option<StressEvaluator<'a>>> {
-        let Some(spec) = scene.stresses.as_ref() else { return Ok(None) };
+    /// [`Error::Unsupported`] when the scene's wheel is a BEM wheel but `built` kept no boundary response (a source
+    /// keeps one whenever the scene it was built for has `[stresses]`, [`crate::source::build`]).
+    pub fn new(scene: &Scene, built: &'a Built) -> crate::error::Result<Option<StressEvaluator<'a>>> {
+        let Some(spec) = scene.stresses() else { return Ok(None) };
+        let path = scene.origin();
         let grid = StressGrid { x: spec.x, depth: spec.depth, points: spec.points };
         let l0 = built.flex.scales.length;
-        let body = match scene.wheel.model {
+        let body = match scene.model() {
             BodyModel::HalfPlane => {
                 let g = Grid::of(scene);
                 Body::HalfPlane { a: g.a.iter().map(|v| v * l0).collect(), b: g.b.iter().map(|v| v * l0).collect() }
             }
             BodyModel::Bem => {
-                let response =
-                    built.boundary.as_ref().expect("a BEM source keeps its boundary response for [stresses]");
-                let r = scene.wheel.radius;
-                let hub = match scene.wheel.support() {
-                    Support::Hub { radius } => radius,
-                    Support::TopArc { .. } => 0.0,
+                let Some(response) = built.boundary.as_ref() else {
+                    return Err(crate::error::Error::Unsupported {
+                        path: path.to_path_buf(),
+                        message: "stresses: the model was built without the boundary response the BEM wheel's \
+                                  stresses need (build it from a scene with [stresses])"
+                            .into(),
+                    });
+                };
+                let r = scene.radius();
+                let hub = match scene.body() {
+                    crate::scene::Body::Bem { support: Support::Hub { radius }, .. } => *radius,
+                    _ => 0.0,
                 };
                 let points: Vec<[f64; 2]> = (0..grid.len())
                     .map(|k| {
@@ -397,9 +403,9 @@ impl<'a> StressEvaluator<'a> {
         Ok(Some(StressEvaluator {
             grid,
             quantities: spec.quantities(),
-            model: scene.wheel.model,
-            nu: scene.wheel.poisson_ratio,
-            modulus: scene.wheel.youngs_modulus,
+            model: scene.model(),
+            nu: scene.wheel().material.poisson_ratio,
+            modulus: scene.wheel().material.youngs_modulus,
             body,
         }))
     }

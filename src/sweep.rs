@@ -32,9 +32,9 @@
 
 use crate::error::{Error, Result};
 use crate::io::write_atomic;
+use crate::pipeline::run_scene;
 use crate::references::metrics;
 use crate::results::SolverRun;
-use crate::run::run_scene;
 use crate::scene::Scene;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
@@ -549,9 +549,9 @@ fn run_row(
     let mut cells = vec![case.index.to_string()];
     cells.extend(param_cells(keys, &case.params));
     cells.extend([
-        scene.name.clone(),
-        scene.mesh.element.name().to_string(),
-        scene.mesh.contact_elements.to_string(),
+        scene.name().to_string(),
+        scene.element().name().to_string(),
+        scene.zone().elements.to_string(),
         contact_nodes.to_string(),
         r.solver.to_string(),
         r.formulation.to_string(),
@@ -574,14 +574,14 @@ fn run_row(
         float(m.cm_centre_elements),
         float(m.cm_shear_err),
         float(m.cm_shear_l2_err),
-        scene.wheel.model.name().to_string(),
+        scene.model().name().to_string(),
     ]);
     let hertz = r.resultants.filter(|f| f.normal > 0.0).map(|f| crate::references::hertz_at(scene, f.normal));
-    let edges = crate::references::stick_edges(r.answer_nodes()).filter(|_| scene.contact.friction > 0.0);
+    let edges = crate::references::stick_edges(r.answer_nodes()).filter(|_| scene.friction() > 0.0);
     cells.extend([
-        float(Some(scene.wheel.radius)),
+        float(Some(scene.radius())),
         float(Some(scene.contact_modulus())),
-        float(Some(scene.contact.friction)),
+        float(Some(scene.friction())),
         float(hertz.map(|h| h.half_width)),
         float(hertz.map(|h| h.peak_pressure)),
         float(r.rigid_body.and_then(|b| b.tangential)),
@@ -652,7 +652,7 @@ fn first_run(case: &Variant, keys: &[String], label: &Path) -> std::result::Resu
     };
     let path = case_path(case, label);
     // A panic in one case (a bug) must not lose the others' rows.
-    let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run_scene(scene, &path)));
+    let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run_scene(scene)));
     match result {
         Ok(Ok(report)) => Ok(report),
         Ok(Err(e)) => Err(error_rows(case, keys, &e)),
@@ -728,8 +728,7 @@ fn run_cases_timed(cases: &[&Variant], keys: &[String], label: &Path, repeats: u
             }
             let scene = case.scene.as_ref().expect("a case that ran has a scene");
             // A repeat that fails or panics (a bug) only loses that repeat's timing, never the sweep's rows.
-            let again =
-                std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run_scene(scene, &case_path(case, label))));
+            let again = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| run_scene(scene)));
             bar.inc(1);
             let Ok(Ok(again)) = again else { continue };
             for (ti, r) in t.iter_mut().zip(&again.runs) {

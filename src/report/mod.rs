@@ -14,10 +14,10 @@
 
 use crate::error::{Error, Result};
 use crate::io::write_atomic;
+use crate::pipeline::run_scene;
 use crate::plot::{Chart, Series, Style};
 use crate::post::NodeState;
 use crate::results::{Report, SolverRun};
-use crate::run::run_scene;
 use crate::scene::Scene;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -194,14 +194,14 @@ fn reference_scenes(opts: &ReportOptions, scenes: Vec<(PathBuf, Scene)>) -> Resu
          |---|---|---|---|---|---|---|---|---|---|\n",
     );
     for (p, s) in scenes {
-        let r = run_scene(&s, &p)?;
+        let r = run_scene(&s)?;
         let text = serde_json::to_string_pretty(&r).expect("report serialises");
-        write_atomic(&out.join("runs").join(format!("{}.json", s.name)), &text)?;
+        write_atomic(&out.join("runs").join(format!("{}.json", s.name())), &text)?;
         let lemke = r.runs.iter().find(|x| x.solver == "lemke");
         for run in &r.runs {
             let cmp_lemke = match (lemke, &run.contact) {
                 (Some(l), Some(_)) if l.contact.is_some() && run.solver != "lemke" => {
-                    Some(crate::checks::compare(l, run, s.contact.friction))
+                    Some(crate::checks::compare(l, run, s.friction()))
                 }
                 _ => None,
             };
@@ -211,7 +211,7 @@ fn reference_scenes(opts: &ReportOptions, scenes: Vec<(PathBuf, Scene)>) -> Resu
             writeln!(
                 cmp,
                 "{},{},{},{},{},{},{},{},{},{},{},{},{},{:e},{:e},{:e}",
-                s.name,
+                s.name(),
                 run.solver,
                 run.formulation,
                 run.status,
@@ -232,7 +232,7 @@ fn reference_scenes(opts: &ReportOptions, scenes: Vec<(PathBuf, Scene)>) -> Resu
             writeln!(
                 cmp_md,
                 "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.4} |",
-                s.name,
+                s.name(),
                 run.solver,
                 run.status,
                 run.problem_size,
@@ -245,7 +245,7 @@ fn reference_scenes(opts: &ReportOptions, scenes: Vec<(PathBuf, Scene)>) -> Resu
             )
             .unwrap();
         }
-        reports.insert(s.name.clone(), r);
+        reports.insert(s.name().to_string(), r);
     }
     write_atomic(&out.join("solver-comparison.csv"), &cmp)?;
     Ok((reports, cmp_md))
@@ -255,7 +255,7 @@ fn reference_scenes(opts: &ReportOptions, scenes: Vec<(PathBuf, Scene)>) -> Resu
 /// `figures/`): (title, file) of Lemke's map per quantity, in the scene's and the quantities' order.
 fn stress_maps(reports: &BTreeMap<String, Report>, out: &Path) -> Result<Vec<(String, String)>> {
     let mut maps = Vec::new();
-    for (name, r) in reports.iter().filter(|(_, r)| r.scene.stresses.is_some()) {
+    for (name, r) in reports.iter().filter(|(_, r)| r.scene.stresses().is_some()) {
         let json = out.join("runs").join(format!("{name}.json"));
         crate::plot_result::plot_result(&json, Some(&out.join("figures")))?;
         let Some(st) = r.runs.iter().find(|x| x.solver == "lemke").and_then(|x| x.stresses.as_ref()) else {
@@ -354,7 +354,7 @@ fn seed_figures(reports: &BTreeMap<String, Report>, dir: &Path) -> Result<Vec<(S
         let units = members
             .first()
             .and_then(|(n, _)| reports.get(*n))
-            .map(|r| table::Units::parse(r.scene.units.as_deref()))
+            .map(|r| table::Units::parse(r.scene.units()))
             .unwrap_or_default();
         let mut tr = Chart::new(format!("Seed {title}: tractions"), "x", "traction (p markers, q lines)")
             .x_unit(units.length.clone())
@@ -372,8 +372,7 @@ fn seed_figures(reports: &BTreeMap<String, Report>, dir: &Path) -> Result<Vec<(S
                 // Hertz's pressure at this scene's load, the analytic curve the seed compares its tractions with.
                 let sc = &reports[*name].scene;
                 if let Some(res) = l.resultants.filter(|r| r.normal > 0.0) {
-                    let w = &sc.wheel;
-                    let h = crate::hertz::Hertz::new(w.radius, w.youngs_modulus, w.poisson_ratio, res.normal);
+                    let h = crate::hertz::Hertz::with_modulus(sc.radius(), sc.contact_modulus(), res.normal);
                     let xs: Vec<f64> =
                         (0..=200).map(|i| -1.5 * h.half_width + 3.0 * h.half_width * i as f64 / 200.0).collect();
                     tr = tr.add(Series::new(
@@ -444,7 +443,7 @@ mod tests {
             ("without", ""),
         ] {
             let s = Scene::from_toml(&text(name, st), Path::new("<test>")).unwrap();
-            let r = run_scene(&s, Path::new("<test>")).unwrap();
+            let r = run_scene(&s).unwrap();
             let json = serde_json::to_string_pretty(&r).unwrap();
             std::fs::write(dir.path().join("runs").join(format!("{name}.json")), json).unwrap();
             reports.insert(name.to_string(), r);

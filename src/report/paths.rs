@@ -6,10 +6,10 @@
 use super::table::Units;
 use super::{plot_err, Figures};
 use crate::error::Result;
+use crate::pipeline::run_scene;
 use crate::plot::{Chart, Series, Style};
 use crate::references::{beta_zero, stick_edges};
 use crate::results::{Report, SolverRun};
-use crate::run::run_scene;
 use crate::scene::{BodyModel, CounterBody, RollingMode, Scene};
 use crate::theory::{self, Hertz2D, TangentialPath};
 use std::collections::BTreeMap;
@@ -24,18 +24,18 @@ fn runs_of<'a>(r: &'a Report, solver: &str) -> Vec<(usize, &'a SolverRun)> {
 /// The Mindlin–Deresiewicz pattern: step 0 loads P alone, then every step holds P and takes Q to +Q*, −Q*, +Q*, …
 /// (|Q*| ≤ μP), on a single half-plane with β = 0 and a rigid flat. Returns (P, Q*).
 fn md_pattern(s: &Scene) -> Option<(f64, f64)> {
-    let single = s.wheel.model == BodyModel::HalfPlane && matches!(s.counter_body, CounterBody::Rigid);
-    let p = s.steps.first()?.normal_load?;
-    if !single || s.rolling.is_some() || !beta_zero(s, p) || s.steps.len() < 3 {
+    let single = s.model() == BodyModel::HalfPlane && matches!(s.counter_body(), CounterBody::Rigid);
+    let p = s.document().steps.first()?.normal_load?;
+    if !single || s.rolling().is_some() || !beta_zero(s, p) || s.document().steps.len() < 3 {
         return None;
     }
-    if s.steps[0].tangential_load.unwrap_or(0.0) != 0.0 || s.steps[0].tangential_shift.is_some() {
+    if s.document().steps[0].tangential_load.unwrap_or(0.0) != 0.0 || s.document().steps[0].tangential_shift.is_some() {
         return None;
     }
-    let q_star = s.steps[1].tangential_load?;
+    let q_star = s.document().steps[1].tangential_load?;
     let ok = q_star > 0.0
-        && q_star <= s.contact.friction * p
-        && s.steps[1..].iter().enumerate().all(|(k, st)| {
+        && q_star <= s.friction() * p
+        && s.document().steps[1..].iter().enumerate().all(|(k, st)| {
             st.normal_load == Some(p) && st.tangential_load == Some(if k % 2 == 0 { q_star } else { -q_star })
         });
     ok.then_some((p, q_star))
@@ -53,22 +53,24 @@ fn md_branch(r: &Report, k: usize, q_star: f64) -> TangentialPath {
 /// Spence's pattern: a coupled half-plane (β ≠ 0) on a rigid flat, one or more steps raising the normal load
 /// monotonically from rest with no tangential drive. Returns β.
 fn spence_pattern(s: &Scene) -> Option<f64> {
-    let single = s.wheel.model == BodyModel::HalfPlane && matches!(s.counter_body, CounterBody::Rigid);
-    let p_end = s.steps.last()?.normal_load?;
-    let monotone = s.steps.windows(2).all(|w| w[0].normal_load.unwrap_or(0.0) <= w[1].normal_load.unwrap_or(0.0));
-    let no_tangential = s.steps.iter().all(|st| st.tangential_load.unwrap_or(0.0) == 0.0 && st.roll.is_none());
-    (single && s.contact.coupling && s.contact.friction > 0.0 && monotone && no_tangential && !beta_zero(s, p_end))
+    let single = s.model() == BodyModel::HalfPlane && matches!(s.counter_body(), CounterBody::Rigid);
+    let p_end = s.document().steps.last()?.normal_load?;
+    let monotone =
+        s.document().steps.windows(2).all(|w| w[0].normal_load.unwrap_or(0.0) <= w[1].normal_load.unwrap_or(0.0));
+    let no_tangential =
+        s.document().steps.iter().all(|st| st.tangential_load.unwrap_or(0.0) == 0.0 && st.roll.is_none());
+    (single && s.law().coupling && s.friction() > 0.0 && monotone && no_tangential && !beta_zero(s, p_end))
         .then(|| s.dundurs_beta())
 }
 
 /// The path sections of every reference scene with `[[steps]]`.
 pub fn sections(reports: &BTreeMap<String, Report>, out: &Path, md: &mut String, figs: &mut Figures) -> Result<()> {
     for (name, r) in reports.iter().filter(|(_, r)| !r.steps.is_empty()) {
-        let units = Units::parse(r.scene.units.as_deref());
-        writeln!(md, "### `{name}`\n\n{}\n", r.scene.description.split_whitespace().collect::<Vec<_>>().join(" "))
+        let units = Units::parse(r.scene.units());
+        writeln!(md, "### `{name}`\n\n{}\n", r.scene.description().split_whitespace().collect::<Vec<_>>().join(" "))
             .unwrap();
         summary(r, md);
-        let solver = r.runs.first().map(|x| x.solver.0).unwrap_or("lemke");
+        let solver = r.runs.first().map(|x| x.solver.name()).unwrap_or("lemke");
         // The figures and theory comparisons use the solved substeps only (a path that broke, or a substep judged
         // not an answer, has no tractions to compare); the summary above says how many there are.
         let all = runs_of(r, solver);
@@ -83,7 +85,7 @@ pub fn sections(reports: &BTreeMap<String, Report>, out: &Path, md: &mut String,
             )
             .unwrap();
         }
-        if r.scene.steps.iter().any(|st| st.roll.unwrap_or(0.0) > 0.0) {
+        if r.scene.document().steps.iter().any(|st| st.roll.unwrap_or(0.0) > 0.0) {
             rolling_approach(name, r, &runs, &units, out, md, figs)?;
         } else {
             hysteresis(name, r, &runs, &units, out, md, figs)?;
@@ -101,7 +103,7 @@ fn summary(r: &Report, md: &mut String) {
     )
     .unwrap();
     for run in &r.runs {
-        let runs = runs_of(r, run.solver.0);
+        let runs = runs_of(r, run.solver.name());
         let solved = runs.iter().filter(|(_, x)| x.status == crate::solvers::Status::Solved).count();
         // The total dissipated up to the last solved substep.
         let dissipated = runs
@@ -137,21 +139,26 @@ fn hysteresis(
     // Q at round-off, which is no loop.
     let tangential = r
         .scene
+        .document()
         .steps
         .iter()
         .any(|st| st.tangential_load.is_some_and(|q| q != 0.0) || st.tangential_shift.is_some_and(|d| d != 0.0));
     if !tangential || pts.is_empty() {
         return Ok(());
     }
-    let solver = runs.first().map(|(_, x)| x.solver.0).unwrap_or("");
+    let solver = runs.first().map(|(_, x)| x.solver.name()).unwrap_or("");
     let mut series: Vec<Curve> = vec![(format!("{solver}, substep ends"), pts.clone(), Style::LineMarkers)];
     let s = &r.scene;
     if let Some((p, q_star)) = md_pattern(s) {
-        let h = Hertz2D::from_load(p, s.wheel.radius, s.contact_modulus());
-        let mu = s.contact.friction;
+        let h = Hertz2D::from_load(p, s.radius(), s.contact_modulus());
+        let mu = s.friction();
         // The half-plane's datum is the material point at depth D; theory's log datum is D' = D e^(1/(2(1 − ν)))
         // (tests/history.rs derives it); the wheel's shift is minus the counter-body's δ.
-        let d_prime = s.wheel.datum() * (0.5 / (1.0 - s.wheel.poisson_ratio)).exp();
+        let datum = match s.body() {
+            crate::scene::Body::HalfPlane { datum_depth, .. } => *datum_depth,
+            crate::scene::Body::Bem { .. } => s.radius(),
+        };
+        let d_prime = datum * (0.5 / (1.0 - s.wheel().material.poisson_ratio)).exp();
         let delta =
             |path: TangentialPath, q: f64| -theory::md_displacement(&h, mu, s.contact_modulus(), d_prime, path, q);
         let qs: Vec<f64> = (0..=100).map(|i| q_star * (i as f64 / 50.0 - 1.0)).collect();
@@ -169,10 +176,10 @@ fn hysteresis(
         let in_cycle = |k: usize| (2..=3).contains(&r.steps[k].step);
         let complete =
             runs.iter().filter(|(k, _)| in_cycle(*k)).count() == (0..r.steps.len()).filter(|&k| in_cycle(k)).count();
-        if r.scene.steps.len() >= 4 && !complete {
+        if r.scene.document().steps.len() >= 4 && !complete {
             writeln!(md, "The cycle +Q* → −Q* → +Q* did not complete ({solver} failed in it): no cycle energy.\n")
                 .unwrap();
-        } else if r.scene.steps.len() >= 4 {
+        } else if r.scene.document().steps.len() >= 4 {
             writeln!(
                 md,
                 "Energy dissipated in the cycle +Q* → −Q* → +Q* (Q* = {q_star}, {solver}): {w:.6e}; Mindlin–Deresiewicz \
@@ -258,7 +265,7 @@ fn stick_zone(
     if pts.is_empty() {
         return Ok(());
     }
-    let solver = runs.first().map(|(_, x)| x.solver.0).unwrap_or("");
+    let solver = runs.first().map(|(_, x)| x.solver.name()).unwrap_or("");
     let mut chart = Chart::new(format!("{name}: stick zone along the path"), "substep", "stick half-width")
         .x_unit("1")
         .y_unit(units.length.clone())
@@ -267,21 +274,21 @@ fn stick_zone(
     let mut theory_pts = Vec::new();
     let mut what = "";
     if let Some((p, q_star)) = md_pattern(s) {
-        let h = Hertz2D::from_load(p, s.wheel.radius, s.contact_modulus());
+        let h = Hertz2D::from_load(p, s.radius(), s.contact_modulus());
         for (k, x) in runs {
             if let Some(f) = x.resultants {
                 if r.steps[*k].step >= 1 {
-                    let c = theory::md_stick_half_width(&h, s.contact.friction, md_branch(r, *k, q_star), f.tangential);
+                    let c = theory::md_stick_half_width(&h, s.friction(), md_branch(r, *k, q_star), f.tangential);
                     theory_pts.push(((k + 1) as f64, c));
                 }
             }
         }
         what = "Mindlin–Deresiewicz: the current branch's stick zone";
     } else if let Some(beta) = spence_pattern(s) {
-        let k_ratio = theory::spence_c_over_a(beta.abs() / s.contact.friction);
+        let k_ratio = theory::spence_c_over_a(beta.abs() / s.friction());
         for (k, x) in runs {
             if let Some(f) = x.resultants.filter(|f| f.normal > 0.0) {
-                let a = Hertz2D::from_load(f.normal, s.wheel.radius, s.contact_modulus()).a;
+                let a = Hertz2D::from_load(f.normal, s.radius(), s.contact_modulus()).a;
                 theory_pts.push(((k + 1) as f64, k_ratio * a));
             }
         }
@@ -293,7 +300,7 @@ fn stick_zone(
             .find(|(k, _)| (k + 1) as f64 == k_last)
             .and_then(|(_, x)| x.resultants)
             .map_or(0.0, |f| f.normal);
-        let a_end = Hertz2D::from_load(p_last, s.wheel.radius, s.contact_modulus()).a;
+        let a_end = Hertz2D::from_load(p_last, s.radius(), s.contact_modulus()).a;
         writeln!(
             md,
             "Final stick half-width {last:.4} {} against Spence's {:.4} (c/a = {:.4} computed against {k_ratio:.4} for \
@@ -301,7 +308,7 @@ fn stick_zone(
             units.length,
             k_ratio * a_end,
             last / a_end,
-            beta.abs() / s.contact.friction
+            beta.abs() / s.friction()
         )
         .unwrap();
     }
@@ -310,7 +317,7 @@ fn stick_zone(
             .iter()
             .filter_map(|(k, c)| theory_pts.iter().find(|t| t.0 == *k).map(|t| (c - t.1).abs()))
             .fold(0.0, f64::max);
-        let h = s.mesh.element_length(s.wheel.radius);
+        let h = s.zone().element_length(s.radius());
         writeln!(md, "{what}; largest difference along the path {:.2} elements.\n", worst / h).unwrap();
         chart = chart.add(Series::new(what.split(':').next().unwrap_or(what), theory_pts, Style::Dashed));
     }
@@ -323,21 +330,22 @@ fn stick_zone(
 
 /// The steady-rolling counterpart of a rolling path: the last step's drive with `[rolling] mode = "steady"` (the
 /// tangential load kept when the path prescribes it, else the creepage with the tangential DOF free).
-fn steady_counterpart(s: &Scene) -> Scene {
-    let mut c = s.clone();
-    let last = s.steps.last().expect("a path").clone();
-    c.steps.clear();
-    c.drive = last.drive();
-    c.drive.tangential_shift = None;
-    c.drive.rotation = None;
-    c.drive.moment = None;
-    let rolling = c.rolling.as_mut().expect("a rolling path");
-    rolling.mode = RollingMode::Steady;
-    if c.drive.tangential_load.is_some() {
-        rolling.creepage = None;
-    }
-    c.solvers.use_ = vec!["lemke".into()];
-    c
+fn steady_counterpart(s: &Scene) -> Result<Scene> {
+    s.edit(|c| {
+        let last = c.steps.last().cloned().unwrap_or_default();
+        c.steps.clear();
+        c.drive = last.drive();
+        c.drive.tangential_shift = None;
+        c.drive.rotation = None;
+        c.drive.moment = None;
+        if let Some(rolling) = c.rolling.as_mut() {
+            rolling.mode = RollingMode::Steady;
+            if c.drive.tangential_load.is_some() {
+                rolling.creepage = None;
+            }
+        }
+        c.solvers.use_ = vec!["lemke".into()];
+    })
 }
 
 /// Distance of the tractions to the steady-rolling solution against the distance rolled (log scale).
@@ -350,7 +358,7 @@ fn rolling_approach(
     md: &mut String,
     figs: &mut Figures,
 ) -> Result<()> {
-    let steady = run_scene(&steady_counterpart(&r.scene), Path::new(name))?;
+    let steady = run_scene(&steady_counterpart(&r.scene)?)?;
     let Some(y) = steady.runs.first().filter(|y| y.status == crate::solvers::Status::Solved) else {
         writeln!(md, "The steady-rolling counterpart did not solve; no approach plot.\n").unwrap();
         return Ok(());
@@ -369,7 +377,7 @@ fn rolling_approach(
         .x_unit(units.length.clone())
         .y_unit("1")
         .log_y()
-        .add(Series::new(runs.first().map(|(_, x)| x.solver.0).unwrap_or(""), pts, Style::Line));
+        .add(Series::new(runs.first().map(|(_, x)| x.solver.name()).unwrap_or(""), pts, Style::Line));
     let file = format!("figures/{name}-approach.svg");
     chart.write(&out.join(&file)).map_err(plot_err)?;
     figs.push((format!("{name}: approach to steady rolling"), file.clone()));

@@ -21,7 +21,7 @@
 
 use super::clarabel_box::solve_box;
 use super::clarabel_qp::{solve_frictionless, QpSettings};
-use super::{Entry, Solver, Status, Validate, Work};
+use super::{Entry, Solver, SolverId, SolverSettings, Termination, Validate, Work};
 use crate::formulation::{ContactProblem, Dof, DofKind, ProblemKind, Solution};
 use faer::Mat;
 use serde::{Deserialize, Serialize};
@@ -244,7 +244,7 @@ pub struct Outcome {
     /// Rigid motion (shift, approach, rotation).
     pub rigid: [f64; 3],
     /// Outcome.
-    pub status: Status,
+    pub status: Termination,
     /// Detail.
     pub message: String,
     /// Total Gauss–Seidel sweeps (PGS inner).
@@ -256,7 +256,7 @@ pub struct Outcome {
 }
 
 /// Why an inner solve failed.
-struct Failure(Status, String);
+struct Failure(Termination, String);
 
 /// Projected Gauss–Seidel on `r = q + K x`, `lo ≤ x ≤ hi` (box LCP). `k` row-major. Returns sweeps used and
 /// whether the largest update fell under `tol · max|x|`.
@@ -298,7 +298,7 @@ pub fn pgs_box(
 fn check_diagonal(k: &[f64], n: usize, which: &str) -> Result<(), Failure> {
     match (0..n).find(|&i| k[i * n + i].is_nan() || k[i * n + i] <= 0.0) {
         Some(i) => Err(Failure(
-            Status::NumericalError,
+            Termination::NumericalError,
             format!(
                 "the {which} flexibility has a non-positive diagonal entry at contact node {i} ({:e}): it is not \
                  positive definite, so projected Gauss–Seidel cannot run (refine the mesh, or use lemke)",
@@ -326,7 +326,10 @@ fn root<F: FnMut(f64) -> Result<f64, Failure>>(
         if v.is_finite() {
             Ok(v)
         } else {
-            Err(Failure(Status::NumericalError, format!("the resultant is not finite at rigid displacement {d:e}")))
+            Err(Failure(
+                Termination::NumericalError,
+                format!("the resultant is not finite at rigid displacement {d:e}"),
+            ))
         }
     };
     let (mut a, mut ga) = (d0, g(eval(d0)?));
@@ -351,7 +354,7 @@ fn root<F: FnMut(f64) -> Result<f64, Failure>>(
         h *= 2.0;
         tries += 1;
         if tries > 200 {
-            return Err(Failure(Status::NotConverged, "could not bracket the prescribed load".into()));
+            return Err(Failure(Termination::NotConverged, "could not bracket the prescribed load".into()));
         }
     }
     let mut side = 0;
@@ -377,7 +380,7 @@ fn root<F: FnMut(f64) -> Result<f64, Failure>>(
             side = 1;
         }
     }
-    Err(Failure(Status::NotConverged, "the load root-find did not converge".into()))
+    Err(Failure(Termination::NotConverged, "the load root-find did not converge".into()))
 }
 
 /// Solve the split problem.
@@ -415,7 +418,7 @@ pub fn solve(p: &Split, inner: &Inner) -> Outcome {
         }
         if outer >= max_outer {
             break Err(Failure(
-                Status::NotConverged,
+                Termination::NotConverged,
                 format!(
                     "NORM-TANG did not converge in {max_outer} outer iterations: last change {change:.3e} > {tolerance:.0e} \
                      (strong normal–tangential coupling?)"
@@ -425,7 +428,7 @@ pub fn solve(p: &Split, inner: &Inner) -> Outcome {
     };
     let (status, message) = match result {
         Ok(()) => (
-            Status::Solved,
+            Termination::Solved,
             format!(
                 "converged in {outer} outer iteration(s), last change {:.3e}",
                 if change.is_finite() { change } else { 0.0 }
@@ -467,7 +470,7 @@ fn norm(
                 *sweeps += sw;
                 if !ok {
                     return Err(Failure(
-                        Status::NotConverged,
+                        Termination::NotConverged,
                         format!(
                             "projected Gauss–Seidel did not converge in {} sweeps of one inner solve (max_sweeps; {} \
                              sweeps in all, counting the inner solves before it)",
@@ -505,7 +508,7 @@ fn norm(
             let out = solve_frictionless(&p.knn_cols, n, &q, load, &s.qp);
             *qp_iterations += out.iterations;
             if !out.status.is_solved() {
-                return Err(Failure(Status::from(&out.status), format!("clarabel: {}", out.status)));
+                return Err(Failure(Termination::from(&out.status), format!("clarabel: {}", out.status)));
             }
             *f = out.f;
             if let Some(d) = out.approach {
@@ -542,7 +545,7 @@ fn tang(
     if let Dof::Load(ql) = p.tangential {
         if ql.abs() >= mu * psum {
             return Err(Failure(
-                Status::Infeasible,
+                Termination::Infeasible,
                 format!(
                     "gross sliding: the tangential load |Q| exceeds the friction limit μP (|Q|/(μP) = {:.6})",
                     ql.abs() / (mu * psum)
@@ -581,7 +584,7 @@ fn tang(
                 *sweeps += sw;
                 if !ok {
                     return Err(Failure(
-                        Status::NotConverged,
+                        Termination::NotConverged,
                         format!(
                             "projected Gauss–Seidel did not converge in {} sweeps of one inner solve (max_sweeps; {} \
                              sweeps in all, counting the inner solves before it)",
@@ -624,7 +627,7 @@ fn tang(
             let out = solve_box(&cols, na, &q, &lo_a, &hi_a, eq, &s.qp);
             *qp_iterations += out.iterations;
             if !out.status.is_solved() {
-                return Err(Failure(Status::from(&out.status), format!("clarabel (TANG): {}", out.status)));
+                return Err(Failure(Termination::from(&out.status), format!("clarabel (TANG): {}", out.status)));
             }
             x = out.x;
             if let Some(nu) = out.nu {
@@ -653,20 +656,22 @@ pub struct NormTangQp {
 
 /// Registry entry of NORM-TANG with PGS.
 pub const PGS_ENTRY: Entry = Entry {
+    id: SolverId::Pgs,
     name: "pgs",
     summary: "NORM-TANG split (Kalker; González & Abascal) with projected Gauss–Seidel sweeps; no moment load",
     in_all: true,
     counters: &["sweeps", "outer"],
-    build: |raw| Ok(Box::new(Pgs { settings: super::parse_settings("pgs", raw)? })),
+    build: |s: &SolverSettings| Box::new(Pgs { settings: s.pgs }),
 };
 
 /// Registry entry of NORM-TANG with clarabel QPs.
 pub const NORMTANG_QP_ENTRY: Entry = Entry {
+    id: SolverId::NormtangQp,
     name: "normtang_qp",
     summary: "NORM-TANG with clarabel QPs as the inner solver; no moment load",
     in_all: true,
     counters: &["iterations", "outer"],
-    build: |raw| Ok(Box::new(NormTangQp { settings: super::parse_settings("normtang_qp", raw)? })),
+    build: |s: &SolverSettings| Box::new(NormTangQp { settings: s.normtang_qp.clone() }),
 };
 
 /// Whether NORM-TANG applies: not with a prescribed moment, not at the sliding limit.
@@ -684,8 +689,8 @@ fn applies(p: &ContactProblem) -> Result<(), String> {
 fn run(p: &ContactProblem, inner: &Inner) -> super::Outcome {
     let out = solve(&Split::from_problem(p), inner);
     let work = match inner {
-        Inner::Pgs(_) => Work(vec![("sweeps", out.sweeps as u64), ("outer", out.outer as u64)]),
-        Inner::Qp(_) => Work(vec![("iterations", out.qp_iterations as u64), ("outer", out.outer as u64)]),
+        Inner::Pgs(_) => Work::of(&[("sweeps", out.sweeps as u64), ("outer", out.outer as u64)]),
+        Inner::Qp(_) => Work::of(&[("iterations", out.qp_iterations as u64), ("outer", out.outer as u64)]),
     };
     let rigid = p.dofs.iter().map(|d| out.rigid[slot(d.kind)]).collect();
     super::Outcome {
@@ -698,14 +703,11 @@ fn run(p: &ContactProblem, inner: &Inner) -> super::Outcome {
 }
 
 impl Solver for Pgs {
-    fn name(&self) -> &'static str {
-        "pgs"
+    fn id(&self) -> SolverId {
+        SolverId::Pgs
     }
     fn applies(&self, p: &ContactProblem) -> Result<(), String> {
         applies(p)
-    }
-    fn settings(&self) -> toml::Value {
-        super::settings_value(&self.settings)
     }
     fn tolerance(&self) -> Option<f64> {
         Some(self.settings.tolerance)
@@ -716,8 +718,8 @@ impl Solver for Pgs {
 }
 
 impl Solver for NormTangQp {
-    fn name(&self) -> &'static str {
-        "normtang_qp"
+    fn id(&self) -> SolverId {
+        SolverId::NormtangQp
     }
     fn applies(&self, p: &ContactProblem) -> Result<(), String> {
         if p.slip.is_steady() && p.law.friction > 0.0 {
@@ -726,9 +728,6 @@ impl Solver for NormTangQp {
                 .into());
         }
         applies(p)
-    }
-    fn settings(&self) -> toml::Value {
-        super::settings_value(&self.settings)
     }
     fn tolerance(&self) -> Option<f64> {
         Some(self.settings.tolerance)

@@ -2,34 +2,56 @@
 //! and that other tools, the sweeps, the reports and the regression suite read. Keys are stable: add freely,
 //! rename none.
 
-use crate::formulation::FormulationName;
+use crate::formulation::{FormulationName, ProblemKind};
 use crate::hertz::Hertz;
 use crate::post::{ContactSummary, NodeResult, Residuals, Resultants, RigidBody, RollingResult};
 use crate::scene::{BodyModel, ElementKind, Scene};
-use crate::solvers::Work;
-use crate::status::Status;
-use serde::Serialize;
+use crate::solvers::{SolverId, Work};
+use crate::status::{Status, Termination, Verdict};
+use serde::{Deserialize, Serialize};
 
-/// A solver's registry name ([`crate::solvers::REGISTRY`]), as written in results.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
-#[serde(transparent)]
-pub struct SolverName(pub &'static str);
+mod export;
+pub mod render;
 
-impl std::fmt::Display for SolverName {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.pad(self.0)
-    }
+/// The version of the result document's layout ([`Report::schema`]): raised when a key changes meaning or is
+/// removed (keys are only ever added within a version).
+pub const SCHEMA_VERSION: u32 = 2;
+
+/// Whether a run's flexibility was built for it or reused from an earlier solve on the same model
+/// ([`crate::pipeline::Model`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Setup {
+    /// Built for this solve: its assembly and condensation times were spent here.
+    #[default]
+    Built,
+    /// Reused: the assembly and condensation times are those of the model's one build, not spent again.
+    Reused,
 }
 
-impl PartialEq<str> for SolverName {
-    fn eq(&self, other: &str) -> bool {
-        self.0 == other
-    }
+/// Which contact problem a run solved (how the drive and the friction limit posed it).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ProblemClass {
+    /// μ = 0: the normal problem only.
+    Frictionless,
+    /// μ > 0: the frictional problem.
+    Frictional,
+    /// |Q| = μP with both prescribed: every node slips, the normal problem with q = μp sgn Q; shift indeterminate.
+    SlidingLimit,
+    /// |Q| > μP with both prescribed: no static solution.
+    GrossSliding,
 }
 
-impl PartialEq<&str> for SolverName {
-    fn eq(&self, other: &&str) -> bool {
-        self.0 == *other
+impl ProblemClass {
+    /// The class of a problem.
+    pub fn of(kind: &ProblemKind) -> ProblemClass {
+        match kind {
+            ProblemKind::Frictionless => ProblemClass::Frictionless,
+            ProblemKind::Frictional => ProblemClass::Frictional,
+            ProblemKind::SlidingLimit { .. } => ProblemClass::SlidingLimit,
+            ProblemKind::GrossSliding { .. } => ProblemClass::GrossSliding,
+        }
     }
 }
 
@@ -39,8 +61,9 @@ impl PartialEq<&str> for FormulationName {
     }
 }
 
-/// Wall-clock time per stage, seconds. Assembly and condensation are shared by all solvers of a scene.
-#[derive(Debug, Clone, Copy, Default, Serialize)]
+/// Wall-clock time per stage, seconds. Assembly and condensation are shared by all solvers of a scene, and by every
+/// solve on one model ([`Timing::setup`] says whether they were spent for this run).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct Timing {
     /// Flexibility assembly (BEM: H and G).
     pub assembly: f64,
@@ -50,21 +73,46 @@ pub struct Timing {
     pub formulation: f64,
     /// The solver.
     pub solve: f64,
-    /// Sum of the above.
+    /// Sum of the above: the cost of this answer from scratch.
     pub total: f64,
+    /// Whether the flexibility (assembly, condensation) was built for this run or reused from the model's build.
+    #[serde(default)]
+    pub setup: Setup,
+}
+
+impl Timing {
+    /// A run's timing from its source's build time and its own formulation and solve times.
+    pub fn of(source: &crate::source::SourceTiming, formulation: f64, solve: f64, setup: Setup) -> Timing {
+        Timing {
+            assembly: source.assembly,
+            condensation: source.condensation,
+            formulation,
+            solve,
+            total: source.assembly + source.condensation + formulation + solve,
+            setup,
+        }
+    }
 }
 
 /// One solver's run on the scene.
 #[derive(Debug, Clone, Serialize)]
 pub struct SolverRun {
     /// Solver name.
-    pub solver: SolverName,
+    pub solver: SolverId,
     /// `frictionless` | `displacement` | `loading`.
     pub formulation: FormulationName,
-    /// Outcome (after the solver-independent residual check).
+    /// Which contact problem the drive posed (e.g. `sliding_limit`).
+    pub problem: ProblemClass,
+    /// The harness's conclusion (after the solver-independent residual check and the model-range checks): what a
+    /// user acts on.
     pub status: Status,
-    /// Detail from the solver or the residual check.
+    /// How the solver itself ended.
+    pub termination: Termination,
+    /// The solver's own message.
     pub message: String,
+    /// Why `status` is not simply the solver's `termination` (null when it is).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub verdict: Option<Verdict>,
     /// Number of complementarity (or QP) unknowns solved.
     pub problem_size: usize,
     /// Work counters (named: pivots, sweeps, iterations, outer, ...).
@@ -101,6 +149,16 @@ pub struct SolverRun {
 }
 
 impl SolverRun {
+    /// What to tell a user about the run: the verdict's explanation (when the harness overrode the solver), then
+    /// the solver's message.
+    pub fn explanation(&self) -> String {
+        match &self.verdict {
+            Some(v) if self.message.is_empty() => v.message.clone(),
+            Some(v) => format!("{}; {}: {}", v.message, self.solver, self.message),
+            None => self.message.clone(),
+        }
+    }
+
     /// The nodes of the answer: the run's nodes when it solved, none otherwise (a run judged
     /// `contact_at_zone_edge` or `kinematics_out_of_range` keeps its nodes as evidence, not as an answer). Every
     /// figure derived from the nodes (stick edges, node counts) reads them through this.
@@ -226,6 +284,8 @@ pub struct Check {
 /// The JSON document of one scene run (`DESIGN.md`, "Result files").
 #[derive(Debug, Clone, Serialize)]
 pub struct Report {
+    /// The layout version of this document ([`SCHEMA_VERSION`]).
+    pub schema: u32,
     /// The scene as parsed, with defaults filled in.
     pub scene: Scene,
     /// Effects simulated.
@@ -276,53 +336,5 @@ impl Report {
             }
         }
         out
-    }
-
-    /// The nodal table as CSV (`rollbem run --csv`): one row per contact node and solver run that has nodes (a run
-    /// that did not solve has none, except the evidence kept by a run judged `contact_at_zone_edge` or
-    /// `kinematics_out_of_range`: the `status` column tells them apart), with the keys of `runs[].nodes[]` in the user's units; empty cells where a
-    /// value is null (u_x without the tangential problem, the slip of a separated node, the slip velocity without
-    /// rolling).
-    pub fn nodes_csv(&self) -> String {
-        let mut w = csv::Writer::from_writer(Vec::new());
-        let head = [
-            "solver",
-            "status",
-            "node",
-            "x",
-            "y",
-            "pressure",
-            "shear",
-            "u_x",
-            "u_y",
-            "gap",
-            "slip",
-            "state",
-            "slip_velocity",
-        ];
-        w.write_record(head).expect("CSV into memory");
-        let opt = |v: Option<f64>| v.map(|v| format!("{v:e}")).unwrap_or_default();
-        for run in &self.runs {
-            for (i, n) in run.nodes.iter().enumerate() {
-                let state = serde_json::to_value(n.state).expect("a state serialises");
-                w.write_record([
-                    run.solver.0.to_string(),
-                    run.status.name().to_string(),
-                    i.to_string(),
-                    format!("{:e}", n.x),
-                    format!("{:e}", n.y),
-                    format!("{:e}", n.pressure),
-                    format!("{:e}", n.shear),
-                    opt(n.u_x),
-                    format!("{:e}", n.u_y),
-                    format!("{:e}", n.gap),
-                    opt(n.slip),
-                    state.as_str().unwrap_or_default().to_string(),
-                    opt(n.slip_velocity),
-                ])
-                .expect("CSV into memory");
-            }
-        }
-        String::from_utf8(w.into_inner().expect("CSV into memory")).expect("CSV of UTF-8 cells is UTF-8")
     }
 }
