@@ -151,7 +151,8 @@ fn runs_table(out: &mut String, r: &Report) {
 /// The subsurface stresses' maxima per run (largest |value| on the grid, sign kept, and where), with `[stresses]`.
 fn stresses_table(out: &mut String, r: &Report) {
     let Some(spec) = &r.scene.stresses() else { return };
-    w!(out, 
+    w!(
+        out,
         "stresses in the wheel ({} model): {}×{} grid, x in [{:.4e}, {:.4e}], depth in [{:.4e}, {:.4e}]; maxima (largest |value|):",
         r.scene.model().name(),
         spec.points[0],
@@ -241,7 +242,8 @@ fn path_summary(out: &mut String, r: &Report) {
         let dissipated = runs.last().and_then(|x| x.history.as_ref()).map_or(0.0, |h| h.dissipated_total);
         let worst = runs.iter().filter_map(|x| x.residuals.map(|res| res.max())).fold(0.0f64, f64::max);
         let time: f64 = runs.iter().map(|x| x.timing_s.total).sum();
-        w!(out, 
+        w!(
+        out,
             "  {name:<10} {solved}/{total} substeps solved, dissipated {dissipated:.6e}, largest residual {worst:.2e}, time {time:.4} s"
         );
     }
