@@ -8,10 +8,10 @@
 //! Valid for a ≪ R. The approach is *not* a Hertz result in 2D (it depends on the support), so comparisons are
 //! made at equal load.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// Hertz solution for one load.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Hertz {
     /// Contact half-width a (length).
     pub half_width: f64,

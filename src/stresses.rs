@@ -65,8 +65,7 @@ use crate::source::bem_wheel::BoundaryResponse;
 use crate::source::{half_plane::Grid, Built};
 use crate::tolerances::{STRESS_NEAR_BOUNDARY_CONSTANT, STRESS_NEAR_BOUNDARY_QUADRATIC};
 use rayon::prelude::*;
-use serde::ser::{SerializeMap, SerializeStruct};
-use serde::{Serialize, Serializer};
+use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::Path;
 use std::time::Instant;
@@ -76,7 +75,7 @@ use std::time::Instant;
 pub const MAX_INLINE_POINTS: usize = 20_000;
 
 /// Why a grid point has no value.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum PointError {
     /// Outside the wheel: below its undeformed surface, or in the hub's hole (BEM wheel; such a grid is refused
@@ -103,7 +102,7 @@ impl PointError {
 }
 
 /// The regular grid of a `[stresses]` table (user's length unit; module docs).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct StressGrid {
     /// `[min, max]` of x.
     pub x: [f64; 2],
@@ -168,7 +167,7 @@ pub fn quantity(q: StressQuantity, s: [f64; 3], nu: f64) -> f64 {
 }
 
 /// The largest-magnitude value of a quantity on the grid and where it is (user's units).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Maximum {
     /// The value (sign kept).
     pub value: f64,
@@ -179,7 +178,7 @@ pub struct Maximum {
 }
 
 /// The stress tensor at every grid point, or why a point has none (user's units).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct StressField {
     /// The grid.
     pub grid: StressGrid,
@@ -236,95 +235,139 @@ impl StressField {
     }
 }
 
-/// The subsurface stresses of one run (`runs[].stresses` in the result document; module docs).
-#[derive(Debug, Clone, PartialEq)]
+/// The subsurface stresses of one run (`runs[].stresses` in the result document; module docs). It serialises and
+/// deserialises as the document's keys; the stress tensor at every point ([`StressResult::field`]) is kept in memory
+/// after an evaluation and is not part of the document (its quantities' values are, in `field`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct StressResult {
+    /// What body the field is in (`wheel`).
+    #[serde(default = "wheel")]
+    pub body: String,
     /// Which model of the wheel produced the field.
     pub model: BodyModel,
+    /// The grid.
+    pub grid: StressGrid,
     /// The quantities reported.
     pub quantities: Vec<StressQuantity>,
-    /// The field (kept in memory even when it is written to a CSV file).
-    pub field: StressField,
+    /// The maximum of every reported quantity (largest |value|, sign kept, and where), in the quantities' order.
+    #[serde(with = "ordered_maxima")]
+    pub maxima: Vec<(StressQuantity, Option<Maximum>)>,
+    /// Number of refused points per reason.
+    pub refused: BTreeMap<String, usize>,
     /// Wall-clock time of the evaluation, seconds.
     pub time_s: f64,
+    /// The quantities' values at the grid points (null once [`StressResult::spill`] moved them to a CSV file).
+    #[serde(rename = "field")]
+    pub values: Option<FieldValues>,
     /// The CSV file beside the result document that holds the field, once [`StressResult::spill`] moved it there.
     pub csv: Option<String>,
+    /// The stress tensor at every point, in memory after an evaluation (empty when read back from a document).
+    #[serde(skip)]
+    pub field: StressField,
+}
+
+fn wheel() -> String {
+    "wheel".into()
+}
+
+/// The inline field of the document: node coordinates, one array per quantity (null where refused, row-major) and
+/// the reason per refused point.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct FieldValues {
+    /// x of the grid's columns.
+    pub x: Vec<f64>,
+    /// Depth of the grid's rows.
+    pub depth: Vec<f64>,
+    /// Per quantity name, its value at every point (row-major; null where refused).
+    pub values: BTreeMap<String, Vec<Option<f64>>>,
+    /// Per point, why it has no value (null where it has one).
+    pub error: Vec<Option<PointError>>,
 }
 
 impl StressResult {
+    /// The document form of an evaluated field.
+    pub fn of(model: BodyModel, quantities: Vec<StressQuantity>, field: StressField, time_s: f64) -> StressResult {
+        let g = field.grid;
+        let maxima = quantities.iter().map(|&q| (q, field.maximum(q))).collect();
+        let mut refused = BTreeMap::new();
+        for e in field.stress.iter().filter_map(|s| s.err()) {
+            *refused.entry(e.name().to_string()).or_insert(0) += 1;
+        }
+        let values = FieldValues {
+            x: (0..g.points[0]).map(|i| g.x_at(i)).collect(),
+            depth: (0..g.points[1]).map(|j| g.depth_at(j)).collect(),
+            values: quantities
+                .iter()
+                .map(|&q| (q.name().to_string(), (0..field.stress.len()).map(|k| field.value(q, k)).collect()))
+                .collect(),
+            error: field.stress.iter().map(|s| s.err()).collect(),
+        };
+        StressResult {
+            body: wheel(),
+            model,
+            grid: g,
+            quantities,
+            maxima,
+            refused,
+            time_s,
+            values: Some(values),
+            csv: None,
+            field,
+        }
+    }
+
     /// The maximum of every reported quantity, in the order of [`StressResult::quantities`].
     pub fn maxima(&self) -> Vec<(StressQuantity, Option<Maximum>)> {
-        self.quantities.iter().map(|&q| (q, self.field.maximum(q))).collect()
+        self.maxima.clone()
     }
 
     /// Number of refused points per reason.
-    pub fn refused(&self) -> BTreeMap<&'static str, usize> {
-        let mut out = BTreeMap::new();
-        for e in self.field.stress.iter().filter_map(|s| s.err()) {
-            *out.entry(e.name()).or_insert(0) += 1;
-        }
-        out
+    pub fn refused(&self) -> BTreeMap<String, usize> {
+        self.refused.clone()
     }
 
     /// For a grid of more than [`MAX_INLINE_POINTS`] points: name the CSV file `file` (a name beside the result
     /// document) in place of the inline field and return its text; `None` (and nothing changed) for a small grid.
     pub fn spill(&mut self, file: &str) -> Option<String> {
-        if self.field.grid.len() <= MAX_INLINE_POINTS {
+        if self.grid.len() <= MAX_INLINE_POINTS {
             return None;
         }
         self.csv = Some(file.to_string());
+        self.values = None;
         Some(self.field.csv(&self.quantities))
     }
 }
 
-/// `maxima` as a JSON object keyed by quantity name, in the quantities' order.
-struct Maxima(Vec<(StressQuantity, Option<Maximum>)>);
+/// `maxima` as a JSON object keyed by quantity name, in the quantities' order (both ways).
+mod ordered_maxima {
+    use super::{Maximum, StressQuantity};
+    use serde::ser::SerializeMap;
+    use serde::{Deserializer, Serializer};
 
-impl Serialize for Maxima {
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let mut m = s.serialize_map(Some(self.0.len()))?;
-        for (q, v) in &self.0 {
-            m.serialize_entry(q.name(), v)?;
+    pub fn serialize<S: Serializer>(v: &[(StressQuantity, Option<Maximum>)], s: S) -> Result<S::Ok, S::Error> {
+        let mut m = s.serialize_map(Some(v.len()))?;
+        for (q, x) in v {
+            m.serialize_entry(q, x)?;
         }
         m.end()
     }
-}
 
-/// The inline field: node coordinates, one array per quantity (null where refused) and the reason per point.
-struct InlineField<'a>(&'a StressField, &'a [StressQuantity]);
-
-impl Serialize for InlineField<'_> {
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let (f, qs) = (self.0, self.1);
-        let g = f.grid;
-        let values: BTreeMap<&str, Vec<Option<f64>>> =
-            qs.iter().map(|&q| (q.name(), (0..f.stress.len()).map(|k| f.value(q, k)).collect())).collect();
-        let mut m = s.serialize_map(Some(4))?;
-        m.serialize_entry("x", &(0..g.points[0]).map(|i| g.x_at(i)).collect::<Vec<f64>>())?;
-        m.serialize_entry("depth", &(0..g.points[1]).map(|j| g.depth_at(j)).collect::<Vec<f64>>())?;
-        m.serialize_entry("values", &values)?;
-        m.serialize_entry("error", &f.stress.iter().map(|s| s.err()).collect::<Vec<Option<PointError>>>())?;
-        m.end()
-    }
-}
-
-impl Serialize for StressResult {
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let names: Vec<&str> = self.quantities.iter().map(|q| q.name()).collect();
-        let mut st = s.serialize_struct("StressResult", 9)?;
-        st.serialize_field("body", "wheel")?;
-        st.serialize_field("model", &self.model)?;
-        st.serialize_field("grid", &self.field.grid)?;
-        st.serialize_field("quantities", &names)?;
-        st.serialize_field("maxima", &Maxima(self.maxima()))?;
-        st.serialize_field("refused", &self.refused())?;
-        st.serialize_field("time_s", &self.time_s)?;
-        match &self.csv {
-            None => st.serialize_field("field", &InlineField(&self.field, &self.quantities))?,
-            Some(_) => st.serialize_field("field", &Option::<()>::None)?,
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<(StressQuantity, Option<Maximum>)>, D::Error> {
+        struct V;
+        impl<'de> serde::de::Visitor<'de> for V {
+            type Value = Vec<(StressQuantity, Option<Maximum>)>;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a map of stress maxima by quantity")
+            }
+            fn visit_map<A: serde::de::MapAccess<'de>>(self, mut m: A) -> Result<Self::Value, A::Error> {
+                let mut out = Vec::new();
+                while let Some(e) = m.next_entry()? {
+                    out.push(e);
+                }
+                Ok(out)
+            }
         }
-        st.serialize_field("csv", &self.csv)?;
-        st.end()
+        d.deserialize_map(V)
     }
 }
 
@@ -441,13 +484,8 @@ impl<'a> StressEvaluator<'a> {
                 out
             }
         };
-        StressResult {
-            model: self.model,
-            quantities: self.quantities.clone(),
-            field: StressField { grid: self.grid, nu: self.nu, stress },
-            time_s: t0.elapsed().as_secs_f64(),
-            csv: None,
-        }
+        let field = StressField { grid: self.grid, nu: self.nu, stress };
+        StressResult::of(self.model, self.quantities.clone(), field, t0.elapsed().as_secs_f64())
     }
 }
 

@@ -4,7 +4,7 @@
 //! falls back to Lemke its message must say so.
 
 use rollbem::results::SolverRun;
-use rollbem::run::run_scene;
+use rollbem::pipeline::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use std::path::{Path, PathBuf};
@@ -54,8 +54,8 @@ fn active_set_agrees_with_lemke_on_every_reference_scene_and_hard_case() {
     let mut worst: f64 = 0.0;
     for p in scenes("reference/scenes").into_iter().chain(scenes("reference/hard")) {
         let mut s = Scene::from_file(&p).unwrap();
-        s.solvers.use_ = vec!["lemke".into(), "active_set".into()];
-        let r = run_scene(&s, &p).unwrap();
+        s = s.edit(|d| d.solvers.use_ = vec!["lemke".into(), "active_set".into()]).unwrap();
+        let r = run_scene(&s).unwrap();
         let pairs: Vec<(String, &SolverRun, &SolverRun)> = if r.steps.is_empty() {
             vec![(p.display().to_string(), &r.runs[0], &r.runs[1])]
         } else {

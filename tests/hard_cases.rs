@@ -3,7 +3,7 @@
 
 use rollbem::post::NodeState;
 use rollbem::results::Report;
-use rollbem::run::run_scene;
+use rollbem::pipeline::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use std::path::{Path, PathBuf};
@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 fn hard(name: &str) -> (Scene, Report) {
     let p: PathBuf = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/hard").join(format!("{name}.toml"));
     let s = Scene::from_file(&p).unwrap();
-    let r = run_scene(&s, &p).unwrap();
+    let r = run_scene(&s).unwrap();
     (s, r)
 }
 
@@ -32,7 +32,7 @@ fn every_hard_case_meets_its_stated_expectation() {
         let failed: Vec<String> = r.checks.iter().filter(|c| !c.pass).map(|c| c.name.clone()).collect();
         assert!(failed.is_empty(), "{n}: {failed:?}");
         for run in &r.runs {
-            assert_eq!(run.status, s.checks.status_for(run.solver.0), "{n} {}: {}", run.solver, run.message);
+            assert_eq!(run.status, s.expect().status_for(run.solver), "{n} {}: {}", run.solver, run.message);
             assert!(!run.message.is_empty());
         }
     }
@@ -58,7 +58,7 @@ fn hard_cases_say_what_their_descriptions_promise() {
     let (s, r) = hard("load-0999-mu-p");
     let c = r.runs[0].contact.as_ref().unwrap();
     assert!(c.nodes_stick >= 1, "a stick zone of about √0.001 a survives");
-    assert!(s.contact.friction > 0.0);
+    assert!(s.document().contact.friction > 0.0);
     let (_, r) = hard("rail-wheel-R-over-a-660");
     let a = r.references.hertz.unwrap().half_width;
     assert!(460.0 / a >= 500.0);

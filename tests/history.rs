@@ -6,7 +6,7 @@
 use rollbem::post::NodeState;
 use rollbem::references::stick_edges;
 use rollbem::results::{Report, SolverRun};
-use rollbem::run::run_scene;
+use rollbem::pipeline::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use rollbem::theory::{self, Hertz2D, TangentialPath};
@@ -17,7 +17,7 @@ fn scene(text: &str) -> Scene {
 }
 
 fn run(s: &Scene) -> Report {
-    run_scene(s, Path::new("<test>")).unwrap()
+    run_scene(s).unwrap()
 }
 
 fn get<'a>(runs: &'a [SolverRun], solver: &str) -> &'a SolverRun {
@@ -52,7 +52,7 @@ use = {solvers}
 
 /// Hertz of a run (its own normal resultant, the scene's E*).
 fn hertz(s: &Scene, r: &SolverRun) -> Hertz2D {
-    Hertz2D::from_load(r.resultants.unwrap().normal, s.wheel.radius, s.contact_modulus())
+    Hertz2D::from_load(r.resultants.unwrap().normal, s.document().wheel.radius, s.contact_modulus())
 }
 
 /// Half-width of the stick zone (midway between the last sticking node and its neighbour), centred.
@@ -195,7 +195,8 @@ fn mindlin_deresiewicz_loop() {
             // is the material point at depth D (halfplane.rs): a surface line load Q displaces the surface by
             // −(2Q/(πE*))(ln(|x|/D) − 1/(2(1 − ν))), which is theory's log datum (u = −(2Q/(πE*)) ln(|x|/D'))
             // with D' = D e^(1/(2(1 − ν))). The shift is the wheel's; theory's δ is the counter-body's: opposite.
-            let d_prime = s.wheel.datum() * (0.5 / (1.0 - s.wheel.poisson_ratio)).exp();
+            let datum = s.document().wheel.datum_depth.unwrap_or(s.radius());
+            let d_prime = datum * (0.5 / (1.0 - s.document().wheel.poisson_ratio)).exp();
             let delta = -theory::md_displacement(&h, mu, s.contact_modulus(), d_prime, branch, q);
             let delta_star =
                 -theory::md_displacement(&h, mu, s.contact_modulus(), d_prime, TangentialPath::Loading, q_star);

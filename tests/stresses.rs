@@ -9,7 +9,7 @@
 //! (`theory::Hertz2D`) for a and p0 at the applied load. Expected values never come from rollbem's own output.
 
 use rollbem::results::{Report, SolverRun};
-use rollbem::run::run_scene;
+use rollbem::pipeline::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use rollbem::stresses::StressResult;
@@ -25,7 +25,7 @@ fn scene(text: &str) -> Scene {
 }
 
 fn run(s: &Scene) -> Report {
-    run_scene(s, Path::new("<test>")).unwrap()
+    run_scene(s).unwrap()
 }
 
 fn lemke(r: &Report) -> &SolverRun {
@@ -569,7 +569,7 @@ fn a_scene_without_stresses_computes_none() {
     // and without [stresses]: without it, "stresses" is not among the effects, no run carries a field (the result
     // document has no `stresses` key), and the source does not keep the boundary response the evaluation needs
     // (no memory held for it); with it, all three are there.
-    use rollbem::run::blocks_for;
+    use rollbem::pipeline::stages::blocks_for;
     for (with, text) in [(false, bem_scene_text("")), (true, bem_scene_text(GOOD_STRESSES))] {
         let s = scene(&text);
         let r = run(&s);
@@ -679,7 +679,7 @@ fn near_boundary_reach_is_where_the_bem_field_goes_wrong() {
         let (s, h) = small_contact("bem", element, n, ar);
         let r = run(&s);
         let nodes = &lemke(&r).nodes;
-        let built = rollbem::source::build(&s, rollbem::run::blocks_for(&s)).unwrap();
+        let built = rollbem::source::build(&s, rollbem::pipeline::stages::blocks_for(&s)).unwrap();
         let response = built.boundary.as_ref().unwrap();
         let (l0, e) = (built.flex.scales.length, E);
         let p: Vec<f64> = nodes.iter().map(|n| n.pressure / e).collect();

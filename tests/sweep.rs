@@ -76,10 +76,10 @@ contact.friction = [0.1, 0.2]     # unquoted dotted key: a nested table, same me
             c.params,
             vec![("mesh.contact_elements".to_string(), n.to_string()), ("wheel.poisson_ratio".into(), nu.into())]
         );
-        assert_eq!(c.scene.mesh.contact_elements, n.parse::<usize>().unwrap());
-        assert_eq!(c.scene.wheel.poisson_ratio, nu.parse::<f64>().unwrap());
-        assert_eq!(c.scene.mesh.element, ElementKind::Constant);
-        assert_eq!(c.scene.name, "seed-fig6-constant");
+        assert_eq!(c.scene.document().mesh.contact_elements, n.parse::<usize>().unwrap());
+        assert_eq!(c.scene.document().wheel.poisson_ratio, nu.parse::<f64>().unwrap());
+        assert_eq!(c.scene.document().mesh.element, ElementKind::Constant);
+        assert_eq!(c.scene.name(), "seed-fig6-constant");
     }
 
     // A grid of known keys only: cases numbered on after the first grid.
@@ -103,11 +103,11 @@ base = '{}'
     let cases = SweepSpec::from_file(&spec2).unwrap().cases(&spec2).unwrap();
     assert_eq!(cases.len(), 2 + 3);
     assert_eq!(cases.iter().map(|c| c.index).collect::<Vec<_>>(), [0, 1, 2, 3, 4]);
-    assert_eq!(cases[1].scene.mesh.element, ElementKind::Quadratic);
-    assert_eq!(cases[1].scene.mesh.contact_elements, 8);
-    assert_eq!(cases[4].scene.contact.friction, 0.4);
+    assert_eq!(cases[1].scene.document().mesh.element, ElementKind::Quadratic);
+    assert_eq!(cases[1].scene.document().mesh.contact_elements, 8);
+    assert_eq!(cases[4].scene.document().contact.friction, 0.4);
     assert_eq!(cases[4].params[1], ("solvers.use".to_string(), r#"["lemke"]"#.to_string()));
-    assert_eq!(cases[4].scene.mesh.element, ElementKind::Constant, "the second grid keeps the base's element");
+    assert_eq!(cases[4].scene.document().mesh.element, ElementKind::Constant, "the second grid keeps the base's element");
 }
 
 /// A small sweep: frictionless and frictional cases, constant and quadratic elements and an error case (clarabel
@@ -402,10 +402,10 @@ base = '{}'
         cases[1].params,
         vec![("drive.normal_load".into(), "4.0".into()), ("mesh.contact_half_width".into(), "2.0".into())]
     );
-    assert_eq!(cases[1].scene.drive.normal_load, Some(4.0));
-    assert_eq!(cases[1].scene.mesh.contact_half_width, Some(2.0));
-    assert_eq!(cases[0].scene.name, "hp");
-    assert_ne!(cases[2].scene.name, "hp", "the second grid's own base");
+    assert_eq!(cases[1].scene.document().drive.normal_load, Some(4.0));
+    assert_eq!(cases[1].scene.document().mesh.contact_half_width, Some(2.0));
+    assert_eq!(cases[0].scene.name(), "hp");
+    assert_ne!(cases[2].scene.name(), "hp", "the second grid's own base");
     // A tuple of the wrong length names the key.
     let bad = write(
         dir.path(),

@@ -4,7 +4,7 @@
 
 use rollbem::post::NodeState;
 use rollbem::results::CheckKind;
-use rollbem::run::run_scene;
+use rollbem::pipeline::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use std::path::{Path, PathBuf};
@@ -125,7 +125,7 @@ fn hertz_a(p: f64, r: f64, e: f64, nu: f64) -> f64 {
 fn item1_a_contact_cut_off_by_the_candidate_zone_is_not_solved_and_says_how_wide_the_zone_must_be() {
     let dir = tempfile::tempdir().unwrap();
     let (s, p) = scene_of(dir.path(), "steel.toml", &steel("steel-arc1", "1e7"));
-    let r = run_scene(&s, &p).unwrap();
+    let r = run_scene(&s).unwrap();
     let run = &r.runs[0];
     assert_eq!(run.status, Status::ContactAtZoneEdge, "{}", run.message);
     assert!(run.message.contains("edge of the candidate zone"), "{}", run.message);
@@ -146,7 +146,7 @@ fn item1_a_contact_cut_off_by_the_candidate_zone_is_not_solved_and_says_how_wide
         .replace("contact_arc_deg = 1.0", &format!("contact_arc_deg = {arc}"))
         .replace("contact_elements = 100", &format!("contact_elements = {elements}"));
     let (s2, p2) = scene_of(dir.path(), "advised.toml", &advised);
-    let r2 = run_scene(&s2, &p2).unwrap();
+    let r2 = run_scene(&s2).unwrap();
     assert_eq!(r2.runs[0].status, Status::Solved, "{}", r2.runs[0].message);
     // `check` fails it (exit 1) and says why; `run` (no expectations declared) exits 0 and shows the status.
     let o = bin().arg("check").arg(&p).output().unwrap();
@@ -159,7 +159,7 @@ fn item1_a_contact_cut_off_by_the_candidate_zone_is_not_solved_and_says_how_wide
 
     // P = 1e12: Hertz's a = 1.59 m on a 0.46 m wheel: no zone can hold it, and the message says so.
     let (s, p) = scene_of(dir.path(), "huge.toml", &steel("steel-huge", "1e12"));
-    let run = &run_scene(&s, &p).unwrap().runs[0];
+    let run = &run_scene(&s).unwrap().runs[0];
     assert!(hertz_a(1e12, 0.46, 210e9, 0.3) > 0.46);
     assert_eq!(run.status, Status::ContactAtZoneEdge, "{}", run.message);
     assert!(run.message.contains("no candidate zone on this wheel can hold it"), "{}", run.message);
@@ -172,7 +172,7 @@ fn item1_too_few_elements_across_the_contact_warn_in_run_and_fail_in_check() {
     let (s, p) = scene_of(dir.path(), "tiny.toml", &steel("steel-tiny", "1e-3"));
     let element = 0.46 * 1f64.to_radians() / 100.0;
     assert!(2.0 * hertz_a(1e-3, 0.46, 210e9, 0.3) < 2e-3 * element, "about a thousandth of an element");
-    let r = run_scene(&s, &p).unwrap();
+    let r = run_scene(&s).unwrap();
     assert_eq!(r.runs[0].status, Status::Solved);
     let c = r.checks.iter().find(|c| c.name.contains("elements across the contact")).expect("a resolution check");
     assert!(!c.pass && c.measured <= 2.0 && c.reference == 4.0, "{c:?}");
@@ -198,8 +198,8 @@ fn item1_a_reference_check_that_cannot_be_evaluated_fails_with_the_reason() {
     // across), whose elliptic fit is then taken away: the Hertz check fails, saying why, instead of dropping out.
     let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/scenes/hertz-hub-fine.toml");
     let mut s = Scene::from_file(&p).unwrap();
-    s.solvers.use_ = vec!["lemke".into()];
-    let r = run_scene(&s, &p).unwrap();
+    s = s.edit(|d| d.solvers.use_ = vec!["lemke".into()]).unwrap();
+    let r = run_scene(&s).unwrap();
     assert!(r.checks.iter().any(|c| c.name.contains("Hertz half-width") && c.pass));
     let mut runs = r.runs.clone();
     let c = runs[0].contact.as_mut().unwrap();
@@ -276,12 +276,12 @@ fn item4_a_free_wheel_under_a_tangential_load_is_never_solved() {
     // R = 1: the linearised answer turns the wheel by φ with φR many contact widths; refused by every solver.
     let (s, p) =
         scene_of(dir.path(), "free.toml", &free_wheel("normal_load = {P}\ntangential_load = {Q}\nmoment = 0.0"));
-    let r = run_scene(&s, &p).unwrap();
+    let r = run_scene(&s).unwrap();
     assert!(!r.runs.is_empty());
     for run in &r.runs {
         assert_ne!(run.status, Status::Solved, "{}: {}", run.solver, run.message);
     }
-    let lemke = r.runs.iter().find(|x| x.solver.0 == "lemke").unwrap();
+    let lemke = r.runs.iter().find(|x| x.solver.name() == "lemke").unwrap();
     assert_eq!(lemke.status, Status::KinematicsOutOfRange, "{}", lemke.message);
     // φR against a = 0.05 (Hertz at this P), far beyond 0.1a.
     let arc = number_after(&lemke.message, "φR =");
@@ -297,13 +297,13 @@ fn item4_a_free_wheel_under_a_tangential_load_is_never_solved() {
     // The steel wheel: the pressure centre would need to be at −R̄Q/P ≈ −0.046 m, outside the ±4.0 mm zone, so no
     // contact forces carry the loads: the LP proves it, and Lemke's ray becomes `infeasible` with the proof.
     let (s, p) = scene_of(dir.path(), "steel-free.toml", STEEL_FREE);
-    let run = &run_scene(&s, &p).unwrap().runs[0];
+    let run = &run_scene(&s).unwrap().runs[0];
     assert_eq!(run.status, Status::Infeasible, "{}", run.message);
     assert!(run.message.contains("Farkas") && run.message.contains("pressure centre"), "{}", run.message);
     // Lemke's own words are kept, naming the variable as the LCP does (issue: "entering Z(Z(123))").
     assert!(run.message.contains("entering z[") && !run.message.contains("Z("), "{}", run.message);
-    let built = rollbem::source::build(&s, rollbem::run::blocks_for(&s)).unwrap();
-    let problem = rollbem::run::build_problem(&s, &built.flex, &p).unwrap();
+    let built = rollbem::source::build(&s, rollbem::pipeline::stages::blocks_for(&s)).unwrap();
+    let problem = rollbem::pipeline::stages::scene_problem(&s, &built.flex).unwrap();
     let zone = 0.46 * 0.5f64.to_radians().sin();
     let centre = rollbem::admissible::required_centre(&problem).unwrap();
     assert!((centre + 0.1 * 0.46).abs() < 0.1 * 0.46 * (1.0 - 0.5f64.to_radians().cos()) + 1e-12, "{centre}");
@@ -319,8 +319,8 @@ fn item4_a_free_wheel_under_a_tangential_load_is_never_solved() {
     let depth = -problem.flex.y.iter().sum::<f64>() / problem.n() as f64 * problem.flex.scales.length;
     let held = STEEL_FREE.replace("moment = 0.0", &format!("moment = {:?}", depth * 1e6));
     let (s, p) = scene_of(dir.path(), "steel-held.toml", &held);
-    let built = rollbem::source::build(&s, rollbem::run::blocks_for(&s)).unwrap();
-    let problem = rollbem::run::build_problem(&s, &built.flex, &p).unwrap();
+    let built = rollbem::source::build(&s, rollbem::pipeline::stages::blocks_for(&s)).unwrap();
+    let problem = rollbem::pipeline::stages::scene_problem(&s, &built.flex).unwrap();
     assert_eq!(rollbem::admissible::admissibility(&problem), rollbem::admissible::Admissibility::Feasible);
 }
 
@@ -332,7 +332,7 @@ fn item4_a_huge_rigid_shift_is_gross_sliding_or_refused_never_a_wrong_solved() {
     let dir = tempfile::tempdir().unwrap();
     let (s, p) =
         scene_of(dir.path(), "shift.toml", &free_wheel("normal_load = {P}\ntangential_shift = 10.0\nrotation = 0.0"));
-    let r = run_scene(&s, &p).unwrap();
+    let r = run_scene(&s).unwrap();
     let mut solved = 0;
     for run in &r.runs {
         if run.status != Status::Solved {
@@ -361,30 +361,38 @@ fn item5_health_lines_say_what_they_measure() {
     // The asymmetry line is K_NN's whatever the load: at Q = 0, at |Q| = μP (where the normal problem's own matrix
     // is K_NN + σμK_NT) and at |Q| > μP (where nothing is solved) it is the same number, and not 0.
     let base = Scene::from_file(&hard("load-above-mu-p.toml")).unwrap();
-    let p_load = base.drive.normal_load.unwrap();
+    let p_load = base.document().drive.normal_load.unwrap();
     let mut asym = Vec::new();
-    for q in [0.0, 0.3 * p_load, base.drive.tangential_load.unwrap()] {
+    for q in [0.0, 0.3 * p_load, base.document().drive.tangential_load.unwrap()] {
         let mut s = base.clone();
-        s.drive.tangential_load = Some(q);
-        s.solvers.use_ = vec!["lemke".into()];
-        asym.push(run_scene(&s, &hard("x")).unwrap().diagnostics.flexibility_asymmetry);
+        s = s
+            .edit(|d| {
+                d.drive.tangential_load = Some(q);
+                d.solvers.use_ = vec!["lemke".into()];
+            })
+            .unwrap();
+        asym.push(run_scene(&s).unwrap().diagnostics.flexibility_asymmetry);
     }
     assert!(asym[0] > 0.0 && asym.iter().all(|a| *a == asym[0]), "{asym:?}");
 
     // Frictionless contact nodes are `contact`, neither stick nor slip.
     let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/scenes");
     let mut s = Scene::from_file(&scenes.join("seed-fig6-constant.toml")).unwrap();
-    s.solvers.use_ = vec!["lemke".into()];
-    let r = run_scene(&s, &scenes).unwrap();
+    s = s.edit(|d| d.solvers.use_ = vec!["lemke".into()]).unwrap();
+    let r = run_scene(&s).unwrap();
     let nodes = &r.runs[0].nodes;
     assert!(nodes.iter().any(|n| n.state == NodeState::Contact));
     assert!(nodes.iter().all(|n| matches!(n.state, NodeState::Contact | NodeState::Separated)));
     assert_eq!(r.runs[0].contact.as_ref().unwrap().nodes_slip, 0);
 
     // PGS out of sweeps says which count hit the limit and how many sweeps it made in all (the work column's).
-    s.solvers.use_ = vec!["pgs".into()];
-    s.solvers.set("pgs", "max_sweeps", 3i64);
-    let run = &run_scene(&s, &scenes).unwrap().runs[0];
+    s = s
+        .edit(|d| {
+            d.solvers.use_ = vec!["pgs".into()];
+            d.solvers.set("pgs", "max_sweeps", 3i64);
+        })
+        .unwrap();
+    let run = &run_scene(&s).unwrap().runs[0];
     assert_eq!(run.status, Status::NotConverged, "{}", run.message);
     let sweeps = run.work.0.iter().find(|(k, _)| *k == "sweeps").unwrap().1;
     assert!(run.message.contains(&format!("{sweeps} sweeps in all")), "{} vs {sweeps}", run.message);
@@ -454,13 +462,13 @@ fn item5_the_half_plane_datum_term_is_not_called_a_mesh_asymmetry() {
     // Under load control the datum's rank-one column term is absorbed by the approach; what is left is the
     // half-plane's Toeplitz kernel on a uniform mesh, symmetric to round-off (theory), so no warning.
     let (s, p) = scene_of(dir.path(), "load.toml", HALF_PLANE);
-    let d = run_scene(&s, &p).unwrap().diagnostics;
+    let d = run_scene(&s).unwrap().diagnostics;
     assert!(d.flexibility_asymmetry < 1e-12, "{}", d.flexibility_asymmetry);
     assert!(d.warnings.is_empty(), "{:?}", d.warnings);
     // With the approach prescribed the term matters (the full K_NN is measured) and the warning says what it is.
     let (s, p) =
         scene_of(dir.path(), "approach.toml", &HALF_PLANE.replace("normal_load = 20000.0", "normal_approach = 0.1"));
-    let d = run_scene(&s, &p).unwrap().diagnostics;
+    let d = run_scene(&s).unwrap().diagnostics;
     assert!(d.flexibility_asymmetry > 1e-2, "{}", d.flexibility_asymmetry);
     let w = d.warnings.iter().find(|w| w.contains("far from symmetric")).expect("the asymmetry warning");
     assert!(w.contains("datum term") && !w.contains("refine the mesh"), "{w}");

@@ -53,6 +53,18 @@ pub fn build_problem<'a>(
         .map_err(|DriveIssue::TangentialLoadWithoutFriction(_)| drive_error(scene))
 }
 
+/// The contact problem of a one-step scene on a flexibility (its drive and slip operator); a load path has none
+/// (an error saying so).
+pub fn scene_problem<'a>(scene: &Scene, flex: &'a crate::flexibility::Flexibility) -> Result<ContactProblem<'a>> {
+    let Some(drive) = scene.drive() else {
+        return Err(Error::Unsupported {
+            path: scene.origin().to_path_buf(),
+            message: "steps: a load path poses one problem per substep, not one".into(),
+        });
+    };
+    build_problem(scene, flex, *drive, slip_operator(scene, flex))
+}
+
 /// The input error of a tangential load on a frictionless contact.
 pub fn drive_error(scene: &Scene) -> Error {
     let key = if scene.steps().is_empty() { "drive.tangential_load" } else { "steps[].tangential_load" };

@@ -95,7 +95,7 @@ impl Timing {
 }
 
 /// One solver's run on the scene.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct SolverRun {
     /// Solver name.
     pub solver: SolverId,
@@ -111,7 +111,7 @@ pub struct SolverRun {
     /// The solver's own message.
     pub message: String,
     /// Why `status` is not simply the solver's `termination` (null when it is).
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub verdict: Option<Verdict>,
     /// Number of complementarity (or QP) unknowns solved.
     pub problem_size: usize,
@@ -129,7 +129,7 @@ pub struct SolverRun {
     pub contact: Option<ContactSummary>,
     /// Rolling figures: creepage (prescribed or computed) and Coulomb-law inconsistencies of the slip velocities
     /// (null without rolling, or unless solved).
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rolling: Option<RollingResult>,
     /// Per contact node: empty unless solved, or judged `contact_at_zone_edge` / `kinematics_out_of_range` (then the
     /// discrete answer that was judged, kept as the evidence for the verdict; such a run has no resultants, contact
@@ -137,14 +137,14 @@ pub struct SolverRun {
     pub nodes: Vec<NodeResult>,
     /// For clarabel: max |p − p_unpolished| / p_max, the effect of solving the symmetrised QP before the
     /// active-set polish with the nonsymmetric flexibility.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub polish_change: Option<f64>,
     /// A step of a load path: the frictional energy dissipated in the step and since the start.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub history: Option<StepEnergy>,
     /// Subsurface stresses (only with `[stresses]`, for a solved run; a load path's at the end of each step):
     /// [`crate::stresses`].
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stresses: Option<crate::stresses::StressResult>,
 }
 
@@ -173,7 +173,7 @@ impl SolverRun {
 
 /// The frictional dissipation of a load step (energy per unit thickness, user's units): Σ −h_i Δs_i with the
 /// step's end forces (backward Euler; converges with the substeps).
-#[derive(Debug, Clone, Copy, Serialize)]
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
 pub struct StepEnergy {
     /// Dissipated in this (sub)step.
     pub dissipated: f64,
@@ -182,7 +182,7 @@ pub struct StepEnergy {
 }
 
 /// One (sub)step of a load path: where it is on the path and every solver's run at its end.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct StepResult {
     /// Step index (from 0, as in `[[steps]]`).
     pub step: usize,
@@ -199,7 +199,7 @@ pub struct StepResult {
 }
 
 /// Mesh facts.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct MeshInfo {
     /// The wheel's model: `bem` (the finite wheel) or `half_plane`.
     pub model: BodyModel,
@@ -218,7 +218,7 @@ pub struct MeshInfo {
 }
 
 /// Numerical health of the flexibility source and of the contact flexibility.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Diagnostics {
     /// Largest/smallest |U_ii| of the BEM system's LU (a lower bound of its condition number; null without BEM).
     pub bem_pivot_ratio: Option<f64>,
@@ -235,7 +235,7 @@ pub struct Diagnostics {
 }
 
 /// Analytic references that apply to the scene.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct References {
     /// Hertz at the run's load (frictionless scenes), from the first solved run's P when displacement-driven, with
     /// the pair's contact modulus E*.
@@ -246,7 +246,7 @@ pub struct References {
 }
 
 /// What a check compares.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum CheckKind {
     /// A measured figure against a reference within a tolerance (the numbers mean what they say).
@@ -259,7 +259,7 @@ pub enum CheckKind {
 }
 
 /// One check: a measured figure against a reference.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Check {
     /// What is checked.
     pub name: String,
@@ -277,12 +277,12 @@ pub struct Check {
     pub kind: CheckKind,
     /// What was found, for a verdict or a reference that could not be evaluated or does not apply; what to do about
     /// a failed figure where there is advice (null otherwise).
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
 }
 
 /// The JSON document of one scene run (`DESIGN.md`, "Result files").
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Report {
     /// The layout version of this document ([`SCHEMA_VERSION`]).
     pub schema: u32,
@@ -299,13 +299,46 @@ pub struct Report {
     /// One entry per solver (for a load path: its run at the last step it reached).
     pub runs: Vec<SolverRun>,
     /// A load path's steps (empty for a one-step scene).
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub steps: Vec<StepResult>,
     /// Checks against theory and between solvers.
     pub checks: Vec<Check>,
 }
 
 impl Report {
+    /// Read a result document (`rollbem run --json`): JSON of this layout ([`SCHEMA_VERSION`]), its scene valid. A
+    /// document of another schema (or of none: written before the schema was recorded) is refused with a message
+    /// saying so, never read wrongly.
+    pub fn read(path: &std::path::Path) -> crate::Result<Report> {
+        let text = std::fs::read_to_string(path)
+            .map_err(|source| crate::Error::Io { path: path.to_path_buf(), source })?;
+        Report::from_json(&text, path)
+    }
+
+    /// Parse a result document's text (`path` names it in messages); see [`Report::read`].
+    pub fn from_json(text: &str, path: &std::path::Path) -> crate::Result<Report> {
+        let bad = |message: String| crate::Error::Parse { path: path.to_path_buf(), message };
+        let value: serde_json::Value = serde_json::from_str(text).map_err(|e| bad(format!("not JSON: {e}")))?;
+        if value.get("runs").is_none() {
+            return Err(bad("not a rollbem result document: no `runs` array".into()));
+        }
+        match value.get("schema").and_then(serde_json::Value::as_u64) {
+            Some(v) if v == u64::from(SCHEMA_VERSION) => {}
+            Some(v) => {
+                return Err(bad(format!(
+                    "result document of schema {v}; this rollbem reads schema {SCHEMA_VERSION}: rerun the scene"
+                )))
+            }
+            None => {
+                return Err(bad(format!(
+                    "result document without a schema version (written by an older rollbem); this rollbem reads \
+                     schema {SCHEMA_VERSION}: rerun the scene"
+                )))
+            }
+        }
+        serde_json::from_value(value).map_err(|e| bad(format!("not a result document of schema {SCHEMA_VERSION}: {e}")))
+    }
+
     /// Whether every check passed.
     pub fn all_pass(&self) -> bool {
         self.checks.iter().all(|c| c.pass)

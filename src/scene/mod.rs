@@ -438,7 +438,8 @@ pub const MAX_STRESS_POINTS: usize = 1_000_000;
 
 /// A quantity of the subsurface stress field ([`crate::stresses`]): x along the surface, z the depth into the wheel,
 /// plane strain, tension positive, in the scene's stress unit.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum StressQuantity {
     /// σ_xx, the normal stress along the surface.
     Sxx,

@@ -43,7 +43,12 @@ pub struct Model {
 }
 
 impl Model {
-    /// Build the dimensionless model of a (validated) scene.
+    /// The dimensionless model of a scene's BEM wheel (`None` for the half-plane model).
+    pub fn of_scene(scene: &crate::scene::Scene) -> Option<Model> {
+        scene.bem_mesh().map(|(support, spec)| Model::new(scene.wheel(), support, &spec))
+    }
+
+    /// Build the dimensionless model of a wheel with its support and mesh (lengths in the user's unit).
     pub fn new(wheel: &Wheel, support: Support, spec: &MeshSpec) -> Model {
         let length = 2.0 * wheel.radius;
         let support = match support {
