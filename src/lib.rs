@@ -49,6 +49,7 @@ pub mod history;
 pub mod io;
 pub mod lcp_io;
 pub mod lcp_residual;
+pub mod material;
 pub mod mesh;
 pub mod plot;
 pub mod plot_result;
