@@ -121,7 +121,8 @@ fn run_figures(ctx: &Context, run: &SolverRun, done: &mut Plotted) -> Result<()>
     let (p, q) = (series(|n| Some(n.pressure)), series(|n| Some(n.shear)));
     // A run judged not an answer (contact at the zone's edge, kinematics out of range) keeps its nodes as
     // evidence: its titles say so.
-    let verdict = if run.status == Status::Solved { String::new() } else { format!(" ({}: not an answer)", run.status) };
+    let verdict =
+        if run.status == Status::Solved { String::new() } else { format!(" ({}: not an answer)", run.status) };
     if p.is_empty() {
         done.skipped.push(format!("{solver}: no tractions (status \"{}\")", run.status));
         return Ok(());

@@ -3,8 +3,8 @@
 //! tractions to 1e-10 of the peak pressure, node by node; on load paths at every substep. When the active-set method
 //! falls back to Lemke its message must say so.
 
-use rollbem::results::SolverRun;
 use rollbem::pipeline::run_scene;
+use rollbem::results::SolverRun;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use std::path::{Path, PathBuf};

@@ -4,9 +4,9 @@
 
 use faer::linalg::solvers::Solve;
 use faer::Mat;
+use rollbem::pipeline::run_scene;
 use rollbem::post::NodeState;
 use rollbem::results::{Report, SolverRun};
-use rollbem::pipeline::run_scene;
 use rollbem::scene::{Scene, Support};
 use rollbem::solvers::{Status, Termination};
 use rollbem::source::{self, Blocks};
@@ -59,7 +59,10 @@ fn lemke_discrete(s: &Scene) -> (Status, rollbem::post::Evaluation) {
     let problem = rollbem::pipeline::stages::scene_problem(s, &fl).unwrap();
     let out = rollbem::solvers::build("lemke").unwrap().solve(&problem);
     assert_eq!(out.status, Termination::Solved, "{}", out.message);
-    (status, rollbem::post::evaluate(&problem, out.solution.as_ref().unwrap(), rollbem::pipeline::stages::rolling_post(s)))
+    (
+        status,
+        rollbem::post::evaluate(&problem, out.solution.as_ref().unwrap(), rollbem::pipeline::stages::rolling_post(s)),
+    )
 }
 
 #[test]

@@ -2,8 +2,8 @@
 //! problem sizes and unit invariance. Expected values: Hertz's formulas (REFERENCES.md, `rollbem::hertz`), the
 //! prescribed load, and the peer solver.
 
-use rollbem::results::{Report, SolverRun};
 use rollbem::pipeline::run_scene;
+use rollbem::results::{Report, SolverRun};
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use rollbem::source::{self, Blocks};

@@ -5,9 +5,9 @@
 
 use rollbem::halfplane::HalfPlane;
 use rollbem::hertz::Hertz;
+use rollbem::pipeline::run_scene;
 use rollbem::references::metrics;
 use rollbem::results::{Report, SolverRun};
-use rollbem::pipeline::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use rollbem::source::{self, Blocks};
@@ -121,21 +121,15 @@ fn cattaneo_on_the_half_plane_with_coupling_off_and_on_two_identical_half_planes
         // Steel on steel: two identical half-planes, coupling on (β = 0 exactly). E* halves: a grows by √2.
         let mut s = steel("", "contact_half_width = 12.5\ncontact_elements = 250", &format!("friction = {mu}"), drive);
         s = s
-
             .edit(|d| {
-
                 d.counter_body = rollbem::scene::document::CounterBodyTable::HalfPlane {
-
                     youngs_modulus: 210000.0,
 
                     poisson_ratio: 0.3,
 
                     datum_depth: None,
-
                 }
-
             })
-
             .unwrap();
         assert_eq!(s.dundurs_beta(), 0.0);
         cattaneo_check(&s);
@@ -159,21 +153,15 @@ fn identical_half_planes_have_no_coupling_and_tangential_tractions_independent_o
             })
             .unwrap();
         s = s
-
             .edit(|d| {
-
                 d.counter_body = rollbem::scene::document::CounterBodyTable::HalfPlane {
-
                     youngs_modulus: e,
 
                     poisson_ratio: nu,
 
                     datum_depth: None,
-
                 }
-
             })
-
             .unwrap();
         s
     };

@@ -1,9 +1,9 @@
 //! The hard-case suite (`reference/hard/`): every case meets the expectation its description states — solved
 //! with the residual bound, or the named diagnosis — and passes its checks against theory and peer solvers.
 
+use rollbem::pipeline::run_scene;
 use rollbem::post::NodeState;
 use rollbem::results::Report;
-use rollbem::pipeline::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use std::path::{Path, PathBuf};

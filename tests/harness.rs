@@ -2,8 +2,8 @@
 //! scene calls for, `rollbem check` and its failure on a violated declared tolerance. Reference values: the peer
 //! solver (Lemke, a pivoting method exact to round-off) and the declared tolerances.
 
-use rollbem::results::{Report, SolverRun};
 use rollbem::pipeline::run_scene;
+use rollbem::results::{Report, SolverRun};
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use rollbem::tolerances as tol;

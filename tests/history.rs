@@ -3,10 +3,10 @@
 //! Mindlin–Deresiewicz's loop under a cycled tangential load, path independence where theory says the path does not
 //! matter, and transient rolling from rest settling on the steady-rolling solution of the same mesh.
 
+use rollbem::pipeline::run_scene;
 use rollbem::post::NodeState;
 use rollbem::references::stick_edges;
 use rollbem::results::{Report, SolverRun};
-use rollbem::pipeline::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use rollbem::theory::{self, Hertz2D, TangentialPath};

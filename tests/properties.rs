@@ -345,9 +345,11 @@ fn random_valid_scenes_solvers_agree_on_existence() {
     if let Err(e) = assert_agree(&fixed) {
         panic!("reproducer: {e}");
     }
-    check(SCENE_CASES, 0x5EED_0001, scene_params(), |params| match Scene::from_document(params.scene(), Path::new("<p>")) {
-        Ok(scene) => assert_agree(&scene),
-        Err(e) => Err(TestCaseError::fail(format!("generator made an invalid scene: {e}"))),
+    check(SCENE_CASES, 0x5EED_0001, scene_params(), |params| {
+        match Scene::from_document(params.scene(), Path::new("<p>")) {
+            Ok(scene) => assert_agree(&scene),
+            Err(e) => Err(TestCaseError::fail(format!("generator made an invalid scene: {e}"))),
+        }
     });
 }
 

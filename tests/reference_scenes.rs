@@ -39,7 +39,10 @@ fn seed_frictional_scenes_in_both_formulations() {
         let s = Scene::from_file(&p).unwrap();
         // Load paths (`[[steps]]`) are checked in tests/history.rs; this test is the static
         // displacement-driven seed scenes re-posed under their own resultants.
-        if s.document().contact.friction == 0.0 || s.document().drive.normal_load.is_some() || !s.document().steps.is_empty() {
+        if s.document().contact.friction == 0.0
+            || s.document().drive.normal_load.is_some()
+            || !s.document().steps.is_empty()
+        {
             continue;
         }
         let r = run_scene(&s).unwrap();

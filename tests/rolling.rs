@@ -3,9 +3,9 @@
 //! load-driven runs are inverse problems), between solvers (Lemke and PGS), and against Coulomb's law node by node.
 //! The finite wheel rolls too; its free-rolling creepage (Q = 0) is reported.
 
+use rollbem::pipeline::run_scene;
 use rollbem::references::metrics;
 use rollbem::results::{Report, SolverRun};
-use rollbem::pipeline::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use std::path::Path;

@@ -8,8 +8,8 @@
 //! *Theory of Elasticity* §41, for the disk under two opposite point loads (`theory::disk_point_loads`); Hertz
 //! (`theory::Hertz2D`) for a and p0 at the applied load. Expected values never come from rollbem's own output.
 
-use rollbem::results::{Report, SolverRun};
 use rollbem::pipeline::run_scene;
+use rollbem::results::{Report, SolverRun};
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use rollbem::stresses::StressResult;

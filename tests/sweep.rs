@@ -107,7 +107,11 @@ base = '{}'
     assert_eq!(cases[1].scene.document().mesh.contact_elements, 8);
     assert_eq!(cases[4].scene.document().contact.friction, 0.4);
     assert_eq!(cases[4].params[1], ("solvers.use".to_string(), r#"["lemke"]"#.to_string()));
-    assert_eq!(cases[4].scene.document().mesh.element, ElementKind::Constant, "the second grid keeps the base's element");
+    assert_eq!(
+        cases[4].scene.document().mesh.element,
+        ElementKind::Constant,
+        "the second grid keeps the base's element"
+    );
 }
 
 /// A small sweep: frictionless and frictional cases, constant and quadratic elements and an error case (clarabel

@@ -2,9 +2,9 @@
 //! issue's text and shown to end in its own status, exit code and message. Expected values come from theory
 //! (Hertz's half-width, the statics of a wheel free to turn, gross sliding), never from rollbem's own output.
 
+use rollbem::pipeline::run_scene;
 use rollbem::post::NodeState;
 use rollbem::results::CheckKind;
-use rollbem::pipeline::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use std::path::{Path, PathBuf};

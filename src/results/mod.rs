@@ -310,8 +310,8 @@ impl Report {
     /// document of another schema (or of none: written before the schema was recorded) is refused with a message
     /// saying so, never read wrongly.
     pub fn read(path: &std::path::Path) -> crate::Result<Report> {
-        let text = std::fs::read_to_string(path)
-            .map_err(|source| crate::Error::Io { path: path.to_path_buf(), source })?;
+        let text =
+            std::fs::read_to_string(path).map_err(|source| crate::Error::Io { path: path.to_path_buf(), source })?;
         Report::from_json(&text, path)
     }
 

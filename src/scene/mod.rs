@@ -745,12 +745,17 @@ impl Scene {
 
     /// The plane-strain contact modulus of the pair, E* ([`crate::material::contact_modulus`]).
     pub fn contact_modulus(&self) -> f64 {
-        crate::material::contact_modulus(&self.wheel.material, self.counter_body.material())
+        crate::material::contact_modulus(&self.wheel.material, &self.counter_material())
     }
 
     /// Dundurs' β of the pair ([`crate::material::dundurs_beta`]; a rigid counter-body has G₂ → ∞).
     pub fn dundurs_beta(&self) -> f64 {
-        crate::material::dundurs_beta(&self.wheel.material, self.counter_body.material())
+        crate::material::dundurs_beta(&self.wheel.material, &self.counter_material())
+    }
+
+    /// The counter-body's material (a rigid flat is [`Material::rigid`]).
+    fn counter_material(&self) -> Material {
+        self.counter_body.material().copied().unwrap_or_else(Material::rigid)
     }
 }
 

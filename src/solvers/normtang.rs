@@ -439,6 +439,8 @@ pub fn solve(p: &Split, inner: &Inner) -> Outcome {
     Outcome { f, h: frictional.then_some(h), rigid, status, message, sweeps, outer, qp_iterations }
 }
 
+/// The normal step of NORM-TANG: the normal forces `f` (and, under a normal load, the approach) for the shear
+/// forces `h`.
 fn norm(
     p: &Split,
     inner: &Inner,
@@ -469,14 +471,7 @@ fn norm(
                 let (sw, ok) = pgs_box(&p.knn_rows, n, &q, &lo, &hi, f, s.relaxation, 0.1 * s.tolerance, s.max_sweeps);
                 *sweeps += sw;
                 if !ok {
-                    return Err(Failure(
-                        Termination::NotConverged,
-                        format!(
-                            "projected Gauss–Seidel did not converge in {} sweeps of one inner solve (max_sweeps; {} \
-                             sweeps in all, counting the inner solves before it)",
-                            s.max_sweeps, *sweeps
-                        ),
-                    ));
+                    return Err(pgs_not_converged(s.max_sweeps, *sweeps));
                 }
                 Ok(f.iter().sum())
             };
@@ -519,6 +514,65 @@ fn norm(
     Ok(())
 }
 
+/// The failure of an inner PGS solve that used up `max_sweeps`; `sweeps` counts all sweeps so far.
+fn pgs_not_converged(max_sweeps: usize, sweeps: usize) -> Failure {
+    Failure(
+        Termination::NotConverged,
+        format!(
+            "projected Gauss–Seidel did not converge in {max_sweeps} sweeps of one inner solve (max_sweeps; {sweeps} \
+             sweeps in all, counting the inner solves before it)"
+        ),
+    )
+}
+
+/// The tangential sub-problem on the nodes in contact (those with a positive friction bound μ·f): the box LCP
+/// `r = q0 + c·d + K h`, `lo ≤ h ≤ hi`, with `d` the rigid shift.
+struct TangSub {
+    /// Indices of the nodes in contact, into the full node list.
+    act: Vec<usize>,
+    /// K_tt restricted to the nodes in contact, row-major, `act.len()²`.
+    ktt_rows: Vec<f64>,
+    /// Lower bounds −μ f.
+    lo: Vec<f64>,
+    /// Upper bounds μ f.
+    hi: Vec<f64>,
+    /// Slip without the shift term.
+    q0: Vec<f64>,
+    /// Shift column of the slip.
+    c: Vec<f64>,
+}
+
+impl TangSub {
+    /// The sub-problem for normal forces `f` and the other rigid modes fixed at `rigid`.
+    fn new(p: &Split, f: &[f64], rigid: &[f64; 3]) -> TangSub {
+        let (n, mu) = (p.n, p.mu);
+        let q0: Vec<f64> = (0..n)
+            .map(|i| {
+                p.rt[i][MODE_APPROACH] * rigid[MODE_APPROACH]
+                    + p.rt[i][MODE_ROTATION] * rigid[MODE_ROTATION]
+                    + if p.coupling { (0..n).map(|j| p.ktn_rows[i * n + j] * f[j]).sum::<f64>() } else { 0.0 }
+                    + p.slip_offset[i]
+            })
+            .collect();
+        let c: Vec<f64> = (0..n).map(|i| p.rt[i][MODE_SHIFT]).collect();
+        let lo: Vec<f64> = f.iter().map(|&v| -mu * v.max(0.0)).collect();
+        let hi: Vec<f64> = f.iter().map(|&v| mu * v.max(0.0)).collect();
+        // Nodes out of contact carry no shear: drop them from the sub-problem.
+        let act: Vec<usize> = (0..n).filter(|&i| hi[i] > 0.0).collect();
+        let mut ktt_rows = Vec::with_capacity(act.len() * act.len());
+        for &i in &act {
+            for &j in &act {
+                ktt_rows.push(p.ktt_rows[i * n + j]);
+            }
+        }
+        let pick = |v: &[f64]| act.iter().map(|&i| v[i]).collect::<Vec<f64>>();
+        let (lo, hi, q0, c) = (pick(&lo), pick(&hi), pick(&q0), pick(&c));
+        TangSub { act, ktt_rows, lo, hi, q0, c }
+    }
+}
+
+/// The tangential step of NORM-TANG: the shear forces `h` (and, under a tangential load, the shift) for the
+/// normal forces `f`. Fails with `Infeasible` at gross sliding (|Q| ≥ μP).
 fn tang(
     p: &Split,
     inner: &Inner,
@@ -528,19 +582,7 @@ fn tang(
     sweeps: &mut usize,
     qp_iterations: &mut u32,
 ) -> Result<(), Failure> {
-    let n = p.n;
     let mu = p.mu;
-    let q0: Vec<f64> = (0..n)
-        .map(|i| {
-            p.rt[i][MODE_APPROACH] * rigid[MODE_APPROACH]
-                + p.rt[i][MODE_ROTATION] * rigid[MODE_ROTATION]
-                + if p.coupling { (0..n).map(|j| p.ktn_rows[i * n + j] * f[j]).sum::<f64>() } else { 0.0 }
-                + p.slip_offset[i]
-        })
-        .collect();
-    let c: Vec<f64> = (0..n).map(|i| p.rt[i][MODE_SHIFT]).collect();
-    let lo: Vec<f64> = f.iter().map(|&v| -mu * v.max(0.0)).collect();
-    let hi: Vec<f64> = f.iter().map(|&v| mu * v.max(0.0)).collect();
     let psum: f64 = f.iter().sum();
     if let Dof::Load(ql) = p.tangential {
         if ql.abs() >= mu * psum {
@@ -553,91 +595,99 @@ fn tang(
             ));
         }
     }
-    // Nodes out of contact carry no shear: drop them from the sub-problem.
-    let act: Vec<usize> = (0..n).filter(|&i| hi[i] > 0.0).collect();
-    let na = act.len();
-    for i in 0..n {
-        if hi[i] == 0.0 {
-            h[i] = 0.0;
+    let sub = TangSub::new(p, f, rigid);
+    // Nodes out of contact (μ f = 0) carry no shear.
+    for (i, hi) in h.iter_mut().enumerate() {
+        if mu * f[i].max(0.0) == 0.0 {
+            *hi = 0.0;
         }
     }
-    let sub = |m: &[f64]| -> Vec<f64> {
-        let mut out = Vec::with_capacity(na * na);
-        for &i in &act {
-            for &j in &act {
-                out.push(m[i * n + j]);
-            }
-        }
-        out
-    };
-    let ktt_rows = sub(&p.ktt_rows);
-    let pick = |v: &[f64]| act.iter().map(|&i| v[i]).collect::<Vec<f64>>();
-    let (lo_a, hi_a, q0_a, c_a) = (pick(&lo), pick(&hi), pick(&q0), pick(&c));
-    let mut x = pick(h);
+    let mut x: Vec<f64> = sub.act.iter().map(|&i| h[i]).collect();
     match inner {
-        Inner::Pgs(s) => {
-            check_diagonal(&ktt_rows, na, "tangential")?;
-            let mut solve_at = |d: f64, x: &mut Vec<f64>| -> Result<f64, Failure> {
-                let q: Vec<f64> = (0..na).map(|i| q0_a[i] + c_a[i] * d).collect();
-                let (sw, ok) =
-                    pgs_box(&ktt_rows, na, &q, &lo_a, &hi_a, x, s.relaxation, 0.1 * s.tolerance, s.max_sweeps);
-                *sweeps += sw;
-                if !ok {
-                    return Err(Failure(
-                        Termination::NotConverged,
-                        format!(
-                            "projected Gauss–Seidel did not converge in {} sweeps of one inner solve (max_sweeps; {} \
-                             sweeps in all, counting the inner solves before it)",
-                            s.max_sweeps, *sweeps
-                        ),
-                    ));
-                }
-                Ok(x.iter().sum())
-            };
-            match p.tangential {
-                Dof::Displacement(_) => {
-                    solve_at(rigid[MODE_SHIFT], &mut x)?;
-                }
-                Dof::Load(ql) => {
-                    let kmax = (0..na).map(|i| ktt_rows[i * na + i]).fold(0.0_f64, f64::max);
-                    let step = (mu * psum * kmax).max(f64::MIN_POSITIVE);
-                    let tol = 0.1 * s.tolerance * mu * psum;
-                    let d = root(|d| solve_at(d, &mut x), ql, rigid[MODE_SHIFT], step, false, tol)?;
-                    solve_at(d, &mut x)?;
-                    rigid[MODE_SHIFT] = d;
-                }
-            }
+        Inner::Pgs(s) => tang_pgs(p, s, &sub, psum, &mut x, rigid, sweeps)?,
+        Inner::Qp(s) => tang_qp(p, s, &sub, &mut x, rigid, qp_iterations)?,
+    }
+    for (a, &i) in sub.act.iter().enumerate() {
+        h[i] = x[a];
+    }
+    Ok(())
+}
+
+/// The tangential sub-problem by projected Gauss–Seidel; under a tangential load the shift is found by a root
+/// search on the resultant (normal load `psum`).
+fn tang_pgs(
+    p: &Split,
+    s: &PgsSettings,
+    sub: &TangSub,
+    psum: f64,
+    x: &mut Vec<f64>,
+    rigid: &mut [f64; 3],
+    sweeps: &mut usize,
+) -> Result<(), Failure> {
+    let na = sub.act.len();
+    check_diagonal(&sub.ktt_rows, na, "tangential")?;
+    let mut solve_at = |d: f64, x: &mut Vec<f64>| -> Result<f64, Failure> {
+        let q: Vec<f64> = (0..na).map(|i| sub.q0[i] + sub.c[i] * d).collect();
+        let (sw, ok) =
+            pgs_box(&sub.ktt_rows, na, &q, &sub.lo, &sub.hi, x, s.relaxation, 0.1 * s.tolerance, s.max_sweeps);
+        *sweeps += sw;
+        if !ok {
+            return Err(pgs_not_converged(s.max_sweeps, *sweeps));
         }
-        Inner::Qp(s) => {
-            let q: Vec<f64> = match p.tangential {
-                Dof::Displacement(_) => (0..na).map(|i| q0_a[i] + c_a[i] * rigid[MODE_SHIFT]).collect(),
-                Dof::Load(_) => q0_a.clone(),
-            };
-            let mut cols = vec![0.0; na * na];
-            for i in 0..na {
-                for j in 0..na {
-                    cols[i + j * na] = ktt_rows[i * na + j];
-                }
-            }
-            let ones = vec![1.0; na];
-            let eq = match p.tangential {
-                Dof::Load(ql) => Some((ones.as_slice(), ql)),
-                Dof::Displacement(_) => None,
-            };
-            let out = solve_box(&cols, na, &q, &lo_a, &hi_a, eq, &s.qp);
-            *qp_iterations += out.iterations;
-            if !out.status.is_solved() {
-                return Err(Failure(Termination::from(&out.status), format!("clarabel (TANG): {}", out.status)));
-            }
-            x = out.x;
-            if let Some(nu) = out.nu {
-                // Gradient K h + q + ν·1 with the shift column ≈ 1: ν is the shift.
-                rigid[MODE_SHIFT] = nu;
-            }
+        Ok(x.iter().sum())
+    };
+    match p.tangential {
+        Dof::Displacement(_) => {
+            solve_at(rigid[MODE_SHIFT], x)?;
+        }
+        Dof::Load(ql) => {
+            let mu = p.mu;
+            let kmax = (0..na).map(|i| sub.ktt_rows[i * na + i]).fold(0.0_f64, f64::max);
+            let step = (mu * psum * kmax).max(f64::MIN_POSITIVE);
+            let tol = 0.1 * s.tolerance * mu * psum;
+            let d = root(|d| solve_at(d, x), ql, rigid[MODE_SHIFT], step, false, tol)?;
+            solve_at(d, x)?;
+            rigid[MODE_SHIFT] = d;
         }
     }
-    for (a, &i) in act.iter().enumerate() {
-        h[i] = x[a];
+    Ok(())
+}
+
+/// The tangential sub-problem as a box QP by clarabel; under a tangential load the shift is the multiplier of
+/// the resultant constraint.
+fn tang_qp(
+    p: &Split,
+    s: &NormTangQpSettings,
+    sub: &TangSub,
+    x: &mut Vec<f64>,
+    rigid: &mut [f64; 3],
+    qp_iterations: &mut u32,
+) -> Result<(), Failure> {
+    let na = sub.act.len();
+    let q: Vec<f64> = match p.tangential {
+        Dof::Displacement(_) => (0..na).map(|i| sub.q0[i] + sub.c[i] * rigid[MODE_SHIFT]).collect(),
+        Dof::Load(_) => sub.q0.clone(),
+    };
+    let mut cols = vec![0.0; na * na];
+    for i in 0..na {
+        for j in 0..na {
+            cols[i + j * na] = sub.ktt_rows[i * na + j];
+        }
+    }
+    let ones = vec![1.0; na];
+    let eq = match p.tangential {
+        Dof::Load(ql) => Some((ones.as_slice(), ql)),
+        Dof::Displacement(_) => None,
+    };
+    let out = solve_box(&cols, na, &q, &sub.lo, &sub.hi, eq, &s.qp);
+    *qp_iterations += out.iterations;
+    if !out.status.is_solved() {
+        return Err(Failure(Termination::from(&out.status), format!("clarabel (TANG): {}", out.status)));
+    }
+    *x = out.x;
+    if let Some(nu) = out.nu {
+        // Gradient K h + q + ν·1 with the shift column ≈ 1: ν is the shift.
+        rigid[MODE_SHIFT] = nu;
     }
     Ok(())
 }
