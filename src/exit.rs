@@ -44,7 +44,7 @@ pub fn of_report(report: &Report, checks_count: bool) -> u8 {
     }
 }
 
-/// Whether a scene declares expectations of its own (a `[checks]` table that is not all defaults).
+/// Whether a report's scene declares expectations of its own (a `[checks]` table).
 pub fn declares_checks(report: &Report) -> bool {
-    *report.scene.expect() != crate::scene::Expect::default()
+    report.scene.declares_checks()
 }

@@ -25,7 +25,7 @@ fn compare(what: &str, l: &SolverRun, a: &SolverRun) -> Option<f64> {
     assert_eq!(
         a.status, l.status,
         "{what}: active_set {} ({}) vs lemke {} ({})",
-        a.status, a.message, l.status, l.message
+        a.status, a.message, l.status, l.explanation()
     );
     if l.status != Status::Solved {
         return None;

@@ -118,7 +118,7 @@ fn cattaneo_mindlin_stick_zone_and_tractions_at_beta_zero() {
             s = s.edit(|d| d.mesh.contact_arc_deg = Some(arc)).unwrap();
             let r = run(&s);
             let l = lemke(&r);
-            assert_eq!(l.status, Status::Solved, "{}", l.message);
+            assert_eq!(l.status, Status::Solved, "{}", l.explanation());
             let h = rollbem::hertz::Hertz::new(1.0, 94500.0, nu, p);
             let c_exact = h.half_width * (1.0 - q / (mu * p)).sqrt();
             let elem = arc.to_radians() / 60.0;
@@ -218,7 +218,7 @@ fn gross_sliding_is_reported_infeasible_with_mu_p() {
     let r = run(&s);
     let l = lemke(&r);
     assert_eq!(l.status, Status::Infeasible);
-    assert!(l.message.contains("2.000000e1") && l.message.contains("μP"), "{}", l.message);
+    assert!(l.explanation().contains("2.000000e1") && l.explanation().contains("μP"), "{}", l.explanation());
     assert!(l.nodes.is_empty() && l.resultants.is_none());
     // With the approach prescribed, P is not known in advance: |Q| = 1000 is far beyond any μP this approach can
     // produce, but no bound in the code proves it, and the loading LCP with a tangential load is not
@@ -241,8 +241,8 @@ fn at_the_sliding_limit_tractions_are_full_slip_and_the_shift_is_indeterminate()
     let s = base(0.1, 0.1, "normal_load = 187.42\ntangential_load = 18.742\nrotation = 0.0", "");
     let r = run(&s);
     let l = lemke(&r);
-    assert_eq!(l.status, Status::Solved, "{}", l.message);
-    assert!(l.message.contains("sliding limit"));
+    assert_eq!(l.status, Status::Solved, "{}", l.explanation());
+    assert!(l.explanation().contains("sliding limit"));
     assert!(l.rigid_body.unwrap().tangential.is_none());
     let f = l.resultants.unwrap();
     assert!((f.tangential / 18.742 - 1.0).abs() < 1e-10);
@@ -445,7 +445,7 @@ fn mixed_drive_p_and_q_with_rotation_held() {
     let s = base(0.3, 0.4, "normal_load = 187.42\ntangential_load = 30.0\nrotation = 0.0", "");
     let r = run(&s);
     let l = lemke(&r);
-    assert_eq!(l.status, Status::Solved, "{}", l.message);
+    assert_eq!(l.status, Status::Solved, "{}", l.explanation());
     assert_eq!(l.problem_size, 3 * r.mesh.contact_nodes + 4);
     let f = l.resultants.unwrap();
     assert!((f.normal / 187.42 - 1.0).abs() < 1e-10 && (f.tangential / 30.0 - 1.0).abs() < 1e-10);

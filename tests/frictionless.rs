@@ -62,7 +62,7 @@ fn hertz_at_equal_load_constant_and_quadratic() {
             let rep = run(&s);
             let h = rep.references.hertz.expect("Hertz applies");
             for run in &rep.runs {
-                assert_eq!(run.status, Status::Solved, "{element} {}: {}", run.solver, run.message);
+                assert_eq!(run.status, Status::Solved, "{element} {}: {}", run.solver, run.explanation());
                 let a = run.contact.as_ref().unwrap().fit_half_width.unwrap();
                 let p0 = run.contact.as_ref().unwrap().fit_peak_pressure.unwrap();
                 let (ea, ep) = ((a / h.half_width - 1.0).abs(), (p0 / h.peak_pressure - 1.0).abs());

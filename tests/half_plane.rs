@@ -62,7 +62,7 @@ fn half_plane_hertz_is_met_to_a_tenth_of_a_percent_and_converges() {
         let s = steel("", &format!("contact_half_width = 9.0\ncontact_elements = {n}"), "", "normal_load = 20000.0");
         let r = run(&s);
         let l = lemke(&r);
-        assert_eq!(l.status, Status::Solved, "{}", l.message);
+        assert_eq!(l.status, Status::Solved, "{}", l.explanation());
         let res = l.resultants.unwrap();
         assert!((res.normal / 20000.0 - 1.0).abs() <= 1e-10, "P = {}", res.normal);
         let m = metrics(&s, l);
@@ -93,7 +93,7 @@ fn half_plane_hertz_is_met_to_a_tenth_of_a_percent_and_converges() {
 fn cattaneo_check(s: &Scene) {
     let r = run(s);
     let l = lemke(&r);
-    assert_eq!(l.status, Status::Solved, "{}", l.message);
+    assert_eq!(l.status, Status::Solved, "{}", l.explanation());
     let m = metrics(s, l);
     let (err, centre, shear) = (m.cm_c_err_elements.unwrap(), m.cm_centre_elements.unwrap(), m.cm_shear_err.unwrap());
     eprintln!(

@@ -32,8 +32,8 @@ fn every_hard_case_meets_its_stated_expectation() {
         let failed: Vec<String> = r.checks.iter().filter(|c| !c.pass).map(|c| c.name.clone()).collect();
         assert!(failed.is_empty(), "{n}: {failed:?}");
         for run in &r.runs {
-            assert_eq!(run.status, s.expect().status_for(run.solver), "{n} {}: {}", run.solver, run.message);
-            assert!(!run.message.is_empty());
+            assert_eq!(run.status, s.expect().status_for(run.solver), "{n} {}: {}", run.solver, run.explanation());
+            assert!(!run.explanation().is_empty());
         }
     }
 }
@@ -50,9 +50,9 @@ fn hard_cases_say_what_their_descriptions_promise() {
     assert!((1..=2).contains(&c.nodes_contact), "{} nodes in contact", c.nodes_contact);
     assert!(r.runs[0].resultants.unwrap().normal > 0.0);
     let (_, r) = hard("load-above-mu-p");
-    assert!(r.runs.iter().all(|x| x.status == Status::Infeasible && x.message.contains("μP")));
+    assert!(r.runs.iter().all(|x| x.status == Status::Infeasible && x.explanation().contains("μP")));
     let (_, r) = hard("moment-overturning");
-    assert!(r.runs[0].message.contains("pressure centre"), "{}", r.runs[0].message);
+    assert!(r.runs[0].explanation().contains("pressure centre"), "{}", r.runs[0].explanation());
     let (_, r) = hard("fine-contact-mesh");
     assert!(r.mesh.contact_nodes >= 300);
     let (s, r) = hard("load-0999-mu-p");

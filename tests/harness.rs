@@ -61,7 +61,7 @@ fn normtang_and_clarabel_agree_with_lemke() {
         let lemke = get(&r, "lemke");
         assert_eq!(lemke.status, Status::Solved);
         for other in r.runs.iter().filter(|x| x.solver != "lemke") {
-            assert_eq!(other.status, Status::Solved, "{} {}: {}", s.name(), other.solver, other.message);
+            assert_eq!(other.status, Status::Solved, "{} {}: {}", s.name(), other.solver, other.explanation());
             let d = max_diff(lemke, other);
             eprintln!("{} {}: max |Δp|,|Δq| / p0 = {d:.2e}, work {:?}", s.name(), other.solver, other.work);
             assert!(d <= tol::SOLVER_AGREEMENT, "{} {} vs lemke: {d:e}", s.name(), other.solver);

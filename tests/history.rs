@@ -75,7 +75,7 @@ fn spence_stick_zone_under_growing_normal_load() {
     let body = "[[steps]]\nnormal_load = 20000.0\nsubsteps = 40";
     let s = path_scene(nu, beta / 0.1, true, 200, body, r#"["lemke"]"#);
     let l = get(&run(&s).steps.last().unwrap().runs, "lemke").clone();
-    assert_eq!(l.status, Status::Solved, "{}", l.message);
+    assert_eq!(l.status, Status::Solved, "{}", l.explanation());
     assert!(theory::spence_c_over_a(0.1) > 1.0 - 1e-9);
     assert!(l.nodes.iter().all(|n| n.state != NodeState::Slip), "full stick at β/μ = 0.1");
     for ratio in [0.5, 1.0, 2.0] {
@@ -85,7 +85,7 @@ fn spence_stick_zone_under_growing_normal_load() {
         let rep = run(&s);
         let last = &rep.steps.last().unwrap().runs;
         let l = get(last, "lemke");
-        assert_eq!(l.status, Status::Solved, "{}", l.message);
+        assert_eq!(l.status, Status::Solved, "{}", l.explanation());
         let h = hertz(&s, l);
         let c = stick_half_width(l) / h.a;
         let exact = theory::spence_c_over_a(ratio);
@@ -118,7 +118,7 @@ fn spence_needs_the_path_a_single_step_misses_it() {
         let s = path_scene(nu, mu, true, 200, &body, r#"["lemke"]"#);
         let rep = run(&s);
         let l = get(&rep.steps.last().unwrap().runs, "lemke");
-        assert_eq!(l.status, Status::Solved, "{}", l.message);
+        assert_eq!(l.status, Status::Solved, "{}", l.explanation());
         let c = stick_half_width(l) / hertz(&s, l).a;
         errs.push((c - exact).abs());
         eprintln!("{m} step(s): c/a = {c:.4} (Spence {exact:.4})");

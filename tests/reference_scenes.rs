@@ -59,7 +59,7 @@ fn seed_frictional_scenes_in_both_formulations() {
             .unwrap();
         let rl = run_scene(&l).unwrap();
         let lr = &rl.runs[0];
-        assert_eq!(lr.status, Status::Solved, "{} (loading): {}", p.display(), lr.message);
+        assert_eq!(lr.status, Status::Solved, "{} (loading): {}", p.display(), lr.explanation());
         assert_eq!(lr.formulation, "loading");
         assert!(lr.residuals.unwrap().max() <= 1e-10, "{} (loading): {:?}", p.display(), lr.residuals);
         let p0 = d.contact.as_ref().unwrap().peak_pressure;

@@ -23,7 +23,7 @@ fn lemke_dense_is_selectable_from_a_scene_and_agrees_with_lemke() {
         let names: Vec<&str> = r.runs.iter().map(|x| x.solver.name()).collect();
         assert_eq!(names, ["lemke", "lemke_dense"], "{rel}");
         for run in &r.runs {
-            assert_eq!(run.status, Status::Solved, "{rel} {}: {}", run.solver, run.message);
+            assert_eq!(run.status, Status::Solved, "{rel} {}: {}", run.solver, run.explanation());
         }
         // Same pivot path: the same number of pivots; tractions to round-off (the harness's agreement check).
         assert_eq!(r.runs[0].work, r.runs[1].work, "{rel}");

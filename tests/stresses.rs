@@ -34,7 +34,7 @@ fn lemke(r: &Report) -> &SolverRun {
 
 fn stresses(r: &Report) -> &StressResult {
     let l = lemke(r);
-    assert_eq!(l.status, Status::Solved, "{}", l.message);
+    assert_eq!(l.status, Status::Solved, "{}", l.explanation());
     l.stresses.as_ref().expect("a solved run of a scene with [stresses] has its field")
 }
 

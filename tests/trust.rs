@@ -127,8 +127,8 @@ fn item1_a_contact_cut_off_by_the_candidate_zone_is_not_solved_and_says_how_wide
     let (s, p) = scene_of(dir.path(), "steel.toml", &steel("steel-arc1", "1e7"));
     let r = run_scene(&s).unwrap();
     let run = &r.runs[0];
-    assert_eq!(run.status, Status::ContactAtZoneEdge, "{}", run.message);
-    assert!(run.message.contains("edge of the candidate zone"), "{}", run.message);
+    assert_eq!(run.status, Status::ContactAtZoneEdge, "{}", run.explanation());
+    assert!(run.explanation().contains("edge of the candidate zone"), "{}", run.explanation());
     // The evidence is kept: the nodal answer that was judged, loaded up to the zone's last node (the issue: the
     // edge pressure 2.97 GPa against 1.30 GPa at mid-width), but no resultants or contact summary to be mistaken for
     // an answer.
@@ -137,32 +137,32 @@ fn item1_a_contact_cut_off_by_the_candidate_zone_is_not_solved_and_says_how_wide
     assert!(first.pressure > 0.0 && last.pressure > 0.0, "contact reaches both ends of the zone");
     assert!(run.resultants.is_none() && run.contact.is_none() && run.residuals.is_none());
     // The zone suggested must hold Hertz's contact: 2 asin(a/R) = 1.255° at P = 1e7 (a = 5.04 mm), more than 1°.
-    let arc = number_after(&run.message, "contact_arc_deg ≥");
+    let arc = number_after(&run.explanation(), "contact_arc_deg ≥");
     let hertz_arc = 2.0 * (hertz_a(1e7, 0.46, 210e9, 0.3) / 0.46).asin().to_degrees();
     assert!(hertz_arc > 1.0 && arc > hertz_arc, "suggested {arc}°, Hertz's contact spans {hertz_arc}°");
     // Following the advice (the arc and the element count it names) gives a contact inside the zone.
-    let elements = number_after(&run.message, "contact_elements ≥");
+    let elements = number_after(&run.explanation(), "contact_elements ≥");
     let advised = steel("steel-advised", "1e7")
         .replace("contact_arc_deg = 1.0", &format!("contact_arc_deg = {arc}"))
         .replace("contact_elements = 100", &format!("contact_elements = {elements}"));
     let (s2, p2) = scene_of(dir.path(), "advised.toml", &advised);
     let r2 = run_scene(&s2).unwrap();
     assert_eq!(r2.runs[0].status, Status::Solved, "{}", r2.runs[0].message);
-    // `check` fails it (exit 1) and says why; `run` (no expectations declared) exits 0 and shows the status.
+    // `check` and `run` both exit 5 (a requested solver did not solve: `rollbem::exit`) and say why.
     let o = bin().arg("check").arg(&p).output().unwrap();
     let (out, _) = text(&o);
-    assert_eq!(o.status.code(), Some(1), "{out}");
+    assert_eq!(o.status.code(), Some(i32::from(rollbem::exit::NOT_SOLVED)), "{out}");
     assert!(out.contains("contact_at_zone_edge") && out.contains("contact_arc_deg ≥"), "{out}");
     let o = bin().arg("run").arg(&p).output().unwrap();
-    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(o.status.code(), Some(i32::from(rollbem::exit::NOT_SOLVED)));
     assert!(text(&o).0.contains("contact_at_zone_edge"));
 
     // P = 1e12: Hertz's a = 1.59 m on a 0.46 m wheel: no zone can hold it, and the message says so.
     let (s, p) = scene_of(dir.path(), "huge.toml", &steel("steel-huge", "1e12"));
     let run = &run_scene(&s).unwrap().runs[0];
     assert!(hertz_a(1e12, 0.46, 210e9, 0.3) > 0.46);
-    assert_eq!(run.status, Status::ContactAtZoneEdge, "{}", run.message);
-    assert!(run.message.contains("no candidate zone on this wheel can hold it"), "{}", run.message);
+    assert_eq!(run.status, Status::ContactAtZoneEdge, "{}", run.explanation());
+    assert!(run.explanation().contains("no candidate zone on this wheel can hold it"), "{}", run.explanation());
 }
 
 #[test]
@@ -279,29 +279,29 @@ fn item4_a_free_wheel_under_a_tangential_load_is_never_solved() {
     let r = run_scene(&s).unwrap();
     assert!(!r.runs.is_empty());
     for run in &r.runs {
-        assert_ne!(run.status, Status::Solved, "{}: {}", run.solver, run.message);
+        assert_ne!(run.status, Status::Solved, "{}: {}", run.solver, run.explanation());
     }
     let lemke = r.runs.iter().find(|x| x.solver.name() == "lemke").unwrap();
-    assert_eq!(lemke.status, Status::KinematicsOutOfRange, "{}", lemke.message);
+    assert_eq!(lemke.status, Status::KinematicsOutOfRange, "{}", lemke.explanation());
     // φR against a = 0.05 (Hertz at this P), far beyond 0.1a.
-    let arc = number_after(&lemke.message, "φR =");
-    assert!(arc > 0.05, "φR = {arc}: {}", lemke.message);
+    let arc = number_after(&lemke.explanation(), "φR =");
+    assert!(arc > 0.05, "φR = {arc}: {}", lemke.explanation());
     // The statics of a wheel free to turn: the moment about the axle needs the pressure centre at −R̄Q/P ≈ −0.1R
     // (R̄ the candidate nodes' depth, between R cos 6° and R).
-    let xc = number_after(&lemke.message, "(M − RQ)/P =");
+    let xc = number_after(&lemke.explanation(), "(M − RQ)/P =");
     assert!((-0.1..=-0.1 * 6f64.to_radians().cos()).contains(&xc), "x_c = {xc}");
     let o = bin().arg("check").arg(&p).output().unwrap();
-    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(o.status.code(), Some(i32::from(rollbem::exit::NOT_SOLVED)));
     assert!(text(&o).0.contains("kinematics_out_of_range"));
 
     // The steel wheel: the pressure centre would need to be at −R̄Q/P ≈ −0.046 m, outside the ±4.0 mm zone, so no
     // contact forces carry the loads: the LP proves it, and Lemke's ray becomes `infeasible` with the proof.
     let (s, p) = scene_of(dir.path(), "steel-free.toml", STEEL_FREE);
     let run = &run_scene(&s).unwrap().runs[0];
-    assert_eq!(run.status, Status::Infeasible, "{}", run.message);
-    assert!(run.message.contains("Farkas") && run.message.contains("pressure centre"), "{}", run.message);
+    assert_eq!(run.status, Status::Infeasible, "{}", run.explanation());
+    assert!(run.explanation().contains("Farkas") && run.explanation().contains("pressure centre"), "{}", run.explanation());
     // Lemke's own words are kept, naming the variable as the LCP does (issue: "entering Z(Z(123))").
-    assert!(run.message.contains("entering z[") && !run.message.contains("Z("), "{}", run.message);
+    assert!(run.explanation().contains("entering z[") && !run.explanation().contains("Z("), "{}", run.explanation());
     let built = rollbem::source::build(&s, rollbem::pipeline::stages::blocks_for(&s)).unwrap();
     let problem = rollbem::pipeline::stages::scene_problem(&s, &built.flex).unwrap();
     let zone = 0.46 * 0.5f64.to_radians().sin();
@@ -393,9 +393,9 @@ fn item5_health_lines_say_what_they_measure() {
         })
         .unwrap();
     let run = &run_scene(&s).unwrap().runs[0];
-    assert_eq!(run.status, Status::NotConverged, "{}", run.message);
+    assert_eq!(run.status, Status::NotConverged, "{}", run.explanation());
     let sweeps = run.work.0.iter().find(|(k, _)| *k == "sweeps").unwrap().1;
-    assert!(run.message.contains(&format!("{sweeps} sweeps in all")), "{} vs {sweeps}", run.message);
+    assert!(run.explanation().contains(&format!("{sweeps} sweeps in all")), "{} vs {sweeps}", run.explanation());
 
     // "cannot read" without calling every file a scene file.
     let dir = tempfile::tempdir().unwrap();

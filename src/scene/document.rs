@@ -45,8 +45,9 @@ pub struct SceneDocument {
     #[serde(default)]
     pub solvers: SolversTable,
     /// What the scene expects of its runs.
-    #[serde(default)]
-    pub checks: Expect,
+    /// Absent: the defaults of [`Expect`], and `rollbem run` does not exit on a failed check.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub checks: Option<Expect>,
     /// Subsurface stresses on a grid below the contact ([`crate::stresses`]); computed only when given.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stresses: Option<StressSpec>,

@@ -417,6 +417,17 @@ fn default_status() -> Status {
     Status::Solved
 }
 
+/// The expectations of a scene without `[checks]`.
+static DEFAULT_EXPECT: Expect = Expect {
+    status: Status::Solved,
+    solver_status: BTreeMap::new(),
+    hertz: None,
+    agreement: None,
+    residual: None,
+    cattaneo_elements: None,
+    contact_elements: None,
+};
+
 impl Default for Expect {
     fn default() -> Self {
         Expect {
@@ -735,7 +746,13 @@ impl Scene {
 
     /// What the scene expects of its runs (`[checks]`).
     pub fn expect(&self) -> &Expect {
-        &self.document.checks
+        self.document.checks.as_ref().unwrap_or(&DEFAULT_EXPECT)
+    }
+
+    /// Whether the scene declares expectations of its own (a `[checks]` table): `rollbem run` then exits on a failed
+    /// check ([`crate::exit`]).
+    pub fn declares_checks(&self) -> bool {
+        self.document.checks.is_some()
     }
 
     /// The subsurface stress grid, when the scene asks for stresses.

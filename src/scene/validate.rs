@@ -146,7 +146,7 @@ impl SceneDocument {
         }
         self.validate_drive(&c)?;
         self.validate_stresses(&c)?;
-        let ck = &self.checks;
+        let ck = self.checks.clone().unwrap_or_default();
         for (field, v) in [
             ("checks.hertz", ck.hertz),
             ("checks.agreement", ck.agreement),
