@@ -23,9 +23,13 @@ fn scenes(dir: &str) -> Vec<PathBuf> {
 /// Compare the two runs of one (sub)step; returns the largest traction difference over p0 when both solved.
 fn compare(what: &str, l: &SolverRun, a: &SolverRun) -> Option<f64> {
     assert_eq!(
-        a.status, l.status,
+        a.status,
+        l.status,
         "{what}: active_set {} ({}) vs lemke {} ({})",
-        a.status, a.message, l.status, l.explanation()
+        a.status,
+        a.message,
+        l.status,
+        l.explanation()
     );
     if l.status != Status::Solved {
         return None;

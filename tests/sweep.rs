@@ -318,10 +318,23 @@ fn bad_specs_are_errors_naming_the_key() {
 
 #[test]
 fn merge_refuses_different_headers() {
+    use rollbem::sweep::row::header;
+    use rollbem::sweep::{RowStatus, SweepRow};
+    // Shard CSVs as `run_sweep` writes them: the header of their swept keys, one typed row per line.
+    let csv = |key: &str, rows: &[(usize, &str, &str)]| {
+        let keys = vec![key.to_string()];
+        let mut text = header(&keys).join(",") + "\n";
+        for &(case, solver, x) in rows {
+            let mut r = SweepRow::new(case, solver, RowStatus::Run(rollbem::status::Status::Solved));
+            r.params = vec![(key.to_string(), x.to_string())];
+            text += &(r.record(&keys).join(",") + "\n");
+        }
+        text
+    };
     let dir = tempfile::tempdir().unwrap();
-    let a = write(dir.path(), "a.csv", "case,x,solver,t_total\n0,1,lemke,1e0\n");
-    let b = write(dir.path(), "b.csv", "case,y,solver,t_total\n1,1,lemke,1e0\n");
-    let c = write(dir.path(), "c.csv", "case,x,solver,t_total\n1,2,clarabel,2e0\n1,2,lemke,2e0\n");
+    let a = write(dir.path(), "a.csv", &csv("x", &[(0, "lemke", "1")]));
+    let b = write(dir.path(), "b.csv", &csv("y", &[(1, "lemke", "1")]));
+    let c = write(dir.path(), "c.csv", &csv("x", &[(1, "clarabel", "2"), (1, "lemke", "2")]));
     let out = dir.path().join("out.csv");
     let e = merge(&[a.clone(), b.clone()], &out).unwrap_err();
     assert!(matches!(e, Error::Invalid { ref field, .. } if field == "header"), "{e}");
@@ -329,7 +342,7 @@ fn merge_refuses_different_headers() {
     assert_eq!(merge(&[c, a], &out).unwrap(), 3);
     let (_, rows) = read_csv(&out);
     assert_eq!(
-        rows.iter().map(|r| (r[0].as_str(), r[2].as_str())).collect::<Vec<_>>(),
+        rows.iter().map(|r| (r[0].as_str(), r[6].as_str())).collect::<Vec<_>>(),
         [("0", "lemke"), ("1", "clarabel"), ("1", "lemke")]
     );
     assert!(merge(&[], &out).is_err());

@@ -299,7 +299,11 @@ fn item4_a_free_wheel_under_a_tangential_load_is_never_solved() {
     let (s, p) = scene_of(dir.path(), "steel-free.toml", STEEL_FREE);
     let run = &run_scene(&s).unwrap().runs[0];
     assert_eq!(run.status, Status::Infeasible, "{}", run.explanation());
-    assert!(run.explanation().contains("Farkas") && run.explanation().contains("pressure centre"), "{}", run.explanation());
+    assert!(
+        run.explanation().contains("Farkas") && run.explanation().contains("pressure centre"),
+        "{}",
+        run.explanation()
+    );
     // Lemke's own words are kept, naming the variable as the LCP does (issue: "entering Z(Z(123))").
     assert!(run.explanation().contains("entering z[") && !run.explanation().contains("Z("), "{}", run.explanation());
     let built = rollbem::source::build(&s, rollbem::pipeline::stages::blocks_for(&s)).unwrap();

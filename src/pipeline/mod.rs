@@ -124,29 +124,29 @@ impl Model {
                 m.name()
             ),
         };
-        if scene.wheel() != m.wheel() {
-            return Err(differs("wheel", "the wheel's radius or material"));
-        }
-        if scene.body() != m.body() {
-            return Err(differs("wheel.model", "the wheel's model, support or mesh"));
-        }
-        if scene.zone() != m.zone() {
-            return Err(differs("mesh", "the candidate contact zone or its elements"));
-        }
-        if scene.counter_body() != m.counter_body() {
-            return Err(differs("counter_body", "the counter-body"));
+        if let Some((field, what)) = source_difference(m, scene) {
+            return Err(differs(field, what));
         }
         if stages::blocks_for(scene) == Blocks::All && self.blocks == Blocks::Normal {
             return Err(differs("contact.friction", "friction or rolling (the model holds the normal problem only)"));
         }
-        if scene.stresses().is_some()
-            && m.stresses().is_none()
-            && self.built.boundary.is_none()
-            && m.bem_mesh().is_some()
-        {
+        if scene.stresses().is_some() && scene.bem_mesh().is_some() && self.built.boundary.is_none() {
             return Err(differs("stresses", "asking for the BEM wheel's stresses"));
         }
         Ok(())
+    }
+
+    /// Whether two scenes have the same flexibility source (bodies, mesh, zone, counter-body): one model, built from
+    /// the one that [`Model::needs`] more, solves both.
+    pub fn shares_source(a: &Scene, b: &Scene) -> bool {
+        source_difference(a, b).is_none()
+    }
+
+    /// What a scene needs of a model beyond its source, ordered: (the tangential blocks, the BEM wheel's boundary
+    /// response for stresses). A model built from the scene that needs the most accepts every scene sharing its
+    /// source.
+    pub fn needs(scene: &Scene) -> (bool, bool) {
+        (stages::blocks_for(scene) == Blocks::All, scene.stresses().is_some())
     }
 
     /// Solve a scene on this model: its one-step drive or its load path, with its friction, rolling, solvers and
@@ -182,6 +182,21 @@ impl Model {
                 message: "steps: a load path is a sequence of LCPs, one per substep; export a one-step scene".into(),
             }),
         }
+    }
+}
+
+/// The first part of the flexibility source in which two scenes differ: (key, what), or `None`.
+fn source_difference(a: &Scene, b: &Scene) -> Option<(&'static str, &'static str)> {
+    if a.wheel() != b.wheel() {
+        Some(("wheel", "the wheel's radius or material"))
+    } else if a.body() != b.body() {
+        Some(("wheel.model", "the wheel's model, support or mesh"))
+    } else if a.zone() != b.zone() {
+        Some(("mesh", "the candidate contact zone or its elements"))
+    } else if a.counter_body() != b.counter_body() {
+        Some(("counter_body", "the counter-body"))
+    } else {
+        None
     }
 }
 

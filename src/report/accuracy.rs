@@ -42,7 +42,7 @@ fn series<'a>(sw: &Sweep, rows: &[&'a Row]) -> BTreeMap<String, Vec<(f64, &'a Ro
     let varied = sw.varied(rows);
     let mut g: BTreeMap<String, Vec<(f64, &Row)>> = BTreeMap::new();
     for r in rows {
-        g.entry(sw.label(r, &varied)).or_default().push((num(r, "contact_elements").unwrap_or(0.0), r));
+        g.entry(sw.label(r, &varied)).or_default().push((r.contact_elements.map(|n| n as f64).unwrap_or(0.0), r));
     }
     for v in g.values_mut() {
         v.sort_by(|a, b| a.0.total_cmp(&b.0));
@@ -53,7 +53,7 @@ fn series<'a>(sw: &Sweep, rows: &[&'a Row]) -> BTreeMap<String, Vec<(f64, &'a Ro
 /// The accuracy sections of one sweep.
 pub fn sections(sw: &mut Sweep, out: &Path, md: &mut String, figs: &mut Figures) -> Result<()> {
     let richardson = discretisation_errors(sw, md);
-    let solved: Vec<&Row> = sw.rows.iter().filter(|r| cell(r, "status") == "solved").collect();
+    let solved: Vec<&Row> = sw.rows.iter().filter(|r| r.status.solved()).collect();
     let failed = sw.rows.len() - solved.len();
     if failed > 0 {
         writeln!(
@@ -104,7 +104,7 @@ struct Cost {
 
 /// The [`Cost`] of every row, keyed by the row's address (rows without a total time get none).
 fn costs(sw: &Sweep, rows: &[&Row]) -> BTreeMap<*const Row, Cost> {
-    let setup_of = |r: &Row| Some(num(r, "t_assembly")? + num(r, "t_condensation")?);
+    let setup_of = |r: &Row| Some(r.t_assembly? + r.t_condensation?);
     // The same setup: the same discretisation of the same problem.
     let shared = |r: &Row| discretisation(sw, r);
     let mut pooled: BTreeMap<String, f64> = BTreeMap::new();
@@ -116,15 +116,15 @@ fn costs(sw: &Sweep, rows: &[&Row]) -> BTreeMap<*const Row, Cost> {
     }
     rows.iter()
         .filter_map(|r| {
-            let total = num(r, "t_total")?;
-            let own = || Some(pooled.get(&shared(r))? + num(r, "t_formulation")? + num(r, "t_solve")?);
+            let total = r.t_total?;
+            let own = || Some(pooled.get(&shared(r))? + r.t_formulation? + r.t_solve?);
             let time = own().unwrap_or(total);
             let scale = if total > 0.0 { time / total } else { 1.0 };
             let cost = Cost {
                 time,
-                lo: num(r, "t_total_min").unwrap_or(total) * scale,
-                hi: num(r, "t_total_max").unwrap_or(total) * scale,
-                runs: num(r, "timing_runs").unwrap_or(1.0) as usize,
+                lo: r.t_total_min.unwrap_or(total) * scale,
+                hi: r.t_total_max.unwrap_or(total) * scale,
+                runs: r.timing_runs.map(|n| n as f64).unwrap_or(1.0) as usize,
             };
             Some((*r as *const Row, cost))
         })
@@ -158,14 +158,19 @@ struct Class<'a> {
 
 /// The key of a row's discretisation within one problem (everything but the solver and its settings).
 fn discretisation(sw: &Sweep, r: &Row) -> String {
-    let mut k: Vec<&str> = vec![cell(r, "scene"), cell(r, "model"), cell(r, "element"), cell(r, "contact_elements")];
+    let mut k: Vec<String> = vec![
+        r.scene.clone(),
+        r.model.map_or("", |m| m.name()).to_string(),
+        r.element.map_or("", |e| e.name()).to_string(),
+        cell(r, "contact_elements"),
+    ];
     k.extend(sw.keys.iter().filter(|k| !k.starts_with("solvers.")).map(|k| cell(r, k)));
     k.join("\u{1f}")
 }
 
 /// The rank of a solver in [`SOLVER_PREFERENCE`].
 fn preference(r: &Row) -> usize {
-    let s = cell(r, "solver");
+    let s = r.solver.as_str();
     SOLVER_PREFERENCE.iter().position(|p| *p == s).unwrap_or(SOLVER_PREFERENCE.len())
 }
 
@@ -177,7 +182,7 @@ fn settings(sw: &Sweep, a: &Row, b: &Row) -> std::cmp::Ordering {
         .filter(|k| k.starts_with("solvers.") && *k != "solvers.use")
         .map(|k| match (num(a, k), num(b, k)) {
             (Some(x), Some(y)) => x.total_cmp(&y),
-            _ => cell(a, k).cmp(cell(b, k)),
+            _ => cell(a, k).cmp(&cell(b, k)),
         })
         .find(|o| o.is_ne())
         .unwrap_or(std::cmp::Ordering::Equal)
@@ -201,7 +206,7 @@ fn classes<'a>(sw: &Sweep, rows: &[&'a Row], err: &str, cost: &dyn Fn(&Row) -> C
             members.sort_by(|a, b| {
                 preference(a)
                     .cmp(&preference(b))
-                    .then(cell(a, "solver").cmp(cell(b, "solver")))
+                    .then(a.solver.as_str().cmp(b.solver.as_str()))
                     .then(settings(sw, a, b))
             });
             let fastest = members.iter().copied().min_by(|a, b| cost(a).time.total_cmp(&cost(b).time)).unwrap();
@@ -222,8 +227,7 @@ fn front_and_cheapest(
     md: &mut String,
     figs: &mut Figures,
 ) -> Result<()> {
-    let rows: Vec<&Row> =
-        solved.iter().copied().filter(|r| num(r, err).is_some() && num(r, "t_total").is_some()).collect();
+    let rows: Vec<&Row> = solved.iter().copied().filter(|r| num(r, err).is_some() && r.t_total.is_some()).collect();
     let by_row = costs(sw, &rows);
     let cost = |r: &Row| by_row[&(r as *const Row)];
     let mut chart = Chart::new(format!("{}: {label} against total time", sw.name), "total time", label)
@@ -244,7 +248,7 @@ fn front_and_cheapest(
     let varied = sw.varied(&rows);
     let mut problem_keys: Vec<String> = varied.iter().filter(|k| !is_method_key(k)).cloned().collect();
     // Grids with their own base scenes pose different problems even when no swept key says so.
-    if rows.iter().map(|r| cell(r, "scene")).collect::<std::collections::BTreeSet<_>>().len() > 1 {
+    if rows.iter().map(|r| r.scene.as_str()).collect::<std::collections::BTreeSet<_>>().len() > 1 {
         problem_keys.insert(0, "scene".into());
     }
     // A discretisation is labelled by what varies among the non-solver method keys; its solvers are listed apart.
@@ -405,7 +409,7 @@ fn recommend<'a, 'b>(
 
 /// The contact elements of a row (∞ when absent).
 fn elements(r: &Row) -> f64 {
-    num(r, "contact_elements").unwrap_or(f64::INFINITY)
+    r.contact_elements.map(|n| n as f64).unwrap_or(f64::INFINITY)
 }
 
 /// The Pareto front of one problem, fastest first.
@@ -444,8 +448,8 @@ fn front_table(cl: &[Class], names: &Names, md: &mut String) {
 fn cheapest_table(cl: &[Class], err: &str, names: &Names, md: &mut String) {
     // The preference order of the solvers this problem ran, not of every solver rollbem has.
     let mut present: Vec<&Row> = cl.iter().flat_map(|c| c.members.iter().copied()).collect();
-    present.sort_by(|a, b| preference(a).cmp(&preference(b)).then(cell(a, "solver").cmp(cell(b, "solver"))));
-    let mut present: Vec<&str> = present.iter().map(|r| cell(r, "solver")).collect();
+    present.sort_by(|a, b| preference(a).cmp(&preference(b)).then(a.solver.as_str().cmp(b.solver.as_str())));
+    let mut present: Vec<&str> = present.iter().map(|r| r.solver.as_str()).collect();
     present.dedup();
     writeln!(
         md,
@@ -630,11 +634,11 @@ fn mesh_limit(points: &[(f64, f64)]) -> Option<MeshLimit> {
 /// uncertainty — a smaller one is not resolved and is not reported; a table of the limits and their model error
 /// against Hertz goes into `md`. Returns whether it applied.
 fn discretisation_errors(sw: &mut Sweep, md: &mut String) -> bool {
-    let bem = sw.rows.iter().any(|r| cell(r, "model") == "bem" && num(r, "hertz_a_err").is_some());
+    let bem = sw.rows.iter().any(|r| r.model.map_or("", |m| m.name()) == "bem" && r.metrics.hertz_a_err.is_some());
     if !bem || !sw.keys.iter().any(|k| k == REFINEMENT_KEY) {
         return false;
     }
-    let solved: Vec<usize> = (0..sw.rows.len()).filter(|&i| cell(&sw.rows[i], "status") == "solved").collect();
+    let solved: Vec<usize> = (0..sw.rows.len()).filter(|&i| sw.rows[i].status.solved()).collect();
     let refs: Vec<&Row> = solved.iter().map(|&i| &sw.rows[i]).collect();
     let varied = sw.varied(&refs);
     let mut groups: BTreeMap<String, Vec<usize>> = BTreeMap::new();
@@ -661,7 +665,7 @@ fn discretisation_errors(sw: &mut Sweep, md: &mut String) -> bool {
         for (col, hertz) in [("half_width_fit", "hertz_a"), ("peak_pressure_fit", "hertz_p0")] {
             let mut pts: Vec<(f64, f64, usize)> = idx
                 .iter()
-                .filter_map(|&i| Some((num(&sw.rows[i], "contact_elements")?, num(&sw.rows[i], col)?, i)))
+                .filter_map(|&i| Some((sw.rows[i].contact_elements.map(|n| n as f64)?, num(&sw.rows[i], col)?, i)))
                 .collect();
             pts.sort_by(|a, b| a.0.total_cmp(&b.0));
             let xy: Vec<(f64, f64)> = pts.iter().map(|p| (p.0, p.1)).collect();
@@ -672,7 +676,7 @@ fn discretisation_errors(sw: &mut Sweep, md: &mut String) -> bool {
             let key = if col == "half_width_fit" { "disc_a_err" } else { "disc_p0_err" };
             for (_, x, i) in &pts {
                 if (x - lim.value).abs() > lim.uncertainty {
-                    sw.rows[*i].insert(key.to_string(), format!("{:e}", (x - lim.value).abs() / lim.value.abs()));
+                    sw.rows[*i].derived.insert(key.to_string(), (x - lim.value).abs() / lim.value.abs());
                 }
             }
             let how = match lim.order {
@@ -698,14 +702,26 @@ fn discretisation_errors(sw: &mut Sweep, md: &mut String) -> bool {
 mod tests {
     use super::*;
 
-    /// A sweep row from (column, cell) pairs.
+    /// A sweep row from (column, cell) pairs: known columns set from their cells, dotted keys as swept keys, other
+    /// names as derived figures (an error measure of the test).
     fn row(cells: &[(&str, &str)]) -> Row {
-        cells.iter().map(|(k, v)| (k.to_string(), v.to_string())).collect()
+        let mut r = Row::new(0, "", crate::sweep::RowStatus::Run(crate::status::Status::Solved));
+        for (k, v) in cells {
+            if !r.set(k, v).unwrap() {
+                match v.parse::<f64>() {
+                    Ok(x) if !k.contains('.') => {
+                        r.derived.insert(k.to_string(), x);
+                    }
+                    _ => r.params.push((k.to_string(), v.to_string())),
+                }
+            }
+        }
+        r
     }
 
     fn plain_cost(r: &Row) -> Cost {
-        let t = num(r, "t_total").unwrap();
-        Cost { time: t, lo: num(r, "t_total_min").unwrap_or(t), hi: num(r, "t_total_max").unwrap_or(t), runs: 1 }
+        let t = r.t_total.unwrap();
+        Cost { time: t, lo: r.t_total_min.unwrap_or(t), hi: r.t_total_max.unwrap_or(t), runs: 1 }
     }
 
     fn sweep(keys: &[&str], rows: Vec<Row>) -> Sweep {
@@ -814,7 +830,7 @@ mod tests {
         assert_eq!(cl.len(), 3);
         let direct = cl.iter().find(|c| c.members.len() == 2).expect("lemke and active_set together");
         assert!(std::ptr::eq(direct.fastest, &rows[1]));
-        assert_eq!(direct.members.iter().map(|r| cell(r, "solver")).collect::<Vec<_>>(), vec!["active_set", "lemke"]);
+        assert_eq!(direct.members.iter().map(|r| r.solver.as_str()).collect::<Vec<_>>(), vec!["active_set", "lemke"]);
         assert!((direct.error - 1.0e-3).abs() < 1e-15);
     }
 

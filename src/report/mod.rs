@@ -193,7 +193,7 @@ fn reference_scenes(opts: &ReportOptions, scenes: Vec<(PathBuf, Scene)>) -> Resu
         "| scene | solver | status | size | work | residual | Δ vs Lemke (/p0) | state mismatches | QP symmetrisation effect | solve time [s] |\n\
          |---|---|---|---|---|---|---|---|---|---|\n",
     );
-    for (p, s) in scenes {
+    for (_, s) in scenes {
         let r = run_scene(&s)?;
         let text = serde_json::to_string_pretty(&r).expect("report serialises");
         write_atomic(&out.join("runs").join(format!("{}.json", s.name())), &text)?;
@@ -285,7 +285,7 @@ fn sweeps(opts: &ReportOptions, specs: Vec<(PathBuf, crate::sweep::SweepSpec)>) 
             description: spec.description.clone(),
             stem: stem.clone(),
             keys: spec.keys(),
-            rows: table::Table::read(&csv_path)?.rows,
+            rows: crate::sweep::SweepRow::read_csv(&csv_path)?.1,
         };
         writeln!(md, "\n### {} ([CSV](sweeps/{stem}.csv), {} rows)\n\n{}\n", sw.name, sw.rows.len(), sw.description)
             .unwrap();

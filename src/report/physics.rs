@@ -1,7 +1,7 @@
 //! Sweep sections about physics rather than cost: what the finite body changes against the half-plane (rows of both
 //! models at the same loads), and creep curves against Carter (steady rolling over a range of creepages).
 
-use super::table::{cell, log_slope, num, Row, Sweep};
+use super::table::{log_slope, num, Row, Sweep};
 use super::{plot_err, Figures};
 use crate::error::Result;
 use crate::plot::{Chart, Series, Style};
@@ -13,13 +13,13 @@ use std::path::Path;
 /// Whether a sweep compares the two body models at equal loads (both models among its solved rows).
 pub fn compares_models(sw: &Sweep) -> bool {
     let models: BTreeSet<&str> =
-        sw.rows.iter().filter(|r| cell(r, "status") == "solved").map(|r| cell(r, "model")).collect();
+        sw.rows.iter().filter(|r| r.status.solved()).map(|r| r.model.map_or("", |m| m.name())).collect();
     models.contains("bem") && models.contains("half_plane")
 }
 
 /// Whether a sweep is a creep curve: steady rolling at five or more creepages.
 pub fn is_creep_curve(sw: &Sweep) -> bool {
-    let xs: BTreeSet<&str> = sw.rows.iter().map(|r| cell(r, "creepage")).filter(|c| !c.is_empty()).collect();
+    let xs: BTreeSet<u64> = sw.rows.iter().filter_map(|r| r.creepage).map(f64::to_bits).collect();
     xs.len() >= 5
 }
 
@@ -44,11 +44,11 @@ fn rel(a: Option<f64>, b: Option<f64>) -> Option<f64> {
 /// What the finite body changes: pair the finite wheel's and the half-plane's rows at the same (P, Q, μ); table and
 /// plot of the relative differences against a/R with their fitted slopes.
 pub fn finite_vs_half_plane(sw: &Sweep, out: &Path, md: &mut String, figs: &mut Figures) -> Result<()> {
-    let solved: Vec<&Row> = sw.rows.iter().filter(|r| cell(r, "status") == "solved").collect();
+    let solved: Vec<&Row> = sw.rows.iter().filter(|r| r.status.solved()).collect();
     let mut pairs: BTreeMap<LoadKey, (Option<&Row>, Option<&Row>)> = BTreeMap::new();
     for r in &solved {
         let e = pairs.entry(load_key(r)).or_default();
-        match cell(r, "model") {
+        match r.model.map_or("", |m| m.name()) {
             "bem" => e.0 = Some(r),
             _ => e.1 = Some(r),
         }
@@ -57,15 +57,15 @@ pub fn finite_vs_half_plane(sw: &Sweep, out: &Path, md: &mut String, figs: &mut 
     // (friction, a/R, Δa, Δp0, Δc, Δshift)
     let mut data: Vec<(f64, f64, [Option<f64>; 4])> = Vec::new();
     for (f, h) in pairs.values().filter_map(|(f, h)| Some(((*f)?, (*h)?))) {
-        let (Some(a), Some(radius)) = (num(h, "hertz_a"), num(h, "radius")) else { continue };
+        let (Some(a), Some(radius)) = (h.hertz_a, h.radius) else { continue };
         let a_over_r = a / radius;
         let d = [
-            rel(num(f, "half_width_fit"), num(h, "half_width_fit")),
-            rel(num(f, "peak_pressure_fit"), num(h, "peak_pressure_fit")),
+            rel(f.half_width_fit, h.half_width_fit),
+            rel(f.peak_pressure_fit, h.peak_pressure_fit),
             rel(half(f), half(h)),
             rel(num(f, "shift"), num(h, "shift")),
         ];
-        data.push((num(f, "friction").unwrap_or(0.0), a_over_r, d));
+        data.push((f.friction.unwrap_or(0.0), a_over_r, d));
     }
     if data.is_empty() {
         writeln!(
@@ -140,19 +140,14 @@ pub fn finite_vs_half_plane(sw: &Sweep, out: &Path, md: &mut String, figs: &mut 
 /// Creep curves: Q/(μP) against ξR/(μa) per series, with Carter's curve; the largest departure from Carter and
 /// the free-rolling creepage (where Q changes sign) per series.
 pub fn creep_curves(sw: &Sweep, out: &Path, md: &mut String, figs: &mut Figures) -> Result<()> {
-    let solved: Vec<&Row> = sw.rows.iter().filter(|r| cell(r, "status") == "solved").collect();
+    let solved: Vec<&Row> = sw.rows.iter().filter(|r| r.status.solved()).collect();
     // The creepage is the curve's abscissa, not a series.
     let varied: Vec<String> = sw.varied(&solved).into_iter().filter(|k| !k.ends_with("creepage")).collect();
     let mut groups: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
     for r in &solved {
-        let (Some(xi), Some(q), Some(p), Some(mu), Some(a), Some(rad)) = (
-            num(r, "creepage"),
-            num(r, "tangential_load"),
-            num(r, "normal_load"),
-            num(r, "friction"),
-            num(r, "hertz_a"),
-            num(r, "radius"),
-        ) else {
+        let (Some(xi), Some(q), Some(p), Some(mu), Some(a), Some(rad)) =
+            (r.creepage, r.tangential_load, r.normal_load, r.friction, r.hertz_a, r.radius)
+        else {
             continue;
         };
         groups.entry(sw.label(r, &varied)).or_default().push((xi * rad / (mu * a), q / (mu * p)));

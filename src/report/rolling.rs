@@ -77,7 +77,6 @@ pub fn seed_vs_steady(
         let Some((steady, how)) = steady_counterpart(&rep.scene)? else { continue };
         let Some(seed) = lemke(rep) else { continue };
         any = true;
-        let path = Path::new(name);
         let sr = run_scene(&steady)?;
         let st = lemke(&sr);
         let units = Units::parse(rep.scene.units());

@@ -621,6 +621,12 @@ impl Scene {
         PathBuf::from("<scene>")
     }
 
+    /// The same scene with another origin (what its later errors name, e.g. `spec.toml [case 3]`).
+    pub fn relabel(mut self, origin: impl Into<PathBuf>) -> Scene {
+        self.origin = origin.into();
+        self
+    }
+
     /// Where the scene came from: its file, or `<scene>` for one built in code.
     pub fn origin(&self) -> &Path {
         &self.origin
