@@ -173,64 +173,91 @@ pub fn make_checks(
 ) -> Vec<Check> {
     let mut out = Vec::new();
     for (r, &bound) in runs.iter().zip(bounds) {
-        let expected = scene.expect().status_for(r.solver);
-        let ok = r.status == expected;
-        out.push(verdict(format!("{}: status {} (expected {})", r.solver, r.status, expected), ok, None));
-        let (Some(res), Some(_)) = (&r.residuals, &r.resultants) else {
-            continue;
-        };
-        let bound = scene.expect().residual.unwrap_or(bound);
-        out.push(figure(
-            format!("{}: largest residual (absolute)", r.solver),
-            res.max(),
-            0.0,
-            res.max(),
-            bound,
-            res.max() <= bound,
-        ));
-        if let (Some(Dof::Load(p)), Some(f)) = (scene.drive().map(|d| d.normal), &r.resultants) {
-            out.push(check(format!("{}: resultant P = normal_load", r.solver), f.normal, p, tol::LOAD_RESULTANT));
-        }
-        out.extend(resolution_check(scene, element, element_length, r));
-        if let Some(h) = hertz {
-            out.extend(hertz_checks(scene, element, element_length, r, h));
-        }
+        out.extend(run_checks(scene, element, element_length, r, bound, hertz));
     }
-    // Cattaneo–Mindlin where it applies.
     if crate::references::cattaneo_applies(scene) {
-        let t = scene.expect().cattaneo_elements.unwrap_or(tol::CATTANEO_ELEMENTS);
-        for r in runs.iter().filter(|r| r.contact.is_some()) {
-            let m = crate::references::metrics(scene, r);
-            if let (Some(c), Some(ce), Some(err), Some(centre)) =
-                (m.cm_c_over_a, m.cm_c_over_a_exact, m.cm_c_err_elements, m.cm_centre_elements)
-            {
-                out.push(figure(
-                    format!("{}: Cattaneo–Mindlin c/a (error in elements)", r.solver),
-                    c,
-                    ce,
-                    err.abs(),
-                    t,
-                    err.abs() <= t,
-                ));
-                out.push(figure(
-                    format!("{}: Cattaneo–Mindlin stick-zone centre (elements)", r.solver),
-                    centre,
-                    0.0,
-                    centre.abs(),
-                    t,
-                    centre.abs() <= t,
-                ));
-            } else {
-                out.push(verdict(
-                    format!("{}: Cattaneo–Mindlin stick zone exists", r.solver),
-                    false,
-                    Some("cannot be evaluated: no node sticks, where Cattaneo–Mindlin has a stick zone".into()),
-                ));
-            }
+        out.extend(cattaneo_checks(scene, runs));
+    }
+    out.extend(carter_checks(scene, element_length, runs));
+    out.extend(agreement_checks(scene, runs));
+    out
+}
+
+/// One run's own checks: its status against the expected one, its residual, its resultant, its resolution and
+/// Hertz where Hertz applies.
+fn run_checks(
+    scene: &Scene,
+    element: ElementKind,
+    element_length: f64,
+    r: &SolverRun,
+    bound: f64,
+    hertz: Option<&Hertz>,
+) -> Vec<Check> {
+    let mut out = Vec::new();
+    let expected = scene.expect().status_for(r.solver);
+    let ok = r.status == expected;
+    out.push(verdict(format!("{}: status {} (expected {})", r.solver, r.status, expected), ok, None));
+    let (Some(res), Some(_)) = (&r.residuals, &r.resultants) else {
+        return out;
+    };
+    let bound = scene.expect().residual.unwrap_or(bound);
+    out.push(figure(
+        format!("{}: largest residual (absolute)", r.solver),
+        res.max(),
+        0.0,
+        res.max(),
+        bound,
+        res.max() <= bound,
+    ));
+    if let (Some(Dof::Load(p)), Some(f)) = (scene.drive().map(|d| d.normal), &r.resultants) {
+        out.push(check(format!("{}: resultant P = normal_load", r.solver), f.normal, p, tol::LOAD_RESULTANT));
+    }
+    out.extend(resolution_check(scene, element, element_length, r));
+    if let Some(h) = hertz {
+        out.extend(hertz_checks(scene, element, element_length, r, h));
+    }
+    out
+}
+
+/// Cattaneo–Mindlin's stick zone (half-width and centre, in elements) for every run with a contact.
+fn cattaneo_checks(scene: &Scene, runs: &[SolverRun]) -> Vec<Check> {
+    let t = scene.expect().cattaneo_elements.unwrap_or(tol::CATTANEO_ELEMENTS);
+    let mut out = Vec::new();
+    for r in runs.iter().filter(|r| r.contact.is_some()) {
+        let m = crate::references::metrics(scene, r);
+        if let (Some(c), Some(ce), Some(err), Some(centre)) =
+            (m.cm_c_over_a, m.cm_c_over_a_exact, m.cm_c_err_elements, m.cm_centre_elements)
+        {
+            out.push(figure(
+                format!("{}: Cattaneo–Mindlin c/a (error in elements)", r.solver),
+                c,
+                ce,
+                err.abs(),
+                t,
+                err.abs() <= t,
+            ));
+            out.push(figure(
+                format!("{}: Cattaneo–Mindlin stick-zone centre (elements)", r.solver),
+                centre,
+                0.0,
+                centre.abs(),
+                t,
+                centre.abs() <= t,
+            ));
+        } else {
+            out.push(verdict(
+                format!("{}: Cattaneo–Mindlin stick zone exists", r.solver),
+                false,
+                Some("cannot be evaluated: no node sticks, where Cattaneo–Mindlin has a stick zone".into()),
+            ));
         }
     }
-    // Carter where it applies (steady rolling, β = 0).
-    let elem = element_length;
+    out
+}
+
+/// Carter's creep force and stick zone where Carter applies (steady rolling, β = 0).
+fn carter_checks(scene: &Scene, elem: f64, runs: &[SolverRun]) -> Vec<Check> {
+    let mut out = Vec::new();
     for r in runs.iter().filter(|r| r.contact.is_some()) {
         let m = crate::references::metrics(scene, r);
         let (Some(qm), Some(qe), Some(ce), Some(cerr)) =
@@ -262,14 +289,19 @@ pub fn make_checks(
             ));
         }
     }
-    // Solvers against each other: pressures and shears relative to the peak pressure, and active sets.
+    out
+}
+
+/// Solvers against each other: pressures and shears relative to the peak pressure, and active sets.
+fn agreement_checks(scene: &Scene, runs: &[SolverRun]) -> Vec<Check> {
     let solved: Vec<&SolverRun> = runs.iter().filter(|r| r.contact.is_some()).collect();
     let mu = scene.friction();
+    let t = scene.expect().agreement.unwrap_or(tol::SOLVER_AGREEMENT);
+    let mut out = Vec::new();
     for i in 0..solved.len() {
-        for j in i + 1..solved.len() {
-            let (a, b) = (solved[i], solved[j]);
+        for b in &solved[i + 1..] {
+            let a = solved[i];
             let c = compare(a, b, mu);
-            let t = scene.expect().agreement.unwrap_or(tol::SOLVER_AGREEMENT);
             out.push(figure(
                 format!("{} vs {}: max |Δp|, |Δq| / p_max", a.solver, b.solver),
                 c.max_dtraction,

@@ -61,11 +61,12 @@ fn fmt_e(v: Option<f64>) -> String {
 /// Figures written so far: (title, file relative to the report folder).
 pub type Figures = Vec<(String, String)>;
 
-/// Regenerate everything; returns the path of the Markdown summary.
-pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
-    let out = &opts.out;
-    // Every input is read and checked before anything is written: scene names are safe file names by validation,
-    // sweep names are checked here, and both must be unique (they name the output files).
+/// The reference scenes and sweep specs of a report, read and checked.
+type Inputs = (Vec<(PathBuf, Scene)>, Vec<(PathBuf, crate::sweep::SweepSpec)>);
+
+/// Read and check every input before anything is written: scene names are safe file names by validation, sweep
+/// names are checked here, and both must be unique (they name the output files).
+fn read_inputs(opts: &ReportOptions) -> Result<Inputs> {
     let mut scenes = Vec::new();
     for p in toml_files(&opts.reference.join("scenes"))? {
         let s = Scene::from_file(&p)?;
@@ -83,6 +84,13 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
         specs.push((p, spec));
     }
     crate::scene::unique_output_names(specs.iter().map(|(p, s)| (p.as_path(), s.name.as_str())))?;
+    Ok((scenes, specs))
+}
+
+/// Regenerate everything; returns the path of the Markdown summary.
+pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
+    let out = &opts.out;
+    let (scenes, specs) = read_inputs(opts)?;
     for d in [out.clone(), out.join("runs"), out.join("sweeps"), out.join("figures")] {
         std::fs::create_dir_all(&d).map_err(|source| Error::Write { path: d.clone(), source })?;
     }
@@ -143,6 +151,19 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
         }
     }
     md.push_str(&roll_md);
+    peer_and_maps(&mut md, out, &maps);
+    writeln!(md, "\n## Files\n\n- `runs/NAME.json`: result document of every reference scene").unwrap();
+    writeln!(md, "- `solver-comparison.csv`, `sweeps/*.csv`: the tables behind this page").unwrap();
+    for (title, file) in plots.iter().chain(&path_figs).chain(&figures).chain(&maps) {
+        writeln!(md, "- [{title}]({file})").unwrap();
+    }
+    let path = out.join("README.md");
+    write_atomic(&path, &md)?;
+    Ok(path)
+}
+
+/// The Siconos peer table (when present) and the stress maps' section.
+fn peer_and_maps(md: &mut String, out: &Path, maps: &Figures) {
     // The peer benchmark is not part of `report` (it installs Siconos and runs for minutes): its table is included
     // when `benches/peer/run.sh OUT/peer-lcp.md` has written it into this folder.
     let peer = out.join("peer-lcp.md");
@@ -170,14 +191,6 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
             writeln!(md, "### {title}\n\n![{title}]({file})\n").unwrap();
         }
     }
-    writeln!(md, "\n## Files\n\n- `runs/NAME.json`: result document of every reference scene").unwrap();
-    writeln!(md, "- `solver-comparison.csv`, `sweeps/*.csv`: the tables behind this page").unwrap();
-    for (title, file) in plots.iter().chain(&path_figs).chain(&figures).chain(&maps) {
-        writeln!(md, "- [{title}]({file})").unwrap();
-    }
-    let path = out.join("README.md");
-    write_atomic(&path, &md)?;
-    Ok(path)
 }
 
 /// Run every reference scene: its JSON, `solver-comparison.csv`, and the comparison table (Markdown).
@@ -309,115 +322,121 @@ fn lemke_run(r: &Report) -> Option<&SolverRun> {
     r.runs.iter().find(|r| r.solver == "lemke" && r.contact.is_some())
 }
 
+/// Write a chart into the figures folder and record it.
+fn save(dir: &Path, out: &mut Vec<(String, String)>, chart: Chart, file: &str, title: &str) -> Result<()> {
+    chart.write(&dir.join(file)).map_err(plot_err)?;
+    out.push((title.to_string(), format!("figures/{file}")));
+    Ok(())
+}
+
+/// The seed's groups of figures: tractions (Figs. 7–9 / 12–13 / 16–17), slip velocity (Figs. 10 / 14 / 18) and
+/// state maps (Figs. 11 / 15), each from its reference scenes (name, label).
+const SEED_GROUPS: [(&str, &str, &[(&str, &str)]); 3] = [
+    (
+        "07-10",
+        "Figs. 7–10 (normal displacement)",
+        &[("seed-fig07-mu002", "μ = 0.02"), ("seed-fig08-mu01", "μ = 0.1"), ("seed-fig09-mu05", "μ = 0.5")],
+    ),
+    (
+        "11-14",
+        "Figs. 11–14 (normal and tangential displacement)",
+        &[("seed-fig12-mu01", "μ = 0.1"), ("seed-fig13-mu03", "μ = 0.3")],
+    ),
+    ("15-18", "Figs. 15–18 (loading, |Q/P| = 0.1)", &[("seed-fig16-mu01", "μ = 0.1"), ("seed-fig17-mu07", "μ = 0.7")]),
+];
+
 /// The seed's figures from the reference scenes' Lemke runs. Returns (title, file) pairs.
 fn seed_figures(reports: &BTreeMap<String, Report>, dir: &Path) -> Result<Vec<(String, String)>> {
     let mut out = Vec::new();
-    let mut save = |chart: Chart, file: &str, title: &str| -> Result<()> {
-        chart.write(&dir.join(file)).map_err(plot_err)?;
-        out.push((title.to_string(), format!("figures/{file}")));
-        Ok(())
-    };
-    // Fig. 6: frictionless pressure, constant and quadratic elements, against Hertz.
-    if let (Some(c), Some(q)) = (lemke_of(reports, "seed-fig6-constant"), lemke_of(reports, "seed-fig6-quadratic")) {
-        let h = reports["seed-fig6-constant"].references.hertz;
-        let mut chart = Chart::new("Seed Fig. 6: frictionless pressure against Hertz", "x", "pressure p")
-            .add(Series::new("constant elements", c.nodes.iter().map(|n| (n.x, n.pressure)).collect(), Style::Markers))
-            .add(Series::new(
-                "quadratic elements",
-                q.nodes.iter().map(|n| (n.x, n.pressure)).collect(),
-                Style::Markers,
-            ));
-        if let Some(h) = h {
-            let xs: Vec<f64> = (0..=200).map(|i| -1.5 * h.half_width + 3.0 * h.half_width * i as f64 / 200.0).collect();
-            chart = chart.add(Series::new("Hertz", xs.iter().map(|&x| (x, h.pressure(x))).collect(), Style::Dashed));
-        }
-        save(
-            chart,
-            "seed-fig06-pressure.svg",
-            "Fig. 6: frictionless pressure, constant and quadratic elements, and Hertz",
-        )?;
+    if let Some(chart) = seed_fig6(reports) {
+        let title = "Fig. 6: frictionless pressure, constant and quadratic elements, and Hertz";
+        save(dir, &mut out, chart, "seed-fig06-pressure.svg", title)?;
     }
-    // Figs. 7–9 / 12–13 / 16–17: tractions; Figs. 10 / 14 / 18: slip velocity; Figs. 11 / 15: state maps.
-    let groups: [(&str, &[(&str, &str)]); 3] = [
-        (
-            "Figs. 7–10 (normal displacement)",
-            &[("seed-fig07-mu002", "μ = 0.02"), ("seed-fig08-mu01", "μ = 0.1"), ("seed-fig09-mu05", "μ = 0.5")],
-        ),
-        (
-            "Figs. 11–14 (normal and tangential displacement)",
-            &[("seed-fig12-mu01", "μ = 0.1"), ("seed-fig13-mu03", "μ = 0.3")],
-        ),
-        ("Figs. 15–18 (loading, |Q/P| = 0.1)", &[("seed-fig16-mu01", "μ = 0.1"), ("seed-fig17-mu07", "μ = 0.7")]),
-    ];
-    for (gi, (title, members)) in groups.iter().enumerate() {
-        let tag = ["07-10", "11-14", "15-18"][gi];
-        let units = members
-            .first()
-            .and_then(|(n, _)| reports.get(*n))
-            .map(|r| table::Units::parse(r.scene.units()))
-            .unwrap_or_default();
-        let mut tr = Chart::new(format!("Seed {title}: tractions"), "x", "traction (p markers, q lines)")
-            .x_unit(units.length.clone())
-            .y_unit(units.stress.clone());
-        let mut sv = Chart::new(format!("Seed {title}: slip velocity s_t* (eq. 12)"), "x", "s_t*")
-            .x_unit(units.length.clone())
-            .y_unit("1");
-        let mut st = Chart::new(format!("Seed {title}: node states"), "x", "state")
-            .x_unit(units.length.clone())
-            .categories_y(&["separated", "slip", "stick"]);
-        let mut any = false;
-        for (k, (name, label)) in members.iter().enumerate() {
-            let Some(l) = lemke_of(reports, name) else { continue };
-            if !any {
-                // Hertz's pressure at this scene's load, the analytic curve the seed compares its tractions with.
-                let sc = &reports[*name].scene;
-                if let Some(res) = l.resultants.filter(|r| r.normal > 0.0) {
-                    let h = crate::hertz::Hertz::with_modulus(sc.radius(), sc.contact_modulus(), res.normal);
-                    let xs: Vec<f64> =
-                        (0..=200).map(|i| -1.5 * h.half_width + 3.0 * h.half_width * i as f64 / 200.0).collect();
-                    tr = tr.add(Series::new(
-                        format!("Hertz p at P = {:.4e}", res.normal),
-                        xs.iter().map(|&x| (x, h.pressure(x))).collect(),
-                        Style::Dashed,
-                    ));
-                }
-            }
-            any = true;
-            if k == 0 || gi > 0 {
-                tr = tr.add(Series::new(
-                    format!("p, {label}"),
-                    l.nodes.iter().map(|n| (n.x, n.pressure)).collect(),
-                    Style::Markers,
-                ));
-            }
-            tr = tr.add(Series::new(
-                format!("q, {label}"),
-                l.nodes.iter().map(|n| (n.x, n.shear)).collect(),
-                Style::LineMarkers,
-            ));
-            sv = sv.add(Series::new(
-                label.to_string(),
-                l.nodes.iter().filter_map(|n| n.slip_velocity.map(|v| (n.x, v))).collect(),
-                Style::LineMarkers,
-            ));
-            let code = |s: NodeState| match s {
-                NodeState::Stick => 2.0,
-                NodeState::Slip | NodeState::Contact => 1.0,
-                NodeState::Separated => 0.0,
-            } + 0.06 * k as f64;
-            st = st.add(Series::new(
-                label.to_string(),
-                l.nodes.iter().map(|n| (n.x, code(n.state))).collect(),
-                Style::Markers,
-            ));
-        }
-        if any {
-            save(tr, &format!("seed-fig{tag}-tractions.svg"), &format!("{title}: pressure and shear"))?;
-            save(sv, &format!("seed-fig{tag}-slip-velocity.svg"), &format!("{title}: slip velocity"))?;
-            save(st, &format!("seed-fig{tag}-states.svg"), &format!("{title}: stick / slip / separation"))?;
+    for (gi, (tag, title, members)) in SEED_GROUPS.iter().enumerate() {
+        if let Some([tr, sv, st]) = seed_group(reports, gi, title, members) {
+            save(dir, &mut out, tr, &format!("seed-fig{tag}-tractions.svg"), &format!("{title}: pressure and shear"))?;
+            save(dir, &mut out, sv, &format!("seed-fig{tag}-slip-velocity.svg"), &format!("{title}: slip velocity"))?;
+            let what = format!("{title}: stick / slip / separation");
+            save(dir, &mut out, st, &format!("seed-fig{tag}-states.svg"), &what)?;
         }
     }
     Ok(out)
+}
+
+/// Fig. 6: frictionless pressure, constant and quadratic elements, against Hertz.
+fn seed_fig6(reports: &BTreeMap<String, Report>) -> Option<Chart> {
+    let (c, q) = (lemke_of(reports, "seed-fig6-constant")?, lemke_of(reports, "seed-fig6-quadratic")?);
+    let h = reports["seed-fig6-constant"].references.hertz;
+    let mut chart = Chart::new("Seed Fig. 6: frictionless pressure against Hertz", "x", "pressure p")
+        .add(Series::new("constant elements", c.nodes.iter().map(|n| (n.x, n.pressure)).collect(), Style::Markers))
+        .add(Series::new("quadratic elements", q.nodes.iter().map(|n| (n.x, n.pressure)).collect(), Style::Markers));
+    if let Some(h) = h {
+        let xs: Vec<f64> = (0..=200).map(|i| -1.5 * h.half_width + 3.0 * h.half_width * i as f64 / 200.0).collect();
+        chart = chart.add(Series::new("Hertz", xs.iter().map(|&x| (x, h.pressure(x))).collect(), Style::Dashed));
+    }
+    Some(chart)
+}
+
+/// One group of the seed's figures: [tractions, slip velocity, node states], `None` when none of its scenes has a
+/// solved Lemke run.
+fn seed_group(
+    reports: &BTreeMap<String, Report>,
+    gi: usize,
+    title: &str,
+    members: &[(&str, &str)],
+) -> Option<[Chart; 3]> {
+    let units = members
+        .first()
+        .and_then(|(n, _)| reports.get(*n))
+        .map(|r| table::Units::parse(r.scene.units()))
+        .unwrap_or_default();
+    let mut tr = Chart::new(format!("Seed {title}: tractions"), "x", "traction (p markers, q lines)")
+        .x_unit(units.length.clone())
+        .y_unit(units.stress.clone());
+    let mut sv = Chart::new(format!("Seed {title}: slip velocity s_t* (eq. 12)"), "x", "s_t*")
+        .x_unit(units.length.clone())
+        .y_unit("1");
+    let mut st = Chart::new(format!("Seed {title}: node states"), "x", "state")
+        .x_unit(units.length.clone())
+        .categories_y(&["separated", "slip", "stick"]);
+    let mut any = false;
+    for (k, (name, label)) in members.iter().enumerate() {
+        let Some(l) = lemke_of(reports, name) else { continue };
+        if !any {
+            // Hertz's pressure at this scene's load, the analytic curve the seed compares its tractions with.
+            let sc = &reports[*name].scene;
+            if let Some(res) = l.resultants.filter(|r| r.normal > 0.0) {
+                let h = crate::hertz::Hertz::with_modulus(sc.radius(), sc.contact_modulus(), res.normal);
+                let xs: Vec<f64> =
+                    (0..=200).map(|i| -1.5 * h.half_width + 3.0 * h.half_width * i as f64 / 200.0).collect();
+                tr = tr.add(Series::new(
+                    format!("Hertz p at P = {:.4e}", res.normal),
+                    xs.iter().map(|&x| (x, h.pressure(x))).collect(),
+                    Style::Dashed,
+                ));
+            }
+        }
+        any = true;
+        if k == 0 || gi > 0 {
+            let p = l.nodes.iter().map(|n| (n.x, n.pressure)).collect();
+            tr = tr.add(Series::new(format!("p, {label}"), p, Style::Markers));
+        }
+        let q = l.nodes.iter().map(|n| (n.x, n.shear)).collect();
+        tr = tr.add(Series::new(format!("q, {label}"), q, Style::LineMarkers));
+        let v = l.nodes.iter().filter_map(|n| n.slip_velocity.map(|v| (n.x, v))).collect();
+        sv = sv.add(Series::new(label.to_string(), v, Style::LineMarkers));
+        let code = |s: NodeState| match s {
+            NodeState::Stick => 2.0,
+            NodeState::Slip | NodeState::Contact => 1.0,
+            NodeState::Separated => 0.0,
+        } + 0.06 * k as f64;
+        st = st.add(Series::new(
+            label.to_string(),
+            l.nodes.iter().map(|n| (n.x, code(n.state))).collect(),
+            Style::Markers,
+        ));
+    }
+    any.then_some([tr, sv, st])
 }
 
 #[cfg(test)]

@@ -148,61 +148,8 @@ fn hysteresis(
     }
     let solver = runs.first().map(|(_, x)| x.solver.name()).unwrap_or("");
     let mut series: Vec<Curve> = vec![(format!("{solver}, substep ends"), pts.clone(), Style::LineMarkers)];
-    let s = &r.scene;
-    if let Some((p, q_star)) = md_pattern(s) {
-        let h = Hertz2D::from_load(p, s.radius(), s.contact_modulus());
-        let mu = s.friction();
-        // The half-plane's datum is the material point at depth D; theory's log datum is D' = D e^(1/(2(1 − ν)))
-        // (tests/history.rs derives it); the wheel's shift is minus the counter-body's δ.
-        let datum = match s.body() {
-            crate::scene::Body::HalfPlane { datum_depth, .. } => *datum_depth,
-            crate::scene::Body::Bem { .. } => s.radius(),
-        };
-        let d_prime = datum * (0.5 / (1.0 - s.wheel().material.poisson_ratio)).exp();
-        let delta =
-            |path: TangentialPath, q: f64| -theory::md_displacement(&h, mu, s.contact_modulus(), d_prime, path, q);
-        let qs: Vec<f64> = (0..=100).map(|i| q_star * (i as f64 / 50.0 - 1.0)).collect();
-        let mut curve: Vec<(f64, f64)> =
-            (0..=50).map(|i| q_star * i as f64 / 50.0).map(|q| (delta(TangentialPath::Loading, q), q)).collect();
-        curve.extend(qs.iter().rev().map(|&q| (delta(TangentialPath::Unloading { q_star }, q), q)));
-        curve.extend(qs.iter().map(|&q| (delta(TangentialPath::Reloading { q_star }, q), q)));
-        series.push(("Mindlin–Deresiewicz (2D)".into(), curve, Style::Dashed));
-        let w: f64 = runs
-            .iter()
-            .filter(|(k, _)| r.steps[*k].step >= 2 && r.steps[*k].step <= 3)
-            .filter_map(|(_, x)| x.history.as_ref().map(|h| h.dissipated))
-            .sum();
-        let exact = theory::md_cycle_dissipation(mu, p, s.contact_modulus(), q_star);
-        let in_cycle = |k: usize| (2..=3).contains(&r.steps[k].step);
-        let complete =
-            runs.iter().filter(|(k, _)| in_cycle(*k)).count() == (0..r.steps.len()).filter(|&k| in_cycle(k)).count();
-        if r.scene.document().steps.len() >= 4 && !complete {
-            writeln!(md, "The cycle +Q* → −Q* → +Q* did not complete ({solver} failed in it): no cycle energy.\n")
-                .unwrap();
-        } else if r.scene.document().steps.len() >= 4 {
-            writeln!(
-                md,
-                "Energy dissipated in the cycle +Q* → −Q* → +Q* (Q* = {q_star}, {solver}): {w:.6e}; Mindlin–Deresiewicz \
-                 in 2D, W = (2μ²P²/(πE*))[1 − γ² + 2γ ln γ] with γ = 1 − Q*/(μP): {exact:.6e} (relative difference \
-                 {:+.1e}).\n",
-                w / exact - 1.0
-            )
-            .unwrap();
-        }
-        let worst = runs
-            .iter()
-            .filter_map(|(k, x)| {
-                let q = x.resultants?.tangential;
-                Some((x.rigid_body?.tangential? - delta(md_branch(r, *k, q_star), q)).abs())
-            })
-            .fold(0.0, f64::max);
-        let span = delta(TangentialPath::Loading, q_star).abs();
-        writeln!(
-            md,
-            "Largest distance of the computed shift from the theory's loop: {:.1e} of the loop's half-span.\n",
-            worst / span
-        )
-        .unwrap();
+    if let Some(curve) = md_loop(r, runs, solver, md) {
+        series.push(curve);
     }
     let mut chart = Chart::new(format!("{name}: tangential force against rigid shift"), "rigid shift δ_T", "Q")
         .x_unit(units.length.clone())
@@ -214,6 +161,79 @@ fn hysteresis(
     chart.write(&out.join(&file)).map_err(plot_err)?;
     figs.push((format!("{name}: Q against δ_T"), file.clone()));
     writeln!(md, "![hysteresis loop]({file})\n").unwrap();
+    opened_loop(name, &pts, &series, units, out, md, figs)?;
+    Ok(())
+}
+
+/// Mindlin–Deresiewicz's loop for a path of its pattern ([`md_pattern`]), with the cycle's dissipation and the
+/// distance of the computed shifts from the loop written to `md`; `None` for other paths.
+fn md_loop(r: &Report, runs: &[(usize, &SolverRun)], solver: &str, md: &mut String) -> Option<Curve> {
+    let s = &r.scene;
+    let (p, q_star) = md_pattern(s)?;
+    let h = Hertz2D::from_load(p, s.radius(), s.contact_modulus());
+    let mu = s.friction();
+    // The half-plane's datum is the material point at depth D; theory's log datum is D' = D e^(1/(2(1 − ν)))
+    // (tests/history.rs derives it); the wheel's shift is minus the counter-body's δ.
+    let datum = match s.body() {
+        crate::scene::Body::HalfPlane { datum_depth, .. } => *datum_depth,
+        crate::scene::Body::Bem { .. } => s.radius(),
+    };
+    let d_prime = datum * (0.5 / (1.0 - s.wheel().material.poisson_ratio)).exp();
+    let delta = |path: TangentialPath, q: f64| -theory::md_displacement(&h, mu, s.contact_modulus(), d_prime, path, q);
+    let qs: Vec<f64> = (0..=100).map(|i| q_star * (i as f64 / 50.0 - 1.0)).collect();
+    let mut curve: Vec<(f64, f64)> =
+        (0..=50).map(|i| q_star * i as f64 / 50.0).map(|q| (delta(TangentialPath::Loading, q), q)).collect();
+    curve.extend(qs.iter().rev().map(|&q| (delta(TangentialPath::Unloading { q_star }, q), q)));
+    curve.extend(qs.iter().map(|&q| (delta(TangentialPath::Reloading { q_star }, q), q)));
+    let w: f64 = runs
+        .iter()
+        .filter(|(k, _)| r.steps[*k].step >= 2 && r.steps[*k].step <= 3)
+        .filter_map(|(_, x)| x.history.as_ref().map(|h| h.dissipated))
+        .sum();
+    let exact = theory::md_cycle_dissipation(mu, p, s.contact_modulus(), q_star);
+    let in_cycle = |k: usize| (2..=3).contains(&r.steps[k].step);
+    let complete =
+        runs.iter().filter(|(k, _)| in_cycle(*k)).count() == (0..r.steps.len()).filter(|&k| in_cycle(k)).count();
+    if r.scene.document().steps.len() >= 4 && !complete {
+        writeln!(md, "The cycle +Q* → −Q* → +Q* did not complete ({solver} failed in it): no cycle energy.\n").unwrap();
+    } else if r.scene.document().steps.len() >= 4 {
+        writeln!(
+            md,
+            "Energy dissipated in the cycle +Q* → −Q* → +Q* (Q* = {q_star}, {solver}): {w:.6e}; Mindlin–Deresiewicz \
+             in 2D, W = (2μ²P²/(πE*))[1 − γ² + 2γ ln γ] with γ = 1 − Q*/(μP): {exact:.6e} (relative difference \
+             {:+.1e}).\n",
+            w / exact - 1.0
+        )
+        .unwrap();
+    }
+    let worst = runs
+        .iter()
+        .filter_map(|(k, x)| {
+            let q = x.resultants?.tangential;
+            Some((x.rigid_body?.tangential? - delta(md_branch(r, *k, q_star), q)).abs())
+        })
+        .fold(0.0, f64::max);
+    let span = delta(TangentialPath::Loading, q_star).abs();
+    writeln!(
+        md,
+        "Largest distance of the computed shift from the theory's loop: {:.1e} of the loop's half-span.\n",
+        worst / span
+    )
+    .unwrap();
+    Some(("Mindlin–Deresiewicz (2D)".into(), curve, Style::Dashed))
+}
+
+/// The loop with the chord through its tips subtracted, so that its width shows (the loop is thin beside the
+/// elastic compliance): the shifts at the largest and smallest Q define the chord.
+fn opened_loop(
+    name: &str,
+    pts: &[(f64, f64)],
+    series: &[Curve],
+    units: &Units,
+    out: &Path,
+    md: &mut String,
+    figs: &mut Figures,
+) -> Result<()> {
     // The loop is thin beside the elastic compliance: subtract the chord through the computed loop's tips
     // (the shifts at the largest and smallest Q) so that its width can be seen.
     let hi = pts.iter().copied().max_by(|a, b| a.1.total_cmp(&b.1));
@@ -226,7 +246,7 @@ fn hysteresis(
             let mut chart = Chart::new(format!("{name}: loop less its chord"), "δ_T − chord(Q)", "Q")
                 .x_unit(units.length.clone())
                 .y_unit(units.line_load());
-            for (label, p, style) in &series {
+            for (label, p, style) in series {
                 chart = chart.add(Series::new(label.clone(), open(p), *style));
             }
             let file = format!("figures/{name}-hysteresis-opened.svg");

@@ -63,6 +63,33 @@ fn stick_range(run: &SolverRun) -> String {
     }
 }
 
+/// The tangential force of a run ("–" without one).
+fn force(r: &SolverRun) -> String {
+    r.resultants.map(|f| format!("{:.4e}", f.tangential)).unwrap_or_else(|| "–".into())
+}
+
+/// The table row of a seed scene and its solved steady counterpart.
+fn compared_row(name: &str, rep: &Report, how: &str, seed: &SolverRun, st: &SolverRun) -> String {
+    let counts =
+        |r: &SolverRun| r.rolling.as_ref().map(|x| format!("{} / {}", x.stick_nodes_moving, x.slip_nodes_not_opposed));
+    let xi = |r: &SolverRun| r.rolling.as_ref().and_then(|x| x.creepage).map(|v| format!("{v:.4e}"));
+    format!(
+        "| {name} | {} | {how} | {} | {} | {} | {} | {} | {} | {} |\n",
+        rep.scene.friction(),
+        force(seed),
+        force(st),
+        xi(st).unwrap_or_else(|| "–".into()),
+        stick_range(seed),
+        stick_range(st),
+        counts(seed).unwrap_or_else(|| "–".into()),
+        if xi(st).is_some() {
+            counts(st).unwrap_or_else(|| "–".into())
+        } else {
+            "not evaluable: ξ indeterminate at full slip".into()
+        },
+    )
+}
+
 /// Table, slip-velocity figures and the inconsistency counts; nothing when no reference scene is a seed rolling scene.
 pub fn seed_vs_steady(
     reports: &BTreeMap<String, Report>,
@@ -80,30 +107,9 @@ pub fn seed_vs_steady(
         let sr = run_scene(&steady)?;
         let st = lemke(&sr);
         let units = Units::parse(rep.scene.units());
-        let q = |r: &SolverRun| r.resultants.map(|f| format!("{:.4e}", f.tangential)).unwrap_or_else(|| "–".into());
-        let counts = |r: &SolverRun| {
-            r.rolling.as_ref().map(|x| format!("{} / {}", x.stick_nodes_moving, x.slip_nodes_not_opposed))
-        };
-        let xi = |r: &SolverRun| r.rolling.as_ref().and_then(|x| x.creepage).map(|v| format!("{v:.4e}"));
         match st {
             Some(st) => {
-                writeln!(
-                    rows,
-                    "| {name} | {} | {how} | {} | {} | {} | {} | {} | {} | {} |",
-                    rep.scene.friction(),
-                    q(seed),
-                    q(st),
-                    xi(st).unwrap_or_else(|| "–".into()),
-                    stick_range(seed),
-                    stick_range(st),
-                    counts(seed).unwrap_or_else(|| "–".into()),
-                    if xi(st).is_some() {
-                        counts(st).unwrap_or_else(|| "–".into())
-                    } else {
-                        "not evaluable: ξ indeterminate at full slip".into()
-                    },
-                )
-                .unwrap();
+                rows.push_str(&compared_row(name, rep, how, seed, st));
                 // The group of the seed's figures this scene belongs to: one chart per drive.
                 let key = how.to_string();
                 let chart = charts.entry(key.clone()).or_insert_with(|| {
@@ -126,13 +132,13 @@ pub fn seed_vs_steady(
                     .runs
                     .iter()
                     .find(|r| r.solver == "lemke")
-                    .map(|r| (r.status.to_string(), r.message.clone()))
+                    .map(|r| (r.status.to_string(), r.explanation()))
                     .unwrap_or_else(|| ("not run".into(), "the steady counterpart has no Lemke run".into()));
                 writeln!(
                     rows,
                     "| {name} | {} | {how} | {} | {status}: {message} | | | | | |",
                     rep.scene.friction(),
-                    q(seed)
+                    force(seed)
                 )
                 .unwrap();
             }
