@@ -199,6 +199,7 @@ fn expected_header() -> Vec<&'static str> {
         "t_total_min",
         "t_total_max",
         "timing_runs",
+        "setup",
         "message",
     ]);
     h

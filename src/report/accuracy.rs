@@ -767,12 +767,12 @@ mod tests {
         let cl = classes(&sw, &refs, "err", &plain_cost);
         assert_eq!(cl.len(), 7, "seven meshes, seven entries");
         let all: Vec<&Class> = cl.iter().collect();
-        let mut on: Vec<&str> =
+        let mut on: Vec<String> =
             pareto_front(&all[..6], &plain_cost).iter().map(|c| cell(c.fastest, "contact_elements")).collect();
         on.sort();
         assert_eq!(on, vec!["1", "3", "5", "6"]);
         // With h: equal time and clearly more accurate beats (the second rule); a and e leave the front.
-        let mut on: Vec<&str> =
+        let mut on: Vec<String> =
             pareto_front(&all, &plain_cost).iter().map(|c| cell(c.fastest, "contact_elements")).collect();
         on.sort();
         assert_eq!(on, vec!["3", "6", "7"]);

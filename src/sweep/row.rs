@@ -9,7 +9,7 @@
 //! `scene, element, contact_elements, contact_nodes, solver, formulation, status, problem_size`; the registry's
 //! work counters ([`crate::solvers::work_columns`]); the figures of the run (resultants, fits, the errors against the
 //! references that apply, [`crate::references::Metrics`]), the pair and the rigid motion; the timings
-//! ([`TIMING_COLUMNS`]); `message`. A cell is empty where a value does not apply.
+//! ([`TIMING_COLUMNS`], with `setup`: whether the case's model was built for it or reused); `message`. A cell is empty where a value does not apply.
 
 use crate::error::{Error, Result};
 use crate::references::Metrics;
@@ -118,6 +118,9 @@ pub struct SweepRow {
     pub t_total_max: Option<f64>,
     /// Timed repeats.
     pub timing_runs: Option<usize>,
+    /// Whether the model (assembly, condensation) was built for this case or reused from another case of the same
+    /// bodies and mesh (its times are then the model's one build, not spent again).
+    pub setup: Option<crate::results::Setup>,
     /// The solver's explanation, or why the case could not run.
     pub message: String,
     /// Figures a reader derives from the rows, by name (not written to the CSV; e.g. the report's errors against a
@@ -165,6 +168,7 @@ impl SweepRow {
             t_total_min: None,
             t_total_max: None,
             timing_runs: None,
+            setup: None,
             message: String::new(),
             derived: Default::default(),
         }
@@ -336,6 +340,7 @@ pub const TIMING_COLUMNS: &[&str] = &[
     "t_total_min",
     "t_total_max",
     "timing_runs",
+    "setup",
 ];
 
 /// A cell's value before formatting.
@@ -498,6 +503,20 @@ static COLUMNS: &[Column] = &[
     num_col!("t_total_min", t_total_min),
     num_col!("t_total_max", t_total_max),
     int_col!("timing_runs", timing_runs),
+    Column {
+        name: "setup",
+        get: |r| {
+            Cell::Text(
+                r.setup
+                    .map(|s| if s == crate::results::Setup::Built { "built" } else { "reused" }.to_string())
+                    .unwrap_or_default(),
+            )
+        },
+        set: |r, s| {
+            r.setup = named(s)?;
+            Ok(())
+        },
+    },
     Column {
         name: "message",
         get: |r| Cell::Text(r.message.clone()),

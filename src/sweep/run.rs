@@ -81,6 +81,7 @@ fn set_timing(row: &mut SweepRow, t: &Timing, spread: Option<(f64, f64, usize)>)
     row.t_total_min = Some(lo);
     row.t_total_max = Some(hi);
     row.timing_runs = Some(k);
+    row.setup = Some(t.setup);
 }
 
 /// Rows for a case that could not be built or run: one per solver its scene asks for (by name; `all` when it asks
