@@ -55,7 +55,6 @@ fn end_to_end(c: &mut Criterion) {
     faer::set_global_parallelism(faer::Par::Seq);
     let mut s = seed_scene();
     s = s.edit(|d| d.solvers.use_ = vec!["lemke".into()]).unwrap();
-    let p = Path::new("seed");
     c.bench_function("seed_end_to_end/lemke", |b| b.iter(|| black_box(run_scene(&s).unwrap())));
 }
 
@@ -205,7 +204,7 @@ fn formulation_and_normtang(c: &mut Criterion) {
 /// The issue-14 size: 3300 contact nodes on the finite wheel (9904 LCP unknowns).
 fn scale(c: &mut Criterion) {
     use rollbem::solvers::active_set::ActiveSet;
-    use rollbem::solvers::{Solver, Status};
+    use rollbem::solvers::Solver;
     faer::set_global_parallelism(faer::Par::rayon(0));
     let mut g = c.benchmark_group("scale");
     g.sample_size(10);

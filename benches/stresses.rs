@@ -72,7 +72,6 @@ fn stresses(c: &mut Criterion) {
     g.sample_size(20);
     for (name, model) in [("half_plane", "half_plane"), ("bem_wheel", "bem")] {
         let s = scene(model);
-        let path = Path::new("bench");
         let report = run_scene(&s).expect("bench scene runs");
         assert_eq!(report.runs[0].status, rollbem::solvers::Status::Solved, "{}", report.runs[0].message);
         let nodes = report.runs[0].nodes.clone();

@@ -161,6 +161,22 @@ fn hertz_checks(scene: &Scene, element: ElementKind, element_length: f64, r: &So
     }
 }
 
+/// The run-level warnings of a scene's runs: a contact with too few elements across it, one line per distinct finding
+/// with the solvers it concerns.
+pub fn run_warnings(scene: &Scene, element: ElementKind, element_length: f64, runs: &[SolverRun]) -> Vec<String> {
+    let mut found: Vec<(String, Vec<&str>)> = Vec::new();
+    for run in runs {
+        let c = resolution_check(scene, element, element_length, run);
+        if let Some(note) = c.filter(|c| !c.pass).and_then(|c| c.note) {
+            match found.iter_mut().find(|(n, _)| *n == note) {
+                Some((_, solvers)) => solvers.push(run.solver.name()),
+                None => found.push((note, vec![run.solver.name()])),
+            }
+        }
+    }
+    found.into_iter().map(|(note, solvers)| format!("{}: {note}", solvers.join(", "))).collect()
+}
+
 /// Every check of a scene's runs. `bounds[k]` is run k's residual check bound ([`crate::solvers::residual_bounds`]),
 /// `element` the element family, `element_length` the contact element length (user's unit).
 pub fn make_checks(

@@ -209,6 +209,12 @@ pub struct MeshSpec {
 }
 
 impl MeshSpec {
+    /// The BEM wheel's mesh of a scene, with its support (`None` for the half-plane model).
+    pub fn of_scene(scene: &crate::scene::Scene) -> Option<(Support, MeshSpec)> {
+        let (support, element, other_elements) = scene.bem_wheel()?;
+        Some((support, MeshSpec { element, zone: *scene.zone(), other_elements }))
+    }
+
     /// A mesh with a contact arc of `arc_deg` degrees.
     pub fn arc(element: ElementKind, arc_deg: f64, contact_elements: usize, other_elements: usize) -> MeshSpec {
         MeshSpec { element, zone: ContactZone::arc(arc_deg, contact_elements), other_elements }

@@ -497,3 +497,13 @@ fn summary(nodes: &[NodeResult], peak_pressure: f64, pressure_scale: f64) -> Con
         nodes_slip: nodes.iter().filter(|nd| nd.state == NodeState::Slip).count(),
     }
 }
+
+/// The stick zone's edges (left, right), each midway between the outermost sticking node and its slipping or
+/// separated neighbour (user's units); `None` when nothing sticks.
+pub fn stick_edges(nodes: &[NodeResult]) -> Option<(f64, f64)> {
+    let first = nodes.iter().position(|n| n.state == NodeState::Stick)?;
+    let last = nodes.iter().rposition(|n| n.state == NodeState::Stick)?;
+    let left = if first > 0 { 0.5 * (nodes[first].x + nodes[first - 1].x) } else { nodes[first].x };
+    let right = if last + 1 < nodes.len() { 0.5 * (nodes[last].x + nodes[last + 1].x) } else { nodes[last].x };
+    Some((left, right))
+}

@@ -67,16 +67,6 @@ pub struct Metrics {
     pub carter_creepage_err: Option<f64>,
 }
 
-/// The stick zone's edges (left, right), each midway between the outermost sticking node and its slipping or
-/// separated neighbour (user's units); `None` when nothing sticks.
-pub fn stick_edges(nodes: &[crate::post::NodeResult]) -> Option<(f64, f64)> {
-    let first = nodes.iter().position(|n| n.state == NodeState::Stick)?;
-    let last = nodes.iter().rposition(|n| n.state == NodeState::Stick)?;
-    let left = if first > 0 { 0.5 * (nodes[first].x + nodes[first - 1].x) } else { nodes[first].x };
-    let right = if last + 1 < nodes.len() { 0.5 * (nodes[last].x + nodes[last + 1].x) } else { nodes[last].x };
-    Some((left, right))
-}
-
 /// Hertz at load `p` with the scene's pair modulus E*.
 pub fn hertz_at(scene: &Scene, p: f64) -> Hertz {
     Hertz::with_modulus(scene.radius(), scene.contact_modulus(), p)
@@ -189,7 +179,7 @@ pub fn metrics(scene: &Scene, run: &SolverRun) -> Metrics {
         m.carter_q_over_mup_exact = Some(qmup);
         m.carter_c_over_a_exact = Some(ca);
         let c_exact = ca * h.half_width;
-        match stick_edges(&run.nodes) {
+        match crate::post::stick_edges(&run.nodes) {
             Some((left, right)) => {
                 let (c, centre) = (0.5 * (right - left), 0.5 * (right + left));
                 m.carter_c_over_a = Some(c / h.half_width);
@@ -227,7 +217,7 @@ pub fn metrics(scene: &Scene, run: &SolverRun) -> Metrics {
             let elem = element_length(scene);
             m.cm_c_over_a_exact = Some(ce / h.half_width);
             let nodes = &run.nodes;
-            if let Some((left, right)) = stick_edges(nodes) {
+            if let Some((left, right)) = crate::post::stick_edges(nodes) {
                 let (c, centre) = (0.5 * (right - left), 0.5 * (right + left));
                 m.cm_c_over_a = Some(c / h.half_width);
                 m.cm_c_err_elements = Some((c - ce) / elem);

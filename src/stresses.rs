@@ -43,9 +43,9 @@
 //!
 //! # Where and when
 //! Only a scene with `[stresses]` computes anything ("simulate only the effects a scene calls for"). Every solved
-//! run gets its field ([`crate::run::run_scene`]); a load path computes it at the end of each step (its last
+//! run gets its field ([`crate::pipeline::run_scene`]); a load path computes it at the end of each step (its last
 //! substep; the intermediate substeps of a step are increments towards that end and are not reported), so the
-//! path's final runs carry the field at the path's end ([`crate::history`]).
+//! path's final runs carry the field at the path's end ([`crate::pipeline::path`]).
 //!
 //! # Output
 //! `runs[].stresses` of the result document ([`StressResult`]): the grid, the quantities, `maxima.<quantity> =

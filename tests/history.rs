@@ -4,8 +4,8 @@
 //! matter, and transient rolling from rest settling on the steady-rolling solution of the same mesh.
 
 use rollbem::pipeline::run_scene;
+use rollbem::post::stick_edges;
 use rollbem::post::NodeState;
-use rollbem::references::stick_edges;
 use rollbem::results::{Report, SolverRun};
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;

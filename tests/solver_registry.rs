@@ -17,7 +17,7 @@ fn load(rel: &str) -> (Scene, std::path::PathBuf) {
 #[test]
 fn lemke_dense_is_selectable_from_a_scene_and_agrees_with_lemke() {
     for rel in ["scenes/seed-fig6-constant.toml", "scenes/seed-fig17-mu07.toml", "scenes/cattaneo-decoupled.toml"] {
-        let (mut s, p) = load(rel);
+        let (mut s, _) = load(rel);
         s = s.edit(|d| d.solvers.use_ = vec!["lemke".into(), "lemke_dense".into()]).unwrap();
         let r = run_scene(&s).unwrap();
         let names: Vec<&str> = r.runs.iter().map(|x| x.solver.name()).collect();

@@ -145,7 +145,7 @@ fn item1_a_contact_cut_off_by_the_candidate_zone_is_not_solved_and_says_how_wide
     let advised = steel("steel-advised", "1e7")
         .replace("contact_arc_deg = 1.0", &format!("contact_arc_deg = {arc}"))
         .replace("contact_elements = 100", &format!("contact_elements = {elements}"));
-    let (s2, p2) = scene_of(dir.path(), "advised.toml", &advised);
+    let (s2, _) = scene_of(dir.path(), "advised.toml", &advised);
     let r2 = run_scene(&s2).unwrap();
     assert_eq!(r2.runs[0].status, Status::Solved, "{}", r2.runs[0].message);
     // `check` and `run` both exit 5 (a requested solver did not solve: `rollbem::exit`) and say why.
@@ -158,7 +158,7 @@ fn item1_a_contact_cut_off_by_the_candidate_zone_is_not_solved_and_says_how_wide
     assert!(text(&o).0.contains("contact_at_zone_edge"));
 
     // P = 1e12: Hertz's a = 1.59 m on a 0.46 m wheel: no zone can hold it, and the message says so.
-    let (s, p) = scene_of(dir.path(), "huge.toml", &steel("steel-huge", "1e12"));
+    let (s, _) = scene_of(dir.path(), "huge.toml", &steel("steel-huge", "1e12"));
     let run = &run_scene(&s).unwrap().runs[0];
     assert!(hertz_a(1e12, 0.46, 210e9, 0.3) > 0.46);
     assert_eq!(run.status, Status::ContactAtZoneEdge, "{}", run.explanation());
@@ -296,7 +296,7 @@ fn item4_a_free_wheel_under_a_tangential_load_is_never_solved() {
 
     // The steel wheel: the pressure centre would need to be at −R̄Q/P ≈ −0.046 m, outside the ±4.0 mm zone, so no
     // contact forces carry the loads: the LP proves it, and Lemke's ray becomes `infeasible` with the proof.
-    let (s, p) = scene_of(dir.path(), "steel-free.toml", STEEL_FREE);
+    let (s, _) = scene_of(dir.path(), "steel-free.toml", STEEL_FREE);
     let run = &run_scene(&s).unwrap().runs[0];
     assert_eq!(run.status, Status::Infeasible, "{}", run.explanation());
     assert!(
@@ -322,7 +322,7 @@ fn item4_a_free_wheel_under_a_tangential_load_is_never_solved() {
     // zone, and Q = 0.1P < μP), contact forces exist and the LP says so.
     let depth = -problem.flex.y.iter().sum::<f64>() / problem.n() as f64 * problem.flex.scales.length;
     let held = STEEL_FREE.replace("moment = 0.0", &format!("moment = {:?}", depth * 1e6));
-    let (s, p) = scene_of(dir.path(), "steel-held.toml", &held);
+    let (s, _) = scene_of(dir.path(), "steel-held.toml", &held);
     let built = rollbem::source::build(&s, rollbem::pipeline::stages::blocks_for(&s)).unwrap();
     let problem = rollbem::pipeline::stages::scene_problem(&s, &built.flex).unwrap();
     assert_eq!(rollbem::admissible::admissibility(&problem), rollbem::admissible::Admissibility::Feasible);
@@ -334,7 +334,7 @@ fn item4_a_huge_rigid_shift_is_gross_sliding_or_refused_never_a_wrong_solved() {
     // prescribed shift (10 R) is exact: the answer must be gross sliding from rest, Q = −μP with every loaded node
     // slipping at |q| = μp (theory), or a refusal — never another `solved`.
     let dir = tempfile::tempdir().unwrap();
-    let (s, p) =
+    let (s, _) =
         scene_of(dir.path(), "shift.toml", &free_wheel("normal_load = {P}\ntangential_shift = 10.0\nrotation = 0.0"));
     let r = run_scene(&s).unwrap();
     let mut solved = 0;
@@ -465,12 +465,12 @@ fn item5_the_half_plane_datum_term_is_not_called_a_mesh_asymmetry() {
     let dir = tempfile::tempdir().unwrap();
     // Under load control the datum's rank-one column term is absorbed by the approach; what is left is the
     // half-plane's Toeplitz kernel on a uniform mesh, symmetric to round-off (theory), so no warning.
-    let (s, p) = scene_of(dir.path(), "load.toml", HALF_PLANE);
+    let (s, _) = scene_of(dir.path(), "load.toml", HALF_PLANE);
     let d = run_scene(&s).unwrap().diagnostics;
     assert!(d.flexibility_asymmetry < 1e-12, "{}", d.flexibility_asymmetry);
     assert!(d.warnings.is_empty(), "{:?}", d.warnings);
     // With the approach prescribed the term matters (the full K_NN is measured) and the warning says what it is.
-    let (s, p) =
+    let (s, _) =
         scene_of(dir.path(), "approach.toml", &HALF_PLANE.replace("normal_load = 20000.0", "normal_approach = 0.1"));
     let d = run_scene(&s).unwrap().diagnostics;
     assert!(d.flexibility_asymmetry > 1e-2, "{}", d.flexibility_asymmetry);

@@ -130,7 +130,10 @@ impl Model {
         if stages::blocks_for(scene) == Blocks::All && self.blocks == Blocks::Normal {
             return Err(differs("contact.friction", "friction or rolling (the model holds the normal problem only)"));
         }
-        if scene.stresses().is_some() && scene.bem_mesh().is_some() && self.built.boundary.is_none() {
+        if scene.stresses().is_some()
+            && crate::mesh::MeshSpec::of_scene(scene).is_some()
+            && self.built.boundary.is_none()
+        {
             return Err(differs("stresses", "asking for the BEM wheel's stresses"));
         }
         Ok(())

@@ -85,7 +85,7 @@ pub fn solvers_for(scene: &Scene, problem: &ContactProblem) -> Result<Vec<Box<dy
     let mut out = Vec::new();
     for e in REGISTRY {
         let named = set.names(e.id);
-        if !named && !(set.all && e.in_all) {
+        if !(named || set.all && e.in_all) {
             continue;
         }
         let solver = e.id.build(&set.settings);
@@ -226,8 +226,9 @@ pub fn assemble_report(
 ) -> Report {
     let flex = &built.flex;
     let hertz = if scene.friction() > 0.0 { None } else { reference_hertz(scene, &runs) };
-    let checks =
-        make_checks(scene, built.info.element, built.info.contact_element_length, &runs, bounds, hertz.as_ref());
+    let (element, length) = (built.info.element, built.info.contact_element_length);
+    let checks = make_checks(scene, element, length, &runs, bounds, hertz.as_ref());
+    let warnings = crate::checks::run_warnings(scene, element, length, &runs);
     Report {
         schema: crate::results::SCHEMA_VERSION,
         scene: scene.clone(),
@@ -246,6 +247,7 @@ pub fn assemble_report(
         runs,
         checks,
         steps,
+        warnings,
     }
 }
 

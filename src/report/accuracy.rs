@@ -309,7 +309,7 @@ impl Names<'_> {
     fn label_or(&self, r: &Row, keys: &[String], column: &str) -> String {
         let l = self.sw.label(r, keys);
         if l.is_empty() {
-            cell(r, column).into()
+            cell(r, column)
         } else {
             l
         }

@@ -331,7 +331,12 @@ fn save(dir: &Path, out: &mut Vec<(String, String)>, chart: Chart, file: &str, t
 
 /// The seed's groups of figures: tractions (Figs. 7–9 / 12–13 / 16–17), slip velocity (Figs. 10 / 14 / 18) and
 /// state maps (Figs. 11 / 15), each from its reference scenes (name, label).
-const SEED_GROUPS: [(&str, &str, &[(&str, &str)]); 3] = [
+const SEED_GROUPS: [SeedGroup; 3] = SEED;
+
+/// A group of the seed's figures: (file tag, title, its scenes as (name, label)).
+type SeedGroup = (&'static str, &'static str, &'static [(&'static str, &'static str)]);
+
+const SEED: [SeedGroup; 3] = [
     (
         "07-10",
         "Figs. 7–10 (normal displacement)",

@@ -72,7 +72,7 @@ impl Report {
                 let rb = run.rigid_body;
                 // A substep judged not an answer keeps its nodes as evidence; its row reports no stick zone or counts.
                 let nodes = run.answer_nodes();
-                let edges = crate::references::stick_edges(nodes);
+                let edges = crate::post::stick_edges(nodes);
                 let count = |s: crate::post::NodeState| nodes.iter().filter(|n| n.state == s).count();
                 let e = run.history.as_ref();
                 writeln!(

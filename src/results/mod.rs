@@ -303,6 +303,10 @@ pub struct Report {
     pub steps: Vec<StepResult>,
     /// Checks against theory and between solvers.
     pub checks: Vec<Check>,
+    /// Run-level warnings: a contact with too few elements across it (a failed check in `check`, a warning in
+    /// `run`), one line per distinct finding with the solvers it concerns.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
 }
 
 impl Report {

@@ -71,7 +71,7 @@ fn header(out: &mut String, r: &Report) {
             bytes as f64 / 1e9
         );
     }
-    for w in d.warnings.iter().cloned().chain(run_warnings(r)) {
+    for w in d.warnings.iter().chain(&r.warnings) {
         w!(out, "WARNING: {w}");
     }
     if let Some(h) = &r.references.hertz {
@@ -208,22 +208,6 @@ pub fn check_line(c: &Check) -> String {
         ),
         CheckKind::Verdict | CheckKind::NotApplicable => format!("[{mark}] {}{note}", c.name),
     }
-}
-
-/// The run-level warnings of a report: a contact with too few elements across it (a failed check in `check`, a
-/// warning in `run`), one line per distinct finding with the solvers it concerns.
-pub fn run_warnings(r: &Report) -> Vec<String> {
-    let mut found: Vec<(String, Vec<&str>)> = Vec::new();
-    for run in &r.runs {
-        let c = crate::checks::resolution_check(&r.scene, r.mesh.element, r.mesh.contact_element_length, run);
-        if let Some(note) = c.filter(|c| !c.pass).and_then(|c| c.note) {
-            match found.iter_mut().find(|(n, _)| *n == note) {
-                Some((_, solvers)) => solvers.push(run.solver.name()),
-                None => found.push((note, vec![run.solver.name()])),
-            }
-        }
-    }
-    found.into_iter().map(|(note, solvers)| format!("{}: {note}", solvers.join(", "))).collect()
 }
 
 /// A load path's summary: per solver, how far it got, the dissipated energy and its hardest substep.

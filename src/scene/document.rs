@@ -35,7 +35,7 @@ pub struct SceneDocument {
     /// Absent when the scene gives a load path (`[[steps]]`).
     #[serde(default)]
     pub drive: DriveTable,
-    /// A load path: quasi-static steps with memory ([`crate::history`]), instead of `[drive]`.
+    /// A load path: quasi-static steps with memory ([`crate::pipeline::path`]), instead of `[drive]`.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub steps: Vec<StepTable>,
     /// Optional rolling: steady-state rolling, or the seed's slip velocity after a static solve.

@@ -379,7 +379,7 @@ pub enum RollingMode {
     /// The seed's formulation: a static solve, then eq. 12.
     Seed,
     /// Transient rolling through a load path (`[[steps]]` with `roll`): each step's slip is the slip increment of the
-    /// material, which the contact carries along by the rolled distance ([`crate::history`]).
+    /// material, which the contact carries along by the rolled distance ([`crate::pipeline::path`]).
     Transient,
 }
 
@@ -682,12 +682,10 @@ impl Scene {
         &self.zone
     }
 
-    /// The BEM wheel's mesh specification (`None` for the half-plane).
-    pub fn bem_mesh(&self) -> Option<(Support, crate::mesh::MeshSpec)> {
+    /// The BEM wheel's support, element family and other elements (`None` for the half-plane).
+    pub fn bem_wheel(&self) -> Option<(Support, ElementKind, usize)> {
         match self.body {
-            Body::Bem { support, element, other_elements } => {
-                Some((support, crate::mesh::MeshSpec { element, zone: self.zone, other_elements }))
-            }
+            Body::Bem { support, element, other_elements } => Some((support, element, other_elements)),
             Body::HalfPlane { .. } => None,
         }
     }

@@ -45,7 +45,7 @@ pub struct Model {
 impl Model {
     /// The dimensionless model of a scene's BEM wheel (`None` for the half-plane model).
     pub fn of_scene(scene: &crate::scene::Scene) -> Option<Model> {
-        scene.bem_mesh().map(|(support, spec)| Model::new(scene.wheel(), support, &spec))
+        crate::mesh::MeshSpec::of_scene(scene).map(|(support, spec)| Model::new(scene.wheel(), support, &spec))
     }
 
     /// Build the dimensionless model of a wheel with its support and mesh (lengths in the user's unit).

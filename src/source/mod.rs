@@ -66,7 +66,7 @@ pub struct Built {
 
 /// Build the flexibility a (validated) scene describes, with the blocks it needs.
 pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
-    let Some((support, spec)) = scene.bem_mesh() else {
+    let Some((support, spec)) = crate::mesh::MeshSpec::of_scene(scene) else {
         let n = scene.zone().elements;
         let _stage = crate::progress::stage(|| format!("building the half-plane influence matrices ({n} elements)"));
         return half_plane::build(scene, blocks);

@@ -277,7 +277,7 @@ impl SweepRow {
     }
 }
 
-/// Where the columns of a sweep CSV are: the swept keys, the known columns (in [`COLUMNS`] order) and the work
+/// Where the columns of a sweep CSV are: the swept keys, the known columns (in the order of the module docs) and the work
 /// counters.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Header {

@@ -62,7 +62,7 @@ fn run_row(
     row.hertz_p0 = hertz.map(|h| h.peak_pressure);
     row.shift = r.rigid_body.and_then(|b| b.tangential);
     row.approach = r.rigid_body.map(|b| b.normal);
-    let edges = crate::references::stick_edges(r.answer_nodes()).filter(|_| scene.friction() > 0.0);
+    let edges = crate::post::stick_edges(r.answer_nodes()).filter(|_| scene.friction() > 0.0);
     row.stick_left = edges.map(|e| e.0);
     row.stick_right = edges.map(|e| e.1);
     row.creepage = r.rolling.as_ref().and_then(|x| x.creepage);
