@@ -78,3 +78,14 @@ fn a_frictionless_model_holds_the_normal_problem_only_and_says_so() {
     let e = model.solve(&frictional).unwrap_err().to_string();
     assert!(e.contains("contact.friction") && e.contains("normal problem only"), "{e}");
 }
+
+#[test]
+fn an_empty_solver_list_is_bad_input_not_an_empty_answer() {
+    // Before the model API, `solvers.use = []` in a scene built in code ran nothing and returned Ok (issue 20).
+    let base = carter();
+    let e = base.edit(|d| d.solvers.use_.clear()).unwrap_err();
+    assert!(matches!(e, rollbem::Error::Invalid { ref field, .. } if field == "solvers.use"), "{e}");
+    // And a named solver that does not apply is refused by name, not skipped.
+    let e = run_scene(&base.edit(|d| d.solvers.use_ = vec!["clarabel".into()]).unwrap()).unwrap_err();
+    assert!(e.to_string().contains("solvers.use: clarabel does not apply"), "{e}");
+}

@@ -297,6 +297,16 @@ fn bad_specs_are_errors_naming_the_key() {
     assert_eq!(f, "grid");
     let (f, _) = field_of(&format!("name = 'x'\nbase = '{base}'\n[[grid]]\n"));
     assert_eq!(f, "grid");
+    // Overlapping keys: a table and a key inside it, or a key given plainly and inside a zipped key.
+    let (f, m) = field_of(&format!(
+        "name = 'x'\nbase = '{base}'\n[[grid]]\n'drive' = [{{ normal_load = 1.0 }}]\n'drive.normal_load' = [2.0]\n"
+    ));
+    assert_eq!(f, "grid.drive.normal_load");
+    assert!(m.contains("overlaps `drive`"), "{m}");
+    let (f, _) = field_of(&format!(
+        "name = 'x'\nbase = '{base}'\n[[grid]]\n'wheel.radius' = [1.0]\n'wheel.radius & mesh.contact_elements' = [[1.0, 4]]\n"
+    ));
+    assert_eq!(f, "grid.wheel.radius");
     let (f, m) = field_of("name = 'x'\nbase = 'no/such/scene.toml'\n[[grid]]\n'mesh.contact_elements' = [4]\n");
     assert_eq!(f, "base");
     assert!(m.contains("no/such/scene.toml"), "{m}");
