@@ -317,7 +317,13 @@ impl SweepSpec {
     /// not non-empty arrays are [`Error::Invalid`] naming the key.
     pub fn from_file(path: &Path) -> Result<SweepSpec> {
         let text = std::fs::read_to_string(path).map_err(|source| Error::Io { path: path.to_path_buf(), source })?;
-        let doc: Table = toml::from_str(&text)
+        SweepSpec::from_toml(&text, path)
+    }
+
+    /// Parse and check the text of a sweep spec like [`SweepSpec::from_file`]; `path` names the file in errors and
+    /// is not read (nor is the base scene).
+    pub fn from_toml(text: &str, path: &Path) -> Result<SweepSpec> {
+        let doc: Table = toml::from_str(text)
             .map_err(|e| Error::Parse { path: path.to_path_buf(), message: e.to_string().trim_end().to_string() })?;
         for key in doc.keys() {
             if !["name", "description", "base", "grid", "timing_repeats"].contains(&key.as_str()) {
