@@ -142,6 +142,11 @@ pub const TIMING_COLUMNS: &[&str] = &[
 /// repeating small cases is cheap and is where the noise of a busy machine dominates.
 pub const REPEAT_BELOW_S: f64 = 2.0;
 
+/// Most cases a sweep spec may define: every case's scene is built before any runs ([`SweepSpec::cases`]), so a
+/// larger grid (a few keys of many values multiply quickly) is refused when the spec is read rather than by an
+/// allocation failure, or an overflow of the count, later.
+pub const MAX_CASES: usize = 100_000;
+
 /// The columns after the swept keys and before the work counters.
 const RESULT_COLUMNS_HEAD: &[&str] =
     &["scene", "element", "contact_elements", "contact_nodes", "solver", "formulation", "status", "problem_size"];
@@ -388,6 +393,18 @@ impl SweepSpec {
             }
             check_zipped(path, &flat)?;
             grid.push(flat);
+        }
+        let cases = grid.iter().try_fold(0usize, |sum, g| {
+            let product = g.values().try_fold(1usize, |p, v| p.checked_mul(v.as_array().map_or(1, Vec::len)));
+            product.and_then(|c| sum.checked_add(c))
+        });
+        if !cases.is_some_and(|c| c <= MAX_CASES) {
+            let count = cases.map_or(format!("more than {}", usize::MAX), |c| c.to_string());
+            return Err(invalid(
+                path,
+                "grid",
+                format!("{count} cases, more than a sweep may have ({MAX_CASES}): split it"),
+            ));
         }
         let timing_repeats = match doc.get("timing_repeats") {
             None => 1,
