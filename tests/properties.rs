@@ -6,8 +6,9 @@
 //! written into the repository. A failure is reported with the shrunk (minimal) input.
 //!
 //! 1. Random valid scenes (any unit, both element families, both supports, friction, mixed drives): `run_scene`
-//!    returns `Ok` or a clean `Err`, never panics; a `solved` run's solver-independent residual is within the
-//!    harness's bound and finite; an unsolved run carries no residuals, no resultants and a message.
+//!    returns `Ok` or a clean `Err`, never panics; a `solved` run has finite residuals, resultants and nodes, and
+//!    its reported nodes and resultants, checked here, show no tension, stay in the Coulomb cone and balance the
+//!    scene's loads within the harness's bound; an unsolved run carries no residuals, no resultants and a message.
 //! 2. Random small LCPs: positive-definite (hence P-) matrices are solved by both Lemke engines, which agree;
 //!    copositive-plus matrices are solved or proven infeasible (checked against a brute-force enumeration);
 //!    merely copositive matrices never make Lemke panic and any `Solved` answer is a valid solution.
