@@ -398,7 +398,7 @@ impl SweepSpec {
             let product = g.values().try_fold(1usize, |p, v| p.checked_mul(v.as_array().map_or(1, Vec::len)));
             product.and_then(|c| sum.checked_add(c))
         });
-        if !cases.is_some_and(|c| c <= MAX_CASES) {
+        if cases.is_none_or(|c| c > MAX_CASES) {
             let count = cases.map_or(format!("more than {}", usize::MAX), |c| c.to_string());
             return Err(invalid(
                 path,
