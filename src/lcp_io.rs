@@ -130,20 +130,23 @@ pub fn parse_with_remark(text: &str, path: &Path) -> Result<(Lcp, String)> {
             return Err(tok.error(format!("{what} is {s} but the problem size n is {n}: M must be n × n")));
         }
     }
-    // Column-major, as NM_new_from_file fills `matrix0`.
-    let data = if storage == NM_DENSE {
-        let mut data = Vec::with_capacity(n * n);
+    // Column-major, as NM_new_from_file fills `matrix0`. Memory stays proportional to the text until the whole file
+    // has been read: nothing reserves more numbers than the rest of the text can hold ([`Tokens::room_for`]), and
+    // sparse blocks are kept as read; the dense n × n matrix is allocated only for a complete, valid file (a
+    // truncated or hostile one of a few bytes declaring n = 20000 must not cost 3.2 GB).
+    let matrix = if storage == NM_DENSE {
+        let mut data = Vec::with_capacity(tok.room_for(n * n));
         for k in 0..n * n {
             let (i, j) = (k % n, k / n);
             data.push(
                 tok.number(|| format!("M[{}, {}] (entry {} of {} of M, column-major)", i + 1, j + 1, k + 1, n * n))?,
             );
         }
-        data
+        Matrix::Dense(data)
     } else {
-        read_sparse_block(&mut tok, n)?
+        Matrix::Blocks(read_sparse_block(&mut tok, n)?)
     };
-    let mut q = Vec::with_capacity(n);
+    let mut q = Vec::with_capacity(tok.room_for(n));
     for i in 0..n {
         q.push(tok.number(|| format!("q[{}] (entry {} of {} of q)", i + 1, i + 1, n))?);
     }
@@ -161,18 +164,47 @@ pub fn parse_with_remark(text: &str, path: &Path) -> Result<(Lcp, String)> {
             ));
         }
     }
-    let m = Mat::from_fn(n, n, |i, j| data[j * n + i]);
+    let m = match matrix {
+        Matrix::Dense(data) => Mat::from_fn(n, n, |i, j| data[j * n + i]),
+        Matrix::Blocks(blocks) => {
+            let mut m = Mat::zeros(n, n);
+            for b in &blocks {
+                let rows = b.rows.len();
+                for (k, &v) in b.values.iter().enumerate() {
+                    m[(b.rows.start + k % rows, b.cols.start + k / rows)] = v;
+                }
+            }
+            m
+        }
+    };
     Ok((Lcp { m, q }, remark.trim().to_string()))
 }
 
-/// Read the `SparseBlockStructuredMatrix` part of a file (after the storage type and the two sizes) into a dense
-/// column-major n × n array, validating it as described in the module docs.
-fn read_sparse_block(tok: &mut Tokens, n: usize) -> Result<Vec<f64>> {
-    let mut data = vec![0.0; n * n];
+/// M as read from the file, before the dense n × n matrix is built.
+enum Matrix {
+    /// The n² entries, column-major.
+    Dense(Vec<f64>),
+    /// The stored blocks of a sparse-block matrix (the others are zero).
+    Blocks(Vec<Block>),
+}
+
+/// One stored block of a sparse-block matrix.
+struct Block {
+    /// Rows of M it covers.
+    rows: std::ops::Range<usize>,
+    /// Columns of M it covers.
+    cols: std::ops::Range<usize>,
+    /// Its `rows.len() · cols.len()` entries, column-major.
+    values: Vec<f64>,
+}
+
+/// Read the `SparseBlockStructuredMatrix` part of a file (after the storage type and the two sizes): its stored
+/// blocks, validated as described in the module docs.
+fn read_sparse_block(tok: &mut Tokens, n: usize) -> Result<Vec<Block>> {
     let nbblocks = tok.integer("nbblocks (the number of stored blocks)")?;
     if nbblocks == 0 {
         // SBM_write_in_file writes only this 0 for a matrix without blocks: M is zero.
-        return Ok(data);
+        return Ok(Vec::new());
     }
     let mut block_count = |name: &str, dim: &str| -> Result<usize> {
         let nb = tok.integer(&format!("{name} (the number of block {dim})"))?;
@@ -221,7 +253,7 @@ fn read_sparse_block(tok: &mut Tokens, n: usize) -> Result<Vec<f64>> {
             rowptr[filled1 - 1]
         )));
     }
-    let mut blockcol = Vec::with_capacity(filled2);
+    let mut blockcol = Vec::with_capacity(tok.room_for(filled2));
     for b in 0..filled2 {
         let c = tok.integer(&format!("index2_data[{b}] (block column of block {b})"))?;
         if c >= nb1 {
@@ -229,17 +261,19 @@ fn read_sparse_block(tok: &mut Tokens, n: usize) -> Result<Vec<f64>> {
         }
         blockcol.push(c);
     }
-    let mut seen = vec![false; nb0 * nb1];
+    // The same block twice can only be in the same block row: remember, per block column, the last row using it.
+    let mut last_row = vec![usize::MAX; nb1];
     for r in 0..filled1 - 1 {
         for b in rowptr[r]..rowptr[r + 1] {
             let c = blockcol[b];
-            if std::mem::replace(&mut seen[r * nb1 + c], true) {
+            if std::mem::replace(&mut last_row[c], r) == r {
                 return Err(
                     tok.error(format!("index2_data[{b}] is {c}: block ({r}, {c}) is stored twice in block row {r}"))
                 );
             }
         }
     }
+    let mut blocks = Vec::with_capacity(filled2);
     for r in 0..filled1 - 1 {
         for b in rowptr[r]..rowptr[r + 1] {
             let c = blockcol[b];
@@ -249,9 +283,11 @@ fn read_sparse_block(tok: &mut Tokens, n: usize) -> Result<Vec<f64>> {
             }
             let (r0, r1, c0, c1) = (start0[r], start0[r + 1], start1[c], start1[c + 1]);
             let rows = r1 - r0;
-            for k in 0..rows * (c1 - c0) {
+            let count = rows * (c1 - c0);
+            let mut values = Vec::with_capacity(tok.room_for(count));
+            for k in 0..count {
                 let (i, j) = (r0 + k % rows, c0 + k / rows);
-                data[j * n + i] = tok.number(|| {
+                values.push(tok.number(|| {
                     format!(
                         "M[{}, {}] (entry {} of block {b}, rows {}..{}, columns {}..{}, column-major)",
                         i + 1,
@@ -262,11 +298,12 @@ fn read_sparse_block(tok: &mut Tokens, n: usize) -> Result<Vec<f64>> {
                         c0 + 1,
                         c1
                     )
-                })?;
+                })?);
             }
+            blocks.push(Block { rows: r0..r1, cols: c0..c1, values });
         }
     }
-    Ok(data)
+    Ok(blocks)
 }
 
 /// Read `nb` cumulative block sizes (`blocksize0` or `blocksize1`) and return the block starts `[0, s₀, …, n]`:
@@ -417,6 +454,12 @@ impl<'a> Tokens<'a> {
             Ok(_) => Err(self.error(format!("{} is `{t}`: entries must be finite", what()))),
             Err(_) => Err(self.error(format!("expected {} (a number), found `{t}`", what()))),
         }
+    }
+
+    /// A capacity for `count` more numbers, but no more than the rest of the text can hold (a number and its
+    /// separator take two bytes at least): what a file declares must not reserve memory its text does not back.
+    fn room_for(&self, count: usize) -> usize {
+        count.min(self.rest().len() / 2 + 1)
     }
 
     /// Everything after the last token read.

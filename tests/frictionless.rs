@@ -88,6 +88,7 @@ fn lemke_and_clarabel_agree_and_lemke_is_complementary() {
             assert_eq!(l.status, Status::Solved);
             assert_eq!(c.status, Status::Solved);
             let p0 = rep.references.hertz.unwrap().peak_pressure;
+            assert_eq!(l.nodes.len(), c.nodes.len(), "{element}: nodes of the two solvers");
             let d = l.nodes.iter().zip(&c.nodes).map(|(a, b)| (a.pressure - b.pressure).abs()).fold(0.0, f64::max);
             assert!(d <= tol::SOLVER_AGREEMENT * p0, "{element}: |Δp| = {:.3e} p0", d / p0);
             assert!(
@@ -153,6 +154,7 @@ fn displacement_and_load_drives_agree() {
     let ll = solver(&rl, "lemke");
     assert!((ll.rigid_body.unwrap().normal / 0.004 - 1.0).abs() < 1e-10, "approach {}", ll.rigid_body.unwrap().normal);
     let pmax = ld.contact.as_ref().unwrap().peak_pressure;
+    assert_eq!(ld.nodes.len(), ll.nodes.len(), "nodes of the two drives");
     for (a, b) in ld.nodes.iter().zip(&ll.nodes) {
         assert!((a.pressure - b.pressure).abs() <= 1e-10 * pmax);
     }
@@ -171,8 +173,12 @@ fn unit_invariance_m_and_mm() {
         })
         .unwrap();
     let (a, b) = (run(&mm), run(&m));
+    // The same solvers and the same mesh in both unit systems, before comparing them pairwise.
+    assert_eq!(a.runs.len(), b.runs.len(), "solver runs in mm and in m");
     for (ra, rb) in a.runs.iter().zip(&b.runs) {
+        assert_eq!(ra.solver, rb.solver);
         let pmax = ra.contact.as_ref().unwrap().peak_pressure;
+        assert_eq!(ra.nodes.len(), rb.nodes.len(), "{}: nodes in mm and in m", ra.solver);
         for (na, nb) in ra.nodes.iter().zip(&rb.nodes) {
             let d = (na.pressure - nb.pressure * 1e-6).abs();
             assert!(d <= tol::UNIT_INVARIANCE * pmax, "{}: Δp = {:e} of p_max", ra.solver, d / pmax);

@@ -150,7 +150,10 @@ fn normtang_says_when_it_does_not_converge() {
 
 #[test]
 fn loose_tolerance_is_honest_about_its_error() {
-    // PGS at tolerance 1e-4 differs from Lemke by about that much, and its residual check uses 100 τ.
+    // PGS at tolerance τ = 1e-4 stays within τ of Lemke (the direct peer solver, exact to round-off), and its
+    // residual check uses 100 τ. The scene is frictionless, so NORM-TANG's outer loop stops at once and the error
+    // is that of the inner Gauss–Seidel sweeps and load root-find, both stopped at 0.1 τ: measured |Δp|/p0 =
+    // 1.6e-5 (0.16 τ), not "about τ" as this comment once said.
     let mut s = load("hertz-hub-fine.toml");
     s = s
         .edit(|d| {
@@ -161,7 +164,7 @@ fn loose_tolerance_is_honest_about_its_error() {
     let r = run(&s);
     let d = max_diff(get(&r, "lemke"), get(&r, "pgs"));
     eprintln!("pgs at 1e-4: |Δp|/p0 = {d:.2e}");
-    assert!(d < 1e-2, "{d}");
+    assert!(d < 1e-4, "|Δp|/p0 = {d:e} is beyond the tolerance τ = 1e-4");
     assert_eq!(get(&r, "pgs").status, Status::Solved);
 }
 

@@ -35,6 +35,7 @@ fn every_reference_scene_passes_its_checks() {
 
 #[test]
 fn seed_frictional_scenes_in_both_formulations() {
+    let mut checked = Vec::new();
     for p in scenes() {
         let s = Scene::from_file(&p).unwrap();
         // Load paths (`[[steps]]`) are checked in tests/history.rs; this test is the static
@@ -45,6 +46,7 @@ fn seed_frictional_scenes_in_both_formulations() {
         {
             continue;
         }
+        checked.push(p.file_stem().unwrap().to_string_lossy().into_owned());
         let r = run_scene(&s).unwrap();
         let d = &r.runs[0];
         assert_eq!(d.status, Status::Solved, "{}", p.display());
@@ -63,8 +65,14 @@ fn seed_frictional_scenes_in_both_formulations() {
         assert_eq!(lr.formulation, "loading");
         assert!(lr.residuals.unwrap().max() <= 1e-10, "{} (loading): {:?}", p.display(), lr.residuals);
         let p0 = d.contact.as_ref().unwrap().peak_pressure;
+        assert_eq!(d.nodes.len(), lr.nodes.len(), "{}: nodes of the two formulations", p.display());
         for (a, b) in d.nodes.iter().zip(&lr.nodes) {
             assert!((a.pressure - b.pressure).abs() <= 1e-8 * p0 && (a.shear - b.shear).abs() <= 1e-8 * p0);
         }
     }
+    // The filter above must not empty the test: the displacement-driven frictional static scenes of
+    // reference/scenes are the seed's figures 7–13 (`[drive] normal_approach`, μ > 0, no `[[steps]]`, read off the
+    // files). A scene added to that set, or one that changes its drive, changes this list on purpose.
+    let expected = ["seed-fig07-mu002", "seed-fig08-mu01", "seed-fig09-mu05", "seed-fig12-mu01", "seed-fig13-mu03"];
+    assert_eq!(checked, expected, "the displacement-driven frictional reference scenes");
 }

@@ -114,6 +114,9 @@ fn key_figures_match_the_recorded_values() {
         let s = Scene::from_file(&dir.join(format!("{scene}.toml"))).unwrap();
         let r = s.document().wheel.radius;
         let p = vals[1].parse::<f64>().unwrap_or(0.0).abs();
+        // One value per figure, now and recorded, before zipping them (a short row would compare only its head).
+        assert_eq!(vals.len(), FIGURES.len(), "{scene}: figures now");
+        assert_eq!(old.len(), FIGURES.len(), "{scene}: figures recorded (re-record, see module docs)");
         for ((name, a), b) in FIGURES.iter().zip(vals).zip(old) {
             let natural = match *name {
                 "normal" | "tangential" => p,

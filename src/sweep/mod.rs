@@ -124,6 +124,11 @@ impl std::fmt::Display for Shard {
     }
 }
 
+/// Most cases a sweep spec may define: every case's scene is built before any runs ([`SweepSpec::cases`]), so a
+/// larger grid (a few keys of many values multiply quickly) is refused when the spec is read rather than by an
+/// allocation failure, or an overflow of the count, later.
+pub const MAX_CASES: usize = 100_000;
+
 pub(crate) fn invalid(path: &Path, field: &str, message: impl Into<String>) -> Error {
     Error::Invalid { path: path.to_path_buf(), field: field.to_string(), message: message.into() }
 }
@@ -281,7 +286,13 @@ impl SweepSpec {
     /// not non-empty arrays are [`Error::Invalid`] naming the key.
     pub fn from_file(path: &Path) -> Result<SweepSpec> {
         let text = std::fs::read_to_string(path).map_err(|source| Error::Io { path: path.to_path_buf(), source })?;
-        let doc: Table = toml::from_str(&text)
+        SweepSpec::from_toml(&text, path)
+    }
+
+    /// Parse and check the text of a sweep spec like [`SweepSpec::from_file`]; `path` names the file in errors and
+    /// is not read (nor is the base scene).
+    pub fn from_toml(text: &str, path: &Path) -> Result<SweepSpec> {
+        let doc: Table = toml::from_str(text)
             .map_err(|e| Error::Parse { path: path.to_path_buf(), message: e.to_string().trim_end().to_string() })?;
         for key in doc.keys() {
             if !["name", "description", "base", "grid", "timing_repeats"].contains(&key.as_str()) {
@@ -347,6 +358,18 @@ impl SweepSpec {
             check_zipped(path, &flat)?;
             check_overlaps(path, &flat)?;
             grid.push(flat);
+        }
+        let cases = grid.iter().try_fold(0usize, |sum, g| {
+            let product = g.values().try_fold(1usize, |p, v| p.checked_mul(v.as_array().map_or(1, Vec::len)));
+            product.and_then(|c| sum.checked_add(c))
+        });
+        if cases.is_none_or(|c| c > MAX_CASES) {
+            let count = cases.map_or(format!("more than {}", usize::MAX), |c| c.to_string());
+            return Err(invalid(
+                path,
+                "grid",
+                format!("{count} cases, more than a sweep may have ({MAX_CASES}): split it"),
+            ));
         }
         let timing_repeats = match doc.get("timing_repeats") {
             None => 1,
