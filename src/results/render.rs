@@ -197,6 +197,7 @@ fn stresses_table(out: &mut String, r: &Report) {
 pub fn check_line(c: &Check) -> String {
     let mark = match (c.kind, c.pass) {
         (CheckKind::NotApplicable, _) => "n/a ",
+        (CheckKind::ModelComparison, _) => "model",
         (_, true) => "pass",
         (_, false) => "FAIL",
     };
@@ -207,6 +208,15 @@ pub fn check_line(c: &Check) -> String {
             c.name, c.measured, c.reference, c.error, c.tolerance
         ),
         CheckKind::Verdict | CheckKind::NotApplicable => format!("[{mark}] {}{note}", c.name),
+        CheckKind::ModelComparison => format!(
+            "[{mark}] {:<47} measured {:>12.6e}  theory {:>12.6e}  difference {:>10.3e}  model error {:>10.3e} ± {:.1e}{note}",
+            c.name,
+            c.measured,
+            c.reference,
+            c.measured - c.reference,
+            c.model_error.unwrap_or(f64::NAN),
+            c.uncertainty.unwrap_or(f64::NAN)
+        ),
     }
 }
 
