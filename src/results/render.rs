@@ -142,6 +142,10 @@ fn runs_table(out: &mut String, r: &Report) {
             run.timing_s.solve,
             run.timing_s.total
         );
+        if let Some(xi) = run.rolling.filter(|x| !x.creepage_prescribed).and_then(|x| x.creepage) {
+            // Steady rolling with the tangential load prescribed: the creepage is the answer.
+            w!(out, "            creepage ξ = {xi:.6e} (computed for the prescribed Q)");
+        }
         if run.status != Status::Solved || run.problem == ProblemClass::SlidingLimit {
             w!(out, "            {}", run.explanation());
         }
