@@ -478,7 +478,11 @@ fn md_loop_of_a_steel_on_steel_pair() {
     let r = run(&s);
     let span = delta(TangentialPath::Loading, q_star).abs();
     let mut worst: f64 = 0.0;
-    assert!(r.runs.iter().all(|x| x.status == Status::Solved), "{:?}", r.runs.iter().map(|x| x.explanation()).collect::<Vec<_>>());
+    assert!(
+        r.runs.iter().all(|x| x.status == Status::Solved),
+        "{:?}",
+        r.runs.iter().map(|x| x.explanation()).collect::<Vec<_>>()
+    );
     for st in r.steps.iter().filter(|st| st.step >= 1) {
         let run = &st.runs[0];
         let (q, shift) = (run.resultants.unwrap().tangential, run.rigid_body.unwrap().tangential.unwrap());
