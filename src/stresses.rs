@@ -800,6 +800,7 @@ mod tests {
             grid,
             nu: 0.3,
             stress: vec![Ok([1.0, 0.0, 0.0]), Err(PointError::NearBoundary), Ok([-2.0, 0.0, 0.0]), Ok([1.5, 0.0, 0.0])],
+            surface: Vec::new(),
         };
         assert_eq!(f.maximum(StressQuantity::Sxx), Some(Maximum { value: -2.0, x: 0.0, depth: 1.0 }));
         let csv = f.csv(&[StressQuantity::Sxx]);
