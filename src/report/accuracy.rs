@@ -6,12 +6,11 @@
 //! theory).
 
 use super::table::{cell, log_slope, num, Row, Sweep, REFINEMENT_KEY};
-use super::{plot_err, Figures};
+use super::Figs;
 use crate::error::Result;
 use crate::plot::{Chart, Series, Style};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use std::path::Path;
 
 /// Errors within this fraction of each other are equal: a configuration is beaten on error only by one at least this
 /// much more accurate (equal-error points that differ only by round-off are not choices), and a recommendation among
@@ -51,7 +50,7 @@ fn series<'a>(sw: &Sweep, rows: &[&'a Row]) -> BTreeMap<String, Vec<(f64, &'a Ro
 }
 
 /// The accuracy sections of one sweep.
-pub fn sections(sw: &mut Sweep, out: &Path, md: &mut String, figs: &mut Figures) -> Result<()> {
+pub fn sections(sw: &mut Sweep, md: &mut String, figs: &mut Figs) -> Result<()> {
     let richardson = discretisation_errors(sw, md);
     let solved: Vec<&Row> = sw.rows.iter().filter(|r| r.status.solved()).collect();
     let failed = sw.rows.len() - solved.len();
@@ -66,14 +65,14 @@ pub fn sections(sw: &mut Sweep, out: &Path, md: &mut String, figs: &mut Figures)
     let present: Vec<(&str, &str)> =
         MEASURES.iter().copied().filter(|(k, _)| solved.iter().any(|r| num(r, k).is_some())).collect();
     for (err, label) in &present {
-        front_and_cheapest(sw, &solved, err, label, out, md, figs)?;
+        front_and_cheapest(sw, &solved, err, label, md, figs)?;
     }
     if let Some(&(err, label)) = present.first() {
-        convergence(sw, &solved, err, label, out, md, figs)?;
+        convergence(sw, &solved, err, label, md, figs)?;
     }
     if richardson {
         if let Some(&(err, label)) = present.iter().find(|(k, _)| *k == "disc_a_err") {
-            convergence(sw, &solved, err, label, out, md, figs)?;
+            convergence(sw, &solved, err, label, md, figs)?;
         }
     }
     Ok(())
@@ -223,9 +222,8 @@ fn front_and_cheapest(
     solved: &[&Row],
     err: &str,
     label: &str,
-    out: &Path,
     md: &mut String,
-    figs: &mut Figures,
+    figs: &mut Figs,
 ) -> Result<()> {
     let rows: Vec<&Row> = solved.iter().copied().filter(|r| num(r, err).is_some() && r.t_total.is_some()).collect();
     let by_row = costs(sw, &rows);
@@ -241,9 +239,8 @@ fn front_and_cheapest(
             chart = chart.add(Series::new(k, p, Style::LineMarkers));
         }
     }
-    let file = format!("figures/{}-{err}-vs-time.svg", sw.stem);
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    figs.push((format!("{}: {label} against time", sw.name), file.clone()));
+    let file =
+        figs.save(&chart, &format!("{}-{err}-vs-time.svg", sw.stem), format!("{}: {label} against time", sw.name))?;
     writeln!(md, "#### {label}\n\n![{label} against time]({file})\n").unwrap();
     let varied = sw.varied(&rows);
     let mut problem_keys: Vec<String> = varied.iter().filter(|k| !is_method_key(k)).cloned().collect();
@@ -521,15 +518,7 @@ fn cheapest_table(cl: &[Class], err: &str, names: &Names, md: &mut String) {
 }
 
 /// Error against the mesh per series, with the least-squares order over all meshes and its standard error.
-fn convergence(
-    sw: &Sweep,
-    solved: &[&Row],
-    err: &str,
-    label: &str,
-    out: &Path,
-    md: &mut String,
-    figs: &mut Figures,
-) -> Result<()> {
+fn convergence(sw: &Sweep, solved: &[&Row], err: &str, label: &str, md: &mut String, figs: &mut Figs) -> Result<()> {
     let mut chart = Chart::new(format!("{}: {label} against mesh", sw.name), "contact elements", label)
         .x_unit("1")
         .y_unit("1")
@@ -552,9 +541,8 @@ fn convergence(
         writeln!(md, "| {k} | {} | {order} | {} | {:.2e} |", p.len(), last.0, last.1).unwrap();
         chart = chart.add(Series::new(k, p, Style::LineMarkers));
     }
-    let file = format!("figures/{}-{err}-vs-mesh.svg", sw.stem);
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    figs.push((format!("{}: {label} against mesh", sw.name), file.clone()));
+    let file =
+        figs.save(&chart, &format!("{}-{err}-vs-mesh.svg", sw.stem), format!("{}: {label} against mesh", sw.name))?;
     writeln!(md, "\n![{label} against mesh]({file})\n").unwrap();
     Ok(())
 }
@@ -895,9 +883,9 @@ mod tests {
         let sw = sweep(&["contact.friction", "mesh.contact_elements"], rows);
         let dir = tempfile::tempdir().unwrap();
         std::fs::create_dir(dir.path().join("figures")).unwrap();
-        let (mut md, mut figs) = (String::new(), Figures::default());
+        let (mut md, mut figs) = (String::new(), Figs::new(dir.path(), "figures/"));
         let refs: Vec<&Row> = sw.rows.iter().collect();
-        front_and_cheapest(&sw, &refs, "cm_shear_err", "shear", dir.path(), &mut md, &mut figs).unwrap();
+        front_and_cheapest(&sw, &refs, "cm_shear_err", "shear", &mut md, &mut figs).unwrap();
         assert!(md.contains("##### friction 0.3") && md.contains("##### friction 0.5"), "{md}");
         let half = &md[md.find("##### friction 0.5").unwrap()..];
         let front = &half[..half.find("Recommended configuration").unwrap()];

@@ -4,7 +4,7 @@
 //! under constant P and a tangential load cycled ±Q*, Spence for a coupled half-plane under a growing normal load.
 
 use super::table::Units;
-use super::{plot_err, Figures};
+use super::Figs;
 use crate::error::Result;
 use crate::pipeline::run_scene;
 use crate::plot::{Chart, Series, Style};
@@ -15,7 +15,6 @@ use crate::scene::{BodyModel, CounterBody, RollingMode, Scene};
 use crate::theory::{self, Hertz2D, TangentialPath};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use std::path::Path;
 
 /// The runs of one solver along a path, in order (a solver whose path broke has fewer).
 fn runs_of<'a>(r: &'a Report, solver: &str) -> Vec<(usize, &'a SolverRun)> {
@@ -65,7 +64,7 @@ fn spence_pattern(s: &Scene) -> Option<f64> {
 }
 
 /// The path sections of every reference scene with `[[steps]]`.
-pub fn sections(reports: &BTreeMap<String, Report>, out: &Path, md: &mut String, figs: &mut Figures) -> Result<()> {
+pub fn sections(reports: &BTreeMap<String, Report>, md: &mut String, figs: &mut Figs) -> Result<()> {
     for (name, r) in reports.iter().filter(|(_, r)| !r.steps.is_empty()) {
         let units = Units::parse(r.scene.units());
         writeln!(md, "### `{name}`\n\n{}\n", r.scene.description().split_whitespace().collect::<Vec<_>>().join(" "))
@@ -87,11 +86,11 @@ pub fn sections(reports: &BTreeMap<String, Report>, out: &Path, md: &mut String,
             .unwrap();
         }
         if r.scene.document().steps.iter().any(|st| st.roll.unwrap_or(0.0) > 0.0) {
-            rolling_approach(name, r, &runs, &units, out, md, figs)?;
+            rolling_approach(name, r, &runs, &units, md, figs)?;
         } else {
-            hysteresis(name, r, &runs, &units, out, md, figs)?;
+            hysteresis(name, r, &runs, &units, md, figs)?;
         }
-        stick_zone(name, r, &runs, &units, out, md, figs)?;
+        stick_zone(name, r, &runs, &units, md, figs)?;
     }
     Ok(())
 }
@@ -130,9 +129,8 @@ fn hysteresis(
     r: &Report,
     runs: &[(usize, &SolverRun)],
     units: &Units,
-    out: &Path,
     md: &mut String,
-    figs: &mut Figures,
+    figs: &mut Figs,
 ) -> Result<()> {
     let pts: Vec<(f64, f64)> =
         runs.iter().filter_map(|(_, x)| Some((x.rigid_body?.tangential?, x.resultants?.tangential))).collect();
@@ -158,11 +156,9 @@ fn hysteresis(
     for (label, p, style) in &series {
         chart = chart.add(Series::new(label.clone(), p.clone(), *style));
     }
-    let file = format!("figures/{name}-hysteresis.svg");
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    figs.push((format!("{name}: Q against δ_T"), file.clone()));
+    let file = figs.save(&chart, &format!("{name}-hysteresis.svg"), format!("{name}: Q against δ_T"))?;
     writeln!(md, "![hysteresis loop]({file})\n").unwrap();
-    opened_loop(name, &pts, &series, units, out, md, figs)?;
+    opened_loop(name, &pts, &series, units, md, figs)?;
     Ok(())
 }
 
@@ -231,9 +227,8 @@ fn opened_loop(
     pts: &[(f64, f64)],
     series: &[Curve],
     units: &Units,
-    out: &Path,
     md: &mut String,
-    figs: &mut Figures,
+    figs: &mut Figs,
 ) -> Result<()> {
     // The loop is thin beside the elastic compliance: subtract the chord through the computed loop's tips
     // (the shifts at the largest and smallest Q) so that its width can be seen.
@@ -250,9 +245,8 @@ fn opened_loop(
             for (label, p, style) in series {
                 chart = chart.add(Series::new(label.clone(), open(p), *style));
             }
-            let file = format!("figures/{name}-hysteresis-opened.svg");
-            chart.write(&out.join(&file)).map_err(plot_err)?;
-            figs.push((format!("{name}: the loop opened"), file.clone()));
+            let file =
+                figs.save(&chart, &format!("{name}-hysteresis-opened.svg"), format!("{name}: the loop opened"))?;
             writeln!(
                 md,
                 "The same loop with the straight chord through its tips (δ_T at the largest and smallest Q, compliance \
@@ -272,9 +266,8 @@ fn stick_zone(
     r: &Report,
     runs: &[(usize, &SolverRun)],
     units: &Units,
-    out: &Path,
     md: &mut String,
-    figs: &mut Figures,
+    figs: &mut Figs,
 ) -> Result<()> {
     let pts: Vec<(f64, f64)> = runs
         .iter()
@@ -342,9 +335,7 @@ fn stick_zone(
         writeln!(md, "{what}; largest difference along the path {:.2} elements.\n", worst / h).unwrap();
         chart = chart.add(Series::new(what.split(':').next().unwrap_or(what), theory_pts, Style::Dashed));
     }
-    let file = format!("figures/{name}-stick-zone.svg");
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    figs.push((format!("{name}: stick zone along the path"), file.clone()));
+    let file = figs.save(&chart, &format!("{name}-stick-zone.svg"), format!("{name}: stick zone along the path"))?;
     writeln!(md, "![stick zone along the path]({file})\n").unwrap();
     Ok(())
 }
@@ -375,9 +366,8 @@ fn rolling_approach(
     r: &Report,
     runs: &[(usize, &SolverRun)],
     units: &Units,
-    out: &Path,
     md: &mut String,
-    figs: &mut Figures,
+    figs: &mut Figs,
 ) -> Result<()> {
     let steady = run_scene(&steady_counterpart(&r.scene)?)?;
     let Some(y) = steady.runs.first().filter(|y| y.status == crate::solvers::Status::Solved) else {
@@ -399,9 +389,7 @@ fn rolling_approach(
         .y_unit("1")
         .log_y()
         .add(Series::new(runs.first().map(|(_, x)| x.solver.name()).unwrap_or(""), pts, Style::Line));
-    let file = format!("figures/{name}-approach.svg");
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    figs.push((format!("{name}: approach to steady rolling"), file.clone()));
+    let file = figs.save(&chart, &format!("{name}-approach.svg"), format!("{name}: approach to steady rolling"))?;
     writeln!(
         md,
         "Against the steady-rolling solution of the same mesh (solved beside it, Lemke): after {end_x:.4} {} rolled \

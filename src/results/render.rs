@@ -142,6 +142,10 @@ fn runs_table(out: &mut String, r: &Report) {
             run.timing_s.solve,
             run.timing_s.total
         );
+        if let Some(xi) = run.rolling.filter(|x| !x.creepage_prescribed).and_then(|x| x.creepage) {
+            // Steady rolling with the tangential load prescribed: the creepage is the answer.
+            w!(out, "            creepage ξ = {xi:.6e} (computed for the prescribed Q)");
+        }
         if run.status != Status::Solved || run.problem == ProblemClass::SlidingLimit {
             w!(out, "            {}", run.explanation());
         }
@@ -197,6 +201,7 @@ fn stresses_table(out: &mut String, r: &Report) {
 pub fn check_line(c: &Check) -> String {
     let mark = match (c.kind, c.pass) {
         (CheckKind::NotApplicable, _) => "n/a ",
+        (CheckKind::ModelComparison, _) => "model",
         (_, true) => "pass",
         (_, false) => "FAIL",
     };
@@ -207,6 +212,15 @@ pub fn check_line(c: &Check) -> String {
             c.name, c.measured, c.reference, c.error, c.tolerance
         ),
         CheckKind::Verdict | CheckKind::NotApplicable => format!("[{mark}] {}{note}", c.name),
+        CheckKind::ModelComparison => format!(
+            "[{mark}] {:<47} measured {:>12.6e}  theory {:>12.6e}  difference {:>10.3e}  model error {:>10.3e} ± {:.1e}{note}",
+            c.name,
+            c.measured,
+            c.reference,
+            c.measured - c.reference,
+            c.model_error.unwrap_or(f64::NAN),
+            c.uncertainty.unwrap_or(f64::NAN)
+        ),
     }
 }
 
