@@ -143,6 +143,7 @@ pub fn effects(scene: &Scene) -> Vec<String> {
 pub fn add_stresses(run: &mut SolverRun, stresses: Option<&crate::stresses::StressEvaluator>) {
     if let (Some(ev), Status::Solved) = (stresses, run.status) {
         run.stresses = Some(ev.evaluate(&run.nodes));
+        run.counter_body_stresses = ev.evaluate_counter_body(&run.nodes);
     }
 }
 
@@ -342,6 +343,7 @@ pub fn evaluate_outcome(ctx: &RunContext, outcome: Outcome) -> (SolverRun, Optio
         polish_change,
         history: None,
         stresses: None,
+        counter_body_stresses: None,
     };
     (run, ev)
 }

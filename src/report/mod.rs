@@ -30,6 +30,41 @@ mod physics;
 mod rolling;
 mod table;
 
+pub use paths::{md_curve, md_pattern, md_shift, path_figures};
+pub use table::Units;
+
+/// A sweep's rows read from its CSV, drawn as its analysis draws them (what `rollbem plot SWEEP.csv` does).
+pub struct SweepFigures {
+    sweep: table::Sweep,
+}
+
+impl SweepFigures {
+    /// Read a sweep's CSV (`stem` names its figures).
+    pub fn from_csv(path: &Path, stem: &str) -> Result<SweepFigures> {
+        let (header, rows) = crate::sweep::SweepRow::read_csv(path)?;
+        Ok(SweepFigures {
+            sweep: table::Sweep {
+                name: stem.to_string(),
+                description: String::new(),
+                stem: stem.to_string(),
+                keys: header.keys,
+                rows,
+            },
+        })
+    }
+
+    /// Draw the figures of an analysis into `figs` (the Markdown the report would write beside them is dropped).
+    pub fn draw(mut self, analysis: Analysis, figs: &mut Figs) -> Result<()> {
+        let mut md = String::new();
+        match analysis {
+            Analysis::CreepCurve => physics::creep_curves(&self.sweep, &mut md, figs),
+            Analysis::FiniteVsHalfPlane => physics::finite_vs_half_plane(&self.sweep, &mut md, figs),
+            Analysis::Accuracy => accuracy::sections(&mut self.sweep, &mut md, figs),
+            Analysis::Table => Ok(()),
+        }
+    }
+}
+
 /// Where to read and write.
 #[derive(Debug, Clone)]
 pub struct ReportOptions {

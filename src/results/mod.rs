@@ -146,6 +146,10 @@ pub struct SolverRun {
     /// [`crate::stresses`].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stresses: Option<crate::stresses::StressResult>,
+    /// The elastic counter-body's subsurface stresses from the same tractions (with `[stresses]` and
+    /// `[counter_body] kind = "half_plane"`; depth measured into the counter-body): [`crate::stresses`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub counter_body_stresses: Option<crate::stresses::StressResult>,
 }
 
 impl SolverRun {

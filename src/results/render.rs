@@ -155,10 +155,13 @@ fn runs_table(out: &mut String, r: &Report) {
 /// The subsurface stresses' maxima per run (largest |value| on the grid, sign kept, and where), with `[stresses]`.
 fn stresses_table(out: &mut String, r: &Report) {
     let Some(spec) = &r.scene.stresses() else { return };
+    let counter = r.runs.iter().any(|x| x.counter_body_stresses.is_some());
     w!(
         out,
-        "stresses in the wheel ({} model): {}×{} grid, x in [{:.4e}, {:.4e}], depth in [{:.4e}, {:.4e}]; maxima (largest |value|):",
+        "stresses in the wheel ({} model){}: {}×{} grid, x in [{:.4e}, {:.4e}], depth in [{:.4e}, {:.4e}] and the \
+         surface at the contact elements' centres; maxima (largest |value|):",
         r.scene.model().name(),
+        if counter { " and in the counter-body (depth into it)" } else { "" },
         spec.points[0],
         spec.points[1],
         spec.x[0],
@@ -166,34 +169,49 @@ fn stresses_table(out: &mut String, r: &Report) {
         spec.depth[0],
         spec.depth[1]
     );
-    w!(out, "{:<9} {:<17} {:>13} {:>13} {:>13}", "solver", "quantity", "max", "x", "depth");
+    w!(out, "{:<11} {:<12} {:<17} {:>13} {:>13} {:>13}", "solver", "body", "quantity", "max", "x", "depth");
     for run in &r.runs {
         let Some(st) = &run.stresses else {
-            w!(out, "{:<9} none (not solved)", run.solver);
+            w!(out, "{:<11} none (not solved)", run.solver);
             continue;
         };
-        for (q, m) in st.maxima() {
-            match m {
-                Some(m) => {
-                    w!(out, "{:<9} {:<17} {:>13.5e} {:>13.5e} {:>13.5e}", run.solver, q.name(), m.value, m.x, m.depth)
-                }
-                None => w!(out, "{:<9} {:<17} {:>13}", run.solver, q.name(), "-"),
-            }
+        for st in std::iter::once(st).chain(&run.counter_body_stresses) {
+            stress_maxima(out, run.solver.name(), st);
         }
-        let refused = st.refused();
-        let n: usize = refused.values().sum();
-        let why: Vec<String> = refused.iter().map(|(k, v)| format!("{v} {k}")).collect();
-        w!(
-            out,
-            "{:<9} {} of {} points evaluated in {:.3} s{}{}",
-            "",
-            st.field.grid.len() - n,
-            st.field.grid.len(),
-            st.time_s,
-            if n > 0 { format!("; refused: {}", why.join(", ")) } else { String::new() },
-            st.csv.as_ref().map(|f| format!("; field in {f}")).unwrap_or_default()
-        );
     }
+}
+
+/// One body's maxima and what was evaluated.
+fn stress_maxima(out: &mut String, solver: &str, st: &crate::stresses::StressResult) {
+    for (q, m) in st.maxima() {
+        match m {
+            Some(m) => w!(
+                out,
+                "{:<11} {:<12} {:<17} {:>13.5e} {:>13.5e} {:>13.5e}",
+                solver,
+                st.body,
+                q.name(),
+                m.value,
+                m.x,
+                m.depth
+            ),
+            None => w!(out, "{:<11} {:<12} {:<17} {:>13}", solver, st.body, q.name(), "-"),
+        }
+    }
+    let refused = st.refused();
+    let n: usize = refused.values().sum();
+    let why: Vec<String> = refused.iter().map(|(k, v)| format!("{v} {k}")).collect();
+    w!(
+        out,
+        "{:<11} {:<12} {} of {} grid points evaluated in {:.3} s{}{}",
+        "",
+        "",
+        st.grid.len() - n,
+        st.grid.len(),
+        st.time_s,
+        if n > 0 { format!("; refused: {}", why.join(", ")) } else { String::new() },
+        st.csv.as_ref().map(|f| format!("; field in {f}")).unwrap_or_default()
+    );
 }
 
 /// One check as a line of the `run` table: a figure with its numbers, a verdict or a reference that does not apply

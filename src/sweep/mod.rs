@@ -100,6 +100,15 @@ impl Analysis {
         }
     }
 
+    /// The analysis of a name; an unknown one is bad input naming `field` of `path`.
+    pub fn from_name(name: &str, path: &Path) -> Result<Analysis> {
+        let all = [Analysis::Accuracy, Analysis::FiniteVsHalfPlane, Analysis::CreepCurve, Analysis::Table];
+        all.into_iter().find(|x| x.name() == name).ok_or_else(|| {
+            let names: Vec<&str> = all.iter().map(|x| x.name()).collect();
+            invalid(path, "analysis", format!("unknown analysis `{name}` (expected one of: {})", names.join(", ")))
+        })
+    }
+
     /// The swept keys (one of which) the analysis needs, and why.
     fn needs(self) -> (&'static [&'static str], &'static str) {
         match self {
@@ -435,13 +444,7 @@ impl SweepSpec {
         };
         let analysis = match doc.get("analysis") {
             None => Analysis::Table,
-            Some(Value::String(a)) => {
-                let all = [Analysis::Accuracy, Analysis::FiniteVsHalfPlane, Analysis::CreepCurve, Analysis::Table];
-                all.into_iter().find(|x| x.name() == a).ok_or_else(|| {
-                    let names: Vec<&str> = all.iter().map(|x| x.name()).collect();
-                    invalid(path, "analysis", format!("unknown analysis `{a}` (expected one of: {})", names.join(", ")))
-                })?
-            }
+            Some(Value::String(a)) => Analysis::from_name(a, path)?,
             Some(other) => {
                 return Err(invalid(path, "analysis", format!("must be a string (got {})", other.type_str())))
             }
