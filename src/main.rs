@@ -351,7 +351,8 @@ fn sweep(spec: &Path, out: &Path, options: &rollbem::sweep::SweepOptions, dry_ru
     }
     match plan.run() {
         Ok(o) => {
-            let line = format!("{} rows written to {} ({} cases run now)", o.rows, out.display(), o.ran);
+            let peak = peak_memory().map(|kb| format!("; peak memory {:.1} MB", kb as f64 / 1e3)).unwrap_or_default();
+            let line = format!("{} rows written to {} ({} cases run now{peak})", o.rows, out.display(), o.ran);
             if rollbem::io::is_stdout(out) {
                 eprintln!("{line}");
             } else {
@@ -384,6 +385,14 @@ fn plot(
         return rollbem::plot_csv::plot_csv(input, out.unwrap_or(dir), analysis, scene.as_ref());
     }
     rollbem::plot_result::plot_result(input, out)
+}
+
+/// The process's peak resident memory in kB (`VmHWM` of /proc/self/status; `None` where there is none): a sweep
+/// says it beside its estimate.
+fn peak_memory() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    line.split_whitespace().nth(1)?.parse().ok()
 }
 
 /// Print an error and turn it into the process exit code.

@@ -3,25 +3,13 @@
 //! a cut last line and a case cut short are redone; a journal of another spec is refused; a finished output is not
 //! run again; `-` and FIFOs get the sorted CSV; the size guard; `sweep-merge --spec`.
 
+#[path = "common/sweep_cli.rs"]
+mod common;
+
+use common::{bin, kill_at, masked, partial, write};
 use rollbem::sweep::journal::MARKER;
-use rollbem::sweep::TIMING_COLUMNS;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
-use std::time::Duration;
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_rollbem"))
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
-fn partial(out: &Path) -> PathBuf {
-    PathBuf::from(format!("{}.partial", out.display()))
-}
+use std::process::Command;
 
 /// 1024 cases on four small BEM meshes, two rows each (lemke, active_set), frictionless and frictional, and four
 /// cases whose named solver does not apply (one `error` row each): about a second on two cores.
@@ -52,23 +40,6 @@ base = '{}/reference/scenes/seed-fig6-constant.toml'
     )
 }
 
-/// The header and the rows of a CSV with the timing columns blanked.
-fn masked(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
-    let mut r = csv::Reader::from_path(path).unwrap();
-    let h: Vec<String> = r.headers().unwrap().iter().map(str::to_string).collect();
-    let rows = r
-        .records()
-        .map(|x| {
-            x.unwrap()
-                .iter()
-                .zip(&h)
-                .map(|(c, n)| if TIMING_COLUMNS.contains(&n.as_str()) { String::new() } else { c.to_string() })
-                .collect()
-        })
-        .collect();
-    (h, rows)
-}
-
 /// A small deterministic generator (xorshift64*), so that the trials are the same on every run.
 struct Rng(u64);
 
@@ -79,36 +50,6 @@ impl Rng {
         self.0 ^= self.0 >> 27;
         self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) % n.max(1)
     }
-}
-
-/// Start a sweep and SIGKILL it once its journal holds `bytes` bytes (or, with `bytes` = 0, after `delay_ms`:
-/// possibly while it validates). Returns whether it was still running when killed.
-fn kill_at(spec: &Path, out: &Path, bytes: u64, delay_ms: u64) -> bool {
-    let mut child = bin()
-        .arg("sweep")
-        .arg(spec)
-        .arg("--out")
-        .arg(out)
-        .arg("--resume")
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
-    let journal = partial(out);
-    if bytes == 0 {
-        std::thread::sleep(Duration::from_millis(delay_ms));
-    } else {
-        while std::fs::metadata(&journal).map_or(0, |m| m.len()) < bytes {
-            if child.try_wait().unwrap().is_some() {
-                return false;
-            }
-            std::thread::sleep(Duration::from_micros(200));
-        }
-    }
-    let running = child.try_wait().unwrap().is_none();
-    child.kill().unwrap();
-    child.wait().unwrap();
-    running
 }
 
 /// 24 trials: each kills a sweep with SIGKILL one to three times at random points (by the journal's size, or right
@@ -135,7 +76,12 @@ fn killed_and_resumed_sweeps_end_as_an_uninterrupted_one() {
             let early = rng.below(6) == 0;
             let bytes = if early { 0 } else { 1 + rng.below(full * 95 / 100) };
             kills += 1;
-            mid_run += usize::from(kill_at(&spec, &out, bytes, rng.below(40)));
+            mid_run += usize::from(kill_at(
+                bin().arg("sweep").arg(&spec).arg("--out").arg(&out).arg("--resume"),
+                &out,
+                bytes,
+                rng.below(40),
+            ));
             let journal = partial(&out);
             if journal.exists() && rng.below(3) == 0 {
                 let len = std::fs::metadata(&journal).unwrap().len();
@@ -172,7 +118,7 @@ fn a_cut_line_and_a_case_cut_short_are_redone() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(o.status.success(), "{err}");
     assert!(err.contains("10 already done") && err.contains("case 10 run again"), "{err}");
-    assert!(String::from_utf8_lossy(&o.stdout).contains(&format!("({} cases run now)", 1024 - 10)));
+    assert!(String::from_utf8_lossy(&o.stdout).contains(&format!("({} cases run now", 1024 - 10)));
     assert_eq!(masked(&out), masked(&whole));
 }
 
@@ -217,7 +163,7 @@ fn resuming_a_finished_sweep_runs_nothing() {
     let o = bin().arg("sweep").arg(&spec).args(["--shard", "2/4", "--out"]).arg(&out).arg("--resume").output().unwrap();
     assert!(o.status.success());
     let (said, err) = (String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
-    assert!(said.contains("(0 cases run now)") && err.contains("256 already done"), "{said} {err}");
+    assert!(said.contains("(0 cases run now") && err.contains("256 already done"), "{said} {err}");
     assert_eq!(std::fs::read(&out).unwrap(), before);
     assert!(!partial(&out).exists());
 }
@@ -280,7 +226,10 @@ fn a_large_grid_needs_allow_large() {
     let o = bin().arg("sweep").arg(&large).arg("--out").arg(&out).arg("--dry-run").output().unwrap();
     let err = String::from_utf8_lossy(&o.stderr);
     assert!(o.status.success(), "{err}");
-    assert!(err.contains("100100 cases") && err.contains("100100 to run on 400 models") && err.contains("estimate"), "{err}");
+    assert!(
+        err.contains("100100 cases") && err.contains("100100 to run on 400 models") && err.contains("estimate"),
+        "{err}"
+    );
     assert!(!out.exists() && !partial(&out).exists());
 }
 

@@ -24,8 +24,9 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 /// The first line of a journal.
-pub const MARKER: &str = "# rollbem sweep journal: the rows of a sweep not yet finished, in the order its cases finished \
-                          (`rollbem sweep --resume` continues it)";
+pub const MARKER: &str =
+    "# rollbem sweep journal: the rows of a sweep not yet finished, in the order its cases finished \
+     (`rollbem sweep --resume` continues it)";
 
 /// How often a journal is synced to disk (a kill loses nothing written; a crash of the machine, at most this).
 const SYNC_EVERY: Duration = Duration::from_secs(2);
@@ -326,11 +327,10 @@ pub fn write_sorted(files: &[PathBuf], mut blocks: Vec<Block>, header: &Header, 
             bytes.resize((b.end - b.start) as usize, 0);
             f.seek(SeekFrom::Start(b.start)).and_then(|_| f.read_exact(&mut bytes)).map_err(read_err(path))?;
             let mut rd = csv::ReaderBuilder::new().has_headers(false).from_reader(&bytes[..]);
-            let mut records: Vec<csv::StringRecord> =
-                rd.records().collect::<std::result::Result<_, _>>().map_err(|e| Error::Parse {
-                    path: path.clone(),
-                    message: format!("changed while it was read: {e}"),
-                })?;
+            let mut records: Vec<csv::StringRecord> = rd
+                .records()
+                .collect::<std::result::Result<_, _>>()
+                .map_err(|e| Error::Parse { path: path.clone(), message: format!("changed while it was read: {e}") })?;
             records.sort_by(|x, y| x.get(solver).cmp(&y.get(solver)));
             for r in &records {
                 n.rows += 1;

@@ -291,7 +291,9 @@ fn check_one_line(path: &Path, grid: &Table) -> Result<()> {
         }
     }
     match grid.iter().find(|(_, v)| breaks(v)) {
-        Some((key, _)) => Err(invalid(path, &format!("grid.{key}"), "a value with a line break: a sweep CSV row is one line")),
+        Some((key, _)) => {
+            Err(invalid(path, &format!("grid.{key}"), "a value with a line break: a sweep CSV row is one line"))
+        }
         None => Ok(()),
     }
 }

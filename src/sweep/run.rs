@@ -33,8 +33,7 @@ pub const TIMING_BATCH: usize = 256;
 
 /// The rows of a run of one case, sorted by solver.
 fn case_rows(case: &Case, report: &Report) -> Vec<SweepRow> {
-    let mut rows: Vec<SweepRow> =
-        report.runs.iter().map(|r| run_row(case, report.mesh.contact_nodes, r)).collect();
+    let mut rows: Vec<SweepRow> = report.runs.iter().map(|r| run_row(case, report.mesh.contact_nodes, r)).collect();
     rows.sort_by(|a, b| a.solver.cmp(&b.solver));
     rows
 }
@@ -385,7 +384,11 @@ pub fn merge_checked(inputs: &[PathBuf], out_csv: &Path, spec: Option<&Path>) ->
     for w in blocks.windows(2) {
         if w[0].case == w[1].case {
             let (a, b) = (&inputs[w[0].file as usize], &inputs[w[1].file as usize]);
-            let place = if a == b { format!("twice in {}", a.display()) } else { format!("in {} and {}", a.display(), b.display()) };
+            let place = if a == b {
+                format!("twice in {}", a.display())
+            } else {
+                format!("in {} and {}", a.display(), b.display())
+            };
             return Err(invalid(b, "case", format!("case {} appears {place}: is a shard given twice?", w[0].case)));
         }
     }
