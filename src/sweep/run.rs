@@ -242,7 +242,7 @@ impl Plan {
                  sweep again with --resume",
             ));
         }
-        let written = journal::write_sorted(&[self.journal.clone()], blocks, &scanned.header, &self.out)?;
+        let written = journal::write_sorted(std::slice::from_ref(&self.journal), blocks, &scanned.header, &self.out)?;
         std::fs::remove_file(&self.journal).map_err(|source| Error::Write { path: self.journal.clone(), source })?;
         Ok(written)
     }
