@@ -69,3 +69,40 @@ fn readme_worked_example_output_is_what_rollbem_prints() {
         assert_eq!(w, g, "README worked example, line {}: stale (update the block from the command's output)", k + 1);
     }
 }
+
+/// Every flag of every command, as `rollbem <command> --help` lists it, is in the README's table "Every command and
+/// its flags" (issue 19, item 9). Expected: clap's own help of the built binary (an independent listing).
+#[test]
+fn readme_documents_every_flag_of_every_command() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
+    let start = readme.find("## Every command and its flags").expect("the README's command table");
+    let table = &readme[start..start + readme[start..].find("\n### ").unwrap()];
+    let commands: &[&[&str]] = &[
+        &["run"],
+        &["check"],
+        &["solvers"],
+        &["sweep"],
+        &["sweep-merge"],
+        &["report"],
+        &["plot"],
+        &["lcp", "export"],
+        &["lcp", "solve"],
+    ];
+    let mut seen = 0;
+    for cmd in commands {
+        assert!(table.contains(&format!("`rollbem {}", cmd.join(" "))), "command {cmd:?} not in the table");
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_rollbem")).args(*cmd).arg("--help").output().unwrap();
+        assert!(out.status.success());
+        let help = String::from_utf8(out.stdout).unwrap();
+        for flag in help.split_whitespace().filter(|w| w.starts_with("--")) {
+            let flag = flag.trim_end_matches([',', '.', ')']);
+            let flag = flag.split(['=', '<']).next().unwrap();
+            if flag.len() > 2 && flag.chars().skip(2).all(|c| c.is_ascii_lowercase() || c == '-') {
+                assert!(table.contains(&format!("`{flag}")), "{flag} of `rollbem {}` not in the README", cmd.join(" "));
+                seen += 1;
+            }
+        }
+    }
+    assert!(seen >= 20, "only {seen} flags found in the help texts");
+}
