@@ -972,7 +972,7 @@ mod tests {
         front_and_cheapest(&sw, &refs, "cm_shear_err", "shear", &mut md, &mut figs).unwrap();
         assert!(md.contains("##### friction 0.3") && md.contains("##### friction 0.5"), "{md}");
         let half = &md[md.find("##### friction 0.5").unwrap()..];
-        let front = &half[..half.find("Recommended configuration").unwrap()];
+        let front = &half[..half.find("Recommended (").unwrap()];
         assert!(
             front.contains("| constant | 30 | 2.00e-3 |") && front.contains("| constant | 60 | 1.00e-3 |"),
             "{front}"
