@@ -34,7 +34,7 @@ pub mod row;
 mod run;
 
 pub use row::{RowStatus, SweepRow, TIMING_COLUMNS};
-pub use run::{error_rows_in, merge, run_sweep, REPEAT_BELOW_S};
+pub use run::{error_rows_in, merge, run_sweep, sweep_rows, REPEAT_BELOW_S};
 
 use crate::error::{Error, Result};
 use crate::scene::Scene;

@@ -252,13 +252,24 @@ fn write_csv(out_csv: &Path, keys: &[String], rows: &[SweepRow]) -> Result<()> {
 /// `error` and the message in the last column, `message` (which holds the solver's explanation for the runs that
 /// did run); [`error_rows_in`] counts them for the caller.
 ///
+/// The rows are those of [`sweep_rows`] (which says how the cases run), written by [`SweepRow::record`].
+pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progress: bool) -> Result<usize> {
+    let (keys, rows) = sweep_rows(spec_path, shard, progress)?;
+    write_csv(out_csv, &keys, &rows)?;
+    Ok(rows.len())
+}
+
+/// Run the cases of this shard (all cases without one) and return the rows [`run_sweep`] writes, in its order, with
+/// the swept keys (the CSV's columns after `case`): for a caller that wants the typed rows rather than a file (the
+/// Python binding). Errors as [`run_sweep`]'s, without the output's.
+///
 /// Cases sharing bodies and mesh are solved on one model (one BEM assembly and condensation); groups run in
 /// parallel with rayon, with an indicatif progress bar (hidden when `progress` is false or stderr is not a
 /// terminal). A sweep that asks for repeated timings runs its groups one at a time, so that no case is timed while
 /// another competes for the cores (on 2 cores, parallel cases moved timings by tens of percent between report runs
 /// and reordered configurations on the Pareto front). Sets faer's global parallelism to sequential: the groups are
 /// the parallel unit.
-pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progress: bool) -> Result<usize> {
+pub fn sweep_rows(spec_path: &Path, shard: Option<Shard>, progress: bool) -> Result<(Vec<String>, Vec<SweepRow>)> {
     let spec = SweepSpec::from_file(spec_path)?;
     // Per-case messages name the spec by its file name only: the CSV must not depend on where a shard ran.
     let label = PathBuf::from(spec_path.file_name().unwrap_or(spec_path.as_os_str()));
@@ -296,8 +307,7 @@ pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progres
         }
     }
     sort_rows(&mut rows);
-    write_csv(out_csv, &keys, &rows)?;
-    Ok(rows.len())
+    Ok((keys, rows))
 }
 
 /// The number of rows with status `error` in a sweep CSV written by [`run_sweep`] (0 when it cannot be read).
