@@ -96,7 +96,7 @@ def sweep(
     if as_frame:
         try:
             import pandas as pd
-        except ImportError as e:  # pragma: no cover - depends on the environment
+        except ImportError as e:
             raise ImportError("rollbem.sweep(as_frame=True) needs pandas: pip install pandas") from e
     columns, rows = _sweep_rows(os.fspath(spec), shard)
     if as_frame:

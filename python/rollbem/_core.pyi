@@ -10,6 +10,7 @@ wheel centre; creepage xi dimensionless, xi > 0 braking.
 from __future__ import annotations
 
 import os
+from pathlib import Path
 from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -78,8 +79,8 @@ class Scene:
     def units(self) -> Optional[str]:
         """The units label (e.g. ``"N, mm, MPa"``), or ``None``."""
     @property
-    def origin(self) -> str:
-        """Its file, or ``"<scene>"``."""
+    def origin(self) -> Path:
+        """Its file, or ``Path("<scene>")``."""
     @property
     def radius(self) -> float:
         """The wheel's radius R (length unit)."""

@@ -4,7 +4,7 @@
 //!
 //! | [`rollbem::Error`] | exception | the CLI's exit code |
 //! |---|---|---|
-//! | `Io`, `Parse`, `Invalid`, `Unsupported` | `InputError` (`key` = the dotted key where known) | 2 |
+//! | `Io`, `Parse`, `Invalid`, `Unsupported` | `InputError` (`key`: the dotted key where known) | 2 |
 //! | `Write`, `Output` | `OutputError` | 3 |
 //! | `Numerical` | `NumericalError` (`stage`) | 4 |
 //! | a run not solved, when the caller asks ([`solve_error`]) | `SolveError` | 5 |
@@ -49,7 +49,7 @@ fn raise(py: Python<'_>, class: &str, message: String, kwargs: &[(&str, Option<S
     made.unwrap_or_else(|e| e)
 }
 
-/// The key an `Unsupported` message starts with (`solvers.use: ...`, `steps[].tangential_load: ...`), if any.
+/// The key a `Parse` or `Unsupported` message of the library starts with (`solvers.use: ...`, `steps[].tangential_load: ...`), if any.
 fn leading_key(message: &str) -> Option<String> {
     let (head, _) = message.split_once(": ")?;
     let ok = !head.is_empty() && head.chars().all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '.' | '[' | ']'));
@@ -69,7 +69,10 @@ pub fn to_py(py: Python<'_>, failure: Failure) -> PyErr {
     let path = |p: &std::path::Path| Some(p.display().to_string());
     match &error {
         Error::Io { path: p, .. } => raise(py, "InputError", message, &[("key", known_key), ("path", path(p))]),
-        Error::Parse { path: p, .. } => raise(py, "InputError", message, &[("key", known_key), ("path", path(p))]),
+        Error::Parse { path: p, message: m } => {
+            let key = known_key.or_else(|| leading_key(m));
+            raise(py, "InputError", message, &[("key", key), ("path", path(p))])
+        }
         Error::Invalid { path: p, field, .. } => {
             raise(py, "InputError", message, &[("key", Some(field.clone())), ("path", path(p))])
         }
