@@ -379,7 +379,7 @@ class Report:
 def run(scene: Scene, *, check: bool = False) -> Report:
     """Build the scene's model and solve the scene once (``rollbem run``)."""
 
-def _rust_creep_curve(scene: Scene, creepages: Sequence[float]) -> Tuple[float, List[float]]:
+def _rust_creep_curve(scene: Scene, creepages: Sequence[float], on_worker: bool = False) -> Tuple[float, List[float]]:
     """Benchmark reference: the same creep curve through the Rust API alone: (seconds, Q per creepage)."""
 
 def _sweep_rows(spec: str, shard: Optional[str]) -> Tuple[List[str], List[List[Any]]]: ...

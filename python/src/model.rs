@@ -213,11 +213,18 @@ pub fn run(py: Python<'_>, scene: &PyScene, check: bool) -> PyResult<Py<PyReport
 
 /// The benchmark's reference: the same creep curve through the Rust API alone (no Python between the solves):
 /// build the model of `scene`, solve it at each creepage, and return (seconds, Q of the first run per creepage,
-/// NaN where not solved). `benches/python/creep_curve.py` times the Python API against it.
+/// NaN where not solved). On the calling thread, or with `on_worker` on a worker thread of [`worker`] (where the
+/// binding's solves run). `python/benches/creep_curve.py` times the Python API against it.
 #[pyfunction]
-pub fn _rust_creep_curve(py: Python<'_>, scene: &PyScene, creepages: Vec<f64>) -> PyResult<(f64, Vec<f64>)> {
+#[pyo3(signature = (scene, creepages, on_worker = false))]
+pub fn _rust_creep_curve(
+    py: Python<'_>,
+    scene: &PyScene,
+    creepages: Vec<f64>,
+    on_worker: bool,
+) -> PyResult<(f64, Vec<f64>)> {
     let scene = scene.inner.clone();
-    let out = py.detach(move || -> rollbem::Result<(f64, Vec<f64>)> {
+    let curve = move || -> rollbem::Result<(f64, Vec<f64>)> {
         let start = std::time::Instant::now();
         let model = Model::build(&scene)?;
         let mut q = Vec::with_capacity(creepages.len());
@@ -226,6 +233,10 @@ pub fn _rust_creep_curve(py: Python<'_>, scene: &PyScene, creepages: Vec<f64>) -
             q.push(report.runs[0].resultants.map_or(f64::NAN, |f| f.tangential));
         }
         Ok((start.elapsed().as_secs_f64(), q))
-    });
-    out.map_err(|e| to_py(py, e.into()))
+    };
+    if on_worker {
+        worker::run(py, move |_| Ok(curve()?))
+    } else {
+        py.detach(curve).map_err(|e| to_py(py, e.into()))
+    }
 }
