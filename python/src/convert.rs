@@ -28,7 +28,8 @@ pub fn to_json(obj: &Bound<'_, PyAny>, key: &str, origin: &Path) -> Result<Value
     if obj.is_instance_of::<PyString>() {
         return Ok(Value::String(obj.extract::<String>().map_err(|e| bad(e.to_string()))?));
     }
-    if obj.is_instance_of::<PyInt>() || (!obj.is_instance_of::<PyFloat>() && obj.hasattr("__index__").unwrap_or(false)) {
+    if obj.is_instance_of::<PyInt>() || (!obj.is_instance_of::<PyFloat>() && obj.hasattr("__index__").unwrap_or(false))
+    {
         if let Ok(v) = obj.extract::<i64>() {
             return Ok(Value::from(v));
         }

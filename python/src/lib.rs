@@ -9,6 +9,8 @@
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
+// A cdylib: every item is private, and its docs are read with `cargo doc --document-private-items`.
+#![allow(rustdoc::private_intra_doc_links)]
 
 mod convert;
 mod drive;

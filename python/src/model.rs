@@ -19,7 +19,7 @@ use std::sync::Arc;
 /// What one solve is asked to solve, read from Python on the calling thread.
 enum Job {
     /// A whole scene (sharing the model's bodies and mesh).
-    Scene(Scene),
+    Scene(Box<Scene>),
     /// The model's scene with another drive.
     Drive(DriveKeys),
     /// The model's scene walking a load path.
@@ -30,7 +30,7 @@ impl Job {
     /// The scene to solve (validated; on the worker thread).
     fn scene(self, base: &Scene) -> rollbem::Result<Scene> {
         match self {
-            Job::Scene(s) => Ok(s),
+            Job::Scene(s) => Ok(*s),
             Job::Drive(k) if k.is_empty() => Ok(base.clone()),
             Job::Drive(k) => k.apply(base),
             Job::Path(steps) => with_steps(base, steps),
@@ -58,7 +58,7 @@ fn job_of(model: &Model, item: Option<&Bound<'_, PyAny>>, kwargs: Option<&Bound<
                 };
                 return Err(error.into());
             }
-            return Ok(Job::Scene(s.get().inner.clone()));
+            return Ok(Job::Scene(Box::new(s.get().inner.clone())));
         }
     }
     let mut value = match item {

@@ -266,6 +266,11 @@ impl PyScene {
     }
 
     fn __repr__(&self) -> String {
-        format!("<rollbem.Scene {:?} ({}, {})>", self.inner.name(), self.inner.model().name(), self.inner.origin().display())
+        format!(
+            "<rollbem.Scene {:?} ({}, {})>",
+            self.inner.name(),
+            self.inner.model().name(),
+            self.inner.origin().display()
+        )
     }
 }

@@ -67,11 +67,12 @@ impl PyStresses {
     /// The field of a quantity, shape (nz, nx), float64 (NaN where a point has no value); `KeyError` for a quantity
     /// not computed.
     fn __getitem__<'py>(&self, py: Python<'py>, quantity: &str) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let q = StressQuantity::from_name(quantity).ok_or_else(|| {
-            pyo3::exceptions::PyKeyError::new_err(format!("unknown stress quantity `{quantity}`"))
-        })?;
+        let q = StressQuantity::from_name(quantity)
+            .ok_or_else(|| pyo3::exceptions::PyKeyError::new_err(format!("unknown stress quantity `{quantity}`")))?;
         let v = self.values(q).ok_or_else(|| {
-            pyo3::exceptions::PyKeyError::new_err(format!("`{quantity}` was not computed (see `[stresses] quantities`)"))
+            pyo3::exceptions::PyKeyError::new_err(format!(
+                "`{quantity}` was not computed (see `[stresses] quantities`)"
+            ))
         })?;
         let (nz, nx) = self.shape();
         let a = Array2::from_shape_vec((nz, nx), v)

@@ -29,15 +29,14 @@ fn text(row: &SweepRow, name: &str) -> String {
     }
 }
 
+/// A sweep's columns and its rows of cells.
+type Rows<'py> = (Vec<String>, Vec<Vec<Bound<'py, PyAny>>>);
+
 /// Run the sweep spec at `spec` (its shard `k/n`, or all of it): (the columns of the sweep CSV, one list of cells per
 /// row), rows sorted by case then solver, the cells typed (`None` where empty). Runs the cases in parallel.
 #[pyfunction]
 #[pyo3(signature = (spec, shard = None))]
-pub fn _sweep_rows<'py>(
-    py: Python<'py>,
-    spec: PathBuf,
-    shard: Option<String>,
-) -> PyResult<(Vec<String>, Vec<Vec<Bound<'py, PyAny>>>)> {
+pub fn _sweep_rows<'py>(py: Python<'py>, spec: PathBuf, shard: Option<String>) -> PyResult<Rows<'py>> {
     let shard = match shard {
         None => None,
         Some(s) => Some(s.parse::<Shard>().map_err(|message| {
