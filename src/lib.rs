@@ -74,6 +74,7 @@ pub mod material;
 pub mod mesh;
 pub mod pipeline;
 pub mod plot;
+pub mod plot_csv;
 pub mod plot_result;
 pub mod post;
 pub mod progress;

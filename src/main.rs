@@ -99,11 +99,18 @@ enum Cmd {
     /// Draw a result document's figures (written by `run --json`): per solver run the surface tractions and, with
     /// `[stresses]`, a contour map per stress quantity with its maximum marked (SVG).
     Plot {
-        /// Result document (JSON).
+        /// A result document (JSON, `run --json`), a load path's CSV (`run --path-csv`) or a sweep's CSV (`sweep`).
         result: PathBuf,
-        /// Output folder (default: the result document's folder).
+        /// Output folder (default: the input's folder).
         #[arg(long)]
         out: Option<PathBuf>,
+        /// For a sweep's CSV: what the sweep is (its spec's `analysis`): creep_curve, accuracy or
+        /// finite_vs_half_plane.
+        #[arg(long)]
+        analysis: Option<String>,
+        /// For a load path's CSV: the scene that wrote it, for the theory drawn beside it.
+        #[arg(long)]
+        scene: Option<PathBuf>,
     },
     /// Run every requested solver on each scene and check them against theory, against each other and against
     /// the scene's declared expectations; print a pass/fail table; exit 1 if any check fails.
@@ -315,6 +322,22 @@ fn run(
     ExitCode::from(code)
 }
 
+/// `rollbem plot`: a result document, or a CSV table (with its analysis or its scene).
+fn plot(
+    input: &Path,
+    out: Option<&Path>,
+    analysis: Option<String>,
+    scene: Option<PathBuf>,
+) -> rollbem::Result<rollbem::plot_result::Plotted> {
+    if input.extension().is_some_and(|e| e == "csv") {
+        let analysis = analysis.map(|a| rollbem::sweep::Analysis::from_name(&a, input)).transpose()?;
+        let scene = scene.map(|p| Scene::from_file(&p)).transpose()?;
+        let dir = input.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+        return rollbem::plot_csv::plot_csv(input, out.unwrap_or(dir), analysis, scene.as_ref());
+    }
+    rollbem::plot_result::plot_result(input, out)
+}
+
 /// Print an error and turn it into the process exit code.
 fn fail(e: &rollbem::Error) -> ExitCode {
     eprintln!("error: {e}");
@@ -326,7 +349,7 @@ fn main() -> ExitCode {
     rollbem::progress::enable(!cli.quiet);
     match cli.cmd {
         Cmd::Check { scenes, solvers } => check(&scenes, &solvers),
-        Cmd::Plot { result, out } => match rollbem::plot_result::plot_result(&result, out.as_deref()) {
+        Cmd::Plot { result, out, analysis, scene } => match plot(&result, out.as_deref(), analysis, scene) {
             Ok(done) => {
                 for f in &done.files {
                     say!("wrote {}", f.display());

@@ -4,7 +4,8 @@
 //! (`STEM.SOLVER.tractions.svg`) with Hertz's pressure when the document carries it (`references.hertz`); the node
 //! states against x (`STEM.SOLVER.states.svg`: separated / contact or slip / stick); the slip velocity against x
 //! when the scene rolls (`STEM.SOLVER.slip_velocity.svg`); and, when the run has subsurface stresses ([`crate::stresses`]), one filled contour
-//! map per quantity (`STEM.SOLVER.QUANTITY.svg`) with the maximum (largest |value|, as in the result document)
+//! map per quantity (`STEM.SOLVER.QUANTITY.svg`, and `STEM.SOLVER.counter_body.QUANTITY.svg` for an elastic
+//! counter-body's field) with the maximum (largest |value|, as in the result document)
 //! marked and captioned. STEM is the result file's name without `.json`; DIR defaults to the result file's folder.
 //! A field written to a CSV file beside the document (large grids) is read from there.
 //!
@@ -109,6 +110,13 @@ pub fn plot_result(json: &Path, out: Option<&Path>) -> Result<Plotted> {
     for run in &report.runs {
         run_figures(&ctx, run, &mut done)?;
     }
+    if !report.steps.is_empty() {
+        // A load path: the loop (or the approach to steady rolling) and the stick zone along it, with the theory
+        // where it applies, as the report draws them.
+        let mut figs = crate::report::Figs::new(&ctx.out, "");
+        crate::report::path_figures(&ctx.stem, &report, &mut String::new(), &mut figs)?;
+        done.files.extend(figs.list.into_iter().map(|(_, f)| ctx.out.join(f)));
+    }
     Ok(done)
 }
 
@@ -168,6 +176,9 @@ fn run_figures(ctx: &Context, run: &SolverRun, done: &mut Plotted) -> Result<()>
     if let Some(st) = &run.stresses {
         stress_maps(ctx, solver, st, done)?;
     }
+    if let Some(st) = &run.counter_body_stresses {
+        stress_maps(ctx, solver, st, done)?;
+    }
     Ok(())
 }
 
@@ -194,7 +205,8 @@ fn stress_maps(ctx: &Context, solver: &str, st: &StressResult, done: &mut Plotte
         } else {
             format!("largest |{}|: {} {su}", label(*q), sig4(max.value))
         };
-        let mut map = ContourMap::new(format!("{name}, {solver}: {} in the wheel", label(*q)), field)
+        let body = if st.body == "counter_body" { "the counter-body" } else { "the wheel" };
+        let mut map = ContourMap::new(format!("{name}, {solver}: {} in {body}", label(*q)), field)
             .x_axis("x", lu)
             .depth_axis("depth", lu)
             .value_axis(label(*q), su)
@@ -205,7 +217,8 @@ fn stress_maps(ctx: &Context, solver: &str, st: &StressResult, done: &mut Plotte
         if (0.2..=5.0).contains(&aspect) {
             map = map.equal_aspect();
         }
-        let file = ctx.out.join(format!("{}.{solver}.{}.svg", ctx.stem, q.name()));
+        let tag = if st.body == "counter_body" { ".counter_body" } else { "" };
+        let file = ctx.out.join(format!("{}.{solver}{tag}.{}.svg", ctx.stem, q.name()));
         map.write(&file).map_err(plot_err)?;
         done.files.push(file);
     }

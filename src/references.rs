@@ -72,10 +72,65 @@ pub fn hertz_at(scene: &Scene, p: f64) -> Hertz {
     Hertz::with_modulus(scene.radius(), scene.contact_modulus(), p)
 }
 
-/// Whether Carter applies: steady rolling with μ > 0, the normal and tangential problems decoupled ([`beta_zero`]).
+/// Where a half-space theory of the decoupled problem (Cattaneo–Mindlin, Carter) stands for a scene.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Domain {
+    /// Its assumptions hold: the half-plane model of the wheel, with the normal and tangential problems decoupled
+    /// (Dundurs' β of the pair zero, or `coupling = false`). Checked against the theory within a tolerance.
+    Holds,
+    /// The finite (BEM) wheel, decoupled: the theory is the limit a/R → 0 of this problem, not the problem. A finite
+    /// body keeps a normal–tangential coupling of order a/R through its curvature and its support, which moves the
+    /// stick zone by a fixed length that no mesh refinement removes. Compared with the theory as a model
+    /// comparison, with the model error computed on the half-plane counterpart ([`half_space_counterpart`]).
+    FiniteBody,
+    /// β ≠ 0 with the coupling on: the theory's decoupled problem is not this one; no comparison.
+    Outside,
+}
+
+/// The domain of the decoupled half-space theories for a scene ([`Domain`]).
+pub fn decoupled_domain(scene: &Scene) -> Domain {
+    let decoupled = !scene.law().coupling || scene.dundurs_beta().abs() < 1e-12;
+    match (decoupled, scene.model()) {
+        (false, _) => Domain::Outside,
+        (true, BodyModel::HalfPlane) => Domain::Holds,
+        (true, BodyModel::Bem) => Domain::FiniteBody,
+    }
+}
+
+/// Whether Carter is compared with a run: steady rolling with μ > 0, P > 0, and the decoupled problem
+/// ([`decoupled_domain`] not `Outside`).
 pub fn carter_applies(scene: &Scene, p: f64) -> bool {
     let steady = matches!(scene.rolling(), Some(Rolling::Steady { .. }));
-    steady && scene.friction() > 0.0 && p > 0.0 && beta_zero(scene, p)
+    steady && scene.friction() > 0.0 && p > 0.0 && decoupled_domain(scene) != Domain::Outside
+}
+
+/// The model the half-space theories assume, for a finite-wheel scene they are compared with
+/// ([`Domain::FiniteBody`]): the same material, radius (a circular profile), counter-body, contact law, drive,
+/// rolling and candidate zone, with the wheel modelled as an elastic half-plane (constant elements; a quadratic
+/// mesh's nodes become as many constant elements on the same zone), solved by `active_set`. `None` when the
+/// scene is not compared with a half-space theory on the finite wheel.
+pub fn half_space_counterpart(scene: &Scene) -> Option<crate::Result<Scene>> {
+    let compared = cattaneo_applies(scene) || matches!(scene.rolling(), Some(Rolling::Steady { .. }));
+    if decoupled_domain(scene) != Domain::FiniteBody || !compared || scene.friction() == 0.0 {
+        return None;
+    }
+    Some(scene.edit(|d| {
+        d.name = format!("{}-half-space", d.name);
+        d.wheel.model = BodyModel::HalfPlane;
+        d.wheel.support = None;
+        d.wheel.profile = None;
+        d.wheel.datum_depth = None;
+        if d.mesh.element == crate::scene::ElementKind::Quadratic {
+            d.mesh.contact_elements *= 3;
+        }
+        d.mesh.element = crate::scene::ElementKind::Constant;
+        d.mesh.other_elements = None;
+        d.drive.rotation = None;
+        d.drive.moment = None;
+        d.solvers = crate::scene::document::SolversTable::using(&["active_set"]);
+        d.checks = None;
+        d.stresses = None;
+    }))
 }
 
 /// Carter's solution for a steady-rolling run: (c/a, Q/(μP), ξ, stick-zone centre d, Hertz). `None` when it does
@@ -123,8 +178,9 @@ pub fn beta_zero(scene: &Scene, p: f64) -> bool {
     !scene.law().coupling || (beta_vanishes && finite_ok)
 }
 
-/// Whether Cattaneo–Mindlin applies: a static problem (no steady rolling), β = 0 ([`beta_zero`]), P and Q
-/// prescribed with the rotation held (or no rotation: the half-plane), 0 < |Q| < μP.
+/// Whether Cattaneo–Mindlin is compared with a scene's runs: a static problem (no steady rolling), P and Q
+/// prescribed with the rotation held (or no rotation: the half-plane), 0 < |Q| < μP, and the decoupled problem
+/// ([`decoupled_domain`] not `Outside`: a check where it holds, a model comparison on the finite wheel).
 pub fn cattaneo_applies(scene: &Scene) -> bool {
     let Some(d) = scene.drive() else { return false };
     if matches!(scene.rolling(), Some(Rolling::Steady { .. })) {
@@ -133,7 +189,7 @@ pub fn cattaneo_applies(scene: &Scene) -> bool {
     let mu = scene.friction();
     match (d.normal, d.tangential, d.rotational) {
         (Dof::Load(p), Dof::Load(q), Dof::Displacement(_)) => {
-            beta_zero(scene, p) && mu > 0.0 && q != 0.0 && q.abs() < mu * p
+            decoupled_domain(scene) != Domain::Outside && mu > 0.0 && q != 0.0 && q.abs() < mu * p
         }
         _ => false,
     }

@@ -38,8 +38,17 @@
 //!   hole), is therefore refused before anything is solved, as an input error naming `stresses.depth` (or
 //!   `stresses.x`) and the first such point (exit code 2, nothing written): never a wrong value.
 //!
-//! With an elastic counter-body (`[counter_body] kind = "half_plane"`) the field is the **wheel's**, from the same
-//! tractions; the counter-body's own field is not computed.
+//! With an elastic counter-body (`[counter_body] kind = "half_plane"`) the counter-body's own field is computed
+//! beside the wheel's ([`StressEvaluator::evaluate_counter_body`]): the half-plane below the contact under the
+//! opposite tractions, on the same grid, depth measured into it.
+//!
+//! # The surface
+//! Besides the grid, every field is evaluated on the surface (depth 0) at the contact elements' centres — the
+//! half-plane's closed form there, the BEM wheel's boundary stress from its tractions and the tangential strain of
+//! its boundary displacement — and the maxima include those points. Sliding contacts peak there (τ₁ = μp₀ at every
+//! surface point of a contact in full slip for μ ≥ 1/√7, Smith & Liu 1953), and a grid's surface row on the
+//! elements' edges is refused (the half-plane's singular σ_xx), so without them the maximum would be reported below
+//! the surface.
 //!
 //! # Where and when
 //! Only a scene with `[stresses]` computes anything ("simulate only the effects a scene calls for"). Every solved
@@ -186,6 +195,10 @@ pub struct StressField {
     pub nu: f64,
     /// `[σ_xx, σ_zz, τ_xz]` per point, row-major.
     pub stress: Vec<Result<[f64; 3], PointError>>,
+    /// The surface (depth 0) at the contact elements' centres: (x, `[σ_xx, σ_zz, τ_xz]`) — where the stresses of a
+    /// sliding contact peak (the maximum principal shear is μ p₀ at every surface point of a contact in full slip,
+    /// Smith & Liu 1953) and where a grid's surface row may fall on element edges.
+    pub surface: Vec<(f64, Result<[f64; 3], PointError>)>,
 }
 
 impl StressField {
@@ -196,18 +209,25 @@ impl StressField {
 
     /// The maximum of `q` (largest magnitude, first in row-major order on ties), if any point has a value.
     pub fn maximum(&self, q: StressQuantity) -> Option<Maximum> {
-        let mut best: Option<(usize, f64)> = None;
+        let mut best: Option<Maximum> = None;
+        let mut consider = |value: f64, x: f64, depth: f64| {
+            if best.is_none_or(|b| value.abs() > b.value.abs()) {
+                best = Some(Maximum { value, x, depth });
+            }
+        };
         for k in 0..self.stress.len() {
             if let Some(v) = self.value(q, k) {
-                if best.is_none_or(|(_, b)| v.abs() > b.abs()) {
-                    best = Some((k, v));
-                }
+                let (x, depth) = self.grid.point(k);
+                consider(v, x, depth);
             }
         }
-        best.map(|(k, value)| {
-            let (x, depth) = self.grid.point(k);
-            Maximum { value, x, depth }
-        })
+        // The surface after the grid: a surface value wins only when it is strictly larger.
+        for (x, st) in &self.surface {
+            if let Ok(st) = st {
+                consider(quantity(q, *st, self.nu), *x, 0.0);
+            }
+        }
+        best
     }
 
     /// The field as CSV: columns `x, depth`, one per quantity, and `error` (empty unless the point is refused,
@@ -259,6 +279,9 @@ pub struct StressResult {
     /// The quantities' values at the grid points (null once [`StressResult::spill`] moved them to a CSV file).
     #[serde(rename = "field")]
     pub values: Option<FieldValues>,
+    /// The quantities at the surface, at the contact elements' centres (included in the maxima).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub surface: Option<SurfaceValues>,
     /// The CSV file beside the result document that holds the field, once [`StressResult::spill`] moved it there.
     pub csv: Option<String>,
     /// The stress tensor at every point, in memory after an evaluation (empty when read back from a document).
@@ -284,6 +307,16 @@ pub struct FieldValues {
     pub error: Vec<Option<PointError>>,
 }
 
+/// The surface values of the document: x of the contact elements' centres (depth 0) and, per quantity name, its
+/// value there (null where refused).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SurfaceValues {
+    /// x of the points.
+    pub x: Vec<f64>,
+    /// Per quantity name, its value at every point.
+    pub values: BTreeMap<String, Vec<Option<f64>>>,
+}
+
 impl StressResult {
     /// The document form of an evaluated field.
     pub fn of(model: BodyModel, quantities: Vec<StressQuantity>, field: StressField, time_s: f64) -> StressResult {
@@ -293,6 +326,16 @@ impl StressResult {
         for e in field.stress.iter().filter_map(|s| s.err()) {
             *refused.entry(e.name().to_string()).or_insert(0) += 1;
         }
+        let surface = (!field.surface.is_empty()).then(|| SurfaceValues {
+            x: field.surface.iter().map(|(x, _)| *x).collect(),
+            values: quantities
+                .iter()
+                .map(|&q| {
+                    let v = field.surface.iter().map(|(_, s)| s.ok().map(|s| quantity(q, s, field.nu))).collect();
+                    (q.name().to_string(), v)
+                })
+                .collect(),
+        });
         let values = FieldValues {
             x: (0..g.points[0]).map(|i| g.x_at(i)).collect(),
             depth: (0..g.points[1]).map(|j| g.depth_at(j)).collect(),
@@ -311,6 +354,7 @@ impl StressResult {
             refused,
             time_s,
             values: Some(values),
+            surface,
             csv: None,
             field,
         }
@@ -319,6 +363,11 @@ impl StressResult {
     /// The maximum of every reported quantity, in the order of [`StressResult::quantities`].
     pub fn maxima(&self) -> Vec<(StressQuantity, Option<Maximum>)> {
         self.maxima.clone()
+    }
+
+    /// The maximum of one reported quantity (grid and surface), if it has one.
+    pub fn maximum_of(&self, q: StressQuantity) -> Option<Maximum> {
+        self.maxima.iter().find(|(m, _)| *m == q).and_then(|(_, v)| *v)
     }
 
     /// Number of refused points per reason.
@@ -389,6 +438,8 @@ pub struct StressEvaluator<'a> {
     nu: f64,
     modulus: f64,
     body: Body<'a>,
+    /// An elastic (half-plane) counter-body: its strips (the contact grid's, user's length unit) and its ν.
+    counter: Option<(Vec<f64>, Vec<f64>, f64)>,
 }
 
 impl<'a> StressEvaluator<'a> {
@@ -443,6 +494,14 @@ impl<'a> StressEvaluator<'a> {
                 Body::Wheel { response, points, refused }
             }
         };
+        let counter = match scene.counter_body() {
+            crate::scene::CounterBody::HalfPlane { material, .. } => {
+                let g = Grid::of(scene);
+                let scale = |v: &[f64]| v.iter().map(|x| x * l0).collect::<Vec<f64>>();
+                Some((scale(&g.a), scale(&g.b), material.poisson_ratio))
+            }
+            crate::scene::CounterBody::Rigid => None,
+        };
         Ok(Some(StressEvaluator {
             grid,
             quantities: spec.quantities(),
@@ -450,6 +509,7 @@ impl<'a> StressEvaluator<'a> {
             nu: scene.wheel().material.poisson_ratio,
             modulus: scene.wheel().material.youngs_modulus,
             body,
+            counter,
         }))
     }
 
@@ -460,8 +520,8 @@ impl<'a> StressEvaluator<'a> {
     /// If `nodes` does not have one entry per contact node of the source.
     pub fn evaluate(&self, nodes: &[NodeResult]) -> StressResult {
         let t0 = Instant::now();
-        let stress = match &self.body {
-            Body::HalfPlane { a, b } => half_plane_field(&self.grid, a, b, nodes),
+        let (stress, surface) = match &self.body {
+            Body::HalfPlane { a, b } => (half_plane_field(&self.grid, a, b, nodes), half_plane_surface(a, b, nodes)),
             Body::Wheel { response, points, refused } => {
                 let e = self.modulus;
                 let p: Vec<f64> = nodes.iter().map(|n| n.pressure / e).collect();
@@ -481,12 +541,77 @@ impl<'a> StressEvaluator<'a> {
                         Err(StressError::NotFinite) => Err(PointError::Singular),
                     };
                 }
-                out
+                (out, wheel_surface(response, &u, &t, e))
             }
         };
-        let field = StressField { grid: self.grid, nu: self.nu, stress };
+        let field = StressField { grid: self.grid, nu: self.nu, stress, surface };
         StressResult::of(self.model, self.quantities.clone(), field, t0.elapsed().as_secs_f64())
     }
+
+    /// The elastic counter-body's field from the same run (`None` for a rigid flat): the half-plane below the
+    /// contact loaded by the opposite tractions, on the same grid with depth measured into the counter-body and x
+    /// as on the wheel. Mirrored into the wheel's configuration the counter-body carries the pressure p and the
+    /// shear −q, so its field is the half-plane formula with (p, −q) and its own ν; τ_xz is in its (x, depth) axes.
+    pub fn evaluate_counter_body(&self, nodes: &[NodeResult]) -> Option<StressResult> {
+        let (a, b, nu) = self.counter.as_ref()?;
+        let t0 = Instant::now();
+        let mirrored: Vec<NodeResult> = nodes.iter().map(|n| NodeResult { shear: -n.shear, ..n.clone() }).collect();
+        let field = StressField {
+            grid: self.grid,
+            nu: *nu,
+            stress: half_plane_field(&self.grid, a, b, &mirrored),
+            surface: half_plane_surface(a, b, &mirrored),
+        };
+        let mut r = StressResult::of(BodyModel::HalfPlane, self.quantities.clone(), field, t0.elapsed().as_secs_f64());
+        r.body = "counter_body".into();
+        Some(r)
+    }
+}
+
+/// The half-plane's surface values at its strips' centres (user's units).
+fn half_plane_surface(a: &[f64], b: &[f64], nodes: &[NodeResult]) -> Vec<(f64, Result<[f64; 3], PointError>)> {
+    (0..a.len())
+        .map(|i| {
+            let x = 0.5 * (a[i] + b[i]);
+            let mut s = [0.0; 3];
+            for j in (0..a.len()).filter(|&j| nodes[j].pressure != 0.0 || nodes[j].shear != 0.0) {
+                let st = strip_stress(a[j], b[j], nodes[j].pressure, nodes[j].shear, x, 0.0);
+                s[0] += st.sxx;
+                s[1] += st.szz;
+                s[2] += st.txz;
+            }
+            (x, finite(s))
+        })
+        .collect()
+}
+
+/// The BEM wheel's surface values at its contact elements' centres, from the boundary solution (`u`, `t`
+/// dimensionless, `e` the stress scale): the traction gives σ_zz and τ_xz, the tangential strain of the boundary
+/// displacement σ_xx ([`crate::bem::stress::boundary_stress`]).
+fn wheel_surface(
+    response: &BoundaryResponse,
+    u: &[[f64; 2]],
+    t: &[[f64; 2]],
+    e: f64,
+) -> Vec<(f64, Result<[f64; 3], PointError>)> {
+    let model = &response.model;
+    let mesh = &model.mesh;
+    let l0 = model.length;
+    mesh.elements
+        .iter()
+        .enumerate()
+        .filter(|(_, el)| el.bc == crate::mesh::Bc::Contact)
+        .map(|(i, el)| {
+            let x = match el.shape {
+                Shape::Straight { a, b } => 0.5 * (a[0] + b[0]) * l0,
+                Shape::Arc(arc) => arc.position(0.0)[0] * l0,
+            };
+            let s = crate::bem::stress::boundary_stress(mesh, &model.kelvin, u, t, i, 0.0)
+                .ok_or(PointError::Singular)
+                .and_then(|s| finite([s[0] * e, s[1] * e, s[2] * e]));
+            (x, s)
+        })
+        .collect()
 }
 
 /// A stress with every component finite, else [`PointError::Singular`].
@@ -675,6 +800,7 @@ mod tests {
             grid,
             nu: 0.3,
             stress: vec![Ok([1.0, 0.0, 0.0]), Err(PointError::NearBoundary), Ok([-2.0, 0.0, 0.0]), Ok([1.5, 0.0, 0.0])],
+            surface: Vec::new(),
         };
         assert_eq!(f.maximum(StressQuantity::Sxx), Some(Maximum { value: -2.0, x: 0.0, depth: 1.0 }));
         let csv = f.csv(&[StressQuantity::Sxx]);

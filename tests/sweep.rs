@@ -297,6 +297,16 @@ fn bad_specs_are_errors_naming_the_key() {
     assert_eq!(f, "grid");
     let (f, _) = field_of(&format!("name = 'x'\nbase = '{base}'\n[[grid]]\n"));
     assert_eq!(f, "grid");
+    // The spec says what the sweep is; an analysis that cannot apply to the grid is bad input naming `analysis`.
+    let (f, m) = field_of(&format!(
+        "name = 'x'\nbase = '{base}'\nanalysis = 'creep_curve'\n[[grid]]\n'mesh.contact_elements' = [4, 8]\n"
+    ));
+    assert_eq!(f, "analysis");
+    assert!(m.contains("rolling.creepage"), "{m}");
+    let (f, m) =
+        field_of(&format!("name = 'x'\nbase = '{base}'\nanalysis = 'guess'\n[[grid]]\n'contact.friction' = [0.1]\n"));
+    assert_eq!(f, "analysis");
+    assert!(m.contains("accuracy") && m.contains("creep_curve"), "{m}");
     // Overlapping keys: a table and a key inside it, or a key given plainly and inside a zipped key.
     let (f, m) = field_of(&format!(
         "name = 'x'\nbase = '{base}'\n[[grid]]\n'drive' = [{{ normal_load = 1.0 }}]\n'drive.normal_load' = [2.0]\n"

@@ -206,8 +206,15 @@ fn item1_a_reference_check_that_cannot_be_evaluated_fails_with_the_reason() {
     c.fit_half_width = None;
     c.fit_peak_pressure = None;
     let hertz = rollbem::references::hertz_for(&s, &runs[0]).expect("Hertz applies to this frictionless scene");
-    let checks =
-        rollbem::checks::make_checks(&s, r.mesh.element, r.mesh.contact_element_length, &runs, &[1e-10], Some(&hertz));
+    let checks = rollbem::checks::make_checks(
+        &s,
+        r.mesh.element,
+        r.mesh.contact_element_length,
+        &runs,
+        &[1e-10],
+        Some(&hertz),
+        None,
+    );
     let h = checks.iter().find(|c| c.name.contains("Hertz")).expect("the Hertz check is not dropped");
     assert!(!h.pass && h.kind == CheckKind::Verdict, "{h:?}");
     assert!(h.note.as_deref().unwrap().contains("cannot be evaluated"), "{h:?}");

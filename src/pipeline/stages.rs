@@ -2,7 +2,7 @@
 //! its solvers, a timed solve, the harness's verdict on an outcome, and the result document. The one-step solve
 //! ([`super::single`]) and the load path ([`super::path`]) are built from these; neither calls the other.
 
-use crate::checks::make_checks;
+use crate::checks::{make_checks, ModelReference};
 use crate::diagnostics::{asymmetry, diagnose};
 use crate::error::{Error, Result};
 use crate::formulation::{ContactProblem, Drive, DriveIssue, ProblemKind, SlipOperator};
@@ -143,6 +143,7 @@ pub fn effects(scene: &Scene) -> Vec<String> {
 pub fn add_stresses(run: &mut SolverRun, stresses: Option<&crate::stresses::StressEvaluator>) {
     if let (Some(ev), Status::Solved) = (stresses, run.status) {
         run.stresses = Some(ev.evaluate(&run.nodes));
+        run.counter_body_stresses = ev.evaluate_counter_body(&run.nodes);
     }
 }
 
@@ -227,7 +228,14 @@ pub fn assemble_report(
     let flex = &built.flex;
     let hertz = if scene.friction() > 0.0 { None } else { reference_hertz(scene, &runs) };
     let (element, length) = (built.info.element, built.info.contact_element_length);
-    let checks = make_checks(scene, element, length, &runs, bounds, hertz.as_ref());
+    // A finite wheel compared with a half-space theory: the same loads on the half-plane counterpart give the model
+    // error beside the comparison (`checks::ModelReference`).
+    let counterpart = crate::references::half_space_counterpart(scene).and_then(|s| s.ok());
+    let counterpart_report = counterpart.as_ref().and_then(|s| super::run_scene(s).ok());
+    let model = counterpart
+        .as_ref()
+        .map(|s| ModelReference { scene: s, run: counterpart_report.as_ref().and_then(|r| r.runs.first()) });
+    let checks = make_checks(scene, element, length, &runs, bounds, hertz.as_ref(), model.as_ref());
     let warnings = crate::checks::run_warnings(scene, element, length, &runs);
     Report {
         schema: crate::results::SCHEMA_VERSION,
@@ -335,6 +343,7 @@ pub fn evaluate_outcome(ctx: &RunContext, outcome: Outcome) -> (SolverRun, Optio
         polish_change,
         history: None,
         stresses: None,
+        counter_body_stresses: None,
     };
     (run, ev)
 }

@@ -6,12 +6,11 @@
 //! theory).
 
 use super::table::{cell, log_slope, num, Row, Sweep, REFINEMENT_KEY};
-use super::{plot_err, Figures};
+use super::Figs;
 use crate::error::Result;
 use crate::plot::{Chart, Series, Style};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use std::path::Path;
 
 /// Errors within this fraction of each other are equal: a configuration is beaten on error only by one at least this
 /// much more accurate (equal-error points that differ only by round-off are not choices), and a recommendation among
@@ -33,6 +32,7 @@ const MEASURES: &[(&str, &str)] = &[
     ("hertz_p0_err", "peak-pressure error vs Hertz"),
     ("disc_a_err", "half-width error vs its mesh limit a∞"),
     ("disc_p0_err", "peak-pressure error vs its mesh limit p0∞"),
+    ("disc_c_err", "stick-zone c/a error vs its mesh limit c∞"),
     ("cm_shear_l2_err", "L2 shear error vs Cattaneo–Mindlin (/‖μp‖)"),
     ("cm_shear_err", "max shear error vs C–M off ±a, ±c (/μp0)"),
 ];
@@ -50,8 +50,23 @@ fn series<'a>(sw: &Sweep, rows: &[&'a Row]) -> BTreeMap<String, Vec<(f64, &'a Ro
     g
 }
 
-/// The accuracy sections of one sweep.
-pub fn sections(sw: &mut Sweep, out: &Path, md: &mut String, figs: &mut Figures) -> Result<()> {
+/// The quantities whose converged-mesh limit separates discretisation error from model error on the finite wheel:
+/// (the run's value, the theory's value, the derived discretisation error, label).
+const LIMITED: &[(&str, &str, &str, &str)] = &[
+    ("half_width_fit", "hertz_a", "disc_a_err", "a"),
+    ("peak_pressure_fit", "hertz_p0", "disc_p0_err", "p0"),
+    ("cm_c_over_a", "cm_c_over_a_exact", "disc_c_err", "c/a"),
+];
+
+/// Whether an error measure is against a run's own mesh limit (discretisation) rather than against theory.
+fn is_discretisation(err: &str) -> bool {
+    err.starts_with("disc_")
+}
+
+/// The accuracy sections of one sweep. On the finite wheel an error against a half-space theory converges to the
+/// model error, not to zero: there the fronts and recommendations are made on the discretisation errors (against
+/// each series' own mesh limit), and the errors against theory are shown against the mesh without an observed order.
+pub fn sections(sw: &mut Sweep, md: &mut String, figs: &mut Figs) -> Result<()> {
     let richardson = discretisation_errors(sw, md);
     let solved: Vec<&Row> = sw.rows.iter().filter(|r| r.status.solved()).collect();
     let failed = sw.rows.len() - solved.len();
@@ -65,16 +80,14 @@ pub fn sections(sw: &mut Sweep, out: &Path, md: &mut String, figs: &mut Figures)
     }
     let present: Vec<(&str, &str)> =
         MEASURES.iter().copied().filter(|(k, _)| solved.iter().any(|r| num(r, k).is_some())).collect();
-    for (err, label) in &present {
-        front_and_cheapest(sw, &solved, err, label, out, md, figs)?;
+    for (err, label) in present.iter().filter(|(k, _)| !richardson || is_discretisation(k)) {
+        front_and_cheapest(sw, &solved, err, label, md, figs)?;
     }
-    if let Some(&(err, label)) = present.first() {
-        convergence(sw, &solved, err, label, out, md, figs)?;
+    if let Some(&(err, label)) = present.iter().find(|(k, _)| !is_discretisation(k)) {
+        convergence(sw, &solved, err, label, !richardson, md, figs)?;
     }
-    if richardson {
-        if let Some(&(err, label)) = present.iter().find(|(k, _)| *k == "disc_a_err") {
-            convergence(sw, &solved, err, label, out, md, figs)?;
-        }
+    for &(err, label) in present.iter().filter(|(k, _)| is_discretisation(k)) {
+        convergence(sw, &solved, err, label, true, md, figs)?;
     }
     Ok(())
 }
@@ -223,9 +236,8 @@ fn front_and_cheapest(
     solved: &[&Row],
     err: &str,
     label: &str,
-    out: &Path,
     md: &mut String,
-    figs: &mut Figures,
+    figs: &mut Figs,
 ) -> Result<()> {
     let rows: Vec<&Row> = solved.iter().copied().filter(|r| num(r, err).is_some() && r.t_total.is_some()).collect();
     let by_row = costs(sw, &rows);
@@ -241,9 +253,8 @@ fn front_and_cheapest(
             chart = chart.add(Series::new(k, p, Style::LineMarkers));
         }
     }
-    let file = format!("figures/{}-{err}-vs-time.svg", sw.stem);
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    figs.push((format!("{}: {label} against time", sw.name), file.clone()));
+    let file =
+        figs.save(&chart, &format!("{}-{err}-vs-time.svg", sw.stem), format!("{}: {label} against time", sw.name))?;
     writeln!(md, "#### {label}\n\n![{label} against time]({file})\n").unwrap();
     let varied = sw.varied(&rows);
     let mut problem_keys: Vec<String> = varied.iter().filter(|k| !is_method_key(k)).cloned().collect();
@@ -520,41 +531,54 @@ fn cheapest_table(cl: &[Class], err: &str, names: &Names, md: &mut String) {
     writeln!(md).unwrap();
 }
 
-/// Error against the mesh per series, with the least-squares order over all meshes and its standard error.
+/// Error against the mesh per series, with the least-squares order over all meshes and its standard error when the
+/// error converges to zero (`orders`; not for an error against a theory that does not hold, which converges to the
+/// model error).
 fn convergence(
     sw: &Sweep,
     solved: &[&Row],
     err: &str,
     label: &str,
-    out: &Path,
+    orders: bool,
     md: &mut String,
-    figs: &mut Figures,
+    figs: &mut Figs,
 ) -> Result<()> {
     let mut chart = Chart::new(format!("{}: {label} against mesh", sw.name), "contact elements", label)
         .x_unit("1")
         .y_unit("1")
         .log_x()
         .log_y();
-    writeln!(
-        md,
-        "Observed orders ({label}): error ∝ n^(−order), n the number of contact elements, least squares over every \
-         mesh of the series, ± its standard error:\n"
-    )
-    .unwrap();
+    if orders {
+        writeln!(
+            md,
+            "Observed orders ({label}): error ∝ n^(−order), n the number of contact elements, least squares over every \
+             mesh of the series, ± its standard error:\n"
+        )
+        .unwrap();
+    } else {
+        writeln!(
+            md,
+            "{label} against the mesh: on the finite wheel it converges to the model error, not to zero, so no order \
+             is fitted (the discretisation errors above are what refining buys):\n"
+        )
+        .unwrap();
+    }
     writeln!(md, "| series | meshes | order | finest mesh | its error |\n|---|---|---|---|---|").unwrap();
     for (k, pts) in series(sw, solved) {
         let p: Vec<(f64, f64)> = pts.iter().filter_map(|(n, r)| Some((*n, num(r, err)?))).collect();
         if p.is_empty() {
             continue;
         }
-        let order = log_slope(&p).map(|(s, se)| format!("{:.2} ± {:.2}", -s, se)).unwrap_or_else(|| "–".into());
+        let order = log_slope(&p)
+            .filter(|_| orders)
+            .map(|(s, se)| format!("{:.2} ± {:.2}", -s, se))
+            .unwrap_or_else(|| "–".into());
         let last = p.last().unwrap();
         writeln!(md, "| {k} | {} | {order} | {} | {:.2e} |", p.len(), last.0, last.1).unwrap();
         chart = chart.add(Series::new(k, p, Style::LineMarkers));
     }
-    let file = format!("figures/{}-{err}-vs-mesh.svg", sw.stem);
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    figs.push((format!("{}: {label} against mesh", sw.name), file.clone()));
+    let file =
+        figs.save(&chart, &format!("{}-{err}-vs-mesh.svg", sw.stem), format!("{}: {label} against mesh", sw.name))?;
     writeln!(md, "\n![{label} against mesh]({file})\n").unwrap();
     Ok(())
 }
@@ -629,13 +653,16 @@ fn mesh_limit(points: &[(f64, f64)]) -> Option<MeshLimit> {
     }
 }
 
-/// On the finite wheel: per series, the converged-mesh limits of the fitted a and p0 ([`mesh_limit`]); each row gets
-/// `disc_a_err`, `disc_p0_err` (its distance to its series' limit) where that distance exceeds the limit's
-/// uncertainty — a smaller one is not resolved and is not reported; a table of the limits and their model error
-/// against Hertz goes into `md`. Returns whether it applied.
+/// On the finite wheel: per series, the converged-mesh limits ([`mesh_limit`]) of every quantity of [`LIMITED`]
+/// the sweep carries (the fitted a and p0 of a Hertz sweep, the stick zone's c/a of a Cattaneo–Mindlin sweep); each
+/// row gets the derived discretisation error (its distance to its series' limit) where that distance exceeds the
+/// limit's uncertainty — a smaller one is not resolved and is not reported; a table of the limits and their model
+/// error against the theory goes into `md`. Returns whether it applied.
 fn discretisation_errors(sw: &mut Sweep, md: &mut String) -> bool {
-    let bem = sw.rows.iter().any(|r| r.model.map_or("", |m| m.name()) == "bem" && r.metrics.hertz_a_err.is_some());
-    if !bem || !sw.keys.iter().any(|k| k == REFINEMENT_KEY) {
+    let bem = sw.rows.iter().any(|r| r.model == Some(crate::scene::BodyModel::Bem));
+    let present: Vec<(&str, &str, &str, &str)> =
+        LIMITED.iter().copied().filter(|(col, ..)| sw.rows.iter().any(|r| num(r, col).is_some())).collect();
+    if !bem || present.is_empty() || !sw.keys.iter().any(|k| k == REFINEMENT_KEY) {
         return false;
     }
     let solved: Vec<usize> = (0..sw.rows.len()).filter(|&i| sw.rows[i].status.solved()).collect();
@@ -645,57 +672,64 @@ fn discretisation_errors(sw: &mut Sweep, md: &mut String) -> bool {
     for &i in &solved {
         groups.entry(sw.label(&sw.rows[i], &varied)).or_default().push(i);
     }
+    let names: Vec<&str> = present.iter().map(|q| q.3).collect();
     writeln!(
         md,
-        "Discretisation error and model error, separated. For each series the fitted half-width a and peak pressure \
-         p0 on its three finest meshes give the converged-mesh limit x∞: when they converge monotonically (two changes \
-         of one sign, the second smaller), by Richardson extrapolation x(n) = x∞ + C n^(−p) through the three, with \
-         uncertainty {RICHARDSON_SAFETY}·|x∞ − x_finest| (the grid convergence index's safety factor); otherwise \
-         (oscillating, or changes not yet shrinking) x∞ is the finest mesh's value with the larger of the two changes \
-         as uncertainty. The discretisation error of a run is its distance to its series' x∞ (what a finer mesh \
-         buys), reported only where it exceeds that uncertainty; x∞ against Hertz is the model error (what no mesh \
-         buys: the finite wheel is not a half-space) for the direct solvers (lemke, lemke_dense, active_set, \
-         clarabel), exact on the discrete problem, and model plus solver error for an iterative solver at a finite \
-         tolerance; where it is within the uncertainty it is not resolved and only its bound is given.\n"
+        "Discretisation error and model error, separated ({}). For each series a quantity's values on its three \
+         finest meshes give its converged-mesh limit x∞: when they converge monotonically (two changes of one sign, \
+         the second smaller), by Richardson extrapolation x(n) = x∞ + C n^(−p) through the three, with uncertainty \
+         {RICHARDSON_SAFETY}·|x∞ − x_finest| (the grid convergence index's safety factor); otherwise (oscillating, or \
+         changes not yet shrinking) x∞ is the finest mesh's value with the larger of the two changes as uncertainty. \
+         The discretisation error of a run is its distance to its series' x∞ (what a finer mesh buys), reported only \
+         where it exceeds that uncertainty; x∞ against the theory is the model error (what no mesh buys: the finite \
+         wheel is not a half-space) for the direct solvers (lemke, lemke_dense, active_set, clarabel), exact on the \
+         discrete problem, and model plus solver error for an iterative solver at a finite tolerance; where it is \
+         within the uncertainty it is not resolved and only its bound is given.\n",
+        names.join(", ")
     )
     .unwrap();
-    writeln!(md, "| series | meshes | a∞ (± uncertainty) | x∞ vs Hertz, a | p0∞ (± uncertainty) | x∞ vs Hertz, p0 |\n|---|---|---|---|---|---|").unwrap();
+    let head: Vec<String> = names.iter().map(|n| format!("{n}∞ (± uncertainty) | x∞ vs theory, {n}")).collect();
+    writeln!(md, "| series | meshes | {} |\n|---|---|{}", head.join(" | "), "---|---|".repeat(names.len())).unwrap();
     for (label, idx) in groups {
         let mut cells = Vec::new();
-        for (col, hertz) in [("half_width_fit", "hertz_a"), ("peak_pressure_fit", "hertz_p0")] {
-            let mut pts: Vec<(f64, f64, usize)> = idx
-                .iter()
-                .filter_map(|&i| Some((sw.rows[i].contact_elements.map(|n| n as f64)?, num(&sw.rows[i], col)?, i)))
-                .collect();
-            pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-            let xy: Vec<(f64, f64)> = pts.iter().map(|p| (p.0, p.1)).collect();
-            let Some(lim) = mesh_limit(&xy) else {
-                cells.push(("–".to_string(), "–".to_string()));
-                continue;
-            };
-            let key = if col == "half_width_fit" { "disc_a_err" } else { "disc_p0_err" };
-            for (_, x, i) in &pts {
-                if (x - lim.value).abs() > lim.uncertainty {
-                    sw.rows[*i].derived.insert(key.to_string(), (x - lim.value).abs() / lim.value.abs());
-                }
-            }
-            let how = match lim.order {
-                Some(p) => format!("extrapolated, order {p:.2}"),
-                None => "finest mesh: not in the asymptotic range".to_string(),
-            };
-            let limit = format!("{:.6e} (± {:.1e}, {how})", lim.value, lim.uncertainty);
-            let model = match idx.iter().find_map(|&i| num(&sw.rows[i], hertz)) {
-                Some(t) if (lim.value - t).abs() > lim.uncertainty => format!("{:.2e}", (lim.value - t).abs() / t),
-                Some(t) => format!("≤ {:.1e} (not resolved)", (lim.uncertainty + (lim.value - t).abs()) / t),
-                None => String::new(),
-            };
-            cells.push((limit, model));
+        for &(col, theory, key, _) in &present {
+            let (limit, model) = series_limit(sw, &idx, col, theory, key);
+            cells.push(format!("{limit} | {model}"));
         }
-        writeln!(md, "| {label} | {} | {} | {} | {} | {} |", idx.len(), cells[0].0, cells[0].1, cells[1].0, cells[1].1)
-            .unwrap();
+        writeln!(md, "| {label} | {} | {} |", idx.len(), cells.join(" | ")).unwrap();
     }
     writeln!(md).unwrap();
     true
+}
+
+/// One series' limit of a quantity (`col`) against its theory (`theory`), recording the rows' discretisation errors
+/// under `key`: (the limit's cell, the model error's cell).
+fn series_limit(sw: &mut Sweep, idx: &[usize], col: &str, theory: &str, key: &str) -> (String, String) {
+    let mut pts: Vec<(f64, f64, usize)> = idx
+        .iter()
+        .filter_map(|&i| Some((sw.rows[i].contact_elements.map(|n| n as f64)?, num(&sw.rows[i], col)?, i)))
+        .collect();
+    pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let xy: Vec<(f64, f64)> = pts.iter().map(|p| (p.0, p.1)).collect();
+    let Some(lim) = mesh_limit(&xy) else {
+        return ("–".to_string(), "–".to_string());
+    };
+    for (_, x, i) in &pts {
+        if (x - lim.value).abs() > lim.uncertainty {
+            sw.rows[*i].derived.insert(key.to_string(), (x - lim.value).abs() / lim.value.abs());
+        }
+    }
+    let how = match lim.order {
+        Some(p) => format!("extrapolated, order {p:.2}"),
+        None => "finest mesh: not in the asymptotic range".to_string(),
+    };
+    let limit = format!("{:.6e} (± {:.1e}, {how})", lim.value, lim.uncertainty);
+    let model = match idx.iter().find_map(|&i| num(&sw.rows[i], theory)) {
+        Some(t) if (lim.value - t).abs() > lim.uncertainty => format!("{:.2e}", (lim.value - t).abs() / t),
+        Some(t) => format!("≤ {:.1e} (not resolved)", (lim.uncertainty + (lim.value - t).abs()) / t),
+        None => String::new(),
+    };
+    (limit, model)
 }
 
 #[cfg(test)]
@@ -895,9 +929,9 @@ mod tests {
         let sw = sweep(&["contact.friction", "mesh.contact_elements"], rows);
         let dir = tempfile::tempdir().unwrap();
         std::fs::create_dir(dir.path().join("figures")).unwrap();
-        let (mut md, mut figs) = (String::new(), Figures::default());
+        let (mut md, mut figs) = (String::new(), Figs::new(dir.path(), "figures/"));
         let refs: Vec<&Row> = sw.rows.iter().collect();
-        front_and_cheapest(&sw, &refs, "cm_shear_err", "shear", dir.path(), &mut md, &mut figs).unwrap();
+        front_and_cheapest(&sw, &refs, "cm_shear_err", "shear", &mut md, &mut figs).unwrap();
         assert!(md.contains("##### friction 0.3") && md.contains("##### friction 0.5"), "{md}");
         let half = &md[md.find("##### friction 0.5").unwrap()..];
         let front = &half[..half.find("Recommended configuration").unwrap()];

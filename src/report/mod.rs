@@ -19,6 +19,7 @@ use crate::plot::{Chart, Series, Style};
 use crate::post::NodeState;
 use crate::results::{Report, SolverRun};
 use crate::scene::Scene;
+use crate::sweep::Analysis;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -28,6 +29,41 @@ mod paths;
 mod physics;
 mod rolling;
 mod table;
+
+pub use paths::{md_curve, md_pattern, md_shift, path_figures};
+pub use table::Units;
+
+/// A sweep's rows read from its CSV, drawn as its analysis draws them (what `rollbem plot SWEEP.csv` does).
+pub struct SweepFigures {
+    sweep: table::Sweep,
+}
+
+impl SweepFigures {
+    /// Read a sweep's CSV (`stem` names its figures).
+    pub fn from_csv(path: &Path, stem: &str) -> Result<SweepFigures> {
+        let (header, rows) = crate::sweep::SweepRow::read_csv(path)?;
+        Ok(SweepFigures {
+            sweep: table::Sweep {
+                name: stem.to_string(),
+                description: String::new(),
+                stem: stem.to_string(),
+                keys: header.keys,
+                rows,
+            },
+        })
+    }
+
+    /// Draw the figures of an analysis into `figs` (the Markdown the report would write beside them is dropped).
+    pub fn draw(mut self, analysis: Analysis, figs: &mut Figs) -> Result<()> {
+        let mut md = String::new();
+        match analysis {
+            Analysis::CreepCurve => physics::creep_curves(&self.sweep, &mut md, figs),
+            Analysis::FiniteVsHalfPlane => physics::finite_vs_half_plane(&self.sweep, &mut md, figs),
+            Analysis::Accuracy => accuracy::sections(&mut self.sweep, &mut md, figs),
+            Analysis::Table => Ok(()),
+        }
+    }
+}
 
 /// Where to read and write.
 #[derive(Debug, Clone)]
@@ -60,6 +96,33 @@ fn fmt_e(v: Option<f64>) -> String {
 
 /// Figures written so far: (title, file relative to the report folder).
 pub type Figures = Vec<(String, String)>;
+
+/// Where a section's figures go: `root/sub` + a file name, listed with their titles (files relative to `root`). The
+/// report writes into `reports/figures/`; `rollbem plot` into its output folder.
+pub struct Figs<'a> {
+    /// The folder the listed file names are relative to.
+    pub root: &'a Path,
+    /// The sub-folder prefix of the files (`"figures/"` or `""`).
+    pub sub: &'a str,
+    /// The figures written, (title, file relative to `root`).
+    pub list: Figures,
+}
+
+impl<'a> Figs<'a> {
+    /// A sink writing `root/sub/NAME`.
+    pub fn new(root: &'a Path, sub: &'a str) -> Figs<'a> {
+        Figs { root, sub, list: Vec::new() }
+    }
+
+    /// Write a chart as `name` (e.g. `x-creep-curves.svg`), list it under `title`; returns its path relative to
+    /// `root` (what a Markdown link needs).
+    pub fn save(&mut self, chart: &Chart, name: &str, title: String) -> Result<String> {
+        let file = format!("{}{name}", self.sub);
+        chart.write(&self.root.join(&file)).map_err(plot_err)?;
+        self.list.push((title, file.clone()));
+        Ok(file)
+    }
+}
 
 /// The reference scenes and sweep specs of a report, read and checked.
 type Inputs = (Vec<(PathBuf, Scene)>, Vec<(PathBuf, crate::sweep::SweepSpec)>);
@@ -112,8 +175,9 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
     let maps = stress_maps(&reports, out)?;
     let (sweep_md, plots) = sweeps(opts, specs)?;
     let mut path_md = String::new();
-    let mut path_figs: Figures = Vec::new();
-    paths::sections(&reports, out, &mut path_md, &mut path_figs)?;
+    let mut sink = Figs::new(out, "figures/");
+    paths::sections(&reports, &mut path_md, &mut sink)?;
+    let mut path_figs = sink.list;
     let mut roll_md = String::new();
     rolling::seed_vs_steady(&reports, out, &mut roll_md, &mut path_figs)?;
 
@@ -288,7 +352,7 @@ fn stress_maps(reports: &BTreeMap<String, Report>, out: &Path) -> Result<Vec<(St
 fn sweeps(opts: &ReportOptions, specs: Vec<(PathBuf, crate::sweep::SweepSpec)>) -> Result<(String, Figures)> {
     let out = &opts.out;
     let mut md = String::new();
-    let mut figs: Figures = Vec::new();
+    let mut sink = Figs::new(out, "figures/");
     for (spec_path, spec) in specs {
         let stem = spec.name.clone();
         let csv_path = out.join("sweeps").join(format!("{stem}.csv"));
@@ -302,15 +366,15 @@ fn sweeps(opts: &ReportOptions, specs: Vec<(PathBuf, crate::sweep::SweepSpec)>) 
         };
         writeln!(md, "\n### {} ([CSV](sweeps/{stem}.csv), {} rows)\n\n{}\n", sw.name, sw.rows.len(), sw.description)
             .unwrap();
-        if physics::is_creep_curve(&sw) {
-            physics::creep_curves(&sw, out, &mut md, &mut figs)?;
-        } else if physics::compares_models(&sw) {
-            physics::finite_vs_half_plane(&sw, out, &mut md, &mut figs)?;
-        } else {
-            accuracy::sections(&mut sw, out, &mut md, &mut figs)?;
+        // The spec says what the sweep is; the report never guesses it from the rows.
+        match spec.analysis {
+            Analysis::CreepCurve => physics::creep_curves(&sw, &mut md, &mut sink)?,
+            Analysis::FiniteVsHalfPlane => physics::finite_vs_half_plane(&sw, &mut md, &mut sink)?,
+            Analysis::Accuracy => accuracy::sections(&mut sw, &mut md, &mut sink)?,
+            Analysis::Table => {}
         }
     }
-    Ok((md, figs))
+    Ok((md, sink.list))
 }
 
 fn lemke_of<'a>(reports: &'a BTreeMap<String, Report>, name: &str) -> Option<&'a SolverRun> {

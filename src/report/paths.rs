@@ -4,7 +4,7 @@
 //! under constant P and a tangential load cycled ±Q*, Spence for a coupled half-plane under a growing normal load.
 
 use super::table::Units;
-use super::{plot_err, Figures};
+use super::Figs;
 use crate::error::Result;
 use crate::pipeline::run_scene;
 use crate::plot::{Chart, Series, Style};
@@ -15,7 +15,6 @@ use crate::scene::{BodyModel, CounterBody, RollingMode, Scene};
 use crate::theory::{self, Hertz2D, TangentialPath};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use std::path::Path;
 
 /// The runs of one solver along a path, in order (a solver whose path broke has fewer).
 fn runs_of<'a>(r: &'a Report, solver: &str) -> Vec<(usize, &'a SolverRun)> {
@@ -23,11 +22,11 @@ fn runs_of<'a>(r: &'a Report, solver: &str) -> Vec<(usize, &'a SolverRun)> {
 }
 
 /// The Mindlin–Deresiewicz pattern: step 0 loads P alone, then every step holds P and takes Q to +Q*, −Q*, +Q*, …
-/// (|Q*| ≤ μP), on a single half-plane with β = 0 and a rigid flat. Returns (P, Q*).
-fn md_pattern(s: &Scene) -> Option<(f64, f64)> {
-    let single = s.model() == BodyModel::HalfPlane && matches!(s.counter_body(), CounterBody::Rigid);
+/// (|Q*| ≤ μP), on the half-plane model with β = 0 — against a rigid flat, or against an elastic half-plane of a
+/// β = 0 pair (steel on steel). Returns (P, Q*).
+pub fn md_pattern(s: &Scene) -> Option<(f64, f64)> {
     let p = s.document().steps.first()?.normal_load?;
-    if !single || s.rolling().is_some() || !beta_zero(s, p) || s.document().steps.len() < 3 {
+    if s.model() != BodyModel::HalfPlane || s.rolling().is_some() || !beta_zero(s, p) || s.document().steps.len() < 3 {
         return None;
     }
     if s.document().steps[0].tangential_load.unwrap_or(0.0) != 0.0 || s.document().steps[0].tangential_shift.is_some() {
@@ -65,34 +64,42 @@ fn spence_pattern(s: &Scene) -> Option<f64> {
 }
 
 /// The path sections of every reference scene with `[[steps]]`.
-pub fn sections(reports: &BTreeMap<String, Report>, out: &Path, md: &mut String, figs: &mut Figures) -> Result<()> {
+pub fn sections(reports: &BTreeMap<String, Report>, md: &mut String, figs: &mut Figs) -> Result<()> {
     for (name, r) in reports.iter().filter(|(_, r)| !r.steps.is_empty()) {
-        let units = Units::parse(r.scene.units());
         writeln!(md, "### `{name}`\n\n{}\n", r.scene.description().split_whitespace().collect::<Vec<_>>().join(" "))
             .unwrap();
         summary(r, md);
-        let solver = r.runs.first().map(|x| x.solver.name()).unwrap_or("lemke");
-        // The figures and theory comparisons use the solved substeps only (a path that broke, or a substep judged
-        // not an answer, has no tractions to compare); the summary above says how many there are.
-        let all = runs_of(r, solver);
-        let runs: Vec<(usize, &SolverRun)> =
-            all.iter().copied().filter(|(_, x)| x.status == crate::solvers::Status::Solved).collect();
-        if runs.len() < all.len() {
-            writeln!(
-                md,
-                "{solver} solved {} of the path's {} substeps; the figures below show the solved ones.\n",
-                runs.len(),
-                r.steps.len()
-            )
-            .unwrap();
-        }
-        if r.scene.document().steps.iter().any(|st| st.roll.unwrap_or(0.0) > 0.0) {
-            rolling_approach(name, r, &runs, &units, out, md, figs)?;
-        } else {
-            hysteresis(name, r, &runs, &units, out, md, figs)?;
-        }
-        stick_zone(name, r, &runs, &units, out, md, figs)?;
+        path_figures(name, r, md, figs)?;
     }
+    Ok(())
+}
+
+/// The figures of one load path (its first solver's solved substeps): the Q–δ_T loop (or, rolling, the approach to
+/// steady rolling) and the stick zone along the path, each with the theory where it applies; what they show is
+/// written to `md`.
+pub fn path_figures(name: &str, r: &Report, md: &mut String, figs: &mut Figs) -> Result<()> {
+    let units = Units::parse(r.scene.units());
+    let solver = r.runs.first().map(|x| x.solver.name()).unwrap_or("lemke");
+    // The figures and theory comparisons use the solved substeps only (a path that broke, or a substep judged
+    // not an answer, has no tractions to compare); the summary above says how many there are.
+    let all = runs_of(r, solver);
+    let runs: Vec<(usize, &SolverRun)> =
+        all.iter().copied().filter(|(_, x)| x.status == crate::solvers::Status::Solved).collect();
+    if runs.len() < all.len() {
+        writeln!(
+            md,
+            "{solver} solved {} of the path's {} substeps; the figures below show the solved ones.\n",
+            runs.len(),
+            r.steps.len()
+        )
+        .unwrap();
+    }
+    if r.scene.document().steps.iter().any(|st| st.roll.unwrap_or(0.0) > 0.0) {
+        rolling_approach(name, r, &runs, &units, md, figs)?;
+    } else {
+        hysteresis(name, r, &runs, &units, md, figs)?;
+    }
+    stick_zone(name, r, &runs, &units, md, figs)?;
     Ok(())
 }
 
@@ -130,9 +137,8 @@ fn hysteresis(
     r: &Report,
     runs: &[(usize, &SolverRun)],
     units: &Units,
-    out: &Path,
     md: &mut String,
-    figs: &mut Figures,
+    figs: &mut Figs,
 ) -> Result<()> {
     let pts: Vec<(f64, f64)> =
         runs.iter().filter_map(|(_, x)| Some((x.rigid_body?.tangential?, x.resultants?.tangential))).collect();
@@ -158,11 +164,9 @@ fn hysteresis(
     for (label, p, style) in &series {
         chart = chart.add(Series::new(label.clone(), p.clone(), *style));
     }
-    let file = format!("figures/{name}-hysteresis.svg");
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    figs.push((format!("{name}: Q against δ_T"), file.clone()));
+    let file = figs.save(&chart, &format!("{name}-hysteresis.svg"), format!("{name}: Q against δ_T"))?;
     writeln!(md, "![hysteresis loop]({file})\n").unwrap();
-    opened_loop(name, &pts, &series, units, out, md, figs)?;
+    opened_loop(name, &pts, &series, units, md, figs)?;
     Ok(())
 }
 
@@ -171,21 +175,9 @@ fn hysteresis(
 fn md_loop(r: &Report, runs: &[(usize, &SolverRun)], solver: &str, md: &mut String) -> Option<Curve> {
     let s = &r.scene;
     let (p, q_star) = md_pattern(s)?;
-    let h = Hertz2D::from_load(p, s.radius(), s.contact_modulus());
     let mu = s.friction();
-    // The half-plane's datum is the material point at depth D; theory's log datum is D' = D e^(1/(2(1 − ν)))
-    // (tests/history.rs derives it); the wheel's shift is minus the counter-body's δ.
-    let datum = match s.body() {
-        crate::scene::Body::HalfPlane { datum_depth, .. } => *datum_depth,
-        crate::scene::Body::Bem { .. } => s.radius(),
-    };
-    let d_prime = datum * (0.5 / (1.0 - s.wheel().material.poisson_ratio)).exp();
-    let delta = |path: TangentialPath, q: f64| -theory::md_displacement(&h, mu, s.contact_modulus(), d_prime, path, q);
-    let qs: Vec<f64> = (0..=100).map(|i| q_star * (i as f64 / 50.0 - 1.0)).collect();
-    let mut curve: Vec<(f64, f64)> =
-        (0..=50).map(|i| q_star * i as f64 / 50.0).map(|q| (delta(TangentialPath::Loading, q), q)).collect();
-    curve.extend(qs.iter().rev().map(|&q| (delta(TangentialPath::Unloading { q_star }, q), q)));
-    curve.extend(qs.iter().map(|&q| (delta(TangentialPath::Reloading { q_star }, q), q)));
+    let delta = md_shift(s, p);
+    let curve = md_curve(s, p, q_star);
     let w: f64 = runs
         .iter()
         .filter(|(k, _)| r.steps[*k].step >= 2 && r.steps[*k].step <= 3)
@@ -224,6 +216,39 @@ fn md_loop(r: &Report, runs: &[(usize, &SolverRun)], solver: &str, md: &mut Stri
     Some(("Mindlin–Deresiewicz (2D)".into(), curve, Style::Dashed))
 }
 
+/// The wheel's rigid shift on Mindlin–Deresiewicz's loop at load P, as a function of the branch and Q, for a scene
+/// of the pattern ([`md_pattern`]). Each half-plane's datum is the material point at its depth D; theory's log datum
+/// is D' = D e^(1/(2(1 − ν))) (tests/history.rs derives it); the compliances of the two bodies of a pair add (the
+/// displacement is linear in 1/E*, each body with its own datum); the wheel's shift is minus the counter-body's δ.
+pub fn md_shift(s: &Scene, p: f64) -> impl Fn(TangentialPath, f64) -> f64 {
+    let h = Hertz2D::from_load(p, s.radius(), s.contact_modulus());
+    let mu = s.friction();
+    let wheel_datum = match s.body() {
+        crate::scene::Body::HalfPlane { datum_depth, .. } => *datum_depth,
+        crate::scene::Body::Bem { .. } => s.radius(),
+    };
+    let log_datum = |d: f64, nu: f64| d * (0.5 / (1.0 - nu)).exp();
+    let w = s.wheel().material;
+    let mut bodies = vec![(w.plane_strain_modulus(), log_datum(wheel_datum, w.poisson_ratio))];
+    if let CounterBody::HalfPlane { material, datum_depth } = s.counter_body() {
+        bodies.push((material.plane_strain_modulus(), log_datum(*datum_depth, material.poisson_ratio)));
+    }
+    move |path: TangentialPath, q: f64| {
+        -bodies.iter().map(|&(e, d)| theory::md_displacement(&h, mu, e, d, path, q)).sum::<f64>()
+    }
+}
+
+/// Mindlin–Deresiewicz's loop (shift, Q) at P: loading to Q*, unloading to −Q*, reloading to Q*.
+pub fn md_curve(s: &Scene, p: f64, q_star: f64) -> Vec<(f64, f64)> {
+    let delta = md_shift(s, p);
+    let qs: Vec<f64> = (0..=100).map(|i| q_star * (i as f64 / 50.0 - 1.0)).collect();
+    let mut curve: Vec<(f64, f64)> =
+        (0..=50).map(|i| q_star * i as f64 / 50.0).map(|q| (delta(TangentialPath::Loading, q), q)).collect();
+    curve.extend(qs.iter().rev().map(|&q| (delta(TangentialPath::Unloading { q_star }, q), q)));
+    curve.extend(qs.iter().map(|&q| (delta(TangentialPath::Reloading { q_star }, q), q)));
+    curve
+}
+
 /// The loop with the chord through its tips subtracted, so that its width shows (the loop is thin beside the
 /// elastic compliance): the shifts at the largest and smallest Q define the chord.
 fn opened_loop(
@@ -231,9 +256,8 @@ fn opened_loop(
     pts: &[(f64, f64)],
     series: &[Curve],
     units: &Units,
-    out: &Path,
     md: &mut String,
-    figs: &mut Figures,
+    figs: &mut Figs,
 ) -> Result<()> {
     // The loop is thin beside the elastic compliance: subtract the chord through the computed loop's tips
     // (the shifts at the largest and smallest Q) so that its width can be seen.
@@ -250,9 +274,8 @@ fn opened_loop(
             for (label, p, style) in series {
                 chart = chart.add(Series::new(label.clone(), open(p), *style));
             }
-            let file = format!("figures/{name}-hysteresis-opened.svg");
-            chart.write(&out.join(&file)).map_err(plot_err)?;
-            figs.push((format!("{name}: the loop opened"), file.clone()));
+            let file =
+                figs.save(&chart, &format!("{name}-hysteresis-opened.svg"), format!("{name}: the loop opened"))?;
             writeln!(
                 md,
                 "The same loop with the straight chord through its tips (δ_T at the largest and smallest Q, compliance \
@@ -272,9 +295,8 @@ fn stick_zone(
     r: &Report,
     runs: &[(usize, &SolverRun)],
     units: &Units,
-    out: &Path,
     md: &mut String,
-    figs: &mut Figures,
+    figs: &mut Figs,
 ) -> Result<()> {
     let pts: Vec<(f64, f64)> = runs
         .iter()
@@ -342,9 +364,7 @@ fn stick_zone(
         writeln!(md, "{what}; largest difference along the path {:.2} elements.\n", worst / h).unwrap();
         chart = chart.add(Series::new(what.split(':').next().unwrap_or(what), theory_pts, Style::Dashed));
     }
-    let file = format!("figures/{name}-stick-zone.svg");
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    figs.push((format!("{name}: stick zone along the path"), file.clone()));
+    let file = figs.save(&chart, &format!("{name}-stick-zone.svg"), format!("{name}: stick zone along the path"))?;
     writeln!(md, "![stick zone along the path]({file})\n").unwrap();
     Ok(())
 }
@@ -375,9 +395,8 @@ fn rolling_approach(
     r: &Report,
     runs: &[(usize, &SolverRun)],
     units: &Units,
-    out: &Path,
     md: &mut String,
-    figs: &mut Figures,
+    figs: &mut Figs,
 ) -> Result<()> {
     let steady = run_scene(&steady_counterpart(&r.scene)?)?;
     let Some(y) = steady.runs.first().filter(|y| y.status == crate::solvers::Status::Solved) else {
@@ -399,9 +418,7 @@ fn rolling_approach(
         .y_unit("1")
         .log_y()
         .add(Series::new(runs.first().map(|(_, x)| x.solver.name()).unwrap_or(""), pts, Style::Line));
-    let file = format!("figures/{name}-approach.svg");
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    figs.push((format!("{name}: approach to steady rolling"), file.clone()));
+    let file = figs.save(&chart, &format!("{name}-approach.svg"), format!("{name}: approach to steady rolling"))?;
     writeln!(
         md,
         "Against the steady-rolling solution of the same mesh (solved beside it, Lemke): after {end_x:.4} {} rolled \

@@ -2,26 +2,12 @@
 //! models at the same loads), and creep curves against Carter (steady rolling over a range of creepages).
 
 use super::table::{log_slope, num, Row, Sweep};
-use super::{plot_err, Figures};
+use super::Figs;
 use crate::error::Result;
 use crate::plot::{Chart, Series, Style};
 use crate::theory::{self, Hertz2D};
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
-use std::path::Path;
-
-/// Whether a sweep compares the two body models at equal loads (both models among its solved rows).
-pub fn compares_models(sw: &Sweep) -> bool {
-    let models: BTreeSet<&str> =
-        sw.rows.iter().filter(|r| r.status.solved()).map(|r| r.model.map_or("", |m| m.name())).collect();
-    models.contains("bem") && models.contains("half_plane")
-}
-
-/// Whether a sweep is a creep curve: steady rolling at five or more creepages.
-pub fn is_creep_curve(sw: &Sweep) -> bool {
-    let xs: BTreeSet<u64> = sw.rows.iter().filter_map(|r| r.creepage).map(f64::to_bits).collect();
-    xs.len() >= 5
-}
 
 /// (P, Q, μ) as text.
 type LoadKey = (String, String, String);
@@ -43,7 +29,7 @@ fn rel(a: Option<f64>, b: Option<f64>) -> Option<f64> {
 
 /// What the finite body changes: pair the finite wheel's and the half-plane's rows at the same (P, Q, μ); table and
 /// plot of the relative differences against a/R with their fitted slopes.
-pub fn finite_vs_half_plane(sw: &Sweep, out: &Path, md: &mut String, figs: &mut Figures) -> Result<()> {
+pub fn finite_vs_half_plane(sw: &Sweep, md: &mut String, figs: &mut Figs) -> Result<()> {
     let solved: Vec<&Row> = sw.rows.iter().filter(|r| r.status.solved()).collect();
     let mut pairs: BTreeMap<LoadKey, (Option<&Row>, Option<&Row>)> = BTreeMap::new();
     for r in &solved {
@@ -123,9 +109,11 @@ pub fn finite_vs_half_plane(sw: &Sweep, out: &Path, md: &mut String, figs: &mut 
             chart = chart.add(Series::new(format!("{name}, μ = {mu}"), pts, Style::LineMarkers));
         }
     }
-    let file = format!("figures/{}-differences.svg", sw.stem);
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    figs.push((format!("{}: finite wheel against half-plane", sw.name), file.clone()));
+    let file = figs.save(
+        &chart,
+        &format!("{}-differences.svg", sw.stem),
+        format!("{}: finite wheel against half-plane", sw.name),
+    )?;
     writeln!(
         md,
         "\n![finite wheel against half-plane]({file})\n\nThe rigid shift is measured at different points — the finite \
@@ -139,7 +127,7 @@ pub fn finite_vs_half_plane(sw: &Sweep, out: &Path, md: &mut String, figs: &mut 
 
 /// Creep curves: Q/(μP) against ξR/(μa) per series, with Carter's curve; the largest departure from Carter and
 /// the free-rolling creepage (where Q changes sign) per series.
-pub fn creep_curves(sw: &Sweep, out: &Path, md: &mut String, figs: &mut Figures) -> Result<()> {
+pub fn creep_curves(sw: &Sweep, md: &mut String, figs: &mut Figs) -> Result<()> {
     let solved: Vec<&Row> = sw.rows.iter().filter(|r| r.status.solved()).collect();
     // The creepage is the curve's abscissa, not a series.
     let varied: Vec<String> = sw.varied(&solved).into_iter().filter(|k| !k.ends_with("creepage")).collect();
@@ -182,9 +170,7 @@ pub fn creep_curves(sw: &Sweep, out: &Path, md: &mut String, figs: &mut Figures)
         writeln!(md, "| {label} | {} | {dev:.2e} | {free} |", pts.len()).unwrap();
         chart = chart.add(Series::new(label, pts, Style::Markers));
     }
-    let file = format!("figures/{}-creep-curves.svg", sw.stem);
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    figs.push((format!("{}: creep curves", sw.name), file.clone()));
+    let file = figs.save(&chart, &format!("{}-creep-curves.svg", sw.stem), format!("{}: creep curves", sw.name))?;
     writeln!(md, "\n![creep curves]({file})\n").unwrap();
     Ok(())
 }

@@ -146,6 +146,10 @@ pub struct SolverRun {
     /// [`crate::stresses`].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stresses: Option<crate::stresses::StressResult>,
+    /// The elastic counter-body's subsurface stresses from the same tractions (with `[stresses]` and
+    /// `[counter_body] kind = "half_plane"`; depth measured into the counter-body): [`crate::stresses`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub counter_body_stresses: Option<crate::stresses::StressResult>,
 }
 
 impl SolverRun {
@@ -256,6 +260,11 @@ pub enum CheckKind {
     Verdict,
     /// A reference that does not apply to this scene or run (it passes; `note` says why it does not apply).
     NotApplicable,
+    /// A theory used outside the conditions it assumes (a half-space theory on the finite wheel): no verdict, the
+    /// measured difference from the theory (`error`, in the quantity's unit) with the **model error** beside it
+    /// (`model_error`: the same loads on the model the theory assumes, computed by rollbem, subtracted) and its
+    /// uncertainty. It passes: refining the mesh converges the difference to the model error, it does not fail it.
+    ModelComparison,
 }
 
 /// One check: a measured figure against a reference.
@@ -273,8 +282,16 @@ pub struct Check {
     pub tolerance: f64,
     /// error ≤ tolerance (for a verdict: the verdict; a reference that does not apply passes).
     pub pass: bool,
-    /// Whether this is a figure, a verdict or a reference that does not apply.
+    /// Whether this is a figure, a verdict, a reference that does not apply or a model comparison.
     pub kind: CheckKind,
+    /// For a model comparison: measured minus the same figure on the model the theory assumes (e.g. the finite wheel
+    /// minus the half-plane pair at the same loads and mesh), in the quantity's unit.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub model_error: Option<f64>,
+    /// For a model comparison: the uncertainty of `model_error` (e.g. one contact element length for a stick-zone
+    /// edge located on the nodes).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub uncertainty: Option<f64>,
     /// What was found, for a verdict or a reference that could not be evaluated or does not apply; what to do about
     /// a failed figure where there is advice (null otherwise).
     #[serde(default, skip_serializing_if = "Option::is_none")]

@@ -142,6 +142,10 @@ fn runs_table(out: &mut String, r: &Report) {
             run.timing_s.solve,
             run.timing_s.total
         );
+        if let Some(xi) = run.rolling.filter(|x| !x.creepage_prescribed).and_then(|x| x.creepage) {
+            // Steady rolling with the tangential load prescribed: the creepage is the answer.
+            w!(out, "            creepage ξ = {xi:.6e} (computed for the prescribed Q)");
+        }
         if run.status != Status::Solved || run.problem == ProblemClass::SlidingLimit {
             w!(out, "            {}", run.explanation());
         }
@@ -151,10 +155,13 @@ fn runs_table(out: &mut String, r: &Report) {
 /// The subsurface stresses' maxima per run (largest |value| on the grid, sign kept, and where), with `[stresses]`.
 fn stresses_table(out: &mut String, r: &Report) {
     let Some(spec) = &r.scene.stresses() else { return };
+    let counter = r.runs.iter().any(|x| x.counter_body_stresses.is_some());
     w!(
         out,
-        "stresses in the wheel ({} model): {}×{} grid, x in [{:.4e}, {:.4e}], depth in [{:.4e}, {:.4e}]; maxima (largest |value|):",
+        "stresses in the wheel ({} model){}: {}×{} grid, x in [{:.4e}, {:.4e}], depth in [{:.4e}, {:.4e}] and the \
+         surface at the contact elements' centres; maxima (largest |value|):",
         r.scene.model().name(),
+        if counter { " and in the counter-body (depth into it)" } else { "" },
         spec.points[0],
         spec.points[1],
         spec.x[0],
@@ -162,34 +169,49 @@ fn stresses_table(out: &mut String, r: &Report) {
         spec.depth[0],
         spec.depth[1]
     );
-    w!(out, "{:<9} {:<17} {:>13} {:>13} {:>13}", "solver", "quantity", "max", "x", "depth");
+    w!(out, "{:<11} {:<12} {:<17} {:>13} {:>13} {:>13}", "solver", "body", "quantity", "max", "x", "depth");
     for run in &r.runs {
         let Some(st) = &run.stresses else {
-            w!(out, "{:<9} none (not solved)", run.solver);
+            w!(out, "{:<11} none (not solved)", run.solver);
             continue;
         };
-        for (q, m) in st.maxima() {
-            match m {
-                Some(m) => {
-                    w!(out, "{:<9} {:<17} {:>13.5e} {:>13.5e} {:>13.5e}", run.solver, q.name(), m.value, m.x, m.depth)
-                }
-                None => w!(out, "{:<9} {:<17} {:>13}", run.solver, q.name(), "-"),
-            }
+        for st in std::iter::once(st).chain(&run.counter_body_stresses) {
+            stress_maxima(out, run.solver.name(), st);
         }
-        let refused = st.refused();
-        let n: usize = refused.values().sum();
-        let why: Vec<String> = refused.iter().map(|(k, v)| format!("{v} {k}")).collect();
-        w!(
-            out,
-            "{:<9} {} of {} points evaluated in {:.3} s{}{}",
-            "",
-            st.field.grid.len() - n,
-            st.field.grid.len(),
-            st.time_s,
-            if n > 0 { format!("; refused: {}", why.join(", ")) } else { String::new() },
-            st.csv.as_ref().map(|f| format!("; field in {f}")).unwrap_or_default()
-        );
     }
+}
+
+/// One body's maxima and what was evaluated.
+fn stress_maxima(out: &mut String, solver: &str, st: &crate::stresses::StressResult) {
+    for (q, m) in st.maxima() {
+        match m {
+            Some(m) => w!(
+                out,
+                "{:<11} {:<12} {:<17} {:>13.5e} {:>13.5e} {:>13.5e}",
+                solver,
+                st.body,
+                q.name(),
+                m.value,
+                m.x,
+                m.depth
+            ),
+            None => w!(out, "{:<11} {:<12} {:<17} {:>13}", solver, st.body, q.name(), "-"),
+        }
+    }
+    let refused = st.refused();
+    let n: usize = refused.values().sum();
+    let why: Vec<String> = refused.iter().map(|(k, v)| format!("{v} {k}")).collect();
+    w!(
+        out,
+        "{:<11} {:<12} {} of {} grid points evaluated in {:.3} s{}{}",
+        "",
+        "",
+        st.grid.len() - n,
+        st.grid.len(),
+        st.time_s,
+        if n > 0 { format!("; refused: {}", why.join(", ")) } else { String::new() },
+        st.csv.as_ref().map(|f| format!("; field in {f}")).unwrap_or_default()
+    );
 }
 
 /// One check as a line of the `run` table: a figure with its numbers, a verdict or a reference that does not apply
@@ -197,6 +219,7 @@ fn stresses_table(out: &mut String, r: &Report) {
 pub fn check_line(c: &Check) -> String {
     let mark = match (c.kind, c.pass) {
         (CheckKind::NotApplicable, _) => "n/a ",
+        (CheckKind::ModelComparison, _) => "model",
         (_, true) => "pass",
         (_, false) => "FAIL",
     };
@@ -207,6 +230,15 @@ pub fn check_line(c: &Check) -> String {
             c.name, c.measured, c.reference, c.error, c.tolerance
         ),
         CheckKind::Verdict | CheckKind::NotApplicable => format!("[{mark}] {}{note}", c.name),
+        CheckKind::ModelComparison => format!(
+            "[{mark}] {:<47} measured {:>12.6e}  theory {:>12.6e}  difference {:>10.3e}  model error {:>10.3e} ± {:.1e}{note}",
+            c.name,
+            c.measured,
+            c.reference,
+            c.measured - c.reference,
+            c.model_error.unwrap_or(f64::NAN),
+            c.uncertainty.unwrap_or(f64::NAN)
+        ),
     }
 }
 

@@ -64,6 +64,57 @@ pub struct SweepSpec {
     /// is not timed). Results (not
     /// times) are those of the first run; they do not change.
     pub timing_repeats: usize,
+    /// What the sweep is (`analysis`; default `table`).
+    pub analysis: Analysis,
+}
+
+/// What a sweep is, as its spec says (`analysis = "..."`): what `rollbem report` makes of its rows. The report never
+/// infers it from the rows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Analysis {
+    /// `accuracy`: errors against theory and against each mesh's limit, against cost (a mesh refinement:
+    /// `mesh.contact_elements` must be swept).
+    Accuracy,
+    /// `finite_vs_half_plane`: the finite wheel against the half-plane at equal loads (`wheel.model` swept, or grids
+    /// with their own base scenes of both models).
+    FiniteVsHalfPlane,
+    /// `creep_curve`: steady-rolling creep curves against Carter (`rolling.creepage` or `drive.tangential_load`
+    /// swept).
+    CreepCurve,
+    /// `table` (default): the rows only.
+    #[default]
+    Table,
+}
+
+impl Analysis {
+    /// The name in a spec.
+    pub fn name(self) -> &'static str {
+        match self {
+            Analysis::Accuracy => "accuracy",
+            Analysis::FiniteVsHalfPlane => "finite_vs_half_plane",
+            Analysis::CreepCurve => "creep_curve",
+            Analysis::Table => "table",
+        }
+    }
+
+    /// The analysis of a name; an unknown one is bad input naming `field` of `path`.
+    pub fn from_name(name: &str, path: &Path) -> Result<Analysis> {
+        let all = [Analysis::Accuracy, Analysis::FiniteVsHalfPlane, Analysis::CreepCurve, Analysis::Table];
+        all.into_iter().find(|x| x.name() == name).ok_or_else(|| {
+            let names: Vec<&str> = all.iter().map(|x| x.name()).collect();
+            invalid(path, "analysis", format!("unknown analysis `{name}` (expected one of: {})", names.join(", ")))
+        })
+    }
+
+    /// The swept keys (one of which) the analysis needs, and why.
+    fn needs(self) -> (&'static [&'static str], &'static str) {
+        match self {
+            Analysis::Accuracy => (&["mesh.contact_elements"], "a mesh refinement"),
+            Analysis::FiniteVsHalfPlane => (&["wheel.model"], "both models of the wheel"),
+            Analysis::CreepCurve => (&["rolling.creepage", "drive.tangential_load"], "the creepage or the creep force"),
+            Analysis::Table => (&[], ""),
+        }
+    }
 }
 
 /// The dotted keys of a (possibly zipped, `a & b`) grid key.
@@ -295,12 +346,12 @@ impl SweepSpec {
         let doc: Table = toml::from_str(text)
             .map_err(|e| Error::Parse { path: path.to_path_buf(), message: e.to_string().trim_end().to_string() })?;
         for key in doc.keys() {
-            if !["name", "description", "base", "grid", "timing_repeats"].contains(&key.as_str()) {
+            if !["name", "description", "base", "grid", "timing_repeats", "analysis"].contains(&key.as_str()) {
                 return Err(invalid(
                     path,
                     key,
-                    "unknown key in a sweep spec (expected `name`, `description`, `base`, `timing_repeats` and \
-                     `[[grid]]` tables)",
+                    "unknown key in a sweep spec (expected `name`, `description`, `base`, `analysis`, \
+                     `timing_repeats` and `[[grid]]` tables)",
                 ));
             }
         }
@@ -378,7 +429,40 @@ impl SweepSpec {
                 return Err(invalid(path, "timing_repeats", format!("must be an integer from 1 to 20 (got {other})")))
             }
         };
-        Ok(SweepSpec { name, description, base, grid, grid_base, timing_repeats })
+        let analysis = match doc.get("analysis") {
+            None => Analysis::Table,
+            Some(Value::String(a)) => Analysis::from_name(a, path)?,
+            Some(other) => {
+                return Err(invalid(path, "analysis", format!("must be a string (got {})", other.type_str())))
+            }
+        };
+        let spec = SweepSpec { name, description, base, grid, grid_base, timing_repeats, analysis };
+        spec.check_analysis(path)?;
+        Ok(spec)
+    }
+
+    /// The analysis must be able to apply to the grid: the keys it needs are swept (a finite-vs-half-plane sweep may
+    /// instead give its grids their own base scenes).
+    fn check_analysis(&self, path: &Path) -> Result<()> {
+        let (needed, what) = self.analysis.needs();
+        let keys = self.keys();
+        let own_bases = self.grid_base.iter().filter(|b| b.is_some()).count() >= 2;
+        let ok = needed.is_empty()
+            || needed.iter().any(|k| keys.iter().any(|x| x == k))
+            || (self.analysis == Analysis::FiniteVsHalfPlane && own_bases);
+        if ok {
+            return Ok(());
+        }
+        Err(invalid(
+            path,
+            "analysis",
+            format!(
+                "`{}` needs {what}: sweep {} (the grid sweeps {})",
+                self.analysis.name(),
+                needed.iter().map(|k| format!("`{k}`")).collect::<Vec<_>>().join(" or "),
+                if keys.is_empty() { "nothing".to_string() } else { keys.join(", ") }
+            ),
+        ))
     }
 
     /// The base scene file's path, resolved against the spec file's folder.
