@@ -133,7 +133,7 @@ def fretting_loop(ax: plt.Axes) -> None:
     w = np.sum(h["dissipated"][h["step"] >= 2])
     g = 1.0 - q_star / mu_p
     w_exact = 2.0 * mu_p**2 / (math.pi * e_star) * (1.0 - g * g + 2.0 * g * math.log(g))
-    ax.text(0.97, 0.04, f"energy per cycle: {w:.4g} N (theory {w_exact:.4g})", transform=ax.transAxes,
+    ax.text(0.97, 0.04, f"energy per cycle: {w:.4g} N·mm/mm (theory {w_exact:.4g})", transform=ax.transAxes,
             ha="right", va="bottom", fontsize=8)
     ax.set_xlabel(r"shift of the wheel less its elastic part, $d_T + \lambda Q$ [$\mu$m]")
     ax.set_ylabel(r"$Q/(\mu P)$")

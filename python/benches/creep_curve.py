@@ -13,8 +13,8 @@ creepages, the solver `active_set` unless told otherwise:
   on the main thread and on another thread, not by anything Python does).
 - **Python, one call**: `rollbem.Model(scene)` then `model.solve_all([{"creepage": xi} ...])` and
   `r.run().tangential_load` for each report (what a notebook does).
-- **Python, a call per point**: `model.solve(creepage=xi)` in a Python loop (50 calls, each on its own worker
-  thread).
+- **Python, a call per point**: `model.solve(creepage=xi)` in a Python loop (50 calls, each handed to the
+  binding's kept worker thread).
 
 The sides run interleaved, `rounds` times each (after one warm-up round), and the medians are compared, of the wall
 time and of the process's CPU time (all threads; less sensitive to other work on a shared machine); the curves must

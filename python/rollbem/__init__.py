@@ -27,8 +27,8 @@ of drives stops before its next drive; a single solve in progress finishes in th
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, Dict, List, Optional, Union
 import os
+from typing import Any, Dict, List, Literal, Optional, Union, overload
 
 from ._core import (
     NODE_STATES,
@@ -45,9 +45,6 @@ from ._core import (
 )
 from ._core import _sweep_rows
 from .errors import InputError, InternalError, NumericalError, OutputError, RollbemError, SolveError
-
-if TYPE_CHECKING:  # pragma: no cover
-    import pandas
 
 __all__ = [
     "Scene",
@@ -71,12 +68,22 @@ __all__ = [
 ]
 
 
+@overload
+def sweep(
+    spec: Union[str, "os.PathLike[str]"], *, shard: Optional[str] = None, as_frame: "Literal[False]" = False
+) -> List[Dict[str, Any]]: ...
+
+
+@overload
+def sweep(spec: Union[str, "os.PathLike[str]"], *, shard: Optional[str] = None, as_frame: "Literal[True]") -> Any: ...
+
+
 def sweep(
     spec: Union[str, "os.PathLike[str]"],
     *,
     shard: Optional[str] = None,
     as_frame: bool = False,
-) -> Union[List[Dict[str, Any]], "pandas.DataFrame"]:
+) -> Any:
     """Run a sweep spec (``reference/sweeps/*.toml``; the README's "Sweeps") and return its rows.
 
     One row per (case, solver run), sorted by case then solver, with the columns of the sweep CSV (``rollbem sweep
@@ -87,7 +94,8 @@ def sweep(
     Args:
         spec: the spec file (its ``base`` scene is relative to it).
         shard: ``"k/n"`` to run only the cases with ``index % n == k - 1``.
-        as_frame: return a ``pandas.DataFrame`` (pandas must be installed; it is not a dependency of rollbem).
+        as_frame: return a ``pandas.DataFrame`` (typed ``Any``: pandas must be installed, and it is not a dependency
+            of rollbem).
 
     Raises:
         InputError: a spec, base scene or case that does not validate (naming the key), or a bad ``shard``.
@@ -95,7 +103,7 @@ def sweep(
     """
     if as_frame:
         try:
-            import pandas as pd
+            import pandas as pd  # type: ignore[import-untyped, unused-ignore]
         except ImportError as e:
             raise ImportError("rollbem.sweep(as_frame=True) needs pandas: pip install pandas") from e
     columns, rows = _sweep_rows(os.fspath(spec), shard)

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union, final
 
 import numpy as np
 import numpy.typing as npt
@@ -22,10 +22,27 @@ NODE_STATES: List[str]
 #: The layout version of the result document (``Report.to_dict()["schema"]``).
 SCHEMA_VERSION: int
 
+__all__ = [
+    "Scene",
+    "Model",
+    "Report",
+    "Run",
+    "Step",
+    "Residuals",
+    "Stresses",
+    "run",
+    "_rust_creep_curve",
+    "_sweep_rows",
+    "NODE_STATES",
+    "SCHEMA_VERSION",
+    "__version__",
+]
+
 _Path = Union[str, "os.PathLike[str]"]
 _Drive = Mapping[str, float]
 _FloatArray = npt.NDArray[np.float64]
 
+@final
 class Scene:
     """A validated scene: what to simulate. Made only by validation, so every value is in range and every part is
     complete; bad input raises ``InputError`` naming the key. Immutable: ``edit``, ``with_drive``,
@@ -115,13 +132,14 @@ class Scene:
     @property
     def solvers(self) -> List[str]:
         """``[solvers] use``."""
-    def __eq__(self, other: object) -> bool: ...
+    def __eq__(self, other: object, /) -> bool: ...
 
+@final
 class Model:
     """A scene's flexibility (mesh, BEM system and its condensation, or the half-plane's influence coefficients),
     built once and solved for many drives. Every solve releases the GIL and honours Ctrl-C."""
 
-    def __init__(self, scene: Scene) -> None:
+    def __new__(cls, scene: Scene) -> Model:
         """Build the flexibility of ``scene``. Raises ``NumericalError`` for a singular BEM system."""
     @property
     def scene(self) -> Scene:
@@ -156,6 +174,7 @@ class Model:
     def solve_path(self, steps: Sequence[Mapping[str, float]], *, check: bool = False) -> Report:
         """Walk a load path (``[[steps]]`` mappings: drive keys, ``substeps``, ``roll``), friction with memory."""
 
+@final
 class Residuals:
     """Solver-independent residuals of the physical conditions, relative."""
 
@@ -178,6 +197,7 @@ class Residuals:
     def max(self) -> float:
         """The largest of those that apply."""
 
+@final
 class Stresses:
     """A run's subsurface stresses on the ``[stresses]`` grid: plane strain, tension positive, the scene's stress
     unit; depth z from the flat into the wheel. Fields have shape (nz, nx): row j at ``depth[j]``, column i at
@@ -196,18 +216,28 @@ class Stresses:
     def quantities(self) -> List[str]:
         """The quantities computed (``sxx``, ``szz``, ``txz``, ``syy``, ``principal_shear``, ``von_mises``,
         ``orthogonal_shear``)."""
-    def __getitem__(self, quantity: str) -> npt.NDArray[np.float64]:
+    def __getitem__(self, quantity: str, /) -> npt.NDArray[np.float64]:
         """The field of a quantity, shape (nz, nx), float64."""
-    def __contains__(self, quantity: str) -> bool: ...
+    def __contains__(self, quantity: str, /) -> bool: ...
     @property
     def maxima(self) -> Dict[str, Optional[Dict[str, float]]]:
-        """Per quantity its largest |value| (sign kept) and where: ``{"value", "x", "depth"}``."""
+        """Per quantity its largest |value| (sign kept) and where: ``{"value", "x", "depth"}``; grid and surface
+        points."""
+    @property
+    def body(self) -> str:
+        """``"wheel"``, or ``"counter_body"`` for an elastic counter-body's own field (depth measured into it)."""
+    @property
+    def surface_x(self) -> _FloatArray:
+        """x of the surface points (depth 0, the contact elements' centres), shape (n_surface,)."""
+    def surface(self, quantity: str, /) -> _FloatArray:
+        """A quantity at the surface points, shape (n_surface,), float64 (NaN where refused)."""
     @property
     def refused(self) -> Dict[str, int]:
         """Refused points per reason."""
     @property
     def time_s(self) -> float: ...
 
+@final
 class Run:
     """One solver's run. Node arrays are float64 of shape (n_nodes,), new on each access, empty when the run has no
     answer (or holding the judged answer of a ``contact_at_zone_edge`` / ``kinematics_out_of_range`` run)."""
@@ -309,11 +339,15 @@ class Run:
     @property
     def stresses(self) -> Optional[Stresses]:
         """With ``[stresses]``, for a solved run."""
+    @property
+    def counter_body_stresses(self) -> Optional[Stresses]:
+        """The elastic counter-body's own field (``[counter_body] kind = "half_plane"`` with ``[stresses]``)."""
     def raise_for_status(self) -> None:
         """Raise ``SolveError`` unless the run ended with the status its scene expects."""
     def to_dict(self) -> Dict[str, Any]:
         """The run's entry of the JSON document."""
 
+@final
 class Step:
     """One substep of a load path."""
 
@@ -332,6 +366,7 @@ class Step:
     @property
     def runs(self) -> List[Run]: ...
 
+@final
 class Report:
     """The result document of one solve (``rollbem run --json``)."""
 
@@ -382,4 +417,4 @@ def run(scene: Scene, *, check: bool = False) -> Report:
 def _rust_creep_curve(scene: Scene, creepages: Sequence[float], on_worker: bool = False) -> Tuple[float, List[float]]:
     """Benchmark reference: the same creep curve through the Rust API alone: (seconds, Q per creepage)."""
 
-def _sweep_rows(spec: str, shard: Optional[str]) -> Tuple[List[str], List[List[Any]]]: ...
+def _sweep_rows(spec: str, shard: Optional[str] = None) -> Tuple[List[str], List[List[Any]]]: ...

@@ -535,6 +535,13 @@ impl PyRun {
         self.get().stresses.clone().map(PyStresses::new)
     }
 
+    /// The elastic counter-body's own subsurface stresses from the same tractions (with `[stresses]` and
+    /// `[counter_body] kind = "half_plane"`, depth measured into the counter-body), or `None`.
+    #[getter]
+    fn counter_body_stresses(&self) -> Option<PyStresses> {
+        self.get().counter_body_stresses.clone().map(PyStresses::new)
+    }
+
     /// Raise `SolveError` unless the run ended with the status its scene expects (`solved` unless declared).
     fn raise_for_status(&self, py: Python<'_>) -> PyResult<()> {
         let run = self.get();

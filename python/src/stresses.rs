@@ -95,6 +95,40 @@ impl PyStresses {
         Ok(d)
     }
 
+    /// The body whose field this is: `"wheel"`, or `"counter_body"` for an elastic counter-body's own field (depth
+    /// measured into it).
+    #[getter]
+    fn body(&self) -> &str {
+        &self.inner.body
+    }
+
+    /// x of the surface points (depth 0, the contact elements' centres), shape (n_surface,); empty when the run has
+    /// none. The maxima include these points: a sliding contact's stresses peak there.
+    #[getter]
+    fn surface_x<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_vec(py, self.inner.surface.as_ref().map(|s| s.x.clone()).unwrap_or_default())
+    }
+
+    /// The values of a quantity at the surface points (`surface_x`), shape (n_surface,), float64 (NaN where a point
+    /// has no value); `KeyError` for a quantity not computed.
+    fn surface<'py>(&self, py: Python<'py>, quantity: &str) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let q = StressQuantity::from_name(quantity)
+            .ok_or_else(|| pyo3::exceptions::PyKeyError::new_err(format!("unknown stress quantity `{quantity}`")))?;
+        if !self.inner.quantities.contains(&q) {
+            return Err(pyo3::exceptions::PyKeyError::new_err(format!(
+                "`{quantity}` was not computed (see `[stresses] quantities`)"
+            )));
+        }
+        let v = match &self.inner.surface {
+            Some(s) => s.values.get(q.name()).map(|v| v.iter().map(|x| x.unwrap_or(f64::NAN)).collect()),
+            None => Some(Vec::new()),
+        };
+        let v = v.ok_or_else(|| {
+            pyo3::exceptions::PyRuntimeError::new_err(format!("surface values of `{quantity}` missing"))
+        })?;
+        Ok(PyArray1::from_vec(py, v))
+    }
+
     /// Number of refused points per reason (`outside_body`, `near_boundary`, `singular`).
     #[getter]
     fn refused(&self) -> std::collections::BTreeMap<String, usize> {
@@ -109,6 +143,6 @@ impl PyStresses {
 
     fn __repr__(&self) -> String {
         let (nz, nx) = self.shape();
-        format!("<rollbem.Stresses {nz}×{nx}: {}>", self.quantities().join(", "))
+        format!("<rollbem.Stresses of the {} {nz}×{nx}: {}>", self.inner.body, self.quantities().join(", "))
     }
 }

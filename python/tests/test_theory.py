@@ -239,3 +239,77 @@ def test_stresses_under_hertz_pressure_mcewen() -> None:
     # Tension positive: the most compressive sigma_z is negative.
     m = st.maxima["szz"]
     assert m is not None and m["value"] < 0
+
+
+def mcewen_axis(z: np.ndarray, a: float, p0: float) -> tuple:
+    """Hertz's 2D pressure on the axis x = 0 (McEwen; Johnson §4.3, eq. 4.76): (sigma_x, sigma_z), tension positive."""
+    root = np.sqrt(a * a + z * z)
+    return -p0 * ((a * a + 2 * z * z) / root - 2 * z) / a, -p0 * a / root
+
+
+def test_full_slip_principal_shear_is_mu_p0_on_the_surface() -> None:
+    # Expected (Smith & Liu 1953; Johnson §7.1): under full sliding q = mu p on a Hertz contact, at the surface
+    # sigma_z = -p, tau_xz = -mu p and sigma_x = -p - 2 mu p0 x/a for |x| <= a, so tau_1 = sqrt(((sigma_x -
+    # sigma_z)/2)^2 + tau_xz^2) = mu p0 sqrt(x^2/a^2 + 1 - x^2/a^2) = mu p0 at every surface point of the contact;
+    # for mu >= 1/sqrt(7) that plateau is the field's maximum. mu = 0.4, Q = mu P, half-plane, 200 strips on
+    # |x| <= 9 mm; the grid's 201 columns fall on the strips' edges, where the surface row is refused (singular
+    # sigma_x), so the surface values at the strips' centres carry the maximum. Tolerance 1 % of mu p0 (the Rust
+    # test's bound; measured 0.48 % on |x| <= 0.9 a, growing towards the edges: 1.0 % there with 100 strips).
+    mu = 0.4
+    s = scene(
+        "half-plane-hertz",
+        solvers__use=["lemke"],
+        contact__friction=mu,
+        contact__coupling=False,
+        drive__tangential_load=mu * 20000.0,
+        mesh__contact_elements=200,
+    ).edit({"stresses": {"x": [-9.0, 9.0], "depth": [0.0, 10.0], "points": [201, 51]}})
+    w = s.to_dict()["wheel"]
+    h = hertz_2d(20000.0, s.radius, plane_strain_modulus(w["youngs_modulus"], w["poisson_ratio"]))
+    st = rollbem.run(s).run().stresses
+    assert st is not None and st.body == "wheel"
+    assert st.refused.get("singular", 0) > 0, st.refused
+    xs = st.surface_x
+    assert xs.shape == (200,) and st.surface("principal_shear").shape == (200,)
+    np.testing.assert_allclose(xs, -9.0 + 0.09 * (np.arange(200) + 0.5), rtol=0, atol=1e-12)
+    plateau = np.abs(xs) <= 0.9 * h["a"]
+    tau = st.surface("principal_shear")[plateau]
+    assert np.max(np.abs(tau / (mu * h["p0"]) - 1.0)) < 0.01
+    m = st.maxima["principal_shear"]
+    assert m is not None and m["depth"] == 0.0
+    assert m["value"] == pytest.approx(mu * h["p0"], rel=0.01)
+    with pytest.raises(KeyError):
+        st.surface("no_such_quantity")
+
+
+def test_elastic_counter_body_has_its_own_field() -> None:
+    # Expected: two identical steel half-planes, frictionless: the pair's Hertz with 1/E* = 2 (1 - nu^2)/E, and
+    # each body carries the same pressure, so each body's field on the axis is McEwen's (above) with the pair's a
+    # and p0. 121 strips on |x| <= 12 mm (an odd count: x = 0 is a strip centre and a grid column). Tolerance
+    # 2e-3 p0 (the half-plane test above measured 7e-5 p0 with the wheel alone).
+    s = scene("half-plane-hertz", solvers__use=["lemke"], mesh__contact_half_width=12.0, mesh__contact_elements=121)
+    s = s.edit(
+        {
+            "counter_body": {"kind": "half_plane", "youngs_modulus": 210000.0, "poisson_ratio": 0.3},
+            "stresses": {"x": [-12.0, 12.0], "depth": [0.0, 20.0], "points": [121, 101]},
+        }
+    )
+    w = s.to_dict()["wheel"]
+    h = hertz_2d(20000.0, s.radius, plane_strain_modulus(w["youngs_modulus"], w["poisson_ratio"]) / 2.0)
+    run = rollbem.run(s).run()
+    wheel, rail = run.stresses, run.counter_body_stresses
+    assert wheel is not None and rail is not None
+    assert (wheel.body, rail.body) == ("wheel", "counter_body")
+    for st in (wheel, rail):
+        axis = int(np.argmin(np.abs(st.x)))
+        assert st.x[axis] == pytest.approx(0.0, abs=1e-12)
+        sxx, szz = mcewen_axis(st.depth, h["a"], h["p0"])
+        assert np.max(np.abs(st["szz"][:, axis] - szz)) < 2e-3 * h["p0"], st.body
+        assert np.max(np.abs(st["sxx"][:, axis] - sxx)) < 2e-3 * h["p0"], st.body
+        # McEwen's peak of tau_1: 0.300 p0 at z = 0.786 a (Johnson §4.2), on the grid's 0.2 mm rows.
+        m = st.maxima["principal_shear"]
+        assert m is not None
+        assert m["value"] / h["p0"] == pytest.approx(0.300, abs=0.003), st.body
+        assert m["depth"] / h["a"] == pytest.approx(0.786, abs=0.02), st.body
+    # A rigid flat has no field of its own.
+    assert rollbem.run(scene("half-plane-hertz", solvers__use=["lemke"])).run().counter_body_stresses is None
