@@ -326,6 +326,27 @@ pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progres
     Ok(Plan::new(spec_path, out_csv, &options)?.run()?.rows)
 }
 
+/// Run the cases of this shard (all cases without one) and return the rows [`run_sweep`] writes, in its order, with
+/// the swept keys (the CSV's columns after `case`): for a caller that wants typed rows rather than a file (the
+/// Python binding). The sweep runs as [`Plan::run`] runs it (streamed case by case, memory bounded by the cases in
+/// flight) into a private temporary folder, removed afterwards; the rows are then read back typed, so they are
+/// exactly the CSV's. Errors as [`run_sweep`]'s; a grid above the size guard is refused as it is by the CLI.
+pub fn sweep_rows(spec_path: &Path, shard: Option<Shard>, progress: bool) -> Result<(Vec<String>, Vec<SweepRow>)> {
+    static SEQ: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let seq = SEQ.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let nanos = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.subsec_nanos());
+    let dir = std::env::temp_dir().join(format!("rollbem-sweep-{}-{seq}-{nanos}", std::process::id()));
+    std::fs::create_dir(&dir).map_err(|source| Error::Write { path: dir.clone(), source })?;
+    let out = dir.join("rows.csv");
+    let options = SweepOptions { shard, progress, ..SweepOptions::default() };
+    let result =
+        Plan::new(spec_path, &out, &options).and_then(|plan| plan.run()).and_then(|_| SweepRow::read_csv(&out));
+    // The folder is ours alone; failing to remove it loses nothing.
+    let _ = std::fs::remove_dir_all(&dir);
+    let (header, rows) = result?;
+    Ok((header.keys, rows))
+}
+
 /// The number of rows with status `error` in a sweep CSV (0 when it cannot be read), read without keeping its rows.
 pub fn error_rows_in(csv_path: &Path) -> usize {
     let mut n = 0;
