@@ -5,9 +5,16 @@
 //! is being replaced).
 #![no_main]
 
+mod toml_mutator;
+
 use libfuzzer_sys::fuzz_target;
 use rollbem::scene::Scene;
 use std::path::Path;
+
+// Half libFuzzer's byte-level mutations, half structure-aware ones that keep the input TOML (`toml_mutator.rs`).
+libfuzzer_sys::fuzz_mutator!(|data: &mut [u8], size: usize, max_size: usize, seed: u32| {
+    toml_mutator::mutate(data, size, max_size, seed, include_str!("../dicts/scene.dict"))
+});
 
 fuzz_target!(|data: &[u8]| {
     let text = String::from_utf8_lossy(data);
