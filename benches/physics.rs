@@ -17,7 +17,7 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use rayon::prelude::*;
 use rollbem::halfplane::HalfPlane;
-use rollbem::run::run_scene;
+use rollbem::pipeline::run_scene;
 use rollbem::scene::Scene;
 use std::hint::black_box;
 use std::path::Path;
@@ -40,9 +40,7 @@ fn half_plane_group(c: &mut Criterion) {
     let mut g = c.benchmark_group("half_plane");
     g.sample_size(10);
     let s = half_plane(1000, "[drive]\nnormal_load = 20000.0\ntangential_load = 3000.0", r#"["active_set"]"#);
-    g.bench_function(BenchmarkId::new("end_to_end/active_set", 1000), |b| {
-        b.iter(|| black_box(run_scene(&s, Path::new("<bench>")).unwrap()))
-    });
+    g.bench_function(BenchmarkId::new("end_to_end/active_set", 1000), |b| b.iter(|| black_box(run_scene(&s).unwrap())));
     for n in [250usize, 1000] {
         let hp = HalfPlane::new(210000.0, 0.3, 460.0);
         let h = 18.0 / n as f64;
@@ -78,10 +76,8 @@ fn rolling_group(c: &mut Criterion) {
         .collect();
     g.bench_function("creep_curve/50x200", |b| {
         b.iter(|| {
-            let q: Vec<f64> = scenes
-                .par_iter()
-                .map(|s| run_scene(s, Path::new("<bench>")).unwrap().runs[0].resultants.unwrap().tangential)
-                .collect();
+            let q: Vec<f64> =
+                scenes.par_iter().map(|s| run_scene(s).unwrap().runs[0].resultants.unwrap().tangential).collect();
             black_box(q)
         })
     });
@@ -89,9 +85,7 @@ fn rolling_group(c: &mut Criterion) {
     let steady = half_plane(200, &format!("{load}\n[rolling]\nmode = \"steady\"\ndirection = 1"), r#"["lemke"]"#);
     let static_ = half_plane(200, load, r#"["lemke"]"#);
     for (name, s) in [("steady", &steady), ("static", &static_)] {
-        g.bench_function(BenchmarkId::new(name, 200), |b| {
-            b.iter(|| black_box(run_scene(s, Path::new("<bench>")).unwrap()))
-        });
+        g.bench_function(BenchmarkId::new(name, 200), |b| b.iter(|| black_box(run_scene(s).unwrap())));
     }
     g.finish();
 }
@@ -110,13 +104,11 @@ fn history_group(c: &mut Criterion) {
         ("pgs", half_plane(200, path, r#"["pgs"]"#)),
     ];
     for (name, s) in &cases {
-        let r = run_scene(s, Path::new("<bench>")).unwrap();
+        let r = run_scene(s).unwrap();
         let work: u64 =
             r.steps.iter().map(|st| st.runs[0].work.get("pivots").or(st.runs[0].work.get("sweeps")).unwrap_or(0)).sum();
         eprintln!("history/{name}/100x200: {} substeps, work {work} (pivots or sweeps)", r.steps.len());
-        g.bench_function(BenchmarkId::new(*name, "100x200"), |b| {
-            b.iter(|| black_box(run_scene(s, Path::new("<bench>")).unwrap()))
-        });
+        g.bench_function(BenchmarkId::new(*name, "100x200"), |b| b.iter(|| black_box(run_scene(s).unwrap())));
     }
     g.finish();
 }

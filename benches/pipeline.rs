@@ -20,7 +20,8 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use rollbem::formulation::lcp::frictional_lcp;
-use rollbem::run::{build_problem, run_scene};
+use rollbem::pipeline::run_scene;
+use rollbem::pipeline::stages::scene_problem;
 use rollbem::scene::{ElementKind, Scene};
 use rollbem::solvers::clarabel_qp::{self, QpSettings};
 use rollbem::solvers::lemke::{self, LemkeSettings};
@@ -37,21 +38,24 @@ fn seed_scene() -> Scene {
 /// The seed's material on a hub, `n` elements in all with a quarter of them on a 12° candidate arc.
 fn scene_with(n: usize, kind: ElementKind) -> Scene {
     let mut s = seed_scene();
-    s.wheel.support = Some(rollbem::scene::Support::Hub { radius: 0.2 });
-    s.mesh.element = kind;
-    s.mesh.contact_arc_deg = Some(12.0);
-    s.mesh.contact_elements = n / 4;
-    s.mesh.other_elements = Some(n - n / 4);
-    s.drive.normal_load = Some(187.42);
+    s = s
+        .edit(|d| {
+            d.wheel.support = Some(rollbem::scene::Support::Hub { radius: 0.2 });
+            d.mesh.element = kind;
+            d.mesh.contact_arc_deg = Some(12.0);
+            d.mesh.contact_elements = n / 4;
+            d.mesh.other_elements = Some(n - n / 4);
+            d.drive.normal_load = Some(187.42);
+        })
+        .unwrap();
     s
 }
 
 fn end_to_end(c: &mut Criterion) {
     faer::set_global_parallelism(faer::Par::Seq);
     let mut s = seed_scene();
-    s.solvers.use_ = vec!["lemke".into()];
-    let p = Path::new("seed");
-    c.bench_function("seed_end_to_end/lemke", |b| b.iter(|| black_box(run_scene(&s, p).unwrap())));
+    s = s.edit(|d| d.solvers.use_ = vec!["lemke".into()]).unwrap();
+    c.bench_function("seed_end_to_end/lemke", |b| b.iter(|| black_box(run_scene(&s).unwrap())));
 }
 
 fn assembly(c: &mut Criterion) {
@@ -63,7 +67,7 @@ fn assembly(c: &mut Criterion) {
             if kind == ElementKind::Quadratic && n > 1000 {
                 continue;
             }
-            let model = Model::new(&scene_with(n, kind));
+            let model = Model::of_scene(&scene_with(n, kind)).unwrap();
             g.bench_with_input(BenchmarkId::new(kind.name(), n), &model, |b, m| {
                 b.iter(|| black_box(assemble_system(m, Blocks::Normal).unwrap()))
             });
@@ -77,7 +81,7 @@ fn condensation(c: &mut Criterion) {
     let mut g = c.benchmark_group("condensation");
     g.sample_size(10);
     for n in [56, 250, 500, 1000, 2000] {
-        let model = Model::new(&scene_with(n, ElementKind::Constant));
+        let model = Model::of_scene(&scene_with(n, ElementKind::Constant)).unwrap();
         let sys = assemble_system(&model, Blocks::Normal).unwrap();
         g.bench_with_input(BenchmarkId::new("constant", n), &sys, |b, sys| {
             b.iter(|| black_box(solve_system(&model, sys).unwrap()))
@@ -94,8 +98,8 @@ fn frictionless_solve(c: &mut Criterion) {
     g.sample_size(10);
     for n in [56, 250, 1000] {
         let s = scene_with(n, ElementKind::Constant);
-        let (flex, _, _) = condense(&Model::new(&s), Blocks::Normal).unwrap();
-        let prob = build_problem(&s, &flex, Path::new("bench")).unwrap();
+        let (flex, _, _) = condense(&Model::of_scene(&s).unwrap(), Blocks::Normal).unwrap();
+        let prob = scene_problem(&s, &flex).unwrap();
         let nc = flex.n();
         let lcp = prob.lcp().clone();
         g.bench_with_input(BenchmarkId::new("lemke", nc), &lcp, |b, l| {
@@ -122,17 +126,21 @@ fn lemke_frictional(c: &mut Criterion) {
     g.sample_size(10);
     for n in [25usize, 100, 200, 400, 800, 880] {
         let mut s = seed_scene();
-        s.wheel.poisson_ratio = 0.3;
-        s.wheel.support = Some(rollbem::scene::Support::Hub { radius: 0.25 });
-        s.mesh.contact_arc_deg = Some(12.0);
-        s.mesh.contact_elements = n;
-        s.mesh.other_elements = Some(200);
-        s.contact.friction = 0.3;
-        s.drive.normal_load = Some(187.42);
-        s.drive.tangential_load = Some(18.742);
-        s.drive.rotation = Some(0.0);
-        let (flex, _, _) = condense(&Model::new(&s), Blocks::All).unwrap();
-        let lcp = build_problem(&s, &flex, Path::new("bench")).unwrap().lcp().clone();
+        s = s
+            .edit(|d| {
+                d.wheel.poisson_ratio = 0.3;
+                d.wheel.support = Some(rollbem::scene::Support::Hub { radius: 0.25 });
+                d.mesh.contact_arc_deg = Some(12.0);
+                d.mesh.contact_elements = n;
+                d.mesh.other_elements = Some(200);
+                d.contact.friction = 0.3;
+                d.drive.normal_load = Some(187.42);
+                d.drive.tangential_load = Some(18.742);
+                d.drive.rotation = Some(0.0);
+            })
+            .unwrap();
+        let (flex, _, _) = condense(&Model::of_scene(&s).unwrap(), Blocks::All).unwrap();
+        let lcp = scene_problem(&s, &flex).unwrap().lcp().clone();
         let m = lcp.size();
         let probe = lemke::solve(&lcp, &LemkeSettings::default());
         eprintln!("lemke_frictional/block/{m}: {} pivots, {:?}", probe.pivots, probe.status);
@@ -141,8 +149,8 @@ fn lemke_frictional(c: &mut Criterion) {
         });
         // Warm start from the previous load step (tangential load 10 % lower): its solution's support.
         let mut prev = s.clone();
-        prev.drive.tangential_load = Some(0.9 * 18.742);
-        let prev_lcp = build_problem(&prev, &flex, Path::new("bench")).unwrap().lcp().clone();
+        prev = prev.edit(|d| d.drive.tangential_load = Some(0.9 * 18.742)).unwrap();
+        let prev_lcp = scene_problem(&prev, &flex).unwrap().lcp().clone();
         let guess: Vec<bool> = lemke::solve(&prev_lcp, &LemkeSettings::default()).z.iter().map(|&v| v > 0.0).collect();
         let warm = lemke::solve_warm(&lcp, &LemkeSettings::default(), &guess);
         eprintln!("lemke_frictional/warm/{m}: {} pivots, {:?}", warm.pivots, warm.status);
@@ -167,11 +175,15 @@ fn formulation_and_normtang(c: &mut Criterion) {
     for n in [30usize, 60, 120, 240] {
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/scenes/cattaneo-decoupled.toml");
         let mut s = Scene::from_file(&path).unwrap();
-        s.contact.coupling = true;
-        s.wheel.poisson_ratio = 0.45;
-        s.mesh.contact_elements = n;
-        let (flex, _, _) = condense(&Model::new(&s), Blocks::All).unwrap();
-        let prob = build_problem(&s, &flex, Path::new("bench")).unwrap();
+        s = s
+            .edit(|d| {
+                d.contact.coupling = true;
+                d.wheel.poisson_ratio = 0.45;
+                d.mesh.contact_elements = n;
+            })
+            .unwrap();
+        let (flex, _, _) = condense(&Model::of_scene(&s).unwrap(), Blocks::All).unwrap();
+        let prob = scene_problem(&s, &flex).unwrap();
         let signs: Vec<f64> = prob.load_dofs().map(|d| d.default_sign()).collect();
         g.bench_with_input(BenchmarkId::new("frictional_lcp", n), &prob, |b, p| {
             b.iter(|| black_box(frictional_lcp(p, &signs)))
@@ -192,23 +204,27 @@ fn formulation_and_normtang(c: &mut Criterion) {
 /// The issue-14 size: 3300 contact nodes on the finite wheel (9904 LCP unknowns).
 fn scale(c: &mut Criterion) {
     use rollbem::solvers::active_set::ActiveSet;
-    use rollbem::solvers::{Solver, Status};
+    use rollbem::solvers::Solver;
     faer::set_global_parallelism(faer::Par::rayon(0));
     let mut g = c.benchmark_group("scale");
     g.sample_size(10);
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/scenes/cattaneo-decoupled.toml");
     let mut s = Scene::from_file(&path).unwrap();
-    s.contact.coupling = true;
-    s.mesh.contact_elements = 3300;
-    let model = Model::new(&s);
+    s = s
+        .edit(|d| {
+            d.contact.coupling = true;
+            d.mesh.contact_elements = 3300;
+        })
+        .unwrap();
+    let model = Model::of_scene(&s).unwrap();
     g.bench_function(BenchmarkId::new("condensation", 3300), |b| {
         b.iter(|| black_box(condense(&model, Blocks::All).unwrap()))
     });
     let (flex, _, _) = condense(&model, Blocks::All).unwrap();
-    let prob = build_problem(&s, &flex, Path::new("bench")).unwrap();
+    let prob = scene_problem(&s, &flex).unwrap();
     let solver = ActiveSet { settings: Default::default() };
     let first = solver.solve(&prob);
-    assert_eq!(first.status, Status::Solved, "{}", first.message);
+    assert_eq!(first.status, rollbem::solvers::Termination::Solved, "{}", first.message);
     g.bench_with_input(BenchmarkId::new("active_set_solve", 3300), &prob, |b, p| b.iter(|| black_box(solver.solve(p))));
     g.finish();
 }

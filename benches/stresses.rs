@@ -10,7 +10,8 @@
 //! Run with `cargo bench --bench stresses`.
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use rollbem::run::{blocks_for, run_scene};
+use rollbem::pipeline::run_scene;
+use rollbem::pipeline::stages::blocks_for;
 use rollbem::scene::Scene;
 use rollbem::stresses::StressEvaluator;
 use std::hint::black_box;
@@ -71,12 +72,11 @@ fn stresses(c: &mut Criterion) {
     g.sample_size(20);
     for (name, model) in [("half_plane", "half_plane"), ("bem_wheel", "bem")] {
         let s = scene(model);
-        let path = Path::new("bench");
-        let report = run_scene(&s, path).expect("bench scene runs");
+        let report = run_scene(&s).expect("bench scene runs");
         assert_eq!(report.runs[0].status, rollbem::solvers::Status::Solved, "{}", report.runs[0].message);
         let nodes = report.runs[0].nodes.clone();
         let built = rollbem::source::build(&s, blocks_for(&s)).expect("source");
-        let ev = StressEvaluator::new(&s, &built, path).expect("grid accepted").expect("[stresses] given");
+        let ev = StressEvaluator::new(&s, &built).expect("grid accepted").expect("[stresses] given");
         g.bench_function(format!("{name}/100x50"), |b| b.iter(|| black_box(ev.evaluate(black_box(&nodes)))));
     }
     g.finish();

@@ -21,7 +21,7 @@ pub fn asymmetry(k: &faer::Mat<f64>) -> f64 {
 }
 
 /// The health figures and warnings of a flexibility; `asymmetry` is that of the normal flexibility
-/// ([`crate::run::normal_asymmetry`]).
+/// ([`crate::pipeline::stages::normal_asymmetry`]).
 pub fn diagnose(flex: &Flexibility, info: &SourceInfo, asymmetry: f64) -> Diagnostics {
     let n = flex.n();
     let cond = |k: &faer::Mat<f64>| crate::condition::cond1(k, &k.partial_piv_lu());
@@ -52,7 +52,7 @@ pub fn diagnose(flex: &Flexibility, info: &SourceInfo, asymmetry: f64) -> Diagno
     }
     if asymmetry > tol::ASYMMETRY_WARN {
         // A source without a BEM system is the half-plane: its asymmetry is the datum's rank-one column term (see
-        // [`crate::run::normal_asymmetry`]; measured only when the approach is prescribed), which no mesh removes.
+        // [`crate::pipeline::stages::normal_asymmetry`]; measured only when the approach is prescribed), which no mesh removes.
         let what = if info.system_size.is_none() {
             "it is the half-plane's datum term (displacements relative to a point at depth datum_depth add the datum's \
              motion under each load to every node: physics, not the mesh), which a prescribed load would absorb \

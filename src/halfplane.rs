@@ -147,8 +147,9 @@
 //! `(+C'xx, −C'xz, −C'zx, +C'zz)` ([`InfluenceBlocks::into_counter_body`]). For identical
 //! materials and `D2 = D` the coupling blocks cancel exactly (`a + (−a) = 0` bitwise) and the
 //! direct blocks double. The surviving coupling, `∝ (1−2ν1)/G1 − (1−2ν2)/G2`, is what Dundurs'
-//! `β` measures ([`dundurs_beta`]; body 1 = wheel).
+//! `β` measures ([`crate::material::dundurs_beta`] of [`HalfPlane::material`]s; body 1 = wheel).
 
+use crate::material::Material;
 use std::f64::consts::{FRAC_2_PI, FRAC_PI_2, PI};
 
 /// A displacement `(u_x, u_z)` in the body's own axes (`u_z` positive INTO the body), relative to
@@ -356,14 +357,20 @@ impl HalfPlane {
         self.datum_depth
     }
 
-    /// Shear modulus `G = E / (2(1+ν))`.
-    pub fn shear_modulus(&self) -> f64 {
-        self.e / (2.0 * (1.0 + self.nu))
+    /// The half-plane's material (`E`, `ν`).
+    pub fn material(&self) -> Material {
+        Material::new(self.e, self.nu)
     }
 
-    /// Plane-strain modulus `E/(1−ν²)` (the `E*` of Hertz theory against a rigid flat).
+    /// Shear modulus `G = E / (2(1+ν))` ([`Material::shear_modulus`]).
+    pub fn shear_modulus(&self) -> f64 {
+        self.material().shear_modulus()
+    }
+
+    /// Plane-strain modulus `E/(1−ν²)` (the `E*` of Hertz theory against a rigid flat;
+    /// [`Material::plane_strain_modulus`]).
     pub fn plane_strain_modulus(&self) -> f64 {
-        self.e / (1.0 - self.nu * self.nu)
+        self.material().plane_strain_modulus()
     }
 
     fn kernel(&self) -> Kernel {
@@ -581,17 +588,6 @@ pub fn strip_stress(x1: f64, x2: f64, p: f64, q: f64, x: f64, z: f64) -> Stress 
         st.txz -= c * (dphi - 0.5 * ds2);
     }
     st
-}
-
-/// Dundurs' second parameter of the pair (body 1 = wheel, body 2 = counter-body):
-/// `β = [(1−2ν1)/G1 − (1−2ν2)/G2] / [2((1−ν1)/G1 + (1−ν2)/G2)]`, `G = E/(2(1+ν))`.
-/// A rigid body is `E = f64::INFINITY` (its compliance `1/G` is 0); at most one may be rigid.
-/// `|β| ≤ 0.5`; `β = 0` for identical materials; `β(1,2) = −β(2,1)`.
-pub fn dundurs_beta(e1: f64, nu1: f64, e2: f64, nu2: f64) -> f64 {
-    assert!(e1 > 0.0 && e2 > 0.0, "Young's moduli must be > 0");
-    assert!(e1.is_finite() || e2.is_finite(), "at least one body must be deformable");
-    let (c1, c2) = (2.0 * (1.0 + nu1) / e1, 2.0 * (1.0 + nu2) / e2);
-    ((1.0 - 2.0 * nu1) * c1 - (1.0 - 2.0 * nu2) * c2) / (2.0 * ((1.0 - nu1) * c1 + (1.0 - nu2) * c2))
 }
 
 /// Blocks of the wheel–flat pair: the wheel's own blocks plus the flat's counter-body blocks.
@@ -1069,6 +1065,11 @@ mod tests {
             assert!((gap[i] - eg).abs() <= 1e-13 * eg.abs().max(1.0), "gap {} vs {eg}", gap[i]);
             assert!(gap[i] > 0.0, "compression must open the gap relative to the data");
         }
+    }
+
+    /// β of the pair (E1, ν1) on (E2, ν2), by [`crate::material::dundurs_beta`].
+    fn dundurs_beta(e1: f64, nu1: f64, e2: f64, nu2: f64) -> f64 {
+        crate::material::dundurs_beta(&Material::new(e1, nu1), &Material::new(e2, nu2))
     }
 
     /// Dundurs β: reference values (rigid counter-body: β = (1−2ν)/(2(1−ν)) = 4/9 at ν = 0.1, 0 at

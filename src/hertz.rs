@@ -8,10 +8,11 @@
 //! Valid for a ≪ R. The approach is *not* a Hertz result in 2D (it depends on the support), so comparisons are
 //! made at equal load.
 
-use serde::Serialize;
+use crate::material::Material;
+use serde::{Deserialize, Serialize};
 
 /// Hertz solution for one load.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Hertz {
     /// Contact half-width a (length).
     pub half_width: f64,
@@ -24,7 +25,7 @@ pub struct Hertz {
 impl Hertz {
     /// Hertz contact of a wheel of radius `r`, modulus `e`, Poisson's ratio `nu` under load `p` on a rigid flat.
     pub fn new(r: f64, e: f64, nu: f64, p: f64) -> Hertz {
-        Hertz::with_modulus(r, e / (1.0 - nu * nu), p)
+        Hertz::with_modulus(r, Material::new(e, nu).plane_strain_modulus(), p)
     }
 
     /// Hertz contact of a cylinder of radius `r` on a flat with the pair's contact modulus `estar`

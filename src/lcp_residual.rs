@@ -23,8 +23,7 @@
 //! dimensionless whatever the units of z and w. For comparison with Siconos, [`LcpResiduals::siconos_error`] is
 //! Siconos' own measure, ‖z − max(0, z − w)‖₂ / ‖q‖₂ with w = M z + q (divided by 1 when ‖q‖₂ ≤ ε, as Siconos does).
 
-use crate::solvers::lemke::LemkeOutcome;
-use crate::solvers::{Lcp, Solver};
+use crate::solvers::{Lcp, LcpOutcome, LcpSolver};
 use serde::Serialize;
 use std::time::Instant;
 
@@ -92,27 +91,77 @@ pub fn residuals(lcp: &Lcp, z: &[f64], w: &[f64]) -> LcpResiduals {
 #[derive(Debug, Clone)]
 pub struct LcpSolve {
     /// What the solver returned.
-    pub outcome: LemkeOutcome,
+    pub outcome: LcpOutcome,
     /// [`residuals`] of the returned (z, w).
     pub residuals: LcpResiduals,
     /// Wall time of the solver call alone, in seconds (not reading the file, not the residuals).
     pub solve_time_s: f64,
 }
 
-/// Solve `lcp` with a registered solver that works on bare LCPs ([`crate::solvers::Solver::solves_lcp`]), timing
-/// the solver call alone, and compute the residuals of its answer; `None` for a solver that does not solve LCPs.
-pub fn solve_timed(lcp: &Lcp, solver: &dyn Solver) -> Option<LcpSolve> {
+/// Solve `lcp` with a solver of bare LCPs ([`crate::solvers::Solver::lcp_solver`]), timing the solver call alone,
+/// and compute the residuals of its answer.
+pub fn solve_timed(lcp: &Lcp, solver: &dyn LcpSolver) -> LcpSolve {
     let start = Instant::now();
-    let outcome = solver.solve_lcp(lcp)?;
+    let outcome = solver.solve_lcp(lcp);
     let solve_time_s = start.elapsed().as_secs_f64();
     let residuals = residuals(lcp, &outcome.z, &outcome.w);
-    Some(LcpSolve { outcome, residuals, solve_time_s })
+    LcpSolve { outcome, residuals, solve_time_s }
+}
+
+/// Solve `lcp` with a registered solver of bare LCPs by name; `Err` says which names solve LCP files.
+pub fn solve_named(lcp: &Lcp, name: &str) -> Result<LcpSolve, String> {
+    let lcp_solvers: Vec<crate::solvers::SolverId> = crate::solvers::SolverId::ALL
+        .into_iter()
+        .filter(|id| id.build(&Default::default()).lcp_solver().is_some())
+        .collect();
+    let names: Vec<&str> = lcp_solvers.iter().map(|id| id.name()).collect();
+    let bad = || format!("`{name}` does not solve LCP files (expected one of: {})", names.join(", "));
+    let id = crate::solvers::SolverId::from_name(name).filter(|id| lcp_solvers.contains(id)).ok_or_else(bad)?;
+    let solver = id.build(&Default::default());
+    let lcp_solver = solver.lcp_solver().ok_or_else(bad)?;
+    Ok(solve_timed(lcp, lcp_solver))
+}
+
+impl LcpSolve {
+    /// What `rollbem lcp solve` prints: the status, the work, the residuals and the solver's message.
+    pub fn summary(&self, size: usize) -> String {
+        let (out, r) = (&self.outcome, &self.residuals);
+        format!(
+            "status {}  {}  size {size}  solve time {:.3e} s\n\
+             residuals (relative to s = max(‖q‖∞, ‖M‖∞‖z‖∞) = {:.3e}): max(0, −w)/s {:.1e}, max(0, −z)/‖z‖∞ {:.1e}, \
+             max|w z|/(s ‖z‖∞) {:.1e}, max|w − (Mz + q)|/s {:.1e}; Siconos' lcp_compute_error {:.1e}\n{}\n",
+            out.termination,
+            out.work.long(),
+            self.solve_time_s,
+            r.scale,
+            r.negative_w,
+            r.negative_z,
+            r.complementarity,
+            r.equation,
+            r.siconos_error,
+            out.message
+        )
+    }
+
+    /// The JSON document of `rollbem lcp solve --json`: solver, status, work counters (`pivots` for Lemke), message,
+    /// solve time, z, w and the residuals.
+    pub fn document(&self, solver: &str) -> String {
+        let out = &self.outcome;
+        let mut doc = serde_json::json!({
+            "solver": solver, "status": out.termination, "message": out.message,
+            "solve_time_s": self.solve_time_s, "z": out.z, "w": out.w, "residuals": self.residuals,
+        });
+        for (k, v) in &out.work.0 {
+            doc[k.as_str()] = serde_json::json!(v);
+        }
+        serde_json::to_string_pretty(&doc).expect("a JSON value serialises")
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::solvers::Status;
+    use crate::solvers::Termination;
     use faer::Mat;
 
     fn lcp(rows: &[&[f64]], q: &[f64]) -> Lcp {
@@ -130,9 +179,10 @@ mod tests {
         // The exact solution is z = (4/3, 7/3), w = 0 (by hand); rollbem's Lemke returns it to round-off, with a w
         // that is round-off but not zero (the old max|w| scaling printed this answer as 0.57 and 1.0).
         let p = deudeu();
-        let solved = solve_timed(&p, crate::solvers::build("lemke", None).unwrap().as_ref()).unwrap();
+        let lemke = crate::solvers::build("lemke").unwrap();
+        let solved = solve_timed(&p, lemke.lcp_solver().unwrap());
         let (z, w) = (&solved.outcome.z, &solved.outcome.w);
-        assert_eq!(solved.outcome.status, Status::Solved);
+        assert_eq!(solved.outcome.termination, Termination::Solved);
         assert!((z[0] - 4.0 / 3.0).abs() < 1e-15 && (z[1] - 7.0 / 3.0).abs() < 1e-15, "z = {z:?}");
         assert!(w.iter().any(|&v| v != 0.0) && w.iter().all(|v| v.abs() < 1e-14), "w = {w:?}");
         let r = solved.residuals;
@@ -172,8 +222,9 @@ mod tests {
         // ‖q‖ scaling as ≈ 1e−10 (observed with this Lemke answer: 5.8e−17 against 8.3e−11).
         let d = 1e-8;
         let p = lcp(&[&[1.0, -1.0], &[-1.0, 1.0 + d]], &[-1.0, 1.0 - d * 1e6]);
-        let out = solve_timed(&p, crate::solvers::build("lemke_dense", None).unwrap().as_ref()).unwrap();
-        assert_eq!(out.outcome.status, Status::Solved, "{}", out.outcome.message);
+        let dense = crate::solvers::build("lemke_dense").unwrap();
+        let out = solve_timed(&p, dense.lcp_solver().unwrap());
+        assert_eq!(out.outcome.termination, Termination::Solved, "{}", out.outcome.message);
         // z itself is only as accurate as the conditioning (κ ≈ 4e8) allows.
         assert!((out.outcome.z[1] - 1e6).abs() < 1e-6 * 1e6, "z = {:?}", out.outcome.z);
         let r = out.residuals;
@@ -185,8 +236,12 @@ mod tests {
     fn only_solvers_of_bare_lcps_solve_files() {
         let p = deudeu();
         for name in ["lemke", "lemke_dense"] {
-            assert!(solve_timed(&p, crate::solvers::build(name, None).unwrap().as_ref()).is_some(), "{name}");
+            let s = crate::solvers::build(name).unwrap();
+            let solved = solve_timed(&p, s.lcp_solver().expect("a solver of bare LCPs"));
+            assert_eq!(solved.outcome.termination, Termination::Solved, "{name}");
         }
-        assert!(solve_timed(&p, crate::solvers::build("pgs", None).unwrap().as_ref()).is_none());
+        for name in ["pgs", "active_set", "clarabel", "normtang_qp"] {
+            assert!(crate::solvers::build(name).unwrap().lcp_solver().is_none(), "{name}");
+        }
     }
 }

@@ -18,12 +18,33 @@
 //! or, as a QP, by the clarabel interior-point solver.
 //!
 //! ## Pipeline (one module per stage)
-//! [`scene`] → [`source`] (the flexibility: [`mesh`] → [`bem`] assembly → condensation, [`source::bem_wheel`]) →
-//! [`flexibility`] → [`formulation`] (the contact problem: LCP / QP, slip operator) → [`solvers`] (one trait, one
-//! registry) → [`post`] (residuals, resultants, states) → [`checks`] (against [`references`], [`hertz`] and between
-//! solvers) → [`results`] (the JSON document); with `[stresses]`, [`stresses`] evaluates the subsurface field of each
-//! solved run. [`run`] is the pipeline for one scene; [`sweep`] and [`report`] run
-//! many.
+//! [`scene`] (a validated scene: [`scene::Scene`]) → [`source`] (the flexibility: [`mesh`] → [`bem`] assembly →
+//! condensation, [`source::bem_wheel`]; or the half-plane's closed forms) → [`flexibility`] → [`formulation`] (the
+//! contact problem: LCP / QP, slip operator) → [`solvers`] (one trait, one registry) → [`post`] (residuals,
+//! resultants, states) → [`checks`] (against [`references`], [`hertz`], [`theory`] and between solvers) →
+//! [`results`] (the result document, its text and CSV renderings); with `[stresses]`, [`stresses`] evaluates the
+//! subsurface field of each solved run. [`pipeline`] runs these stages: a [`pipeline::Model`] is built once per
+//! scene and solved for many drives; [`sweep`] and [`report`] run many scenes.
+//!
+//! ## Use as a library
+//! ```
+//! use rollbem::pipeline::Model;
+//! use rollbem::scene::Scene;
+//! use rollbem::status::Status;
+//! let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/scenes/half-plane-hertz.toml");
+//! let scene = Scene::from_file(&path).unwrap(); // parsed and validated: bad input is an `Err` naming the key
+//! let model = Model::build(&scene).unwrap(); // the flexibility, built once
+//! for load in [500.0, 1000.0, 2000.0] {
+//!     // Another normal load on the same bodies and mesh: solved on the same model.
+//!     let at = scene.edit(|d| d.drive.normal_load = Some(load)).unwrap();
+//!     let report = model.solve(&at).unwrap();
+//!     for run in &report.runs {
+//!         assert_eq!(run.status, Status::Solved, "{}", run.explanation());
+//!         let p = run.resultants.unwrap().normal;
+//!         assert!((p - load).abs() < 1e-9 * load);
+//!     }
+//! }
+//! ```
 //!
 //! ## Conventions
 //! Per unit thickness, plane strain. x horizontal, y up, wheel centre at the origin, the flat is y = −R. Tractions
@@ -41,23 +62,25 @@ pub mod checks;
 pub mod condition;
 pub mod diagnostics;
 pub mod error;
+pub mod exit;
 pub mod flexibility;
 pub mod formulation;
 pub mod halfplane;
 pub mod hertz;
-pub mod history;
 pub mod io;
 pub mod lcp_io;
 pub mod lcp_residual;
+pub mod material;
 pub mod mesh;
+pub mod pipeline;
 pub mod plot;
+pub mod plot_csv;
 pub mod plot_result;
 pub mod post;
 pub mod progress;
 pub mod references;
 pub mod report;
 pub mod results;
-pub mod run;
 pub mod scene;
 pub mod solvers;
 pub mod source;

@@ -1,12 +1,11 @@
-//! The `rollbem` command line. Exit codes: 0 success, 1 a check failed (`check`: any check, including a status
-//! other than the expected one, `solved` unless declared; `run`: a check of a scene that declares expectations in
-//! `[checks]`; `lcp solve`: not solved), 2 bad input, 3 an output file could not be written, 4 numerical failure of
-//! the BEM system. Progress goes to stderr when it is a terminal, unless `--quiet`.
+//! The `rollbem` command line: it parses the arguments, calls the library and prints what the library renders.
+//! Exit codes: [`rollbem::exit`]. Progress goes to stderr when it is a terminal, unless `--quiet`.
 
 use clap::{Parser, Subcommand};
-use rollbem::io::write_atomic;
-use rollbem::results::{Check, CheckKind, Report};
-use rollbem::run::run_scene;
+use rollbem::exit;
+use rollbem::io::write_output;
+use rollbem::pipeline::run_scene;
+use rollbem::results::{render, Report};
 use rollbem::scene::Scene;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -40,7 +39,8 @@ enum Cmd {
         /// Scene files (TOML).
         #[arg(required = true)]
         scenes: Vec<PathBuf>,
-        /// Write the JSON result document here (one scene only; written only when the run completes).
+        /// Write the JSON result document here (one scene only; written only when the run completes; `-` writes it to
+        /// standard output and the table to standard error).
         #[arg(long, conflicts_with = "out_dir")]
         json: Option<PathBuf>,
         /// Write one JSON document per scene into this folder, named after the scene (`NAME.json`).
@@ -50,12 +50,14 @@ enum Cmd {
         #[arg(long = "solver", value_parser = parse_solver)]
         solvers: Vec<String>,
         /// Write the load path as CSV here (one scene with `[[steps]]` only): one row per substep and solver with
-        /// resultants, rigid motion, stick zone, node counts, dissipated energy, residual and solve time.
+        /// resultants, rigid motion, stick zone, node counts, dissipated energy, residual and solve time (`-`:
+        /// standard output).
         #[arg(long)]
         path_csv: Option<PathBuf>,
         /// Write the nodal table as CSV here (one scene only): one row per contact node and solver with x, y,
         /// pressure, shear, u_x, u_y, gap, slip, state and slip_velocity, and the run's status (a run that did not solve
-        /// has no rows, except one judged contact_at_zone_edge or kinematics_out_of_range: its rows are the evidence).
+        /// has no rows, except one judged contact_at_zone_edge or kinematics_out_of_range: its rows are the evidence;
+        /// `-`: standard output).
         #[arg(long)]
         csv: Option<PathBuf>,
     },
@@ -97,11 +99,18 @@ enum Cmd {
     /// Draw a result document's figures (written by `run --json`): per solver run the surface tractions and, with
     /// `[stresses]`, a contour map per stress quantity with its maximum marked (SVG).
     Plot {
-        /// Result document (JSON).
+        /// A result document (JSON, `run --json`), a load path's CSV (`run --path-csv`) or a sweep's CSV (`sweep`).
         result: PathBuf,
-        /// Output folder (default: the result document's folder).
+        /// Output folder (default: the input's folder).
         #[arg(long)]
         out: Option<PathBuf>,
+        /// For a sweep's CSV: what the sweep is (its spec's `analysis`): creep_curve, accuracy or
+        /// finite_vs_half_plane.
+        #[arg(long)]
+        analysis: Option<String>,
+        /// For a load path's CSV: the scene that wrote it, for the theory drawn beside it.
+        #[arg(long)]
+        scene: Option<PathBuf>,
     },
     /// Run every requested solver on each scene and check them against theory, against each other and against
     /// the scene's declared expectations; print a pass/fail table; exit 1 if any check fails.
@@ -139,283 +148,45 @@ enum LcpCmd {
     },
 }
 
-fn lcp_cmd(cmd: LcpCmd) -> rollbem::Result<i32> {
+fn lcp_cmd(cmd: LcpCmd) -> rollbem::Result<u8> {
     match cmd {
         LcpCmd::Export { scene, out } => {
             let s = Scene::from_file(&scene)?;
-            let lcp = rollbem::run::scene_lcp(&s, &scene)?;
+            let lcp = rollbem::pipeline::Model::build(&s)?.lcp(&s)?;
             let out = out.unwrap_or_else(|| scene.with_extension("lcp.dat"));
             rollbem::lcp_io::write(&lcp, &out)?;
             say!("LCP of size {} written to {}", lcp.size(), out.display());
-            Ok(0)
+            Ok(exit::SUCCESS)
         }
         LcpCmd::Solve { file, solver, json } => {
             let lcp = rollbem::lcp_io::read(&file)?;
-            let lcp_solvers: Vec<&str> = rollbem::solvers::REGISTRY
-                .iter()
-                .filter(|e| (e.build)(None).is_ok_and(|s| s.solves_lcp()))
-                .map(|e| e.name)
-                .collect();
-            let bad = || rollbem::Error::Invalid {
+            let run = rollbem::lcp_residual::solve_named(&lcp, &solver).map_err(|message| rollbem::Error::Invalid {
                 path: file.clone(),
                 field: "--solver".into(),
-                message: format!("`{solver}` does not solve LCP files (expected one of: {})", lcp_solvers.join(", ")),
-            };
-            let built = rollbem::solvers::build(&solver, None).map_err(|_| bad())?;
-            let run = rollbem::lcp_residual::solve_timed(&lcp, built.as_ref()).ok_or_else(bad)?;
-            let (out, r) = (&run.outcome, &run.residuals);
-            say!(
-                "status {}  pivots {}  size {}  solve time {:.3e} s",
-                out.status,
-                out.pivots,
-                lcp.size(),
-                run.solve_time_s
-            );
-            say!(
-                "residuals (relative to s = max(‖q‖∞, ‖M‖∞‖z‖∞) = {:.3e}): max(0, −w)/s {:.1e}, max(0, −z)/‖z‖∞ {:.1e}, \
-                 max|w z|/(s ‖z‖∞) {:.1e}, max|w − (Mz + q)|/s {:.1e}; Siconos' lcp_compute_error {:.1e}",
-                r.scale,
-                r.negative_w,
-                r.negative_z,
-                r.complementarity,
-                r.equation,
-                r.siconos_error
-            );
-            say!("{}", out.message);
+                message,
+            })?;
+            say!("{}", run.summary(lcp.size()).trim_end());
             if let Some(path) = json {
-                let doc = serde_json::json!({
-                    "solver": solver, "status": out.status, "pivots": out.pivots, "message": out.message,
-                    "solve_time_s": run.solve_time_s, "z": out.z, "w": out.w, "residuals": r,
-                });
-                write_atomic(&path, &serde_json::to_string_pretty(&doc).expect("json"))?;
+                write_output(&path, &(run.document(&solver) + "\n"))?;
             }
-            Ok(out.status.exit_code())
+            Ok(if run.outcome.termination == rollbem::solvers::Termination::Solved {
+                exit::SUCCESS
+            } else {
+                exit::NOT_SOLVED
+            })
         }
     }
 }
 
 fn parse_solver(s: &str) -> Result<String, String> {
-    if s == "all" || rollbem::solvers::entry(s).is_some() {
+    if s == "all" || rollbem::solvers::SolverId::from_name(s).is_some() {
         Ok(s.to_string())
     } else {
         Err(format!("unknown solver `{s}` (expected one of: all, {})", rollbem::solvers::names()))
     }
 }
 
-/// The `run` table of one scene. Its two time columns: `solve [s]`, the solver alone (what the solvers are compared
-/// by), and `total [s]`, the whole pipeline of that run (assembly, condensation, formulation and solve).
-/// The memory line is printed from this peak resident size on (bytes): small runs need no memory figure.
-const MEMORY_LINE_FROM: u64 = 100_000_000;
-
-/// The process's peak resident set size (Linux `VmHWM` in `/proc/self/status`), `None` where it cannot be read.
-fn peak_resident_bytes() -> Option<u64> {
-    let status = std::fs::read_to_string("/proc/self/status").ok()?;
-    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
-    let kb: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
-    Some(kb * 1024)
-}
-
-fn print_report(r: &Report) {
-    say!("scene {} — {}", r.scene.name, r.scene.description);
-    say!(
-        "mesh: {} {} elements, {} nodes, {} contact nodes{}; effects: {}",
-        r.mesh.elements,
-        r.mesh.element.name(),
-        r.mesh.nodes,
-        r.mesh.contact_nodes,
-        r.mesh.system_size.map(|n| format!(", BEM system {n}×{n}")).unwrap_or_default(),
-        r.effects.join(", ")
-    );
-    let d = &r.diagnostics;
-    say!(
-        "health: {}κ₁(K_NN) ≈ {:.2e}{}, flexibility asymmetry {:.2e}",
-        d.bem_condition.map(|k| format!("κ₁(BEM system) ≈ {k:.2e}, ")).unwrap_or_default(),
-        d.flexibility_condition,
-        d.tangential_condition.map(|k| format!(", κ₁(K_TT) ≈ {k:.2e}")).unwrap_or_default(),
-        d.flexibility_asymmetry
-    );
-    if let Some(bytes) = peak_resident_bytes().filter(|b| *b >= MEMORY_LINE_FROM) {
-        say!(
-            "memory: peak resident {:.2} GB (this process so far: the BEM system, its LU and the solvers' work)",
-            bytes as f64 / 1e9
-        );
-    }
-    for w in d.warnings.iter().cloned().chain(run_warnings(r)) {
-        say!("WARNING: {w}");
-    }
-    if let Some(h) = &r.references.hertz {
-        say!("Hertz at P = {:.6e}: a = {:.6e}, p0 = {:.6e}", h.load, h.half_width, h.peak_pressure);
-    }
-    let frictional = r.effects.iter().any(|e| e == "friction");
-    say!(
-        "{:<11} {:<23} {:>5} {:>9} {:>9} {:>12} {:>12} {:>12} {:>20} {:>12} {:>9} {:>9}",
-        "solver",
-        "status",
-        "size",
-        "work",
-        "residual",
-        "P",
-        if frictional { "Q" } else { "a (fit)" },
-        if frictional { "peak p" } else { "p0 (fit)" },
-        if frictional { "stick zone" } else { "contact" },
-        "d_N",
-        "solve [s]",
-        "total [s]"
-    );
-    let opt = |v: Option<f64>| v.map(|v| format!("{v:.5e}")).unwrap_or_else(|| "-".into());
-    for run in &r.runs {
-        let work = run.work.short();
-        let (Some(res), Some(f), Some(c), Some(rb)) = (&run.residuals, &run.resultants, &run.contact, &run.rigid_body)
-        else {
-            say!(
-                "{:<11} {:<23} {:>5} {:>9} {:>9} {:>12} {:>12} {:>12} {:>20} {:>12} {:>9.4} {:>9.4}",
-                run.solver,
-                run.status.name(),
-                run.problem_size,
-                work,
-                "-",
-                "-",
-                "-",
-                "-",
-                "-",
-                "-",
-                run.timing_s.solve,
-                run.timing_s.total
-            );
-            say!("            {}", run.message);
-            continue;
-        };
-        let range = |a: Option<f64>, b: Option<f64>| match (a, b) {
-            (Some(a), Some(b)) => format!("[{a:.3e},{b:.3e}]"),
-            _ => "none".into(),
-        };
-        say!(
-            "{:<11} {:<23} {:>5} {:>9} {:>9.2e} {:>12.5e} {:>12} {:>12} {:>20} {:>12.5e} {:>9.4} {:>9.4}",
-            run.solver,
-            run.status.name(),
-            run.problem_size,
-            work,
-            res.max(),
-            f.normal,
-            if frictional { format!("{:.5e}", f.tangential) } else { opt(c.fit_half_width) },
-            if frictional { format!("{:.5e}", c.peak_pressure) } else { opt(c.fit_peak_pressure) },
-            if frictional { range(c.stick_x_min, c.stick_x_max) } else { range(c.x_min, c.x_max) },
-            rb.normal,
-            run.timing_s.solve,
-            run.timing_s.total
-        );
-        if run.status != rollbem::solvers::Status::Solved || run.message.contains("sliding limit") {
-            say!("            {}", run.message);
-        }
-    }
-    if !r.steps.is_empty() {
-        print_path(r);
-    }
-    print_stresses(r);
-    say!("checks:");
-    for c in &r.checks {
-        say!("  {}", check_line(c));
-    }
-}
-
-/// The subsurface stresses' maxima per run (largest |value| on the grid, sign kept, and where), with `[stresses]`.
-fn print_stresses(r: &Report) {
-    let Some(spec) = &r.scene.stresses else { return };
-    say!(
-        "stresses in the wheel ({} model): {}×{} grid, x in [{:.4e}, {:.4e}], depth in [{:.4e}, {:.4e}]; maxima (largest |value|):",
-        r.scene.wheel.model.name(),
-        spec.points[0],
-        spec.points[1],
-        spec.x[0],
-        spec.x[1],
-        spec.depth[0],
-        spec.depth[1]
-    );
-    say!("{:<9} {:<17} {:>13} {:>13} {:>13}", "solver", "quantity", "max", "x", "depth");
-    for run in &r.runs {
-        let Some(st) = &run.stresses else {
-            say!("{:<9} none (not solved)", run.solver);
-            continue;
-        };
-        for (q, m) in st.maxima() {
-            match m {
-                Some(m) => {
-                    say!("{:<9} {:<17} {:>13.5e} {:>13.5e} {:>13.5e}", run.solver, q.name(), m.value, m.x, m.depth)
-                }
-                None => say!("{:<9} {:<17} {:>13}", run.solver, q.name(), "-"),
-            }
-        }
-        let refused = st.refused();
-        let n: usize = refused.values().sum();
-        let why: Vec<String> = refused.iter().map(|(k, v)| format!("{v} {k}")).collect();
-        say!(
-            "{:<9} {} of {} points evaluated in {:.3} s{}{}",
-            "",
-            st.field.grid.len() - n,
-            st.field.grid.len(),
-            st.time_s,
-            if n > 0 { format!("; refused: {}", why.join(", ")) } else { String::new() },
-            st.csv.as_ref().map(|f| format!("; field in {f}")).unwrap_or_default()
-        );
-    }
-}
-
-/// One check as a line of the `run` table: a figure with its numbers, a verdict or a reference that does not apply
-/// with what was found.
-fn check_line(c: &Check) -> String {
-    let mark = match (c.kind, c.pass) {
-        (CheckKind::NotApplicable, _) => "n/a ",
-        (_, true) => "pass",
-        (_, false) => "FAIL",
-    };
-    let note = c.note.as_ref().map(|n| format!(": {n}")).unwrap_or_default();
-    match c.kind {
-        CheckKind::Figure => format!(
-            "[{mark}] {:<48} measured {:>12.6e}  reference {:>12.6e}  error {:>9.2e}  tol {:>8.1e}{note}",
-            c.name, c.measured, c.reference, c.error, c.tolerance
-        ),
-        CheckKind::Verdict | CheckKind::NotApplicable => format!("[{mark}] {}{note}", c.name),
-    }
-}
-
-/// The run-level warnings of a report: a contact with too few elements across it (a failed check in `check`, a
-/// warning in `run`), one line per distinct finding with the solvers it concerns.
-fn run_warnings(r: &Report) -> Vec<String> {
-    let mut found: Vec<(String, Vec<&str>)> = Vec::new();
-    for run in &r.runs {
-        let c = rollbem::checks::resolution_check(&r.scene, r.mesh.element, r.mesh.contact_element_length, run);
-        if let Some(note) = c.filter(|c| !c.pass).and_then(|c| c.note) {
-            match found.iter_mut().find(|(n, _)| *n == note) {
-                Some((_, solvers)) => solvers.push(run.solver.0),
-                None => found.push((note, vec![run.solver.0])),
-            }
-        }
-    }
-    found.into_iter().map(|(note, solvers)| format!("{}: {note}", solvers.join(", "))).collect()
-}
-
-/// A load path's summary: per solver, how far it got, the dissipated energy and its hardest substep.
-fn print_path(r: &Report) {
-    let total = r.steps.len();
-    say!(
-        "load path: {} steps, {total} substeps (the table above is the path's end; `--path-csv` writes every substep)",
-        r.scene.steps.len()
-    );
-    let names: Vec<&str> = r.runs.iter().map(|x| x.solver.0).collect();
-    for name in names {
-        let runs: Vec<&rollbem::results::SolverRun> =
-            r.steps.iter().filter_map(|st| st.runs.iter().find(|x| x.solver == name)).collect();
-        let solved = runs.iter().filter(|x| x.status == rollbem::solvers::Status::Solved).count();
-        let dissipated = runs.last().and_then(|x| x.history.as_ref()).map_or(0.0, |h| h.dissipated_total);
-        let worst = runs.iter().filter_map(|x| x.residuals.map(|res| res.max())).fold(0.0f64, f64::max);
-        let time: f64 = runs.iter().map(|x| x.timing_s.total).sum();
-        say!(
-            "  {name:<10} {solved}/{total} substeps solved, dissipated {dissipated:.6e}, largest residual {worst:.2e}, time {time:.4} s"
-        );
-    }
-}
-
-/// Where `run` writes a scene's outputs (each written atomically, only when the run completes).
+/// Where `run` writes a scene's outputs (each by [`rollbem::io::write_output`], only when the run completes).
 #[derive(Default)]
 struct Outputs<'a> {
     json: Option<&'a Path>,
@@ -423,91 +194,64 @@ struct Outputs<'a> {
     csv: Option<&'a Path>,
 }
 
-fn run_one(scene: &Path, out: &Outputs, solvers: &[String]) -> rollbem::Result<Report> {
-    let mut s = Scene::from_file(scene)?;
-    if !solvers.is_empty() {
-        s.solvers.use_ = solvers.to_vec();
+impl Outputs<'_> {
+    /// Whether an output goes to standard output (`-`): the table then goes to standard error.
+    fn to_stdout(&self) -> bool {
+        [self.json, self.path_csv, self.csv].into_iter().flatten().any(rollbem::io::is_stdout)
     }
-    let mut report = run_scene(&s, scene)?;
+}
+
+/// Solve one scene and write its outputs.
+fn run_one(scene: &Scene, out: &Outputs) -> rollbem::Result<Report> {
+    let mut report = run_scene(scene)?;
     if let Some(path) = out.json {
         // Large stress fields go to CSV files beside the document, written first: the document names them.
-        for (file, text) in report.spill_stress_fields(path) {
-            write_atomic(&file, &text)?;
+        if !rollbem::io::is_stdout(path) {
+            for (file, text) in report.spill_stress_fields(path) {
+                write_output(&file, &text)?;
+            }
         }
-        let text = serde_json::to_string_pretty(&report).expect("report serialises");
-        write_atomic(path, &text)?;
+        let text = serde_json::to_string_pretty(&report).expect("a report serialises");
+        write_output(path, &(text + "\n"))?;
     }
     if let Some(path) = out.path_csv {
-        write_atomic(path, &rollbem::history::path_csv(&report))?;
+        write_output(path, &report.path_csv())?;
     }
     if let Some(path) = out.csv {
-        write_atomic(path, &report.nodes_csv())?;
+        write_output(path, &report.nodes_csv())?;
     }
     Ok(report)
 }
 
-/// Read and validate every scene of a command before any runs, refusing unsafe or repeated names (they name the
-/// output files); the error to print and exit with otherwise.
-fn load_all(scenes: &[PathBuf]) -> Result<Vec<Scene>, rollbem::Error> {
-    let loaded = scenes.iter().map(|p| Scene::from_file(p)).collect::<rollbem::Result<Vec<Scene>>>()?;
-    rollbem::scene::unique_names(scenes.iter().map(PathBuf::as_path).zip(&loaded))?;
-    Ok(loaded)
-}
-
-/// Whether a scene file declares expectations (a `[checks]` table): only then does `run` exit 1 on a failed check.
-fn declares_checks(path: &Path) -> bool {
-    std::fs::read_to_string(path)
-        .ok()
-        .and_then(|t| toml::from_str::<toml::Table>(&t).ok())
-        .is_some_and(|t| t.contains_key("checks"))
-}
-
-/// `rollbem check`: one table of checks per scene, a closing count line, exit 1 on any failure.
-fn check(scenes: &[PathBuf], solvers: &[String]) -> ExitCode {
-    if let Err(e) = load_all(scenes) {
-        return fail(&e);
+/// Read and validate every scene of a command before any runs (with `--solver` overriding `[solvers] use`),
+/// refusing unsafe or repeated names (they name the output files).
+fn load_all(paths: &[PathBuf], solvers: &[String]) -> rollbem::Result<Vec<Scene>> {
+    let mut scenes = Vec::with_capacity(paths.len());
+    for p in paths {
+        let s = Scene::from_file(p)?;
+        scenes.push(if solvers.is_empty() { s } else { s.edit(|d| d.solvers.use_ = solvers.to_vec())? });
     }
+    rollbem::scene::unique_names(paths.iter().map(PathBuf::as_path).zip(&scenes))?;
+    Ok(scenes)
+}
+
+/// `rollbem check`: one table of checks per scene, a closing count line; exit codes of [`rollbem::exit`].
+fn check(paths: &[PathBuf], solvers: &[String]) -> ExitCode {
+    let scenes = match load_all(paths, solvers) {
+        Ok(s) => s,
+        Err(e) => return fail(&e),
+    };
     let (mut passed, mut failed, mut na) = (0usize, 0usize, 0usize);
-    let mut code = 0u8;
-    for p in scenes {
-        match run_one(p, &Outputs::default(), solvers) {
+    let mut code = exit::SUCCESS;
+    for (p, s) in paths.iter().zip(&scenes) {
+        match run_one(s, &Outputs::default()) {
             Ok(r) => {
-                let bad = r.checks.iter().filter(|c| !c.pass).count();
-                let skipped = r.checks.iter().filter(|c| c.kind == CheckKind::NotApplicable).count();
-                say!(
-                    "{} {} ({} checks, {} failed, {} not applicable; solvers: {})",
-                    if bad == 0 { "PASS" } else { "FAIL" },
-                    r.scene.name,
-                    r.checks.len(),
-                    bad,
-                    skipped,
-                    r.runs.iter().map(|x| format!("{} {}", x.solver, x.status)).collect::<Vec<_>>().join(", ")
-                );
-                for c in r.checks.iter().filter(|c| !c.pass) {
-                    let note = c.note.as_ref().map(|n| format!(": {n}")).unwrap_or_default();
-                    match c.kind {
-                        CheckKind::Figure => say!(
-                            "    FAIL {}: measured {:.6e}, reference {:.6e}, error {:.3e} > tolerance {:.1e}{note}",
-                            c.name,
-                            c.measured,
-                            c.reference,
-                            c.error,
-                            c.tolerance
-                        ),
-                        _ => say!("    FAIL {}{note}", c.name),
-                    }
-                }
-                for run in
-                    r.runs.iter().filter(|x| !x.message.is_empty() && x.status != r.scene.checks.status_for(x.solver.0))
-                {
-                    say!("    {}: {}", run.solver, run.message);
-                }
+                say!("{}", render::check_summary(&r));
+                let (bad, skipped) = render::check_counts(&r);
                 passed += r.checks.len() - bad - skipped;
                 failed += bad;
                 na += skipped;
-                if bad > 0 {
-                    code = code.max(1);
-                }
+                code = code.max(exit::of_report(&r, true));
             }
             Err(e) => {
                 say!("FAIL {}: {e}", p.display());
@@ -521,9 +265,9 @@ fn check(scenes: &[PathBuf], solvers: &[String]) -> ExitCode {
 }
 
 /// `rollbem run`: validate every scene (and the options that take one scene) before running any, then run and print
-/// each; exit 1 only when a scene that declares expectations fails a check.
+/// each; exit codes of [`rollbem::exit`].
 fn run(
-    scenes: &[PathBuf],
+    paths: &[PathBuf],
     json: Option<PathBuf>,
     out_dir: Option<PathBuf>,
     solvers: &[String],
@@ -531,38 +275,43 @@ fn run(
 ) -> ExitCode {
     let [path_csv, csv] = csvs;
     for (flag, given) in [("--json", json.is_some()), ("--path-csv", path_csv.is_some()), ("--csv", csv.is_some())] {
-        if given && scenes.len() > 1 {
+        if given && paths.len() > 1 {
             eprintln!("error: {flag} takes one scene; use --out-dir for the JSON of several");
-            return ExitCode::from(2);
+            return ExitCode::from(exit::BAD_INPUT);
         }
     }
-    let loaded = match load_all(scenes) {
+    let to_stdout = [&json, &path_csv, &csv].into_iter().flatten().filter(|p| rollbem::io::is_stdout(p)).count();
+    if to_stdout > 1 {
+        eprintln!("error: only one output can go to standard output (`-`)");
+        return ExitCode::from(exit::BAD_INPUT);
+    }
+    let scenes = match load_all(paths, solvers) {
         Ok(l) => l,
         Err(e) => return fail(&e),
     };
-    if let (Some(_), Some((p, _))) = (&path_csv, scenes.iter().zip(&loaded).find(|(_, s)| s.steps.is_empty())) {
+    if let (Some(_), Some((p, _))) = (&path_csv, paths.iter().zip(&scenes).find(|(_, s)| s.steps().is_empty())) {
         eprintln!("error: --path-csv: scene {} has no load path (`[[steps]]`)", p.display());
-        return ExitCode::from(2);
+        return ExitCode::from(exit::BAD_INPUT);
     }
     if let Some(dir) = &out_dir {
         if let Err(e) = std::fs::create_dir_all(dir) {
             eprintln!("error: cannot create {}: {e}", dir.display());
-            return ExitCode::from(3);
+            return ExitCode::from(exit::OUTPUT);
         }
     }
-    let mut code = 0u8;
-    for (i, (p, s)) in scenes.iter().zip(&loaded).enumerate() {
-        let target = json.clone().or_else(|| out_dir.as_ref().map(|d| d.join(format!("{}.json", s.name))));
-        if i > 0 {
-            say!("");
-        }
+    let mut code = exit::SUCCESS;
+    for (i, s) in scenes.iter().enumerate() {
+        let target = json.clone().or_else(|| out_dir.as_ref().map(|d| d.join(format!("{}.json", s.name()))));
         let out = Outputs { json: target.as_deref(), path_csv: path_csv.as_deref(), csv: csv.as_deref() };
-        match run_one(p, &out, solvers) {
+        match run_one(s, &out) {
             Ok(report) => {
-                print_report(&report);
-                if declares_checks(p) && !report.all_pass() {
-                    code = code.max(1);
+                let table = render::run_table(&report);
+                if out.to_stdout() {
+                    eprint!("{}{table}", if i > 0 { "\n" } else { "" });
+                } else {
+                    say!("{}{}", if i > 0 { "\n" } else { "" }, table.trim_end());
                 }
+                code = code.max(exit::of_report(&report, exit::declares_checks(&report)));
             }
             Err(e) => {
                 eprintln!("error: {e}");
@@ -571,6 +320,22 @@ fn run(
         }
     }
     ExitCode::from(code)
+}
+
+/// `rollbem plot`: a result document, or a CSV table (with its analysis or its scene).
+fn plot(
+    input: &Path,
+    out: Option<&Path>,
+    analysis: Option<String>,
+    scene: Option<PathBuf>,
+) -> rollbem::Result<rollbem::plot_result::Plotted> {
+    if input.extension().is_some_and(|e| e == "csv") {
+        let analysis = analysis.map(|a| rollbem::sweep::Analysis::from_name(&a, input)).transpose()?;
+        let scene = scene.map(|p| Scene::from_file(&p)).transpose()?;
+        let dir = input.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+        return rollbem::plot_csv::plot_csv(input, out.unwrap_or(dir), analysis, scene.as_ref());
+    }
+    rollbem::plot_result::plot_result(input, out)
 }
 
 /// Print an error and turn it into the process exit code.
@@ -584,7 +349,7 @@ fn main() -> ExitCode {
     rollbem::progress::enable(!cli.quiet);
     match cli.cmd {
         Cmd::Check { scenes, solvers } => check(&scenes, &solvers),
-        Cmd::Plot { result, out } => match rollbem::plot_result::plot_result(&result, out.as_deref()) {
+        Cmd::Plot { result, out, analysis, scene } => match plot(&result, out.as_deref(), analysis, scene) {
             Ok(done) => {
                 for f in &done.files {
                     say!("wrote {}", f.display());
@@ -603,7 +368,7 @@ fn main() -> ExitCode {
             ExitCode::SUCCESS
         }
         Cmd::Lcp { cmd } => match lcp_cmd(cmd) {
-            Ok(code) => ExitCode::from(code as u8),
+            Ok(code) => ExitCode::from(code),
             Err(e) => fail(&e),
         },
         Cmd::Sweep { spec, shard, out } => {

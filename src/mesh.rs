@@ -11,7 +11,7 @@
 //! chord's midpoint. Quadratic elements follow the exact circular arc, with three nodes at ξ = −2/3, 0, 2/3
 //! ([`crate::bem::quadratic`]).
 
-use crate::scene::{ElementKind, MeshSpec, Support};
+use crate::scene::{ContactZone, ElementKind, Support, ZoneExtent};
 use std::f64::consts::PI;
 
 /// Collocation points in the element's intrinsic coordinate ξ ∈ [−1, 1] (discontinuous quadratic element: the
@@ -195,16 +195,44 @@ fn graded_sizes(h0: f64, span: f64, n: usize) -> Vec<f64> {
     sizes
 }
 
+/// What a wheel's boundary mesh is made of: the element family, the potential contact zone with its elements and
+/// the number of elements on the rest of the outer boundary (graded from the contact size; the hub circle, if any,
+/// gets elements in proportion to its circumference).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MeshSpec {
+    /// Element family.
+    pub element: ElementKind,
+    /// The potential contact zone.
+    pub zone: ContactZone,
+    /// Elements on the rest of the outer boundary (≥ 4).
+    pub other_elements: usize,
+}
+
+impl MeshSpec {
+    /// The BEM wheel's mesh of a scene, with its support (`None` for the half-plane model).
+    pub fn of_scene(scene: &crate::scene::Scene) -> Option<(Support, MeshSpec)> {
+        let (support, element, other_elements) = scene.bem_wheel()?;
+        Some((support, MeshSpec { element, zone: *scene.zone(), other_elements }))
+    }
+
+    /// A mesh with a contact arc of `arc_deg` degrees.
+    pub fn arc(element: ElementKind, arc_deg: f64, contact_elements: usize, other_elements: usize) -> MeshSpec {
+        MeshSpec { element, zone: ContactZone::arc(arc_deg, contact_elements), other_elements }
+    }
+}
+
 /// Polar angles of the potential contact zone's vertices on a circle of radius `radius`, counter-clockwise from its
 /// left end: uniform in angle when `spec` gives `contact_arc_deg`; uniform in x, θ_k = −π/2 + asin(x_k/R), when it
 /// gives `contact_half_width` (in the unit of `radius`). The half-plane model puts its strips between the x of the
 /// same vertices, so both models share their collocation points.
-pub fn contact_vertex_angles(radius: f64, spec: &MeshSpec) -> Vec<f64> {
-    let nc = spec.contact_elements;
-    match spec.contact_half_width {
-        Some(w) => (0..=nc).map(|k| -PI / 2.0 + ((-w + 2.0 * w * k as f64 / nc as f64) / radius).asin()).collect(),
-        None => {
-            let alpha = spec.arc_rad(radius);
+pub fn contact_vertex_angles(radius: f64, zone: &ContactZone) -> Vec<f64> {
+    let nc = zone.elements;
+    match zone.extent {
+        ZoneExtent::HalfWidth { half_width: w } => {
+            (0..=nc).map(|k| -PI / 2.0 + ((-w + 2.0 * w * k as f64 / nc as f64) / radius).asin()).collect()
+        }
+        ZoneExtent::Arc { .. } => {
+            let alpha = zone.arc_rad(radius);
             let h0 = alpha / nc as f64;
             let start = -PI / 2.0 - alpha / 2.0;
             std::iter::once(start).chain((1..=nc).map(|k| start + h0 * k as f64)).collect()
@@ -216,18 +244,18 @@ impl Mesh {
     /// Mesh a wheel of outer radius `radius` with the given support (its lengths, and `spec`'s contact half-width,
     /// in the same unit as `radius`).
     pub fn wheel(radius: f64, support: Support, spec: &MeshSpec) -> Mesh {
-        let alpha = spec.arc_rad(radius);
-        let nc = spec.contact_elements;
+        let alpha = spec.zone.arc_rad(radius);
+        let nc = spec.zone.elements;
         let start = -PI / 2.0 - alpha / 2.0;
         // Outer-circle vertex angles, counter-clockwise, and the class of each element.
-        let mut angles = contact_vertex_angles(radius, spec);
+        let mut angles = contact_vertex_angles(radius, &spec.zone);
         let mut classes = vec![Bc::Contact; nc];
         // The grading into the rest of the boundary starts from the size of the contact zone's end element.
-        let h0 = match spec.contact_half_width {
-            None => alpha / nc as f64,
-            Some(_) => angles[nc] - angles[nc - 1],
+        let h0 = match spec.zone.extent {
+            ZoneExtent::Arc { .. } => alpha / nc as f64,
+            ZoneExtent::HalfWidth { .. } => angles[nc] - angles[nc - 1],
         };
-        let no = spec.others();
+        let no = spec.other_elements;
         match support {
             Support::Hub { .. } => {
                 let nr = no.div_ceil(2);

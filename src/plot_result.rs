@@ -4,7 +4,8 @@
 //! (`STEM.SOLVER.tractions.svg`) with Hertz's pressure when the document carries it (`references.hertz`); the node
 //! states against x (`STEM.SOLVER.states.svg`: separated / contact or slip / stick); the slip velocity against x
 //! when the scene rolls (`STEM.SOLVER.slip_velocity.svg`); and, when the run has subsurface stresses ([`crate::stresses`]), one filled contour
-//! map per quantity (`STEM.SOLVER.QUANTITY.svg`) with the maximum (largest |value|, as in the result document)
+//! map per quantity (`STEM.SOLVER.QUANTITY.svg`, and `STEM.SOLVER.counter_body.QUANTITY.svg` for an elastic
+//! counter-body's field) with the maximum (largest |value|, as in the result document)
 //! marked and captioned. STEM is the result file's name without `.json`; DIR defaults to the result file's folder.
 //! A field written to a CSV file beside the document (large grids) is read from there.
 //!
@@ -13,13 +14,16 @@
 //! unit" (rollbem's units are the user's, consistent, and a scene need not name
 //! them). Depth is drawn downward, x and depth to the same scale when the grid's aspect ratio is moderate.
 //!
-//! The document is read as plain JSON (`serde_json::Value`), so any result document with the keys of `DESIGN.md`
-//! works, also one written by an earlier version. Every file is written atomically.
+//! The document is read typed ([`Report::read`]: its schema version is checked, so a document of another layout is
+//! refused with a message rather than drawn wrongly). Every file is written by [`crate::io::write_output`].
 
 use crate::error::{Error, Result};
 use crate::plot::{Chart, ContourMap, Field, Series, Style};
+use crate::post::{NodeResult, NodeState};
+use crate::results::{Report, SolverRun};
 use crate::scene::StressQuantity;
-use serde_json::Value;
+use crate::status::Status;
+use crate::stresses::StressResult;
 use std::path::{Path, PathBuf};
 
 /// What `plot` wrote, and what it could not draw (and why).
@@ -66,139 +70,159 @@ fn plot_err(e: crate::plot::PlotError) -> Error {
     Error::Output { what: "a plot".into(), message: e.to_string() }
 }
 
+/// What every figure of a document needs: where to write, the file stem, the scene's name, units and Hertz.
+struct Context {
+    out: PathBuf,
+    dir: PathBuf,
+    json: PathBuf,
+    stem: String,
+    name: String,
+    length_unit: String,
+    stress_unit: String,
+    hertz: Option<crate::hertz::Hertz>,
+}
+
 /// Draw the figures of the result document `json` into `out` (default: its folder); see the module docs.
 pub fn plot_result(json: &Path, out: Option<&Path>) -> Result<Plotted> {
-    let text = std::fs::read_to_string(json).map_err(|source| Error::Io { path: json.to_path_buf(), source })?;
-    let doc: Value = serde_json::from_str(&text).map_err(|e| bad(json, format!("not JSON: {e}")))?;
-    let runs = doc
-        .get("runs")
-        .and_then(Value::as_array)
-        .ok_or_else(|| bad(json, "not a rollbem result document: no `runs` array".into()))?;
+    let report = Report::read(json)?;
     let dir = json.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new(".")).to_path_buf();
     let out = out.map(Path::to_path_buf).unwrap_or_else(|| dir.clone());
     std::fs::create_dir_all(&out).map_err(|source| Error::Write { path: out.clone(), source })?;
     let stem = json.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "result".into());
-    let name = doc.pointer("/scene/name").and_then(Value::as_str).unwrap_or(&stem).to_string();
-    let unit = |key: &str, default: &str| {
-        doc.pointer(&format!("/scene/stresses/{key}")).and_then(Value::as_str).unwrap_or(default).to_string()
-    };
-    // The scene's `units` label, "force, length, stress".
-    let label_units: Vec<String> = doc
-        .pointer("/scene/units")
-        .and_then(Value::as_str)
-        .map(|u| u.split(',').map(|p| p.trim().to_string()).collect())
-        .unwrap_or_default();
+    let scene = &report.scene;
+    // The scene's `units` label, "force, length, stress"; `[stresses]` may name the length and stress units.
+    let label_units: Vec<String> =
+        scene.units().map(|u| u.split(',').map(|p| p.trim().to_string()).collect()).unwrap_or_default();
     let from_label =
         |k: usize, default: &str| label_units.get(k).filter(|u| !u.is_empty()).cloned().unwrap_or(default.into());
-    let (lu, su) =
-        (unit("length_unit", &from_label(1, "length unit")), unit("stress_unit", &from_label(2, "stress unit")));
-    // Hertz's pressure at the document's load, when the references carry it.
-    let hertz = doc.pointer("/references/hertz").and_then(|h| {
-        let hertz = crate::hertz::Hertz {
-            half_width: h.get("half_width")?.as_f64()?,
-            peak_pressure: h.get("peak_pressure")?.as_f64()?,
-            load: h.get("load")?.as_f64()?,
-        };
-        (hertz.half_width > 0.0 && hertz.peak_pressure > 0.0).then_some(hertz)
-    });
+    let spec = scene.stresses();
+    let ctx = Context {
+        out,
+        dir,
+        json: json.to_path_buf(),
+        stem,
+        name: scene.name().to_string(),
+        length_unit: spec.and_then(|s| s.length_unit.clone()).unwrap_or_else(|| from_label(1, "length unit")),
+        stress_unit: spec.and_then(|s| s.stress_unit.clone()).unwrap_or_else(|| from_label(2, "stress unit")),
+        hertz: report.references.hertz.filter(|h| h.half_width > 0.0 && h.peak_pressure > 0.0),
+    };
     let mut done = Plotted::default();
-    for (k, run) in runs.iter().enumerate() {
-        let solver = run.get("solver").and_then(Value::as_str).unwrap_or("run").to_string();
-        let nodes = run.get("nodes").and_then(Value::as_array).map(Vec::as_slice).unwrap_or(&[]);
-        let series = |key: &str| -> Vec<(f64, f64)> {
-            nodes.iter().filter_map(|n| Some((n.get("x")?.as_f64()?, n.get(key)?.as_f64()?))).collect()
-        };
-        let (p, q) = (series("pressure"), series("shear"));
-        // A run judged not an answer (contact at the zone's edge, kinematics out of range) keeps its nodes as
-        // evidence: its titles say so.
-        let status = run.get("status").and_then(Value::as_str).unwrap_or("unknown");
-        let verdict = if status == "solved" { String::new() } else { format!(" ({status}: not an answer)") };
-        if p.is_empty() {
-            done.skipped.push(format!("{solver}: no tractions (status {})", run["status"]));
-            continue;
-        }
-        let mut chart =
-            Chart::new(format!("{name}, {solver}: surface tractions on the wheel{verdict}"), "x", "traction")
-                .x_unit(lu.as_str())
-                .y_unit(su.as_str())
-                .add(Series::new("pressure p", p, Style::LineMarkers))
-                .add(Series::new("shear q", q, Style::LineMarkers));
-        if let Some(h) = hertz {
-            let a = h.half_width;
-            let curve = (0..=200).map(|i| -a + 2.0 * a * f64::from(i) / 200.0).map(|x| (x, h.pressure(x))).collect();
-            chart = chart.add(Series::new("Hertz pressure", curve, Style::Dashed));
-        }
-        let file = out.join(format!("{stem}.{solver}.tractions.svg"));
-        chart.write(&file).map_err(plot_err)?;
-        done.files.push(file);
-        // Node states on a categorical axis.
-        let states: Vec<(f64, f64)> = nodes
-            .iter()
-            .filter_map(|n| {
-                let y = match n.get("state")?.as_str()? {
-                    "separated" => 0.0,
-                    "slip" | "contact" => 1.0,
-                    "stick" => 2.0,
-                    _ => return None,
-                };
-                Some((n.get("x")?.as_f64()?, y))
-            })
-            .collect();
-        if !states.is_empty() {
-            let chart = Chart::new(format!("{name}, {solver}: node states{verdict}"), "x", "state")
-                .x_unit(lu.as_str())
-                .categories_y(&["separated", "contact / slip", "stick"])
-                .add(Series::new(solver.as_str(), states, Style::Markers));
-            let file = out.join(format!("{stem}.{solver}.states.svg"));
-            chart.write(&file).map_err(plot_err)?;
-            done.files.push(file);
-        }
-        let sv = series("slip_velocity");
-        if !sv.is_empty() {
-            let chart = Chart::new(format!("{name}, {solver}: slip velocity{verdict}"), "x", "slip velocity s")
-                .x_unit(lu.as_str())
-                .y_unit("1")
-                .add(Series::new(solver.as_str(), sv, Style::LineMarkers));
-            let file = out.join(format!("{stem}.{solver}.slip_velocity.svg"));
-            chart.write(&file).map_err(plot_err)?;
-            done.files.push(file);
-        }
-        let Some(st) = run.get("stresses").filter(|s| s.is_object()) else { continue };
-        let at = format!("runs[{k}].stresses");
-        let maps = StressMaps::read(json, &dir, st, &at)?;
-        for (q, values) in &maps.values {
-            let max = st.pointer(&format!("/maxima/{}", q.name())).filter(|m| m.is_object());
-            let (Some(mx), Some(mz), Some(mv)) = (
-                max.and_then(|m| m["x"].as_f64()),
-                max.and_then(|m| m["depth"].as_f64()),
-                max.and_then(|m| m["value"].as_f64()),
-            ) else {
-                done.skipped.push(format!("{solver}: {}: no point of the grid has a value", q.name()));
-                continue;
-            };
-            let field = Field::new(maps.points[0], maps.points[1], values.clone(), maps.x, maps.depth);
-            let caption = if matches!(q, StressQuantity::PrincipalShear | StressQuantity::VonMises) {
-                format!("max {} = {} {su}", label(*q), sig4(mv))
-            } else {
-                format!("largest |{}|: {} {su}", label(*q), sig4(mv))
-            };
-            let mut map = ContourMap::new(format!("{name}, {solver}: {} in the wheel", label(*q)), field)
-                .x_axis("x", lu.as_str())
-                .depth_axis("depth", lu.as_str())
-                .value_axis(label(*q), su.as_str())
-                .bands(12)
-                .size(960, 600)
-                .marker(mx, mz, caption);
-            let aspect = (maps.depth.1 - maps.depth.0) / (maps.x.1 - maps.x.0);
-            if (0.2..=5.0).contains(&aspect) {
-                map = map.equal_aspect();
-            }
-            let file = out.join(format!("{stem}.{solver}.{}.svg", q.name()));
-            map.write(&file).map_err(plot_err)?;
-            done.files.push(file);
-        }
+    for run in &report.runs {
+        run_figures(&ctx, run, &mut done)?;
+    }
+    if !report.steps.is_empty() {
+        // A load path: the loop (or the approach to steady rolling) and the stick zone along it, with the theory
+        // where it applies, as the report draws them.
+        let mut figs = crate::report::Figs::new(&ctx.out, "");
+        crate::report::path_figures(&ctx.stem, &report, &mut String::new(), &mut figs)?;
+        done.files.extend(figs.list.into_iter().map(|(_, f)| ctx.out.join(f)));
     }
     Ok(done)
+}
+
+/// The figures of one run: tractions, node states, slip velocity, stress maps.
+fn run_figures(ctx: &Context, run: &SolverRun, done: &mut Plotted) -> Result<()> {
+    let solver = run.solver.name();
+    let series = |f: fn(&NodeResult) -> Option<f64>| -> Vec<(f64, f64)> {
+        run.nodes.iter().filter_map(|n| Some((n.x, f(n)?))).collect()
+    };
+    let (p, q) = (series(|n| Some(n.pressure)), series(|n| Some(n.shear)));
+    // A run judged not an answer (contact at the zone's edge, kinematics out of range) keeps its nodes as
+    // evidence: its titles say so.
+    let verdict =
+        if run.status == Status::Solved { String::new() } else { format!(" ({}: not an answer)", run.status) };
+    if p.is_empty() {
+        done.skipped.push(format!("{solver}: no tractions (status \"{}\")", run.status));
+        return Ok(());
+    }
+    let (name, lu) = (&ctx.name, ctx.length_unit.as_str());
+    let mut chart = Chart::new(format!("{name}, {solver}: surface tractions on the wheel{verdict}"), "x", "traction")
+        .x_unit(lu)
+        .y_unit(ctx.stress_unit.as_str())
+        .add(Series::new("pressure p", p, Style::LineMarkers))
+        .add(Series::new("shear q", q, Style::LineMarkers));
+    if let Some(h) = ctx.hertz {
+        let a = h.half_width;
+        let curve = (0..=200).map(|i| -a + 2.0 * a * f64::from(i) / 200.0).map(|x| (x, h.pressure(x))).collect();
+        chart = chart.add(Series::new("Hertz pressure", curve, Style::Dashed));
+    }
+    write(ctx, chart, &format!("{solver}.tractions"), done)?;
+    // Node states on a categorical axis.
+    let states: Vec<(f64, f64)> = run
+        .nodes
+        .iter()
+        .map(|n| {
+            let y = match n.state {
+                NodeState::Separated => 0.0,
+                NodeState::Slip | NodeState::Contact => 1.0,
+                NodeState::Stick => 2.0,
+            };
+            (n.x, y)
+        })
+        .collect();
+    let chart = Chart::new(format!("{name}, {solver}: node states{verdict}"), "x", "state")
+        .x_unit(lu)
+        .categories_y(&["separated", "contact / slip", "stick"])
+        .add(Series::new(solver, states, Style::Markers));
+    write(ctx, chart, &format!("{solver}.states"), done)?;
+    let sv = series(|n| n.slip_velocity);
+    if !sv.is_empty() {
+        let chart = Chart::new(format!("{name}, {solver}: slip velocity{verdict}"), "x", "slip velocity s")
+            .x_unit(lu)
+            .y_unit("1")
+            .add(Series::new(solver, sv, Style::LineMarkers));
+        write(ctx, chart, &format!("{solver}.slip_velocity"), done)?;
+    }
+    if let Some(st) = &run.stresses {
+        stress_maps(ctx, solver, st, done)?;
+    }
+    if let Some(st) = &run.counter_body_stresses {
+        stress_maps(ctx, solver, st, done)?;
+    }
+    Ok(())
+}
+
+/// Write a chart as `STEM.WHAT.svg` in the output folder.
+fn write(ctx: &Context, chart: Chart, what: &str, done: &mut Plotted) -> Result<()> {
+    let file = ctx.out.join(format!("{}.{what}.svg", ctx.stem));
+    chart.write(&file).map_err(plot_err)?;
+    done.files.push(file);
+    Ok(())
+}
+
+/// One filled contour map per quantity of a run's stresses, with its maximum marked.
+fn stress_maps(ctx: &Context, solver: &str, st: &StressResult, done: &mut Plotted) -> Result<()> {
+    let maps = StressMaps::read(&ctx.json, &ctx.dir, st)?;
+    let (name, lu, su) = (&ctx.name, ctx.length_unit.as_str(), ctx.stress_unit.as_str());
+    for (q, values) in &maps.values {
+        let Some(Some(max)) = st.maxima.iter().find(|(m, _)| m == q).map(|(_, m)| *m) else {
+            done.skipped.push(format!("{solver}: {}: no point of the grid has a value", q.name()));
+            continue;
+        };
+        let field = Field::new(maps.points[0], maps.points[1], values.clone(), maps.x, maps.depth);
+        let caption = if matches!(q, StressQuantity::PrincipalShear | StressQuantity::VonMises) {
+            format!("max {} = {} {su}", label(*q), sig4(max.value))
+        } else {
+            format!("largest |{}|: {} {su}", label(*q), sig4(max.value))
+        };
+        let body = if st.body == "counter_body" { "the counter-body" } else { "the wheel" };
+        let mut map = ContourMap::new(format!("{name}, {solver}: {} in {body}", label(*q)), field)
+            .x_axis("x", lu)
+            .depth_axis("depth", lu)
+            .value_axis(label(*q), su)
+            .bands(12)
+            .size(960, 600)
+            .marker(max.x, max.depth, caption);
+        let aspect = (maps.depth.1 - maps.depth.0) / (maps.x.1 - maps.x.0);
+        if (0.2..=5.0).contains(&aspect) {
+            map = map.equal_aspect();
+        }
+        let tag = if st.body == "counter_body" { ".counter_body" } else { "" };
+        let file = ctx.out.join(format!("{}.{solver}{tag}.{}.svg", ctx.stem, q.name()));
+        map.write(&file).map_err(plot_err)?;
+        done.files.push(file);
+    }
+    Ok(())
 }
 
 /// A run's stress fields as the maps need them: the grid and, per quantity, the values (NaN where refused).
@@ -210,43 +234,26 @@ struct StressMaps {
 }
 
 impl StressMaps {
-    /// Read `st` (`runs[k].stresses`, key path `at` for messages) of the document `json` (folder `dir`): the inline
-    /// field, or the CSV file it names.
-    fn read(json: &Path, dir: &Path, st: &Value, at: &str) -> Result<StressMaps> {
-        let miss = |key: &str| bad(json, format!("{at}.{key}: missing or malformed"));
-        let pair = |key: &str| -> Result<(f64, f64)> {
-            let v = st.pointer(&format!("/grid/{key}")).and_then(Value::as_array).ok_or_else(|| miss(key))?;
-            match (v.first().and_then(Value::as_f64), v.get(1).and_then(Value::as_f64)) {
-                (Some(a), Some(b)) => Ok((a, b)),
-                _ => Err(miss(&format!("grid.{key}"))),
-            }
-        };
-        let (x, depth) = (pair("x")?, pair("depth")?);
-        let pts = pair("points")?;
-        let points = [pts.0 as usize, pts.1 as usize];
-        let n = points[0].saturating_mul(points[1]);
-        let quantities: Vec<StressQuantity> = st
-            .get("quantities")
-            .and_then(Value::as_array)
-            .ok_or_else(|| miss("quantities"))?
-            .iter()
-            .filter_map(|q| q.as_str().and_then(StressQuantity::from_name))
-            .collect();
-        let values = match st.get("csv").and_then(Value::as_str) {
-            Some(file) => read_csv(&dir.join(file), &quantities, n)?,
-            None => quantities
+    /// The maps of a run's stresses in the document `json` (folder `dir`): the inline field, or the CSV file it
+    /// names.
+    fn read(json: &Path, dir: &Path, st: &StressResult) -> Result<StressMaps> {
+        let g = st.grid;
+        let n = g.len();
+        let values = match (&st.csv, &st.values) {
+            (Some(file), _) => read_csv(&dir.join(file), &st.quantities, n)?,
+            (None, Some(field)) => st
+                .quantities
                 .iter()
                 .map(|&q| {
-                    let v = st
-                        .pointer(&format!("/field/values/{}", q.name()))
-                        .and_then(Value::as_array)
-                        .filter(|v| v.len() == n)
-                        .ok_or_else(|| miss(&format!("field.values.{}", q.name())))?;
-                    Ok((q, v.iter().map(|v| v.as_f64().unwrap_or(f64::NAN)).collect()))
+                    let v = field.values.get(q.name()).filter(|v| v.len() == n).ok_or_else(|| {
+                        bad(json, format!("stresses.field.values.{}: missing or not one value per point", q.name()))
+                    })?;
+                    Ok((q, v.iter().map(|v| v.unwrap_or(f64::NAN)).collect()))
                 })
                 .collect::<Result<Vec<_>>>()?,
+            (None, None) => return Err(bad(json, "stresses: neither an inline field nor a CSV file".into())),
         };
-        Ok(StressMaps { points, x, depth, values })
+        Ok(StressMaps { points: g.points, x: (g.x[0], g.x[1]), depth: (g.depth[0], g.depth[1]), values })
     }
 }
 

@@ -13,10 +13,10 @@ use crate::flexibility::ModeKind;
 use crate::formulation::{ContactProblem, Dof, Solution};
 use crate::hertz;
 use crate::tolerances::{SEPARATED_PRESSURE, STICK_MARGIN};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// State of a contact node.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum NodeState {
     /// In contact, |q| < μp.
@@ -30,7 +30,7 @@ pub enum NodeState {
 }
 
 /// Results at one contact node (user's units).
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct NodeResult {
     /// x of the node (undeformed).
     pub x: f64,
@@ -55,7 +55,7 @@ pub struct NodeResult {
 }
 
 /// Resultants of the contact tractions on the wheel.
-#[derive(Debug, Clone, Copy, Serialize)]
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
 pub struct Resultants {
     /// P = Σ f_y (force per unit thickness).
     pub normal: f64,
@@ -66,7 +66,7 @@ pub struct Resultants {
 }
 
 /// The support's rigid motion.
-#[derive(Debug, Clone, Copy, Serialize)]
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
 pub struct RigidBody {
     /// Approach d_N (length).
     pub normal: f64,
@@ -77,7 +77,7 @@ pub struct RigidBody {
 }
 
 /// Contact extent and key figures.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct ContactSummary {
     /// Smallest x of a loaded node (null if none).
     pub x_min: Option<f64>,
@@ -158,7 +158,7 @@ fn rolling_result(
 }
 
 /// Solver-independent residuals, relative (see [`evaluate`]); null where a condition does not apply.
-#[derive(Debug, Clone, Copy, Serialize)]
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
 pub struct Residuals {
     /// max |p_i g_i| / (p_max ℓ).
     pub complementarity: f64,
@@ -233,7 +233,7 @@ pub enum RollingPost {
 }
 
 /// What rolling adds to a run: the creepage, and how far the slip velocities are from Coulomb's law.
-#[derive(Debug, Clone, Copy, Serialize)]
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
 pub struct RollingResult {
     /// `steady` or `seed`.
     pub mode: crate::scene::RollingMode,
@@ -496,4 +496,14 @@ fn summary(nodes: &[NodeResult], peak_pressure: f64, pressure_scale: f64) -> Con
         nodes_stick: sticking.len(),
         nodes_slip: nodes.iter().filter(|nd| nd.state == NodeState::Slip).count(),
     }
+}
+
+/// The stick zone's edges (left, right), each midway between the outermost sticking node and its slipping or
+/// separated neighbour (user's units); `None` when nothing sticks.
+pub fn stick_edges(nodes: &[NodeResult]) -> Option<(f64, f64)> {
+    let first = nodes.iter().position(|n| n.state == NodeState::Stick)?;
+    let last = nodes.iter().rposition(|n| n.state == NodeState::Stick)?;
+    let left = if first > 0 { 0.5 * (nodes[first].x + nodes[first - 1].x) } else { nodes[first].x };
+    let right = if last + 1 < nodes.len() { 0.5 * (nodes[last].x + nodes[last + 1].x) } else { nodes[last].x };
+    Some((left, right))
 }

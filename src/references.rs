@@ -22,7 +22,7 @@
 use crate::hertz::Hertz;
 use crate::post::NodeState;
 use crate::results::SolverRun;
-use crate::scene::{BodyModel, Dof, RollingMode, Scene};
+use crate::scene::{BodyModel, Dof, Rolling, Scene};
 use crate::tolerances::{CATTANEO_EDGE_ELEMENTS, CATTANEO_MAX_A_OVER_R_AT_NU_HALF};
 use serde::Serialize;
 
@@ -67,25 +67,70 @@ pub struct Metrics {
     pub carter_creepage_err: Option<f64>,
 }
 
-/// The stick zone's edges (left, right), each midway between the outermost sticking node and its slipping or
-/// separated neighbour (user's units); `None` when nothing sticks.
-pub fn stick_edges(nodes: &[crate::post::NodeResult]) -> Option<(f64, f64)> {
-    let first = nodes.iter().position(|n| n.state == NodeState::Stick)?;
-    let last = nodes.iter().rposition(|n| n.state == NodeState::Stick)?;
-    let left = if first > 0 { 0.5 * (nodes[first].x + nodes[first - 1].x) } else { nodes[first].x };
-    let right = if last + 1 < nodes.len() { 0.5 * (nodes[last].x + nodes[last + 1].x) } else { nodes[last].x };
-    Some((left, right))
-}
-
 /// Hertz at load `p` with the scene's pair modulus E*.
 pub fn hertz_at(scene: &Scene, p: f64) -> Hertz {
-    Hertz::with_modulus(scene.wheel.radius, scene.contact_modulus(), p)
+    Hertz::with_modulus(scene.radius(), scene.contact_modulus(), p)
 }
 
-/// Whether Carter applies: steady rolling with μ > 0, the normal and tangential problems decoupled ([`beta_zero`]).
+/// Where a half-space theory of the decoupled problem (Cattaneo–Mindlin, Carter) stands for a scene.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Domain {
+    /// Its assumptions hold: the half-plane model of the wheel, with the normal and tangential problems decoupled
+    /// (Dundurs' β of the pair zero, or `coupling = false`). Checked against the theory within a tolerance.
+    Holds,
+    /// The finite (BEM) wheel, decoupled: the theory is the limit a/R → 0 of this problem, not the problem. A finite
+    /// body keeps a normal–tangential coupling of order a/R through its curvature and its support, which moves the
+    /// stick zone by a fixed length that no mesh refinement removes. Compared with the theory as a model
+    /// comparison, with the model error computed on the half-plane counterpart ([`half_space_counterpart`]).
+    FiniteBody,
+    /// β ≠ 0 with the coupling on: the theory's decoupled problem is not this one; no comparison.
+    Outside,
+}
+
+/// The domain of the decoupled half-space theories for a scene ([`Domain`]).
+pub fn decoupled_domain(scene: &Scene) -> Domain {
+    let decoupled = !scene.law().coupling || scene.dundurs_beta().abs() < 1e-12;
+    match (decoupled, scene.model()) {
+        (false, _) => Domain::Outside,
+        (true, BodyModel::HalfPlane) => Domain::Holds,
+        (true, BodyModel::Bem) => Domain::FiniteBody,
+    }
+}
+
+/// Whether Carter is compared with a run: steady rolling with μ > 0, P > 0, and the decoupled problem
+/// ([`decoupled_domain`] not `Outside`).
 pub fn carter_applies(scene: &Scene, p: f64) -> bool {
-    let steady = scene.rolling.as_ref().is_some_and(|r| r.mode == RollingMode::Steady);
-    steady && scene.contact.friction > 0.0 && p > 0.0 && beta_zero(scene, p)
+    let steady = matches!(scene.rolling(), Some(Rolling::Steady { .. }));
+    steady && scene.friction() > 0.0 && p > 0.0 && decoupled_domain(scene) != Domain::Outside
+}
+
+/// The model the half-space theories assume, for a finite-wheel scene they are compared with
+/// ([`Domain::FiniteBody`]): the same material, radius (a circular profile), counter-body, contact law, drive,
+/// rolling and candidate zone, with the wheel modelled as an elastic half-plane (constant elements; a quadratic
+/// mesh's nodes become as many constant elements on the same zone), solved by `active_set`. `None` when the
+/// scene is not compared with a half-space theory on the finite wheel.
+pub fn half_space_counterpart(scene: &Scene) -> Option<crate::Result<Scene>> {
+    let compared = cattaneo_applies(scene) || matches!(scene.rolling(), Some(Rolling::Steady { .. }));
+    if decoupled_domain(scene) != Domain::FiniteBody || !compared || scene.friction() == 0.0 {
+        return None;
+    }
+    Some(scene.edit(|d| {
+        d.name = format!("{}-half-space", d.name);
+        d.wheel.model = BodyModel::HalfPlane;
+        d.wheel.support = None;
+        d.wheel.profile = None;
+        d.wheel.datum_depth = None;
+        if d.mesh.element == crate::scene::ElementKind::Quadratic {
+            d.mesh.contact_elements *= 3;
+        }
+        d.mesh.element = crate::scene::ElementKind::Constant;
+        d.mesh.other_elements = None;
+        d.drive.rotation = None;
+        d.drive.moment = None;
+        d.solvers = crate::scene::document::SolversTable::using(&["active_set"]);
+        d.checks = None;
+        d.stresses = None;
+    }))
 }
 
 /// Carter's solution for a steady-rolling run: (c/a, Q/(μP), ξ, stick-zone centre d, Hertz). `None` when it does
@@ -95,30 +140,29 @@ fn carter_solution(scene: &Scene, run: &SolverRun) -> Option<(f64, f64, f64, f64
     if !carter_applies(scene, p) {
         return None;
     }
-    let r = scene.rolling.as_ref()?;
-    let mu = scene.contact.friction;
-    let h = Hertz::with_modulus(scene.wheel.radius, scene.contact_modulus(), p);
-    let crit = mu * h.half_width / scene.wheel.radius;
-    let (c_over_a, xi) = match (r.creepage, scene.drive.tangential_load) {
-        (Some(xi), _) => ((1.0 - xi.abs() / crit).max(0.0), xi),
-        (None, Some(q)) => {
+    let direction = scene.rolling()?.direction();
+    let mu = scene.friction();
+    let h = Hertz::with_modulus(scene.radius(), scene.contact_modulus(), p);
+    let crit = mu * h.half_width / scene.radius();
+    let (c_over_a, xi) = match scene.drive()?.tangential {
+        Dof::Displacement(xi) => ((1.0 - xi.abs() / crit).max(0.0), xi),
+        Dof::Load(q) => {
             let ca = (1.0 - (q.abs() / (mu * p)).min(1.0)).sqrt();
             (ca, -q.signum() * crit * (1.0 - ca))
         }
-        (None, None) => return None,
     };
     let q_over = -xi.signum() * (1.0 - c_over_a * c_over_a);
-    let d = r.direction as f64 * h.half_width * (1.0 - c_over_a);
+    let d = direction as f64 * h.half_width * (1.0 - c_over_a);
     Some((c_over_a, q_over, xi, d, h))
 }
 
 /// Hertz at the run's load P, when the scene is frictionless and the run solved with P > 0.
 pub fn hertz_for(scene: &Scene, run: &SolverRun) -> Option<Hertz> {
-    if scene.contact.friction > 0.0 {
+    if scene.friction() > 0.0 {
         return None;
     }
     let p = run.resultants?.normal;
-    (p > 0.0).then(|| Hertz::with_modulus(scene.wheel.radius, scene.contact_modulus(), p))
+    (p > 0.0).then(|| Hertz::with_modulus(scene.radius(), scene.contact_modulus(), p))
 }
 
 /// Whether the normal and tangential problems decouple as the half-plane theories (Cattaneo–Mindlin, Carter)
@@ -127,23 +171,25 @@ pub fn hertz_for(scene: &Scene, run: &SolverRun) -> Option<Hertz> {
 /// [`CATTANEO_MAX_A_OVER_R_AT_NU_HALF`] (a finite wheel keeps a coupling of order a/R through its curvature and
 /// bending even where β = 0). `p` is the normal load.
 pub fn beta_zero(scene: &Scene, p: f64) -> bool {
-    let w = &scene.wheel;
-    let a_over_r = Hertz::with_modulus(w.radius, scene.contact_modulus(), p).half_width / w.radius;
+    let r = scene.radius();
+    let a_over_r = Hertz::with_modulus(r, scene.contact_modulus(), p).half_width / r;
     let beta_vanishes = scene.dundurs_beta().abs() < 1e-12;
-    let finite_ok = w.model == BodyModel::HalfPlane || a_over_r <= CATTANEO_MAX_A_OVER_R_AT_NU_HALF;
-    !scene.contact.coupling || (beta_vanishes && finite_ok)
+    let finite_ok = scene.model() == BodyModel::HalfPlane || a_over_r <= CATTANEO_MAX_A_OVER_R_AT_NU_HALF;
+    !scene.law().coupling || (beta_vanishes && finite_ok)
 }
 
-/// Whether Cattaneo–Mindlin applies: a static problem (no steady rolling), β = 0 ([`beta_zero`]), P and Q
-/// prescribed with the rotation held (or no rotation: the half-plane), 0 < |Q| < μP.
+/// Whether Cattaneo–Mindlin is compared with a scene's runs: a static problem (no steady rolling), P and Q
+/// prescribed with the rotation held (or no rotation: the half-plane), 0 < |Q| < μP, and the decoupled problem
+/// ([`decoupled_domain`] not `Outside`: a check where it holds, a model comparison on the finite wheel).
 pub fn cattaneo_applies(scene: &Scene) -> bool {
-    if scene.rolling.as_ref().is_some_and(|r| r.mode == RollingMode::Steady) {
+    let Some(d) = scene.drive() else { return false };
+    if matches!(scene.rolling(), Some(Rolling::Steady { .. })) {
         return false;
     }
-    let mu = scene.contact.friction;
-    match (scene.drive.normal(), scene.drive.tangential(), scene.drive.rotational()) {
+    let mu = scene.friction();
+    match (d.normal, d.tangential, d.rotational) {
         (Dof::Load(p), Dof::Load(q), Dof::Displacement(_)) => {
-            beta_zero(scene, p) && mu > 0.0 && q != 0.0 && q.abs() < mu * p
+            decoupled_domain(scene) != Domain::Outside && mu > 0.0 && q != 0.0 && q.abs() < mu * p
         }
         _ => false,
     }
@@ -151,7 +197,7 @@ pub fn cattaneo_applies(scene: &Scene) -> bool {
 
 /// Contact element length (user's unit).
 pub fn element_length(scene: &Scene) -> f64 {
-    scene.mesh.element_length(scene.wheel.radius)
+    scene.zone().element_length(scene.radius())
 }
 
 /// Tributary length of node i from the node spacing (user's unit).
@@ -182,14 +228,14 @@ pub fn metrics(scene: &Scene, run: &SolverRun) -> Metrics {
         m.hertz_l2_err = (den > 0.0).then(|| (num / den).sqrt());
     }
     if let Some((ca, qmup, xi, d, h)) = carter_solution(scene, run) {
-        let mu = scene.contact.friction;
+        let mu = scene.friction();
         let elem = element_length(scene);
         let res = run.resultants.expect("solved");
         m.carter_q_over_mup = Some(res.tangential / (mu * res.normal));
         m.carter_q_over_mup_exact = Some(qmup);
         m.carter_c_over_a_exact = Some(ca);
         let c_exact = ca * h.half_width;
-        match stick_edges(&run.nodes) {
+        match crate::post::stick_edges(&run.nodes) {
             Some((left, right)) => {
                 let (c, centre) = (0.5 * (right - left), 0.5 * (right + left));
                 m.carter_c_over_a = Some(c / h.half_width);
@@ -220,14 +266,14 @@ pub fn metrics(scene: &Scene, run: &SolverRun) -> Metrics {
         m.carter_creepage_err = computed.filter(|_| xi != 0.0).map(|x| (x - xi).abs() / xi.abs());
     }
     if cattaneo_applies(scene) {
-        if let (Dof::Load(p), Dof::Load(q)) = (scene.drive.normal(), scene.drive.tangential()) {
-            let mu = scene.contact.friction;
-            let h = Hertz::with_modulus(scene.wheel.radius, scene.contact_modulus(), p);
+        if let Some((Dof::Load(p), Dof::Load(q))) = scene.drive().map(|d| (d.normal, d.tangential)) {
+            let mu = scene.friction();
+            let h = Hertz::with_modulus(scene.radius(), scene.contact_modulus(), p);
             let ce = h.half_width * (1.0 - q.abs() / (mu * p)).sqrt();
             let elem = element_length(scene);
             m.cm_c_over_a_exact = Some(ce / h.half_width);
             let nodes = &run.nodes;
-            if let Some((left, right)) = stick_edges(nodes) {
+            if let Some((left, right)) = crate::post::stick_edges(nodes) {
                 let (c, centre) = (0.5 * (right - left), 0.5 * (right + left));
                 m.cm_c_over_a = Some(c / h.half_width);
                 m.cm_c_err_elements = Some((c - ce) / elem);

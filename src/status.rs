@@ -1,9 +1,83 @@
-//! The outcome of a contact solve: one status for every solver and formulation (after the solver-independent
-//! residual check of [`crate::post`]).
+//! How a contact solve ended, in two parts kept apart:
+//!
+//! - [`Termination`]: what the **solver** says of its own run (solved, a secondary ray, the iteration limit, a
+//!   proven infeasibility, a numerical failure). Every solver returns one; nothing else writes it.
+//! - [`Status`] with its [`Verdict`]: what the **harness** concludes about the physical problem after checking
+//!   the answer independently of the solver ([`crate::post`] residuals, [`crate::validity`]): it adopts the
+//!   termination, or overrides it with a reason (a `solved` claim refused on its residuals, an answer cut off by
+//!   the candidate zone, a ray that the equilibrium LP proves to be infeasibility).
 
 use serde::{Deserialize, Serialize};
 
-/// Outcome of a solver run.
+/// How a solver ended its own run (before the harness checks the answer).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Termination {
+    /// The solver claims a solution (the harness still checks it).
+    Solved,
+    /// Lemke's algorithm ended on a secondary ray (no conclusion by itself for the frictional LCPs).
+    RayTermination,
+    /// The iteration limit was reached before the tolerance.
+    NotConverged,
+    /// The solver proved that the problem has no solution.
+    Infeasible,
+    /// The solver failed numerically (a singular system, non-finite values).
+    NumericalError,
+}
+
+impl Termination {
+    /// Name used in reports and JSON.
+    pub fn name(self) -> &'static str {
+        Status::from(self).name()
+    }
+}
+
+impl std::fmt::Display for Termination {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.pad(self.name())
+    }
+}
+
+impl From<Termination> for Status {
+    fn from(t: Termination) -> Status {
+        match t {
+            Termination::Solved => Status::Solved,
+            Termination::RayTermination => Status::RayTermination,
+            Termination::NotConverged => Status::NotConverged,
+            Termination::Infeasible => Status::Infeasible,
+            Termination::NumericalError => Status::NumericalError,
+        }
+    }
+}
+
+/// Why the harness's [`Status`] of a run is not simply the solver's [`Termination`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum VerdictReason {
+    /// The solver claimed a solution whose solver-independent residual is above the refusal bound
+    /// (→ `numerical_error`).
+    ResidualTooLarge,
+    /// The answer's contact reaches the edge of the candidate zone (→ `contact_at_zone_edge`).
+    ZoneEdge,
+    /// The answer uses the linearised kinematics far outside their range (→ `kinematics_out_of_range`).
+    Kinematics,
+    /// A failed load-driven solve decided exactly by the static-admissibility LP: no admissible contact forces
+    /// (→ `infeasible`) or admissible forces exist (the failure stays the solver's, with the certificate).
+    Admissibility,
+}
+
+/// The harness's conclusion about one run: the final [`Status`], and when it differs from the solver's termination
+/// (or qualifies it), the reason and the explanation.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Verdict {
+    /// Why the harness's status is not the solver's own.
+    pub reason: VerdictReason,
+    /// The explanation, with the numbers.
+    pub message: String,
+}
+
+/// The status of a run as the harness concludes it (after the solver-independent residual check of
+/// [`crate::post`] and the model-range checks of [`crate::validity`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Status {

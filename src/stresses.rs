@@ -38,14 +38,23 @@
 //!   hole), is therefore refused before anything is solved, as an input error naming `stresses.depth` (or
 //!   `stresses.x`) and the first such point (exit code 2, nothing written): never a wrong value.
 //!
-//! With an elastic counter-body (`[counter_body] kind = "half_plane"`) the field is the **wheel's**, from the same
-//! tractions; the counter-body's own field is not computed.
+//! With an elastic counter-body (`[counter_body] kind = "half_plane"`) the counter-body's own field is computed
+//! beside the wheel's ([`StressEvaluator::evaluate_counter_body`]): the half-plane below the contact under the
+//! opposite tractions, on the same grid, depth measured into it.
+//!
+//! # The surface
+//! Besides the grid, every field is evaluated on the surface (depth 0) at the contact elements' centres — the
+//! half-plane's closed form there, the BEM wheel's boundary stress from its tractions and the tangential strain of
+//! its boundary displacement — and the maxima include those points. Sliding contacts peak there (τ₁ = μp₀ at every
+//! surface point of a contact in full slip for μ ≥ 1/√7, Smith & Liu 1953), and a grid's surface row on the
+//! elements' edges is refused (the half-plane's singular σ_xx), so without them the maximum would be reported below
+//! the surface.
 //!
 //! # Where and when
 //! Only a scene with `[stresses]` computes anything ("simulate only the effects a scene calls for"). Every solved
-//! run gets its field ([`crate::run::run_scene`]); a load path computes it at the end of each step (its last
+//! run gets its field ([`crate::pipeline::run_scene`]); a load path computes it at the end of each step (its last
 //! substep; the intermediate substeps of a step are increments towards that end and are not reported), so the
-//! path's final runs carry the field at the path's end ([`crate::history`]).
+//! path's final runs carry the field at the path's end ([`crate::pipeline::path`]).
 //!
 //! # Output
 //! `runs[].stresses` of the result document ([`StressResult`]): the grid, the quantities, `maxima.<quantity> =
@@ -65,8 +74,7 @@ use crate::source::bem_wheel::BoundaryResponse;
 use crate::source::{half_plane::Grid, Built};
 use crate::tolerances::{STRESS_NEAR_BOUNDARY_CONSTANT, STRESS_NEAR_BOUNDARY_QUADRATIC};
 use rayon::prelude::*;
-use serde::ser::{SerializeMap, SerializeStruct};
-use serde::{Serialize, Serializer};
+use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::Path;
 use std::time::Instant;
@@ -76,7 +84,7 @@ use std::time::Instant;
 pub const MAX_INLINE_POINTS: usize = 20_000;
 
 /// Why a grid point has no value.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum PointError {
     /// Outside the wheel: below its undeformed surface, or in the hub's hole (BEM wheel; such a grid is refused
@@ -103,7 +111,7 @@ impl PointError {
 }
 
 /// The regular grid of a `[stresses]` table (user's length unit; module docs).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct StressGrid {
     /// `[min, max]` of x.
     pub x: [f64; 2],
@@ -168,7 +176,7 @@ pub fn quantity(q: StressQuantity, s: [f64; 3], nu: f64) -> f64 {
 }
 
 /// The largest-magnitude value of a quantity on the grid and where it is (user's units).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Maximum {
     /// The value (sign kept).
     pub value: f64,
@@ -179,7 +187,7 @@ pub struct Maximum {
 }
 
 /// The stress tensor at every grid point, or why a point has none (user's units).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct StressField {
     /// The grid.
     pub grid: StressGrid,
@@ -187,6 +195,10 @@ pub struct StressField {
     pub nu: f64,
     /// `[σ_xx, σ_zz, τ_xz]` per point, row-major.
     pub stress: Vec<Result<[f64; 3], PointError>>,
+    /// The surface (depth 0) at the contact elements' centres: (x, `[σ_xx, σ_zz, τ_xz]`) — where the stresses of a
+    /// sliding contact peak (the maximum principal shear is μ p₀ at every surface point of a contact in full slip,
+    /// Smith & Liu 1953) and where a grid's surface row may fall on element edges.
+    pub surface: Vec<(f64, Result<[f64; 3], PointError>)>,
 }
 
 impl StressField {
@@ -197,18 +209,25 @@ impl StressField {
 
     /// The maximum of `q` (largest magnitude, first in row-major order on ties), if any point has a value.
     pub fn maximum(&self, q: StressQuantity) -> Option<Maximum> {
-        let mut best: Option<(usize, f64)> = None;
+        let mut best: Option<Maximum> = None;
+        let mut consider = |value: f64, x: f64, depth: f64| {
+            if best.is_none_or(|b| value.abs() > b.value.abs()) {
+                best = Some(Maximum { value, x, depth });
+            }
+        };
         for k in 0..self.stress.len() {
             if let Some(v) = self.value(q, k) {
-                if best.is_none_or(|(_, b)| v.abs() > b.abs()) {
-                    best = Some((k, v));
-                }
+                let (x, depth) = self.grid.point(k);
+                consider(v, x, depth);
             }
         }
-        best.map(|(k, value)| {
-            let (x, depth) = self.grid.point(k);
-            Maximum { value, x, depth }
-        })
+        // The surface after the grid: a surface value wins only when it is strictly larger.
+        for (x, st) in &self.surface {
+            if let Ok(st) = st {
+                consider(quantity(q, *st, self.nu), *x, 0.0);
+            }
+        }
+        best
     }
 
     /// The field as CSV: columns `x, depth`, one per quantity, and `error` (empty unless the point is refused,
@@ -236,95 +255,168 @@ impl StressField {
     }
 }
 
-/// The subsurface stresses of one run (`runs[].stresses` in the result document; module docs).
-#[derive(Debug, Clone, PartialEq)]
+/// The subsurface stresses of one run (`runs[].stresses` in the result document; module docs). It serialises and
+/// deserialises as the document's keys; the stress tensor at every point ([`StressResult::field`]) is kept in memory
+/// after an evaluation and is not part of the document (its quantities' values are, in `field`).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct StressResult {
+    /// What body the field is in (`wheel`).
+    #[serde(default = "wheel")]
+    pub body: String,
     /// Which model of the wheel produced the field.
     pub model: BodyModel,
+    /// The grid.
+    pub grid: StressGrid,
     /// The quantities reported.
     pub quantities: Vec<StressQuantity>,
-    /// The field (kept in memory even when it is written to a CSV file).
-    pub field: StressField,
+    /// The maximum of every reported quantity (largest |value|, sign kept, and where), in the quantities' order.
+    #[serde(with = "ordered_maxima")]
+    pub maxima: Vec<(StressQuantity, Option<Maximum>)>,
+    /// Number of refused points per reason.
+    pub refused: BTreeMap<String, usize>,
     /// Wall-clock time of the evaluation, seconds.
     pub time_s: f64,
+    /// The quantities' values at the grid points (null once [`StressResult::spill`] moved them to a CSV file).
+    #[serde(rename = "field")]
+    pub values: Option<FieldValues>,
+    /// The quantities at the surface, at the contact elements' centres (included in the maxima).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub surface: Option<SurfaceValues>,
     /// The CSV file beside the result document that holds the field, once [`StressResult::spill`] moved it there.
     pub csv: Option<String>,
+    /// The stress tensor at every point, in memory after an evaluation (empty when read back from a document).
+    #[serde(skip)]
+    pub field: StressField,
+}
+
+fn wheel() -> String {
+    "wheel".into()
+}
+
+/// The inline field of the document: node coordinates, one array per quantity (null where refused, row-major) and
+/// the reason per refused point.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct FieldValues {
+    /// x of the grid's columns.
+    pub x: Vec<f64>,
+    /// Depth of the grid's rows.
+    pub depth: Vec<f64>,
+    /// Per quantity name, its value at every point (row-major; null where refused).
+    pub values: BTreeMap<String, Vec<Option<f64>>>,
+    /// Per point, why it has no value (null where it has one).
+    pub error: Vec<Option<PointError>>,
+}
+
+/// The surface values of the document: x of the contact elements' centres (depth 0) and, per quantity name, its
+/// value there (null where refused).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SurfaceValues {
+    /// x of the points.
+    pub x: Vec<f64>,
+    /// Per quantity name, its value at every point.
+    pub values: BTreeMap<String, Vec<Option<f64>>>,
 }
 
 impl StressResult {
+    /// The document form of an evaluated field.
+    pub fn of(model: BodyModel, quantities: Vec<StressQuantity>, field: StressField, time_s: f64) -> StressResult {
+        let g = field.grid;
+        let maxima = quantities.iter().map(|&q| (q, field.maximum(q))).collect();
+        let mut refused = BTreeMap::new();
+        for e in field.stress.iter().filter_map(|s| s.err()) {
+            *refused.entry(e.name().to_string()).or_insert(0) += 1;
+        }
+        let surface = (!field.surface.is_empty()).then(|| SurfaceValues {
+            x: field.surface.iter().map(|(x, _)| *x).collect(),
+            values: quantities
+                .iter()
+                .map(|&q| {
+                    let v = field.surface.iter().map(|(_, s)| s.ok().map(|s| quantity(q, s, field.nu))).collect();
+                    (q.name().to_string(), v)
+                })
+                .collect(),
+        });
+        let values = FieldValues {
+            x: (0..g.points[0]).map(|i| g.x_at(i)).collect(),
+            depth: (0..g.points[1]).map(|j| g.depth_at(j)).collect(),
+            values: quantities
+                .iter()
+                .map(|&q| (q.name().to_string(), (0..field.stress.len()).map(|k| field.value(q, k)).collect()))
+                .collect(),
+            error: field.stress.iter().map(|s| s.err()).collect(),
+        };
+        StressResult {
+            body: wheel(),
+            model,
+            grid: g,
+            quantities,
+            maxima,
+            refused,
+            time_s,
+            values: Some(values),
+            surface,
+            csv: None,
+            field,
+        }
+    }
+
     /// The maximum of every reported quantity, in the order of [`StressResult::quantities`].
     pub fn maxima(&self) -> Vec<(StressQuantity, Option<Maximum>)> {
-        self.quantities.iter().map(|&q| (q, self.field.maximum(q))).collect()
+        self.maxima.clone()
+    }
+
+    /// The maximum of one reported quantity (grid and surface), if it has one.
+    pub fn maximum_of(&self, q: StressQuantity) -> Option<Maximum> {
+        self.maxima.iter().find(|(m, _)| *m == q).and_then(|(_, v)| *v)
     }
 
     /// Number of refused points per reason.
-    pub fn refused(&self) -> BTreeMap<&'static str, usize> {
-        let mut out = BTreeMap::new();
-        for e in self.field.stress.iter().filter_map(|s| s.err()) {
-            *out.entry(e.name()).or_insert(0) += 1;
-        }
-        out
+    pub fn refused(&self) -> BTreeMap<String, usize> {
+        self.refused.clone()
     }
 
     /// For a grid of more than [`MAX_INLINE_POINTS`] points: name the CSV file `file` (a name beside the result
     /// document) in place of the inline field and return its text; `None` (and nothing changed) for a small grid.
     pub fn spill(&mut self, file: &str) -> Option<String> {
-        if self.field.grid.len() <= MAX_INLINE_POINTS {
+        if self.grid.len() <= MAX_INLINE_POINTS {
             return None;
         }
         self.csv = Some(file.to_string());
+        self.values = None;
         Some(self.field.csv(&self.quantities))
     }
 }
 
-/// `maxima` as a JSON object keyed by quantity name, in the quantities' order.
-struct Maxima(Vec<(StressQuantity, Option<Maximum>)>);
+/// `maxima` as a JSON object keyed by quantity name, in the quantities' order (both ways).
+mod ordered_maxima {
+    use super::{Maximum, StressQuantity};
+    use serde::ser::SerializeMap;
+    use serde::{Deserializer, Serializer};
 
-impl Serialize for Maxima {
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let mut m = s.serialize_map(Some(self.0.len()))?;
-        for (q, v) in &self.0 {
-            m.serialize_entry(q.name(), v)?;
+    pub fn serialize<S: Serializer>(v: &[(StressQuantity, Option<Maximum>)], s: S) -> Result<S::Ok, S::Error> {
+        let mut m = s.serialize_map(Some(v.len()))?;
+        for (q, x) in v {
+            m.serialize_entry(q, x)?;
         }
         m.end()
     }
-}
 
-/// The inline field: node coordinates, one array per quantity (null where refused) and the reason per point.
-struct InlineField<'a>(&'a StressField, &'a [StressQuantity]);
-
-impl Serialize for InlineField<'_> {
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let (f, qs) = (self.0, self.1);
-        let g = f.grid;
-        let values: BTreeMap<&str, Vec<Option<f64>>> =
-            qs.iter().map(|&q| (q.name(), (0..f.stress.len()).map(|k| f.value(q, k)).collect())).collect();
-        let mut m = s.serialize_map(Some(4))?;
-        m.serialize_entry("x", &(0..g.points[0]).map(|i| g.x_at(i)).collect::<Vec<f64>>())?;
-        m.serialize_entry("depth", &(0..g.points[1]).map(|j| g.depth_at(j)).collect::<Vec<f64>>())?;
-        m.serialize_entry("values", &values)?;
-        m.serialize_entry("error", &f.stress.iter().map(|s| s.err()).collect::<Vec<Option<PointError>>>())?;
-        m.end()
-    }
-}
-
-impl Serialize for StressResult {
-    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let names: Vec<&str> = self.quantities.iter().map(|q| q.name()).collect();
-        let mut st = s.serialize_struct("StressResult", 9)?;
-        st.serialize_field("body", "wheel")?;
-        st.serialize_field("model", &self.model)?;
-        st.serialize_field("grid", &self.field.grid)?;
-        st.serialize_field("quantities", &names)?;
-        st.serialize_field("maxima", &Maxima(self.maxima()))?;
-        st.serialize_field("refused", &self.refused())?;
-        st.serialize_field("time_s", &self.time_s)?;
-        match &self.csv {
-            None => st.serialize_field("field", &InlineField(&self.field, &self.quantities))?,
-            Some(_) => st.serialize_field("field", &Option::<()>::None)?,
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Vec<(StressQuantity, Option<Maximum>)>, D::Error> {
+        struct V;
+        impl<'de> serde::de::Visitor<'de> for V {
+            type Value = Vec<(StressQuantity, Option<Maximum>)>;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a map of stress maxima by quantity")
+            }
+            fn visit_map<A: serde::de::MapAccess<'de>>(self, mut m: A) -> Result<Self::Value, A::Error> {
+                let mut out = Vec::new();
+                while let Some(e) = m.next_entry()? {
+                    out.push(e);
+                }
+                Ok(out)
+            }
         }
-        st.serialize_field("csv", &self.csv)?;
-        st.end()
+        d.deserialize_map(V)
     }
 }
 
@@ -346,6 +438,8 @@ pub struct StressEvaluator<'a> {
     nu: f64,
     modulus: f64,
     body: Body<'a>,
+    /// An elastic (half-plane) counter-body: its strips (the contact grid's, user's length unit) and its ν.
+    counter: Option<(Vec<f64>, Vec<f64>, f64)>,
 }
 
 impl<'a> StressEvaluator<'a> {
@@ -359,25 +453,31 @@ impl<'a> StressEvaluator<'a> {
     /// boundary data would make the value wrong (module docs). The message names the first such point, its distance
     /// to the boundary and what would fix it.
     ///
-    /// # Panics
-    /// If the scene's wheel is a BEM wheel but `built` kept no boundary response (it keeps one whenever the scene
-    /// has `[stresses]`, [`crate::source::build`]).
-    pub fn new(scene: &Scene, built: &'a Built, path: &Path) -> crate::error::Result<Option<StressEvaluator<'a>>> {
-        let Some(spec) = scene.stresses.as_ref() else { return Ok(None) };
+    /// [`Error::Unsupported`] when the scene's wheel is a BEM wheel but `built` kept no boundary response (a source
+    /// keeps one whenever the scene it was built for has `[stresses]`, [`crate::source::build`]).
+    pub fn new(scene: &Scene, built: &'a Built) -> crate::error::Result<Option<StressEvaluator<'a>>> {
+        let Some(spec) = scene.stresses() else { return Ok(None) };
+        let path = scene.origin();
         let grid = StressGrid { x: spec.x, depth: spec.depth, points: spec.points };
         let l0 = built.flex.scales.length;
-        let body = match scene.wheel.model {
+        let body = match scene.model() {
             BodyModel::HalfPlane => {
                 let g = Grid::of(scene);
                 Body::HalfPlane { a: g.a.iter().map(|v| v * l0).collect(), b: g.b.iter().map(|v| v * l0).collect() }
             }
             BodyModel::Bem => {
-                let response =
-                    built.boundary.as_ref().expect("a BEM source keeps its boundary response for [stresses]");
-                let r = scene.wheel.radius;
-                let hub = match scene.wheel.support() {
-                    Support::Hub { radius } => radius,
-                    Support::TopArc { .. } => 0.0,
+                let Some(response) = built.boundary.as_ref() else {
+                    return Err(crate::error::Error::Unsupported {
+                        path: path.to_path_buf(),
+                        message: "stresses: the model was built without the boundary response the BEM wheel's \
+                                  stresses need (build it from a scene with [stresses])"
+                            .into(),
+                    });
+                };
+                let r = scene.radius();
+                let hub = match scene.body() {
+                    crate::scene::Body::Bem { support: Support::Hub { radius }, .. } => *radius,
+                    _ => 0.0,
                 };
                 let points: Vec<[f64; 2]> = (0..grid.len())
                     .map(|k| {
@@ -394,13 +494,22 @@ impl<'a> StressEvaluator<'a> {
                 Body::Wheel { response, points, refused }
             }
         };
+        let counter = match scene.counter_body() {
+            crate::scene::CounterBody::HalfPlane { material, .. } => {
+                let g = Grid::of(scene);
+                let scale = |v: &[f64]| v.iter().map(|x| x * l0).collect::<Vec<f64>>();
+                Some((scale(&g.a), scale(&g.b), material.poisson_ratio))
+            }
+            crate::scene::CounterBody::Rigid => None,
+        };
         Ok(Some(StressEvaluator {
             grid,
             quantities: spec.quantities(),
-            model: scene.wheel.model,
-            nu: scene.wheel.poisson_ratio,
-            modulus: scene.wheel.youngs_modulus,
+            model: scene.model(),
+            nu: scene.wheel().material.poisson_ratio,
+            modulus: scene.wheel().material.youngs_modulus,
             body,
+            counter,
         }))
     }
 
@@ -411,8 +520,8 @@ impl<'a> StressEvaluator<'a> {
     /// If `nodes` does not have one entry per contact node of the source.
     pub fn evaluate(&self, nodes: &[NodeResult]) -> StressResult {
         let t0 = Instant::now();
-        let stress = match &self.body {
-            Body::HalfPlane { a, b } => half_plane_field(&self.grid, a, b, nodes),
+        let (stress, surface) = match &self.body {
+            Body::HalfPlane { a, b } => (half_plane_field(&self.grid, a, b, nodes), half_plane_surface(a, b, nodes)),
             Body::Wheel { response, points, refused } => {
                 let e = self.modulus;
                 let p: Vec<f64> = nodes.iter().map(|n| n.pressure / e).collect();
@@ -432,17 +541,77 @@ impl<'a> StressEvaluator<'a> {
                         Err(StressError::NotFinite) => Err(PointError::Singular),
                     };
                 }
-                out
+                (out, wheel_surface(response, &u, &t, e))
             }
         };
-        StressResult {
-            model: self.model,
-            quantities: self.quantities.clone(),
-            field: StressField { grid: self.grid, nu: self.nu, stress },
-            time_s: t0.elapsed().as_secs_f64(),
-            csv: None,
-        }
+        let field = StressField { grid: self.grid, nu: self.nu, stress, surface };
+        StressResult::of(self.model, self.quantities.clone(), field, t0.elapsed().as_secs_f64())
     }
+
+    /// The elastic counter-body's field from the same run (`None` for a rigid flat): the half-plane below the
+    /// contact loaded by the opposite tractions, on the same grid with depth measured into the counter-body and x
+    /// as on the wheel. Mirrored into the wheel's configuration the counter-body carries the pressure p and the
+    /// shear −q, so its field is the half-plane formula with (p, −q) and its own ν; τ_xz is in its (x, depth) axes.
+    pub fn evaluate_counter_body(&self, nodes: &[NodeResult]) -> Option<StressResult> {
+        let (a, b, nu) = self.counter.as_ref()?;
+        let t0 = Instant::now();
+        let mirrored: Vec<NodeResult> = nodes.iter().map(|n| NodeResult { shear: -n.shear, ..n.clone() }).collect();
+        let field = StressField {
+            grid: self.grid,
+            nu: *nu,
+            stress: half_plane_field(&self.grid, a, b, &mirrored),
+            surface: half_plane_surface(a, b, &mirrored),
+        };
+        let mut r = StressResult::of(BodyModel::HalfPlane, self.quantities.clone(), field, t0.elapsed().as_secs_f64());
+        r.body = "counter_body".into();
+        Some(r)
+    }
+}
+
+/// The half-plane's surface values at its strips' centres (user's units).
+fn half_plane_surface(a: &[f64], b: &[f64], nodes: &[NodeResult]) -> Vec<(f64, Result<[f64; 3], PointError>)> {
+    (0..a.len())
+        .map(|i| {
+            let x = 0.5 * (a[i] + b[i]);
+            let mut s = [0.0; 3];
+            for j in (0..a.len()).filter(|&j| nodes[j].pressure != 0.0 || nodes[j].shear != 0.0) {
+                let st = strip_stress(a[j], b[j], nodes[j].pressure, nodes[j].shear, x, 0.0);
+                s[0] += st.sxx;
+                s[1] += st.szz;
+                s[2] += st.txz;
+            }
+            (x, finite(s))
+        })
+        .collect()
+}
+
+/// The BEM wheel's surface values at its contact elements' centres, from the boundary solution (`u`, `t`
+/// dimensionless, `e` the stress scale): the traction gives σ_zz and τ_xz, the tangential strain of the boundary
+/// displacement σ_xx ([`crate::bem::stress::boundary_stress`]).
+fn wheel_surface(
+    response: &BoundaryResponse,
+    u: &[[f64; 2]],
+    t: &[[f64; 2]],
+    e: f64,
+) -> Vec<(f64, Result<[f64; 3], PointError>)> {
+    let model = &response.model;
+    let mesh = &model.mesh;
+    let l0 = model.length;
+    mesh.elements
+        .iter()
+        .enumerate()
+        .filter(|(_, el)| el.bc == crate::mesh::Bc::Contact)
+        .map(|(i, el)| {
+            let x = match el.shape {
+                Shape::Straight { a, b } => 0.5 * (a[0] + b[0]) * l0,
+                Shape::Arc(arc) => arc.position(0.0)[0] * l0,
+            };
+            let s = crate::bem::stress::boundary_stress(mesh, &model.kelvin, u, t, i, 0.0)
+                .ok_or(PointError::Singular)
+                .and_then(|s| finite([s[0] * e, s[1] * e, s[2] * e]));
+            (x, s)
+        })
+        .collect()
 }
 
 /// A stress with every component finite, else [`PointError::Singular`].
@@ -631,6 +800,7 @@ mod tests {
             grid,
             nu: 0.3,
             stress: vec![Ok([1.0, 0.0, 0.0]), Err(PointError::NearBoundary), Ok([-2.0, 0.0, 0.0]), Ok([1.5, 0.0, 0.0])],
+            surface: Vec::new(),
         };
         assert_eq!(f.maximum(StressQuantity::Sxx), Some(Maximum { value: -2.0, x: 0.0, depth: 1.0 }));
         let csv = f.csv(&[StressQuantity::Sxx]);

@@ -15,20 +15,23 @@
 use crate::admissible::{admissibility, explain, required_centre, Admissibility};
 use crate::formulation::{ContactProblem, Dof, ProblemKind};
 use crate::post::{Evaluation, NodeState};
+use crate::scene::ZoneExtent;
 use crate::scene::{BodyModel, Scene};
-use crate::status::Status;
+use crate::status::{Status, VerdictReason};
 use crate::tolerances::{ROTATION_ARC_MAX, ZONE_WIDTH_FACTOR};
 
 /// The status and message a residual-clean solution gets when the model is used outside its range (`None`: it
 /// stands as `solved`). The kinematics are judged first: a zone cannot be widened out of a rolling wheel.
-pub fn judge(scene: &Scene, problem: &ContactProblem, ev: &Evaluation) -> Option<(Status, String)> {
-    kinematics(scene, problem, ev).or_else(|| zone_edge(scene, problem, ev))
+pub fn judge(scene: &Scene, problem: &ContactProblem, ev: &Evaluation) -> Option<(Status, VerdictReason, String)> {
+    kinematics(scene, problem, ev)
+        .map(|(s, m)| (s, VerdictReason::Kinematics, m))
+        .or_else(|| zone_edge(scene, problem, ev).map(|(s, m)| (s, VerdictReason::ZoneEdge, m)))
 }
 
 /// The contact half-width the run is judged against: the larger of the loaded nodes' extent (plus half an element)
 /// and Hertz's a at the run's load, never below half an element (user's units).
 fn contact_scale(scene: &Scene, ev: &Evaluation) -> f64 {
-    let h = scene.mesh.element_length(scene.wheel.radius);
+    let h = scene.zone().element_length(scene.radius());
     let measured = ev.contact.half_width.map_or(0.0, |w| w + 0.5 * h);
     let p = ev.resultants.normal;
     let hertz = if p > 0.0 { crate::references::hertz_at(scene, p).half_width } else { 0.0 };
@@ -38,7 +41,7 @@ fn contact_scale(scene: &Scene, ev: &Evaluation) -> f64 {
 /// [`Status::KinematicsOutOfRange`] when |φ|R exceeds [`ROTATION_ARC_MAX`] contact half-widths.
 fn kinematics(scene: &Scene, problem: &ContactProblem, ev: &Evaluation) -> Option<(Status, String)> {
     let phi = ev.rigid_body.rotation;
-    let r = scene.wheel.radius;
+    let r = scene.radius();
     let a = contact_scale(scene, ev);
     let arc = phi.abs() * r;
     if arc.is_nan() || arc <= ROTATION_ARC_MAX * a {
@@ -89,7 +92,7 @@ fn zone_edge(scene: &Scene, problem: &ContactProblem, ev: &Evaluation) -> Option
         fx += nd.x * nd.pressure * w * l0;
         f += nd.pressure * w * l0;
     }
-    let r = scene.wheel.radius;
+    let r = scene.radius();
     // The pressure centre; a symmetric contact's round-off (1e-17 R) is shown as the 0 it is.
     let centre = if f > 0.0 { fx / f } else { 0.0 };
     let centre = if centre.abs() < 1e-12 * r { 0.0 } else { centre };
@@ -100,7 +103,7 @@ fn zone_edge(scene: &Scene, problem: &ContactProblem, ev: &Evaluation) -> Option
     let p = ev.resultants.normal;
     let a_h = if p > 0.0 { crate::references::hertz_at(scene, p).half_width } else { 0.0 };
     let need = ZONE_WIDTH_FACTOR * (centre.abs() + a_h);
-    let at_least = if matches!(scene.drive.normal(), Dof::Displacement(_)) {
+    let at_least = if matches!(problem.drive.normal, Dof::Displacement(_)) {
         " at least (the approach is prescribed, and the cut-off zone carries less than the full contact would)"
     } else {
         ""
@@ -113,10 +116,10 @@ fn zone_edge(scene: &Scene, problem: &ContactProblem, ev: &Evaluation) -> Option
         edge.pressure / middle.max(f64::MIN_POSITIVE),
         middle
     );
-    let m = &scene.mesh;
+    let m = scene.zone();
     let w0 = m.half_width(r);
-    let bem = scene.wheel.model == BodyModel::Bem;
-    let elements = |ratio: f64| (m.contact_elements as f64 * ratio).ceil() as usize;
+    let bem = scene.model() == BodyModel::Bem;
+    let elements = |ratio: f64| (m.elements as f64 * ratio).ceil() as usize;
     if need >= r {
         msg.push_str(&format!(
             "; no candidate zone on this wheel can hold it: the contact needs a half-width of about {need:.3e}{at_least} \
@@ -124,7 +127,7 @@ fn zone_edge(scene: &Scene, problem: &ContactProblem, ev: &Evaluation) -> Option
              R = {r}: the load is beyond small-strain contact of this wheel",
             a_h / r
         ));
-    } else if m.contact_half_width.is_some() || !bem {
+    } else if matches!(m.extent, ZoneExtent::HalfWidth { .. }) || !bem {
         msg.push_str(&format!(
             "; widen it to contact_half_width ≥ {need:.4e}{at_least} (now {w0:.4e}; pressure centre {centre:.3e}, \
              Hertz's a = {a_h:.3e} at P = {p:.4e}), with contact_elements ≥ {} to keep the element size",
@@ -147,7 +150,7 @@ fn zone_edge(scene: &Scene, problem: &ContactProblem, ev: &Evaluation) -> Option
 /// LP of static admissibility. `Some` with the new status and message when the LP proves the loads cannot be
 /// carried (`infeasible`, whatever the solver said) or, for Lemke's ray, when it shows that statically admissible
 /// forces exist (the ray is then the solver's failure, and the message says so).
-pub fn decide(problem: &ContactProblem, solver: &str, status: Status, message: &str) -> Option<(Status, String)> {
+pub fn decide(problem: &ContactProblem, solver: crate::solvers::SolverId, status: Status) -> Option<(Status, String)> {
     let failed = matches!(status, Status::RayTermination | Status::NotConverged | Status::NumericalError);
     let loaded = problem.dofs.iter().any(|d| d.is_load());
     if !failed || !loaded || matches!(problem.kind, ProblemKind::GrossSliding { .. }) {
@@ -156,17 +159,16 @@ pub fn decide(problem: &ContactProblem, solver: &str, status: Status, message: &
     match admissibility(problem) {
         Admissibility::Infeasible(cert) => Some((
             Status::Infeasible,
-            format!("infeasible: {} ({solver} ended with {status}: {message})", explain(problem, &cert)),
+            format!("infeasible: {} ({solver} ended with {status})", explain(problem, &cert)),
         )),
         Admissibility::Feasible if status == Status::RayTermination => Some((
             Status::RayTermination,
-            format!(
-                "statically admissible contact forces exist on the candidate zone (the equilibrium LP with p ≥ 0, \
-                 |q| ≤ μp is feasible), so the loads are within friction and the zone; Lemke's ray on this LCP, which \
-                 is not copositive-plus, leaves the elastic problem undecided ({message})"
-            ),
+            "statically admissible contact forces exist on the candidate zone (the equilibrium LP with p ≥ 0, |q| ≤ μp \
+             is feasible), so the loads are within friction and the zone; Lemke's ray on this LCP, which is not \
+             copositive-plus, leaves the elastic problem undecided"
+                .to_string(),
         )),
         Admissibility::Feasible => None,
-        Admissibility::Undecided(why) => Some((status, format!("{message} (static admissibility undecided: {why})"))),
+        Admissibility::Undecided(why) => Some((status, format!("static admissibility undecided: {why}"))),
     }
 }

@@ -8,8 +8,9 @@
 use faer::linalg::solvers::Solve;
 use faer::Mat;
 use rollbem::bem::{assemble_full, kelvin::Kelvin};
+use rollbem::mesh::MeshSpec;
 use rollbem::mesh::{Bc, Mesh};
-use rollbem::scene::{ElementKind, MeshSpec, Support};
+use rollbem::scene::{ElementKind, Support};
 
 /// Uniform-ish mesh of `n` elements (the contact arc gets n/12, the rest is graded from the same size).
 fn mesh(n: usize, kind: ElementKind, support: Support) -> Mesh {

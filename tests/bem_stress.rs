@@ -14,8 +14,9 @@ use rollbem::bem::quadratic::{shape, ArcElement, XI_NODES};
 use rollbem::bem::quadrature::gauss_legendre;
 use rollbem::bem::stress::{boundary_stress, interior_stress, somigliana_kernels, InteriorStress, StressError};
 use rollbem::bem::{assemble_full, FullSystem};
+use rollbem::mesh::MeshSpec;
 use rollbem::mesh::{Bc, Element, Mesh, Node, Shape};
-use rollbem::scene::{ElementKind, MeshSpec, Support};
+use rollbem::scene::{ElementKind, Support};
 use std::f64::consts::PI;
 use std::time::Instant;
 

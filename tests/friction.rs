@@ -4,11 +4,11 @@
 
 use faer::linalg::solvers::Solve;
 use faer::Mat;
+use rollbem::pipeline::run_scene;
 use rollbem::post::NodeState;
 use rollbem::results::{Report, SolverRun};
-use rollbem::run::run_scene;
 use rollbem::scene::{Scene, Support};
-use rollbem::solvers::Status;
+use rollbem::solvers::{Status, Termination};
 use rollbem::source::{self, Blocks};
 use std::path::Path;
 
@@ -47,7 +47,7 @@ fn lemke(r: &Report) -> &SolverRun {
 }
 
 fn run(s: &Scene) -> Report {
-    run_scene(s, Path::new("<test>")).expect("runs")
+    run_scene(s).expect("runs")
 }
 
 /// Lemke's solution of the scene's discrete problem, evaluated, whatever the verdict about the model's range
@@ -55,11 +55,14 @@ fn run(s: &Scene) -> Report {
 /// solver tests below compare). Also returns the run's status from `run_scene`.
 fn lemke_discrete(s: &Scene) -> (Status, rollbem::post::Evaluation) {
     let status = lemke(&run(s)).status;
-    let fl = source::build(s, rollbem::run::blocks_for(s)).unwrap().flex;
-    let problem = rollbem::run::build_problem(s, &fl, Path::new("<test>")).unwrap();
-    let out = rollbem::solvers::build("lemke", None).unwrap().solve(&problem);
-    assert_eq!(out.status, Status::Solved, "{}", out.message);
-    (status, rollbem::post::evaluate(&problem, out.solution.as_ref().unwrap(), rollbem::run::rolling_post(s)))
+    let fl = source::build(s, rollbem::pipeline::stages::blocks_for(s)).unwrap().flex;
+    let problem = rollbem::pipeline::stages::scene_problem(s, &fl).unwrap();
+    let out = rollbem::solvers::build("lemke").unwrap().solve(&problem);
+    assert_eq!(out.status, Termination::Solved, "{}", out.message);
+    (
+        status,
+        rollbem::post::evaluate(&problem, out.solution.as_ref().unwrap(), rollbem::pipeline::stages::rolling_post(s)),
+    )
 }
 
 #[test]
@@ -112,10 +115,10 @@ fn cattaneo_mindlin_stick_zone_and_tractions_at_beta_zero() {
         for (mu, qr) in [(0.3, 0.1), (0.5, 0.1), (0.5, 0.3)] {
             let q = qr * p;
             let mut s = base(nu, mu, &format!("normal_load = {p}\ntangential_load = {q}\nrotation = 0.0"), extra);
-            s.mesh.contact_arc_deg = Some(arc);
+            s = s.edit(|d| d.mesh.contact_arc_deg = Some(arc)).unwrap();
             let r = run(&s);
             let l = lemke(&r);
-            assert_eq!(l.status, Status::Solved, "{}", l.message);
+            assert_eq!(l.status, Status::Solved, "{}", l.explanation());
             let h = rollbem::hertz::Hertz::new(1.0, 94500.0, nu, p);
             let c_exact = h.half_width * (1.0 - q / (mu * p)).sqrt();
             let elem = arc.to_radians() / 60.0;
@@ -182,7 +185,7 @@ fn every_node_obeys_coulomb_and_its_state() {
         let expected = if k == 4 { Status::KinematicsOutOfRange } else { Status::Solved };
         assert_eq!(status, expected, "case {k}");
         assert!(l.residuals.max() <= 1e-10, "residuals {:?}", l.residuals);
-        let mu = s.contact.friction;
+        let mu = s.document().contact.friction;
         let pmax = l.contact.peak_pressure;
         let smax = l.nodes.iter().filter_map(|n| n.slip).fold(0.0_f64, |a, s| a.max(s.abs())).max(1e-300);
         for n in &l.nodes {
@@ -215,7 +218,7 @@ fn gross_sliding_is_reported_infeasible_with_mu_p() {
     let r = run(&s);
     let l = lemke(&r);
     assert_eq!(l.status, Status::Infeasible);
-    assert!(l.message.contains("2.000000e1") && l.message.contains("μP"), "{}", l.message);
+    assert!(l.explanation().contains("2.000000e1") && l.explanation().contains("μP"), "{}", l.explanation());
     assert!(l.nodes.is_empty() && l.resultants.is_none());
     // With the approach prescribed, P is not known in advance: |Q| = 1000 is far beyond any μP this approach can
     // produce, but no bound in the code proves it, and the loading LCP with a tangential load is not
@@ -238,8 +241,8 @@ fn at_the_sliding_limit_tractions_are_full_slip_and_the_shift_is_indeterminate()
     let s = base(0.1, 0.1, "normal_load = 187.42\ntangential_load = 18.742\nrotation = 0.0", "");
     let r = run(&s);
     let l = lemke(&r);
-    assert_eq!(l.status, Status::Solved, "{}", l.message);
-    assert!(l.message.contains("sliding limit"));
+    assert_eq!(l.status, Status::Solved, "{}", l.explanation());
+    assert!(l.explanation().contains("sliding limit"));
     assert!(l.rigid_body.unwrap().tangential.is_none());
     let f = l.resultants.unwrap();
     assert!((f.tangential / 18.742 - 1.0).abs() < 1e-10);
@@ -255,8 +258,15 @@ fn rolling_slip_velocity_only_when_asked() {
     let r = run(&s);
     assert!(lemke(&r).nodes.iter().all(|n| n.slip_velocity.is_none()));
     assert!(!r.effects.contains(&"rolling".to_string()));
-    s.rolling =
-        Some(rollbem::scene::Rolling { mode: rollbem::scene::RollingMode::Seed, creepage: Some(0.002), direction: 1 });
+    s = s
+        .edit(|d| {
+            d.rolling = Some(rollbem::scene::document::RollingTable {
+                mode: rollbem::scene::RollingMode::Seed,
+                creepage: Some(0.002),
+                direction: 1,
+            })
+        })
+        .unwrap();
     let r = run(&s);
     let l = lemke(&r);
     assert!(r.effects.contains(&"rolling".to_string()));
@@ -283,15 +293,15 @@ fn rolling_slip_velocity_only_when_asked() {
 fn oracle(s: &Scene) -> Vec<(Vec<f64>, Vec<f64>)> {
     let fl = source::build(s, Blocks::All).unwrap().flex;
     let n = fl.n();
-    let mu = s.contact.friction;
+    let mu = s.document().contact.friction;
     let l0 = fl.scales.length;
     let (knn, knt, ktn, ktt) =
         (&fl.k_nn, fl.k_nt.as_ref().unwrap(), fl.k_tn.as_ref().unwrap(), fl.k_tt.as_ref().unwrap());
     // The rigid modes in the order shift, approach, rotation.
     let d = [
-        s.drive.tangential_shift.unwrap_or(0.0) / l0,
-        s.drive.normal_approach.unwrap() / l0,
-        s.drive.rotation.unwrap_or(0.0),
+        s.document().drive.tangential_shift.unwrap_or(0.0) / l0,
+        s.document().drive.normal_approach.unwrap() / l0,
+        s.document().drive.rotation.unwrap_or(0.0),
     ];
     let gr: Vec<f64> = (0..n).map(|i| fl.g0[i] + (0..3).map(|m| fl.modes[m].normal[i] * d[m]).sum::<f64>()).collect();
     let tr: Vec<f64> =
@@ -435,7 +445,7 @@ fn mixed_drive_p_and_q_with_rotation_held() {
     let s = base(0.3, 0.4, "normal_load = 187.42\ntangential_load = 30.0\nrotation = 0.0", "");
     let r = run(&s);
     let l = lemke(&r);
-    assert_eq!(l.status, Status::Solved, "{}", l.message);
+    assert_eq!(l.status, Status::Solved, "{}", l.explanation());
     assert_eq!(l.problem_size, 3 * r.mesh.contact_nodes + 4);
     let f = l.resultants.unwrap();
     assert!((f.normal / 187.42 - 1.0).abs() < 1e-10 && (f.tangential / 30.0 - 1.0).abs() < 1e-10);
@@ -457,11 +467,11 @@ fn block_and_dense_lemke_engines_agree() {
         base(0.0, 1.2, "normal_approach = 0.004\ntangential_shift = 0.0003\nrotation = 0.00001", ""),
     ] {
         let fl = source::build(&s, Blocks::All).unwrap().flex;
-        let p = rollbem::run::build_problem(&s, &fl, Path::new("<test>")).unwrap();
+        let p = rollbem::pipeline::stages::scene_problem(&s, &fl).unwrap();
         let lcp = p.lcp();
         let (a, b) = (solve(lcp, &st), solve_dense(lcp, &st));
-        assert_eq!(a.status, Status::Solved, "{}", a.message);
-        assert_eq!(b.status, Status::Solved, "{}", b.message);
+        assert_eq!(a.status, Termination::Solved, "{}", a.message);
+        assert_eq!(b.status, Termination::Solved, "{}", b.message);
         let zmax = b.z.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
         // Nodal forces agree (multipliers of separated nodes are not unique, so compare the first n unknowns).
         let n = fl.n();
@@ -486,8 +496,8 @@ fn block_and_dense_lemke_engines_agree() {
         let q: Vec<f64> = (0..n).map(|_| rnd()).collect();
         let lcp = Lcp { m, q };
         let (x, y) = (solve(&lcp, &st), solve_dense(&lcp, &st));
-        assert_eq!(x.status, Status::Solved, "case {case}");
-        assert_eq!(y.status, Status::Solved, "case {case}");
+        assert_eq!(x.status, Termination::Solved, "case {case}");
+        assert_eq!(y.status, Termination::Solved, "case {case}");
         for i in 0..n {
             assert!((x.z[i] - y.z[i]).abs() <= 1e-10 * (1.0 + y.z[i].abs()), "case {case}");
             assert!(x.w[i] >= -1e-12 && x.z[i] >= 0.0 && (x.w[i] * x.z[i]).abs() <= 1e-12, "case {case}");

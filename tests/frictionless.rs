@@ -2,8 +2,8 @@
 //! problem sizes and unit invariance. Expected values: Hertz's formulas (REFERENCES.md, `rollbem::hertz`), the
 //! prescribed load, and the peer solver.
 
+use rollbem::pipeline::run_scene;
 use rollbem::results::{Report, SolverRun};
-use rollbem::run::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use rollbem::source::{self, Blocks};
@@ -41,7 +41,7 @@ use = ["all"]
 }
 
 fn run(s: &Scene) -> Report {
-    run_scene(s, Path::new("<test>")).expect("runs")
+    run_scene(s).expect("runs")
 }
 
 fn solver<'a>(r: &'a Report, name: &str) -> &'a SolverRun {
@@ -62,14 +62,14 @@ fn hertz_at_equal_load_constant_and_quadratic() {
             let rep = run(&s);
             let h = rep.references.hertz.expect("Hertz applies");
             for run in &rep.runs {
-                assert_eq!(run.status, Status::Solved, "{element} {}: {}", run.solver, run.message);
+                assert_eq!(run.status, Status::Solved, "{element} {}: {}", run.solver, run.explanation());
                 let a = run.contact.as_ref().unwrap().fit_half_width.unwrap();
                 let p0 = run.contact.as_ref().unwrap().fit_peak_pressure.unwrap();
                 let (ea, ep) = ((a / h.half_width - 1.0).abs(), (p0 / h.peak_pressure - 1.0).abs());
                 eprintln!("R={r} {element} {}: a err {ea:.2e}, p0 err {ep:.2e}", run.solver);
                 assert!(ea <= t && ep <= t, "R={r} {element} {}: a err {ea:.3e}, p0 err {ep:.3e} > {t}", run.solver);
                 // The pressure resultant equals the prescribed load.
-                let load = s.drive.normal_load.unwrap();
+                let load = s.document().drive.normal_load.unwrap();
                 let el = (run.resultants.unwrap().normal / load - 1.0).abs();
                 assert!(el <= tol::LOAD_RESULTANT, "load error {el:e}");
             }
@@ -105,12 +105,16 @@ fn frictionless_scene_builds_and_solves_only_the_normal_problem() {
     // Displacement-driven: exactly one complementarity unknown per contact node; the flexibility has no
     // tangential blocks; the report says effects = ["normal"] and computes no u_x, slip or slip velocity.
     let mut s = scene(1.0, 94500.0, 0.1, 0.2, 0.05, "constant", 24, 32);
-    s.drive.normal_load = None;
-    s.drive.normal_approach = Some(0.004);
+    s = s
+        .edit(|d| {
+            d.drive.normal_load = None;
+            d.drive.normal_approach = Some(0.004);
+        })
+        .unwrap();
     let flex = source::build(&s, Blocks::Normal).unwrap().flex;
     assert!(flex.k_nt.is_none() && flex.k_tn.is_none() && flex.k_tt.is_none());
     assert!(flex.modes.iter().all(|m| m.tangential.is_none()));
-    let prob = rollbem::run::build_problem(&s, &flex, std::path::Path::new("<test>")).unwrap();
+    let prob = rollbem::pipeline::stages::scene_problem(&s, &flex).unwrap();
     assert_eq!(prob.lcp().size(), flex.n());
     let rep = run(&s);
     assert_eq!(rep.effects, vec!["normal".to_string()]);
@@ -132,12 +136,20 @@ fn displacement_and_load_drives_agree() {
     // Feed the load computed under a prescribed approach back as the drive: the approach and the pressures must
     // come back (the two formulations describe one physics). Reference: the displacement-driven run itself.
     let mut s = scene(1.0, 94500.0, 0.1, 0.2, 0.05, "constant", 24, 32);
-    s.drive.normal_load = None;
-    s.drive.normal_approach = Some(0.004);
+    s = s
+        .edit(|d| {
+            d.drive.normal_load = None;
+            d.drive.normal_approach = Some(0.004);
+        })
+        .unwrap();
     let rd = run(&s);
     let ld = solver(&rd, "lemke");
-    s.drive.normal_approach = None;
-    s.drive.normal_load = Some(ld.resultants.unwrap().normal);
+    s = s
+        .edit(|d| {
+            d.drive.normal_approach = None;
+            d.drive.normal_load = Some(ld.resultants.unwrap().normal);
+        })
+        .unwrap();
     let rl = run(&s);
     let ll = solver(&rl, "lemke");
     assert!((ll.rigid_body.unwrap().normal / 0.004 - 1.0).abs() < 1e-10, "approach {}", ll.rigid_body.unwrap().normal);
@@ -152,11 +164,14 @@ fn displacement_and_load_drives_agree() {
 fn unit_invariance_m_and_mm() {
     // The same steel wheel in N, mm, MPa and in N, m, Pa: stresses equal to 1e-9 relative.
     let mm = scene(460.0, 210000.0, 0.3, 100.0, 0.03, "quadratic", 24, 48);
-    let mut m = mm.clone();
-    m.wheel.radius = 0.46;
-    m.wheel.youngs_modulus = 210e9;
-    m.wheel.support = Some(rollbem::scene::Support::Hub { radius: 0.1 });
-    m.drive.normal_load = Some(mm.drive.normal_load.unwrap() * 1e3); // N/mm → N/m
+    let m = mm
+        .edit(|d| {
+            d.wheel.radius = 0.46;
+            d.wheel.youngs_modulus = 210e9;
+            d.wheel.support = Some(rollbem::scene::Support::Hub { radius: 0.1 });
+            d.drive.normal_load = d.drive.normal_load.map(|p| p * 1e3); // N/mm → N/m
+        })
+        .unwrap();
     let (a, b) = (run(&mm), run(&m));
     // The same solvers and the same mesh in both unit systems, before comparing them pairwise.
     assert_eq!(a.runs.len(), b.runs.len(), "solver runs in mm and in m");
@@ -176,9 +191,13 @@ fn unit_invariance_m_and_mm() {
 fn a_negative_approach_gives_no_contact_and_zero_load() {
     // A wheel lifted off the flat: every node separated, P = 0 (exact: q ≥ 0 gives z = 0).
     let mut s = scene(1.0, 94500.0, 0.1, 0.2, 0.05, "constant", 24, 32);
-    s.drive.normal_load = None;
-    s.drive.normal_approach = Some(-0.001);
-    s.solvers.use_ = vec!["lemke".into()];
+    s = s
+        .edit(|d| {
+            d.drive.normal_load = None;
+            d.drive.normal_approach = Some(-0.001);
+            d.solvers.use_ = vec!["lemke".into()];
+        })
+        .unwrap();
     let rep = run(&s);
     let l = solver(&rep, "lemke");
     assert_eq!(l.status, Status::Solved);

@@ -5,9 +5,9 @@
 
 use rollbem::halfplane::HalfPlane;
 use rollbem::hertz::Hertz;
+use rollbem::pipeline::run_scene;
 use rollbem::references::metrics;
 use rollbem::results::{Report, SolverRun};
-use rollbem::run::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use rollbem::source::{self, Blocks};
@@ -19,7 +19,7 @@ fn scene(text: &str) -> Scene {
 }
 
 fn run(s: &Scene) -> Report {
-    run_scene(s, Path::new("<test>")).unwrap()
+    run_scene(s).unwrap()
 }
 
 fn lemke(r: &Report) -> &SolverRun {
@@ -62,7 +62,7 @@ fn half_plane_hertz_is_met_to_a_tenth_of_a_percent_and_converges() {
         let s = steel("", &format!("contact_half_width = 9.0\ncontact_elements = {n}"), "", "normal_load = 20000.0");
         let r = run(&s);
         let l = lemke(&r);
-        assert_eq!(l.status, Status::Solved, "{}", l.message);
+        assert_eq!(l.status, Status::Solved, "{}", l.explanation());
         let res = l.resultants.unwrap();
         assert!((res.normal / 20000.0 - 1.0).abs() <= 1e-10, "P = {}", res.normal);
         let m = metrics(&s, l);
@@ -93,7 +93,7 @@ fn half_plane_hertz_is_met_to_a_tenth_of_a_percent_and_converges() {
 fn cattaneo_check(s: &Scene) {
     let r = run(s);
     let l = lemke(&r);
-    assert_eq!(l.status, Status::Solved, "{}", l.message);
+    assert_eq!(l.status, Status::Solved, "{}", l.explanation());
     let m = metrics(s, l);
     let (err, centre, shear) = (m.cm_c_err_elements.unwrap(), m.cm_centre_elements.unwrap(), m.cm_shear_err.unwrap());
     eprintln!(
@@ -120,8 +120,17 @@ fn cattaneo_on_the_half_plane_with_coupling_off_and_on_two_identical_half_planes
         cattaneo_check(&s);
         // Steel on steel: two identical half-planes, coupling on (β = 0 exactly). E* halves: a grows by √2.
         let mut s = steel("", "contact_half_width = 12.5\ncontact_elements = 250", &format!("friction = {mu}"), drive);
-        s.counter_body =
-            rollbem::scene::CounterBody::HalfPlane { youngs_modulus: 210000.0, poisson_ratio: 0.3, datum_depth: None };
+        s = s
+            .edit(|d| {
+                d.counter_body = rollbem::scene::document::CounterBodyTable::HalfPlane {
+                    youngs_modulus: 210000.0,
+
+                    poisson_ratio: 0.3,
+
+                    datum_depth: None,
+                }
+            })
+            .unwrap();
         assert_eq!(s.dundurs_beta(), 0.0);
         cattaneo_check(&s);
     }
@@ -137,10 +146,23 @@ fn identical_half_planes_have_no_coupling_and_tangential_tractions_independent_o
             "friction = 0.4",
             "normal_load = 20000.0\ntangential_load = 3000.0",
         );
-        s.wheel.poisson_ratio = nu;
-        s.wheel.youngs_modulus = e;
-        s.counter_body =
-            rollbem::scene::CounterBody::HalfPlane { youngs_modulus: e, poisson_ratio: nu, datum_depth: None };
+        s = s
+            .edit(|d| {
+                d.wheel.poisson_ratio = nu;
+                d.wheel.youngs_modulus = e;
+            })
+            .unwrap();
+        s = s
+            .edit(|d| {
+                d.counter_body = rollbem::scene::document::CounterBodyTable::HalfPlane {
+                    youngs_modulus: e,
+
+                    poisson_ratio: nu,
+
+                    datum_depth: None,
+                }
+            })
+            .unwrap();
         s
     };
     let s = pair(0.3, 210000.0);

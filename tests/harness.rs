@@ -2,8 +2,8 @@
 //! scene calls for, `rollbem check` and its failure on a violated declared tolerance. Reference values: the peer
 //! solver (Lemke, a pivoting method exact to round-off) and the declared tolerances.
 
+use rollbem::pipeline::run_scene;
 use rollbem::results::{Report, SolverRun};
-use rollbem::run::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use rollbem::tolerances as tol;
@@ -19,7 +19,7 @@ fn load(name: &str) -> Scene {
 }
 
 fn run(s: &Scene) -> Report {
-    run_scene(s, Path::new("<test>")).unwrap()
+    run_scene(s).unwrap()
 }
 
 fn get<'a>(r: &'a Report, solver: &str) -> &'a SolverRun {
@@ -40,8 +40,12 @@ fn normtang_and_clarabel_agree_with_lemke() {
     // Frictionless (constant and quadratic), decoupled frictional (Cattaneo), weakly coupled (ν = 0.45), and the
     // seed's strongly coupled ν = 0.1 cases, all at the default NORM-TANG tolerance 1e-10.
     let mut weak = load("cattaneo-decoupled.toml");
-    weak.contact.coupling = true;
-    weak.wheel.poisson_ratio = 0.45;
+    weak = weak
+        .edit(|d| {
+            d.contact.coupling = true;
+            d.wheel.poisson_ratio = 0.45;
+        })
+        .unwrap();
     let cases = vec![
         load("hertz-hub-fine.toml"),
         load("seed-fig6-quadratic.toml"),
@@ -52,17 +56,17 @@ fn normtang_and_clarabel_agree_with_lemke() {
     ];
     for s in &cases {
         let mut s = s.clone();
-        s.solvers.use_ = vec!["all".to_string()];
+        s = s.edit(|d| d.solvers.use_ = vec!["all".to_string()]).unwrap();
         let r = run(&s);
         let lemke = get(&r, "lemke");
         assert_eq!(lemke.status, Status::Solved);
         for other in r.runs.iter().filter(|x| x.solver != "lemke") {
-            assert_eq!(other.status, Status::Solved, "{} {}: {}", s.name, other.solver, other.message);
+            assert_eq!(other.status, Status::Solved, "{} {}: {}", s.name(), other.solver, other.explanation());
             let d = max_diff(lemke, other);
-            eprintln!("{} {}: max |Δp|,|Δq| / p0 = {d:.2e}, work {:?}", s.name, other.solver, other.work);
-            assert!(d <= tol::SOLVER_AGREEMENT, "{} {} vs lemke: {d:e}", s.name, other.solver);
+            eprintln!("{} {}: max |Δp|,|Δq| / p0 = {d:.2e}, work {:?}", s.name(), other.solver, other.work);
+            assert!(d <= tol::SOLVER_AGREEMENT, "{} {} vs lemke: {d:e}", s.name(), other.solver);
         }
-        if s.contact.friction == 0.0 {
+        if s.document().contact.friction == 0.0 {
             assert!(r.runs.iter().any(|x| x.solver == "clarabel"));
         }
     }
@@ -81,7 +85,7 @@ fn effects_and_problem_sizes_are_what_the_scene_calls_for() {
     // coupling = false: no "coupling" effect, and NORM-TANG converges in at most two outer iterations (the normal
     // problem does not depend on the shear: one NORM, one TANG, one confirming pass).
     let mut c = load("cattaneo-decoupled.toml");
-    c.solvers.use_ = vec!["pgs".to_string()];
+    c = c.edit(|d| d.solvers.use_ = vec!["pgs".to_string()]).unwrap();
     let r = run(&c);
     assert_eq!(r.effects, ["normal", "friction"]);
     let pgs = get(&r, "pgs");
@@ -98,18 +102,22 @@ fn effects_and_problem_sizes_are_what_the_scene_calls_for() {
 fn registry_all_runs_only_valid_solvers_and_refuses_invalid_ones() {
     // A moment load: only Lemke and the active-set method carry it (the QP and NORM-TANG splits do not).
     let mut s = load("cattaneo-decoupled.toml");
-    s.drive.rotation = None;
-    s.drive.moment = Some(18.742 * 1.0 + 187.42 * 0.001);
+    s = s
+        .edit(|d| {
+            d.drive.rotation = None;
+            d.drive.moment = Some(18.742 * 1.0 + 187.42 * 0.001);
+        })
+        .unwrap();
     let r = run(&s);
-    let names: Vec<&str> = r.runs.iter().map(|x| x.solver.0).collect();
+    let names: Vec<&str> = r.runs.iter().map(|x| x.solver.name()).collect();
     assert_eq!(names, ["lemke", "active_set"]);
-    s.solvers.use_ = vec!["pgs".to_string()];
-    let e = run_scene(&s, Path::new("x.toml")).unwrap_err().to_string();
+    s = s.edit(|d| d.solvers.use_ = vec!["pgs".to_string()]).unwrap();
+    let e = run_scene(&s).unwrap_err().to_string();
     assert!(e.contains("solvers.use") && e.contains("pgs") && e.contains("moment"), "{e}");
     // Frictional: clarabel alone does not apply, and says what does.
     let mut f = load("cattaneo-decoupled.toml");
-    f.solvers.use_ = vec!["clarabel".to_string()];
-    let e = run_scene(&f, Path::new("x.toml")).unwrap_err().to_string();
+    f = f.edit(|d| d.solvers.use_ = vec!["clarabel".to_string()]).unwrap();
+    let e = run_scene(&f).unwrap_err().to_string();
     assert!(e.contains("normtang_qp"), "{e}");
 }
 
@@ -117,15 +125,23 @@ fn registry_all_runs_only_valid_solvers_and_refuses_invalid_ones() {
 fn normtang_says_when_it_does_not_converge() {
     // One outer iteration cannot settle a coupled problem (ν = 0.1): status not_converged with the achieved change.
     let mut s = load("seed-fig09-mu05.toml");
-    s.solvers.use_ = vec!["pgs".to_string()];
-    s.solvers.set("pgs", "max_outer", 1);
+    s = s
+        .edit(|d| {
+            d.solvers.use_ = vec!["pgs".to_string()];
+            d.solvers.set("pgs", "max_outer", 1);
+        })
+        .unwrap();
     let r = run(&s);
     let p = get(&r, "pgs");
     assert_eq!(p.status, Status::NotConverged, "{}", p.message);
     assert!(p.message.contains("last change") && p.residuals.is_none(), "{}", p.message);
     // Too few sweeps for the inner solve.
-    s.solvers.set("pgs", "max_outer", 200);
-    s.solvers.set("pgs", "max_sweeps", 3);
+    s = s
+        .edit(|d| {
+            d.solvers.set("pgs", "max_outer", 200);
+            d.solvers.set("pgs", "max_sweeps", 3);
+        })
+        .unwrap();
     let r = run(&s);
     let p = get(&r, "pgs");
     assert_eq!(p.status, Status::NotConverged);
@@ -139,8 +155,12 @@ fn loose_tolerance_is_honest_about_its_error() {
     // is that of the inner Gauss–Seidel sweeps and load root-find, both stopped at 0.1 τ: measured |Δp|/p0 =
     // 1.6e-5 (0.16 τ), not "about τ" as this comment once said.
     let mut s = load("hertz-hub-fine.toml");
-    s.solvers.use_ = vec!["lemke".to_string(), "pgs".to_string()];
-    s.solvers.set("pgs", "tolerance", 1e-4);
+    s = s
+        .edit(|d| {
+            d.solvers.use_ = vec!["lemke".to_string(), "pgs".to_string()];
+            d.solvers.set("pgs", "tolerance", 1e-4);
+        })
+        .unwrap();
     let r = run(&s);
     let d = max_diff(get(&r, "lemke"), get(&r, "pgs"));
     eprintln!("pgs at 1e-4: |Δp|/p0 = {d:.2e}");

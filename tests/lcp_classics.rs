@@ -16,7 +16,7 @@ use faer::Mat;
 use lcp_enum::{enumerate, is_p_matrix, scale};
 use rollbem::lcp_io;
 use rollbem::solvers::lemke::{self, LemkeOutcome, LemkeSettings};
-use rollbem::solvers::{Lcp, Status};
+use rollbem::solvers::{Lcp, Termination};
 use std::path::{Path, PathBuf};
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -31,7 +31,7 @@ fn lcp(rows: &[&[f64]], q: &[f64]) -> Lcp {
 
 /// The LCP conditions for Lemke's answer, on the original data: z ≥ 0, w = Mz + q ≥ 0, z_i w_i = 0.
 fn assert_solves(p: &Lcp, out: &LemkeOutcome, what: &str) {
-    assert_eq!(out.status, Status::Solved, "{what}: {}", out.message);
+    assert_eq!(out.status, Termination::Solved, "{what}: {}", out.message);
     let s = scale(p);
     let zs = out.z.iter().fold(1.0_f64, |m, v| m.max(v.abs()));
     let tol = 1e-10 * s * zs;
@@ -251,12 +251,12 @@ fn murty_beyond_ten_ends_solved_or_at_the_pivot_limit() {
         for (engine, out) in both(&p) {
             eprintln!("Murty n = {n} ({engine}): {} after {} pivots", out.status, out.pivots);
             match out.status {
-                Status::Solved => {
+                Termination::Solved => {
                     assert_solves(&p, &out, engine);
                     let (_, zt, _) = textbook_lemke(&p, &vec![1.0; n]);
                     assert!(out.z.iter().zip(&zt).all(|(a, b)| (a - b).abs() <= 1e-9 * (1.0 + b.abs())));
                 }
-                Status::NotConverged => assert_eq!(out.pivots, limit),
+                Termination::NotConverged => assert_eq!(out.pivots, limit),
                 s => panic!("Murty n = {n} ({engine}): unexpected {s}: {}", out.message),
             }
         }
@@ -360,7 +360,7 @@ fn random_degenerate_integer_problems() {
         for (engine, out) in both(&p) {
             let what = format!("case {case} ({engine}): M = {:?}, q = {:?}", p.m, p.q);
             if sols.is_empty() {
-                assert_eq!(out.status, Status::RayTermination, "{what}: infeasible by enumeration");
+                assert_eq!(out.status, Termination::RayTermination, "{what}: infeasible by enumeration");
             } else {
                 assert_solves(&p, &out, &what);
                 if sols.len() == 1 {
@@ -412,7 +412,7 @@ fn infeasible_problems_end_on_a_secondary_ray() {
     for (name, p) in cases {
         assert!(enumerate(&p).is_empty(), "{name}: the enumeration must find no solution");
         for (engine, out) in both(&p) {
-            assert_eq!(out.status, Status::RayTermination, "{name} ({engine}): {}", out.message);
+            assert_eq!(out.status, Termination::RayTermination, "{name} ({engine}): {}", out.message);
         }
     }
     // The LP-KKT case has no row certificate (each row has a positive entry): only the enumeration (and the
@@ -439,7 +439,7 @@ fn solvable_problem_where_lemke_ends_on_a_ray() {
     let (ok, _, _) = textbook_lemke(&p, &[1.0, 1.0]);
     assert!(!ok, "the textbook Lemke ends on a ray too");
     for (engine, out) in both(&p) {
-        assert_eq!(out.status, Status::RayTermination, "{engine}: {}", out.message);
+        assert_eq!(out.status, Termination::RayTermination, "{engine}: {}", out.message);
     }
 }
 
@@ -558,7 +558,7 @@ fn reference_dir() -> PathBuf {
 }
 
 /// The problems stored in reference/lcp/ (file name, remark written after q, problem, expected outcome).
-fn reference_problems() -> Vec<(&'static str, &'static str, Lcp, Status)> {
+fn reference_problems() -> Vec<(&'static str, &'static str, Lcp, Termination)> {
     vec![
         (
             "murty_n6.dat",
@@ -566,34 +566,34 @@ fn reference_problems() -> Vec<(&'static str, &'static str, Lcp, Status)> {
              q_i = -(2^6 + ... + 2^(6-i+1)). Murty 1978; Murty 1988 ch. 6. Unique solution (P-matrix);\n\
              textbook Lemke (covering vector e) takes 2^6 = 64 pivots.",
             murty(6),
-            Status::Solved,
+            Termination::Solved,
         ),
         (
             "cps_segment.dat",
             "Infinitely many solutions: z1 + z2 = 1, z >= 0 (Cottle-Pang-Stone 1992, Remark 4.1.14).",
             lcp(&[&[1., 1.], &[1., 1.]], &[-1., -1.]),
-            Status::Solved,
+            Termination::Solved,
         ),
         (
             "degenerate_ties.dat",
             "Degenerate: repeated rows and columns of M and repeated entries of q (ties in every ratio test).\n\
              M is PSD (copositive-plus); solvable (enumeration).",
             degenerate_cases().swap_remove(3).1,
-            Status::Solved,
+            Termination::Solved,
         ),
         (
             "lp_kkt_infeasible.dat",
             "KKT LCP of the infeasible LP {x1 >= 1, -x1 >= 0}: M = [[0, -A^T], [A, 0]] is skew, hence\n\
              copositive-plus; no solution (enumeration), so Lemke must end on a secondary ray (CPS Thm 4.4.13).",
             lcp(&[&[0., -1., 1.], &[1., 0., 0.], &[-1., 0., 0.]], &[1., -1., 0.]),
-            Status::RayTermination,
+            Termination::RayTermination,
         ),
         (
             "lemke_ray_solvable.dat",
             "Solvable (enumeration) but Lemke ends on a secondary ray: M is not copositive, outside the classes\n\
              Lemke processes (CPS 4.4). A documented limitation of the method, not a solver bug.",
             lemke_fails_on_a_solvable_problem(),
-            Status::RayTermination,
+            Termination::RayTermination,
         ),
     ]
 }
@@ -619,7 +619,7 @@ fn reference_files_load_and_lemke_matches_the_enumeration() {
         let sols = enumerate(&loaded);
         for (engine, out) in both(&loaded) {
             assert_eq!(out.status, expected, "{file} ({engine}): {}", out.message);
-            if expected == Status::Solved {
+            if expected == Termination::Solved {
                 assert_solves(&loaded, &out, file);
                 if file != "cps_segment.dat" {
                     assert_is_enumerated(&out, &sols, file);

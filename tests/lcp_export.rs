@@ -3,10 +3,10 @@
 //! bit — also through the command line (`rollbem lcp export` / `rollbem lcp solve --json`).
 
 use rollbem::lcp_io;
-use rollbem::run::scene_lcp;
+use rollbem::pipeline::Model;
 use rollbem::scene::Scene;
 use rollbem::solvers::lemke::{solve, LemkeSettings};
-use rollbem::solvers::Status;
+use rollbem::solvers::Termination;
 use std::path::Path;
 use std::process::Command;
 
@@ -23,7 +23,7 @@ fn exported_solved_from_file_and_solved_directly_are_identical() {
     for name in SCENES {
         let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference").join(name);
         let s = Scene::from_file(&p).unwrap();
-        let lcp = scene_lcp(&s, &p).unwrap();
+        let lcp = Model::build(&s).unwrap().lcp(&s).unwrap();
         let file = dir.path().join("x.dat");
         lcp_io::write(&lcp, &file).unwrap();
         let back = lcp_io::read(&file).unwrap();
@@ -35,7 +35,7 @@ fn exported_solved_from_file_and_solved_directly_are_identical() {
         }
         let direct = solve(&lcp, &LemkeSettings::default());
         let from_file = solve(&back, &LemkeSettings::default());
-        assert_eq!(direct.status, Status::Solved, "{name}");
+        assert_eq!(direct.status, Termination::Solved, "{name}");
         assert_eq!(direct.pivots, from_file.pivots);
         assert_eq!(direct.z, from_file.z, "{name}: z");
 
@@ -58,7 +58,7 @@ fn exported_solved_from_file_and_solved_directly_are_identical() {
 fn gross_sliding_has_no_lcp_to_export_and_bad_files_are_refused() {
     let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/scenes/gross-sliding.toml");
     let s = Scene::from_file(&p).unwrap();
-    let e = scene_lcp(&s, &p).unwrap_err().to_string();
+    let e = Model::build(&s).unwrap().lcp(&s).unwrap_err().to_string();
     assert!(e.contains("μP"), "{e}");
     let dir = tempfile::tempdir().unwrap();
     let bad = dir.path().join("bad.dat");

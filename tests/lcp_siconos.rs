@@ -21,7 +21,7 @@ use lcp_enum::{enumerate, is_p_matrix};
 use rollbem::lcp_io;
 use rollbem::lcp_residual::residuals;
 use rollbem::solvers::lemke::{self, LemkeSettings};
-use rollbem::solvers::{Lcp, Status};
+use rollbem::solvers::{Lcp, Termination};
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 
@@ -141,13 +141,13 @@ fn lemke_solves_every_solvable_file_to_round_off_and_agrees_with_siconos() {
         // The enumeration for small files: every vertex solution, independent of Lemke.
         let sols = (n <= 10).then(|| enumerate(&lcp));
         if let Some(&(solvable, why)) = failures.get(name.as_str()) {
-            assert_eq!(out.status, Status::RayTermination, "{name} ({why}): {}", out.message);
+            assert_eq!(out.status, Termination::RayTermination, "{name} ({why}): {}", out.message);
             assert!(!sic.solved, "{name}: Siconos' Lemke does not solve it either ({why})");
             let sols = sols.expect("expected failures are small");
             assert_eq!(!sols.is_empty(), solvable, "{name}: the enumeration says solvable = {}", !sols.is_empty());
             continue;
         }
-        assert_eq!(out.status, Status::Solved, "{name}: {}", out.message);
+        assert_eq!(out.status, Termination::Solved, "{name}: {}", out.message);
         assert!(r.max <= ROUND_OFF, "{name}: residuals {r:?}");
         // Siconos solves the same files, and its answer passes rollbem's residuals (to a looser bound: Siconos'
         // tableau accumulates round-off over its pivots; the largest here is tobenna's, 126 iterations).

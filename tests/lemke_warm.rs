@@ -16,13 +16,13 @@ use faer::Mat;
 use lcp_enum::{enumerate, is_p_matrix, scale};
 use rollbem::scene::Scene;
 use rollbem::solvers::lemke::{self, LemkeOutcome, LemkeSettings};
-use rollbem::solvers::{Lcp, Status};
+use rollbem::solvers::{Lcp, Termination};
 use rollbem::source::{self, Blocks};
 use std::path::Path;
 
 /// The LCP conditions on the original data: z ≥ 0, w = Mz + q ≥ 0, z_i w_i = 0.
 fn assert_solves(p: &Lcp, out: &LemkeOutcome, what: &str) {
-    assert_eq!(out.status, Status::Solved, "{what}: {}", out.message);
+    assert_eq!(out.status, Termination::Solved, "{what}: {}", out.message);
     let s = scale(p);
     let zs = out.z.iter().fold(1.0_f64, |m, v| m.max(v.abs()));
     let tol = 1e-10 * s * zs;
@@ -72,12 +72,16 @@ fn reference_lcps() -> Vec<(String, Lcp, usize)> {
         .map(|p| (p.file_stem().unwrap().to_string_lossy().into_owned(), Scene::from_file(p).unwrap()))
         .collect();
     let mut coupled = Scene::from_file(&dir.join("cattaneo-decoupled.toml")).unwrap();
-    coupled.contact.coupling = true;
-    coupled.mesh.contact_elements = 100;
+    coupled = coupled
+        .edit(|d| {
+            d.contact.coupling = true;
+            d.mesh.contact_elements = 100;
+        })
+        .unwrap();
     scenes.push(("cattaneo-coupled-100".into(), coupled));
     for (name, s) in scenes {
         let fl = source::build(&s, Blocks::All).unwrap().flex;
-        let Ok(p) = rollbem::run::build_problem(&s, &fl, Path::new("<test>")) else { continue };
+        let Ok(p) = rollbem::pipeline::stages::scene_problem(&s, &fl) else { continue };
         if !matches!(p.kind, rollbem::formulation::ProblemKind::GrossSliding { .. }) {
             out.push((name, p.lcp().clone(), fl.n()));
         }
@@ -92,7 +96,7 @@ fn warm_start_on_the_frictional_lcps_of_the_reference_scenes() {
     let mut saved = (0usize, 0usize);
     for (name, lcp, nf) in reference_lcps() {
         let cold = lemke::solve(&lcp, &st);
-        if cold.status != Status::Solved {
+        if cold.status != Termination::Solved {
             // Solved by the contact solver with flipped slack signs (another LCP): not this test's business.
             continue;
         }
@@ -133,7 +137,7 @@ fn a_guess_of_the_wrong_length_falls_back_to_the_cold_start() {
     let st = LemkeSettings::default();
     let w = lemke::solve_warm(&lcp, &st, &[true]);
     let cold = lemke::solve(&lcp, &st);
-    assert_eq!(w.status, Status::Solved);
+    assert_eq!(w.status, Termination::Solved);
     assert_eq!(w.z, cold.z);
     assert!(w.message.contains("warm start abandoned") && w.message.contains("cold start"), "{}", w.message);
 }
@@ -255,7 +259,7 @@ fn warm_start_on_degenerate_and_infeasible_classics() {
         assert!(enumerate(p).is_empty(), "infeasible case {c}");
         for g in [vec![false, false], vec![true, false], vec![true, true]] {
             let out = lemke::solve_warm(p, &st, &g);
-            assert_eq!(out.status, Status::RayTermination, "infeasible case {c}, guess {g:?}: {}", out.message);
+            assert_eq!(out.status, Termination::RayTermination, "infeasible case {c}, guess {g:?}: {}", out.message);
         }
     }
 }
@@ -268,17 +272,21 @@ fn warm_start_from_the_previous_load_step() {
     // 132, 132, 134, 145, 148 cold).
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/scenes");
     let mut s = Scene::from_file(&dir.join("cattaneo-decoupled.toml")).unwrap();
-    s.contact.coupling = true;
-    s.mesh.contact_elements = 100;
+    s = s
+        .edit(|d| {
+            d.contact.coupling = true;
+            d.mesh.contact_elements = 100;
+        })
+        .unwrap();
     let st = LemkeSettings::default();
-    let p_load = s.drive.normal_load.unwrap();
-    let mu = s.contact.friction;
+    let p_load = s.document().drive.normal_load.unwrap();
+    let mu = s.document().contact.friction;
     let mut guess: Option<Vec<bool>> = None;
     let (mut cold_total, mut warm_total) = (0, 0);
     for step in 1..=6 {
-        s.drive.tangential_load = Some(0.1 * step as f64 * mu * p_load);
+        s = s.edit(|d| d.drive.tangential_load = Some(0.1 * step as f64 * mu * p_load)).unwrap();
         let fl = source::build(&s, Blocks::All).unwrap().flex;
-        let p = rollbem::run::build_problem(&s, &fl, Path::new("<test>")).unwrap();
+        let p = rollbem::pipeline::stages::scene_problem(&s, &fl).unwrap();
         let lcp = p.lcp().clone();
         let cold = lemke::solve(&lcp, &st);
         assert_solves(&lcp, &cold, &format!("step {step}, cold"));

@@ -2,6 +2,7 @@
 //! for a look (e.g. `rsvg-convert -w 1100 dir/map.svg -o map.png`).
 
 use std::path::Path;
+use std::process::Command;
 
 use rollbem::plot::{Appearance, Chart, ContourMap, Field, PlotError, Series, Style};
 
@@ -222,4 +223,40 @@ fn plot_of_a_result_draws_tractions_with_hertz_states_and_slip_velocity() {
     run("reference/scenes/seed-fig13-mu03.toml", "r.json");
     assert!(tmp.path().join("r.lemke.slip_velocity.svg").exists());
     assert!(tmp.path().join("r.lemke.states.svg").exists());
+}
+
+/// `rollbem plot` on a load path's CSV with its scene draws the loop, the stick zone and the approach, with
+/// Mindlin–Deresiewicz beside them; on a sweep's CSV it needs the sweep's analysis (not guessed).
+#[test]
+fn plot_draws_a_path_csv_with_its_theory_and_refuses_a_sweep_csv_without_its_analysis() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/scenes/md-fretting-loop.toml");
+    let csv = dir.path().join("md.csv");
+    let bin = env!("CARGO_BIN_EXE_rollbem");
+    let o = Command::new(bin)
+        .args(["run", "--quiet", "--solver", "active_set", "--path-csv"])
+        .arg(&csv)
+        .arg(&scene)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = Command::new(bin).arg("plot").arg(&csv).arg("--scene").arg(&scene).output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for what in ["loop", "stick-zone", "approach"] {
+        let svg = std::fs::read_to_string(dir.path().join(format!("md-{what}.svg"))).unwrap();
+        assert!(svg.contains("active_set"), "{what}: the solver's series");
+        if what != "approach" {
+            assert!(svg.contains("Mindlin–Deresiewicz"), "{what}: the theory beside it");
+        }
+    }
+    // Without the scene: the same figures, no theory, and the output says so.
+    let o = Command::new(bin).arg("plot").arg(&csv).arg("--out").arg(dir.path().join("bare")).output().unwrap();
+    assert!(String::from_utf8_lossy(&o.stdout).contains("skipped theory: no --scene given"));
+    // A sweep's CSV without --analysis is bad input naming the flag.
+    let sweep = dir.path().join("s.csv");
+    let keys = vec!["mesh.contact_elements".to_string()];
+    std::fs::write(&sweep, rollbem::sweep::row::header(&keys).join(",") + "\n").unwrap();
+    let o = Command::new(bin).arg("plot").arg(&sweep).output().unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("--analysis"));
 }

@@ -17,10 +17,14 @@
 use faer::Mat;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, RngSeed, TestCaseError, TestRunner};
-use rollbem::run::{residual_bounds, run_scene};
-use rollbem::scene::{ContactSpec, Drive, ElementKind, Expect, MeshSpec, Rolling, Scene, SolverSpec, Support, Wheel};
+use rollbem::pipeline::run_scene;
+use rollbem::pipeline::stages::residual_bounds;
+use rollbem::scene::document::{
+    ContactTable, CounterBodyTable, DriveTable, MeshTable, RollingTable, SceneDocument, SolversTable, WheelTable,
+};
+use rollbem::scene::{ElementKind, RollingMode, Scene, Support};
 use rollbem::solvers::lemke::{self, LemkeOutcome, LemkeSettings};
-use rollbem::solvers::{Lcp, Status};
+use rollbem::solvers::{Lcp, Status, Termination};
 use std::path::Path;
 
 /// A deterministic runner: fixed seed and algorithm, no persistence, bounded shrinking.
@@ -158,10 +162,10 @@ impl SceneParams {
         std::f64::consts::PI * e_star * a * a / (4.0 * self.radius)
     }
 
-    fn scene(&self) -> Scene {
+    fn scene(&self) -> SceneDocument {
         let r = self.radius;
         let p = self.hertz_load();
-        let mut drive = Drive::default();
+        let mut drive = DriveTable::default();
         match self.normal {
             Normal::Approach { c } => drive.normal_approach = Some(c * self.a_over_r * self.a_over_r * r),
             Normal::Load => drive.normal_load = Some(p),
@@ -177,11 +181,11 @@ impl SceneParams {
             Some(f) => Support::Hub { radius: f * r },
             None => Support::TopArc { angle_deg: self.top_arc_deg },
         };
-        Scene {
+        SceneDocument {
             name: "property".into(),
             description: format!("{self:?}"),
             units: None,
-            wheel: Wheel {
+            wheel: WheelTable {
                 radius: r,
                 youngs_modulus: self.youngs,
                 poisson_ratio: self.nu,
@@ -190,23 +194,24 @@ impl SceneParams {
                 datum_depth: None,
                 profile: None,
             },
-            mesh: MeshSpec::arc(
-                if self.quadratic { ElementKind::Quadratic } else { ElementKind::Constant },
-                self.contact_arc_deg,
-                self.contact_elements,
-                self.other_elements,
-            ),
-            counter_body: Default::default(),
+            mesh: MeshTable {
+                element: if self.quadratic { ElementKind::Quadratic } else { ElementKind::Constant },
+                contact_arc_deg: Some(self.contact_arc_deg),
+                contact_half_width: None,
+                contact_elements: self.contact_elements,
+                other_elements: Some(self.other_elements),
+            },
+            counter_body: CounterBodyTable::Rigid,
             steps: Vec::new(),
-            contact: ContactSpec { friction: self.friction, coupling: self.coupling },
+            contact: ContactTable { friction: self.friction, coupling: self.coupling },
             drive,
-            rolling: self.creepage.map(|creepage| Rolling {
-                mode: rollbem::scene::RollingMode::Seed,
+            rolling: self.creepage.map(|creepage| RollingTable {
+                mode: RollingMode::Seed,
                 creepage: Some(creepage),
                 direction: 1,
             }),
-            solvers: SolverSpec { use_: vec!["all".to_string()], ..SolverSpec::default() },
-            checks: Expect::default(),
+            solvers: SolversTable::using(&["all"]),
+            checks: None,
             stresses: None,
         }
     }
@@ -218,8 +223,9 @@ fn random_valid_scenes_are_solved_or_refused_cleanly() {
     check(SCENE_CASES, 0x5EED_0001, scene_params(), |params| {
         let scene = params.scene();
         let path = Path::new("<property>");
-        scene.validate(path).map_err(|e| TestCaseError::fail(format!("generator made an invalid scene: {e}")))?;
-        let report = match run_scene(&scene, path) {
+        let scene = Scene::from_document(scene, path)
+            .map_err(|e| TestCaseError::fail(format!("generator made an invalid scene: {e}")))?;
+        let report = match run_scene(&scene) {
             Ok(r) => r,
             Err(e) => {
                 // A clean refusal (e.g. a singular BEM system) must say why.
@@ -275,10 +281,10 @@ fn random_valid_scenes_are_solved_or_refused_cleanly() {
                 // both relative to a pressure scale, and equilibrium with every load the scene prescribes. The
                 // pressure scale is the peak nodal pressure, floored by Hertz's p0 = E* a / (2R) for the generator's
                 // target a/R (a scene may end without contact, with p_max = 0).
-                let bound = residual_bounds(&scene, run.solver.0).1;
+                let bound = residual_bounds(&scene, run.solver).1;
                 let p0 = params.youngs / (1.0 - params.nu * params.nu) * params.a_over_r / 2.0;
                 let pmax = run.nodes.iter().map(|n| n.pressure).fold(p0, f64::max);
-                let mu = scene.contact.friction;
+                let mu = scene.friction();
                 let tension = run.nodes.iter().map(|n| -n.pressure).fold(0.0, f64::max);
                 prop_assert!(
                     tension <= bound * pmax,
@@ -291,7 +297,7 @@ fn random_valid_scenes_are_solved_or_refused_cleanly() {
                     "{}: |q| − μp = {cone:e} at a node (μ = {mu}, max(p_max, p0) = {pmax:e})",
                     run.solver
                 );
-                if let Some(p) = scene.drive.normal_load {
+                if let Some(p) = scene.document().drive.normal_load {
                     prop_assert!(
                         (rs.normal - p).abs() <= bound * p,
                         "{}: normal resultant {:e} against the applied load {p:e}",
@@ -299,7 +305,7 @@ fn random_valid_scenes_are_solved_or_refused_cleanly() {
                         rs.normal
                     );
                 }
-                if let Some(q) = scene.drive.tangential_load {
+                if let Some(q) = scene.document().drive.tangential_load {
                     prop_assert!(
                         (rs.tangential - q).abs() <= bound * q.abs().max(mu * rs.normal.abs()),
                         "{}: tangential resultant {:e} against the applied load {q:e}",
@@ -310,7 +316,7 @@ fn random_valid_scenes_are_solved_or_refused_cleanly() {
             } else {
                 prop_assert!(run.residuals.is_none(), "{} {}: residuals on an unsolved run", run.solver, run.status);
                 prop_assert!(run.resultants.is_none(), "{} {}: resultants on an unsolved run", run.solver, run.status);
-                prop_assert!(!run.message.trim().is_empty(), "{} {}: no message", run.solver, run.status);
+                prop_assert!(!run.explanation().trim().is_empty(), "{} {}: no message", run.solver, run.status);
             }
         }
         Ok(())
@@ -351,7 +357,7 @@ use = ["lemke", "normtang_qp"]
 #[test]
 fn random_valid_scenes_solvers_agree_on_existence() {
     let assert_agree = |scene: &Scene| -> Result<(), TestCaseError> {
-        let Ok(report) = run_scene(scene, Path::new("<property>")) else { return Ok(()) };
+        let Ok(report) = run_scene(scene) else { return Ok(()) };
         // Solvers agree on existence: `infeasible` claims no solution exists, so it must not stand next to a run
         // whose solution passed the solver-independent residual check.
         if let Some(ok) = report.runs.iter().find(|r| r.status == Status::Solved) {
@@ -372,7 +378,12 @@ fn random_valid_scenes_solvers_agree_on_existence() {
     if let Err(e) = assert_agree(&fixed) {
         panic!("reproducer: {e}");
     }
-    check(SCENE_CASES, 0x5EED_0001, scene_params(), |params| assert_agree(&params.scene()));
+    check(SCENE_CASES, 0x5EED_0001, scene_params(), |params| {
+        match Scene::from_document(params.scene(), Path::new("<p>")) {
+            Ok(scene) => assert_agree(&scene),
+            Err(e) => Err(TestCaseError::fail(format!("generator made an invalid scene: {e}"))),
+        }
+    });
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -463,7 +474,7 @@ fn lemke_solves_p_matrix_lcps_and_engines_agree() {
     check(2000, 0x5EED_0002, p_matrix_problem(), |p| {
         let (a, b) = both(&p);
         for (name, out) in [("block", &a), ("dense", &b)] {
-            prop_assert_eq!(out.status, Status::Solved, "{} engine: {}", name, out.message);
+            prop_assert_eq!(out.status, Termination::Solved, "{} engine: {}", name, out.message);
             prop_assert!(p.violation(&out.z) <= LCP_EPS, "{} engine: violation {:.3e}", name, p.violation(&out.z));
         }
         let diff = a.z.iter().zip(&b.z).fold(0.0_f64, |m, (x, y)| m.max((x - y).abs()));
@@ -547,11 +558,11 @@ fn lemke_on_copositive_plus_solves_or_proves_infeasible() {
         let exists = brute_force_solution(&p);
         for (name, out) in [("block", &a), ("dense", &b)] {
             match out.status {
-                Status::Solved => {
+                Termination::Solved => {
                     let v = p.violation(&out.z);
                     prop_assert!(v <= LCP_EPS, "{} engine: Solved but violation {:.3e}: z = {:?}", name, v, out.z);
                 }
-                Status::RayTermination => {
+                Termination::RayTermination => {
                     prop_assert!(!strict, "{} engine: ray on a strictly copositive M ({})", name, out.message);
                     prop_assert!(
                         exists.is_none(),
@@ -565,7 +576,7 @@ fn lemke_on_copositive_plus_solves_or_proves_infeasible() {
             }
         }
         if exists.is_some() {
-            prop_assert_eq!(a.status, Status::Solved, "a solution exists; block engine: {}", a.message);
+            prop_assert_eq!(a.status, Termination::Solved, "a solution exists; block engine: {}", a.message);
         }
         Ok(())
     });
@@ -604,8 +615,8 @@ fn lemke_on_copositive_never_panics_and_solved_is_valid() {
     for p in &fixed {
         let (a, b) = both(p);
         for out in [&a, &b] {
-            assert!(matches!(out.status, Status::Solved | Status::RayTermination), "{p:?}: {}", out.message);
-            if out.status == Status::Solved {
+            assert!(matches!(out.status, Termination::Solved | Termination::RayTermination), "{p:?}: {}", out.message);
+            if out.status == Termination::Solved {
                 assert!(p.violation(&out.z) <= LCP_EPS, "{p:?}: {:?}", out.z);
             }
         }
@@ -614,13 +625,13 @@ fn lemke_on_copositive_never_panics_and_solved_is_valid() {
         let (a, b) = both(&p);
         for (name, out) in [("block", &a), ("dense", &b)] {
             prop_assert!(
-                matches!(out.status, Status::Solved | Status::RayTermination),
+                matches!(out.status, Termination::Solved | Termination::RayTermination),
                 "{} engine: {} ({})",
                 name,
                 out.status,
                 out.message
             );
-            if out.status == Status::Solved {
+            if out.status == Termination::Solved {
                 let v = p.violation(&out.z);
                 prop_assert!(v <= LCP_EPS, "{} engine: Solved but violation {:.3e}: z = {:?}", name, v, out.z);
             }

@@ -2,8 +2,8 @@
 //! displacement-driven frictional seed scene solved again in the loading formulation (its resultants as loads)
 //! meets the residual bound of the seed's cases in both formulations (issue 3: ≤ 1e-10).
 
-use rollbem::run::run_scene;
-use rollbem::scene::Scene;
+use rollbem::pipeline::run_scene;
+use rollbem::scene::{Dof, Scene};
 use rollbem::solvers::Status;
 use std::path::{Path, PathBuf};
 
@@ -24,7 +24,7 @@ fn every_reference_scene_passes_its_checks() {
     assert!(all.len() >= 8, "expected at least 8 reference scenes, found {}", all.len());
     for p in &all {
         let s = Scene::from_file(p).unwrap();
-        let r = run_scene(&s, p).unwrap();
+        let r = run_scene(&s).unwrap();
         let failed: Vec<_> = r.checks.iter().filter(|c| !c.pass).map(|c| c.name.clone()).collect();
         assert!(failed.is_empty(), "{}: failed checks {failed:?}", p.display());
         for run in r.runs.iter().filter(|x| x.status == Status::Solved) {
@@ -40,25 +40,28 @@ fn seed_frictional_scenes_in_both_formulations() {
         let s = Scene::from_file(&p).unwrap();
         // Load paths (`[[steps]]`) are checked in tests/history.rs; this test is the static
         // displacement-driven seed scenes re-posed under their own resultants.
-        if s.contact.friction == 0.0 || s.drive.normal_load.is_some() || !s.steps.is_empty() {
+        if s.document().contact.friction == 0.0
+            || s.document().drive.normal_load.is_some()
+            || !s.document().steps.is_empty()
+        {
             continue;
         }
         checked.push(p.file_stem().unwrap().to_string_lossy().into_owned());
-        let r = run_scene(&s, &p).unwrap();
+        let r = run_scene(&s).unwrap();
         let d = &r.runs[0];
         assert_eq!(d.status, Status::Solved, "{}", p.display());
         assert_eq!(d.formulation, "displacement");
         let f = d.resultants.unwrap();
-        let mut l = s.clone();
-        l.drive = rollbem::scene::Drive {
-            normal_load: Some(f.normal),
-            tangential_load: Some(f.tangential),
-            moment: Some(f.moment),
-            ..Default::default()
-        };
-        let rl = run_scene(&l, &p).unwrap();
+        let l = s
+            .with_drive(rollbem::scene::Drive {
+                normal: Dof::Load(f.normal),
+                tangential: Dof::Load(f.tangential),
+                rotational: Dof::Load(f.moment),
+            })
+            .unwrap();
+        let rl = run_scene(&l).unwrap();
         let lr = &rl.runs[0];
-        assert_eq!(lr.status, Status::Solved, "{} (loading): {}", p.display(), lr.message);
+        assert_eq!(lr.status, Status::Solved, "{} (loading): {}", p.display(), lr.explanation());
         assert_eq!(lr.formulation, "loading");
         assert!(lr.residuals.unwrap().max() <= 1e-10, "{} (loading): {:?}", p.display(), lr.residuals);
         let p0 = d.contact.as_ref().unwrap().peak_pressure;

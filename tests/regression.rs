@@ -11,7 +11,7 @@
 //! moment of a symmetric contact, the shear of a frictionless one) is compared on that scale, not on its own. Scenes
 //! with `[stresses]` also record the largest principal shear (to itself) and its depth (to R).
 
-use rollbem::run::run_scene;
+use rollbem::pipeline::run_scene;
 use rollbem::scene::Scene;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -45,8 +45,8 @@ fn figures() -> BTreeMap<String, Vec<String>> {
     let mut out = BTreeMap::new();
     for p in paths {
         let mut s = Scene::from_file(&p).unwrap();
-        s.solvers.use_ = vec!["lemke".to_string()];
-        let r = run_scene(&s, &p).unwrap();
+        s = s.edit(|d| d.solvers.use_ = vec!["lemke".to_string()]).unwrap();
+        let r = run_scene(&s).unwrap();
         let l = &r.runs[0];
         let f = |v: Option<f64>| v.map(|v| format!("{v:e}")).unwrap_or_default();
         let (res, rb, c) = (l.resultants, l.rigid_body, l.contact.as_ref());
@@ -54,7 +54,7 @@ fn figures() -> BTreeMap<String, Vec<String>> {
         let max_tau1 =
             l.stresses.as_ref().and_then(|st| st.field.maximum(rollbem::stresses::StressQuantity::PrincipalShear));
         out.insert(
-            s.name.clone(),
+            s.name().to_string(),
             vec![
                 l.status.to_string(),
                 f(res.map(|x| x.normal)),
@@ -112,7 +112,7 @@ fn key_figures_match_the_recorded_values() {
     for (scene, vals) in &now {
         let old = &recorded[scene];
         let s = Scene::from_file(&dir.join(format!("{scene}.toml"))).unwrap();
-        let r = s.wheel.radius;
+        let r = s.document().wheel.radius;
         let p = vals[1].parse::<f64>().unwrap_or(0.0).abs();
         // One value per figure, now and recorded, before zipping them (a short row would compare only its head).
         assert_eq!(vals.len(), FIGURES.len(), "{scene}: figures now");

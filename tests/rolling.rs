@@ -3,9 +3,9 @@
 //! load-driven runs are inverse problems), between solvers (Lemke and PGS), and against Coulomb's law node by node.
 //! The finite wheel rolls too; its free-rolling creepage (Q = 0) is reported.
 
+use rollbem::pipeline::run_scene;
 use rollbem::references::metrics;
 use rollbem::results::{Report, SolverRun};
-use rollbem::run::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use std::path::Path;
@@ -16,7 +16,7 @@ fn scene(text: &str) -> Scene {
 }
 
 fn run(s: &Scene) -> Report {
-    run_scene(s, Path::new("<test>")).unwrap()
+    run_scene(s).unwrap()
 }
 
 fn get<'a>(r: &'a Report, solver: &str) -> &'a SolverRun {
@@ -67,7 +67,7 @@ fn carter_stick_zone_force_and_traction_converge() {
                 let s = carter_scene(n, &format!("creepage = {xi}"), "", dir, r#"["lemke"]"#);
                 let r = run(&s);
                 let l = get(&r, "lemke");
-                assert_eq!(l.status, Status::Solved, "{}", l.message);
+                assert_eq!(l.status, Status::Solved, "{}", l.explanation());
                 let m = metrics(&s, l);
                 let (cerr, centre, rms) = (
                     m.carter_c_err_elements.unwrap(),
@@ -114,7 +114,7 @@ fn full_slip_above_the_critical_creepage_and_no_force_at_zero() {
         let r = run(&carter_scene(200, &format!("creepage = {xi}"), "", 1, r#"["lemke", "pgs"]"#));
         for solver in ["lemke", "pgs"] {
             let l = get(&r, solver);
-            assert_eq!(l.status, Status::Solved, "{}", l.message);
+            assert_eq!(l.status, Status::Solved, "{}", l.explanation());
             let f = l.resultants.unwrap();
             assert!((f.tangential / (0.3 * f.normal) + xi.signum()).abs() <= 1e-9, "{solver}: Q = {}", f.tangential);
             assert_eq!(l.contact.as_ref().unwrap().nodes_stick, 0);
@@ -137,7 +137,7 @@ fn creepage_and_load_driven_runs_are_inverse_to_each_other() {
         let b = run(&carter_scene(150, "", &format!("tangential_load = {q:e}"), 1, r#"["lemke", "pgs"]"#));
         for solver in ["lemke", "pgs"] {
             let l = get(&b, solver);
-            assert_eq!(l.status, Status::Solved, "{solver}: {}", l.message);
+            assert_eq!(l.status, Status::Solved, "{solver}: {}", l.explanation());
             let back = l.rolling.unwrap();
             assert!(!back.creepage_prescribed);
             let err = (back.creepage.unwrap() - xi).abs() / xi.abs();
@@ -155,11 +155,15 @@ fn lemke_and_pgs_agree_and_coulomb_holds_node_by_node() {
     // shear opposes their slip velocity.
     for (xi, nu, coupling) in [(0.001, 0.3, "false"), (0.002, 0.3, "true"), (-0.0015, 0.45, "true")] {
         let mut s = carter_scene(200, &format!("creepage = {xi}"), "", 1, r#"["lemke", "pgs"]"#);
-        s.wheel.poisson_ratio = nu;
-        s.contact.coupling = coupling == "true";
+        s = s
+            .edit(|d| {
+                d.wheel.poisson_ratio = nu;
+                d.contact.coupling = coupling == "true";
+            })
+            .unwrap();
         let r = run(&s);
         let (l, p) = (get(&r, "lemke"), get(&r, "pgs"));
-        assert_eq!((l.status, p.status), (Status::Solved, Status::Solved), "{} / {}", l.message, p.message);
+        assert_eq!((l.status, p.status), (Status::Solved, Status::Solved), "{} / {}", l.explanation(), p.message);
         assert!(l.residuals.unwrap().max() <= 1e-12, "lemke residual {:?}", l.residuals);
         let p0 = l.contact.as_ref().unwrap().peak_pressure;
         for (a, b) in l.nodes.iter().zip(&p.nodes) {

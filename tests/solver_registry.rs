@@ -3,7 +3,7 @@
 //! `rollbem lcp solve`, and agrees with the block-revised `lemke`. Reference: the block engine (an independent
 //! implementation of the same pivoting rule, which follows the same path on exact data).
 
-use rollbem::run::run_scene;
+use rollbem::pipeline::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::{Status, REGISTRY};
 use std::path::Path;
@@ -17,13 +17,13 @@ fn load(rel: &str) -> (Scene, std::path::PathBuf) {
 #[test]
 fn lemke_dense_is_selectable_from_a_scene_and_agrees_with_lemke() {
     for rel in ["scenes/seed-fig6-constant.toml", "scenes/seed-fig17-mu07.toml", "scenes/cattaneo-decoupled.toml"] {
-        let (mut s, p) = load(rel);
-        s.solvers.use_ = vec!["lemke".into(), "lemke_dense".into()];
-        let r = run_scene(&s, &p).unwrap();
-        let names: Vec<&str> = r.runs.iter().map(|x| x.solver.0).collect();
+        let (mut s, _) = load(rel);
+        s = s.edit(|d| d.solvers.use_ = vec!["lemke".into(), "lemke_dense".into()]).unwrap();
+        let r = run_scene(&s).unwrap();
+        let names: Vec<&str> = r.runs.iter().map(|x| x.solver.name()).collect();
         assert_eq!(names, ["lemke", "lemke_dense"], "{rel}");
         for run in &r.runs {
-            assert_eq!(run.status, Status::Solved, "{rel} {}: {}", run.solver, run.message);
+            assert_eq!(run.status, Status::Solved, "{rel} {}: {}", run.solver, run.explanation());
         }
         // Same pivot path: the same number of pivots; tractions to round-off (the harness's agreement check).
         assert_eq!(r.runs[0].work, r.runs[1].work, "{rel}");
@@ -35,11 +35,11 @@ fn lemke_dense_is_selectable_from_a_scene_and_agrees_with_lemke() {
 #[test]
 fn all_does_not_run_the_reference_engine_and_names_come_from_the_registry() {
     let (s, p) = load("scenes/seed-fig6-constant.toml");
-    let r = run_scene(&s, &p).unwrap();
+    let r = run_scene(&s).unwrap();
     assert!(r.runs.iter().all(|x| x.solver != "lemke_dense"));
     // Every registered solver builds with its defaults and reports its own name.
     for e in REGISTRY {
-        assert_eq!((e.build)(None).unwrap().name(), e.name);
+        assert_eq!((e.build)(&Default::default()).name(), e.name);
     }
     // An unknown solver is refused at parse time, naming the key and the registry's names.
     let text = std::fs::read_to_string(&p).unwrap().replace("use = [\"all\"]", "use = [\"lemkee\"]");

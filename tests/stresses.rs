@@ -8,8 +8,8 @@
 //! *Theory of Elasticity* §41, for the disk under two opposite point loads (`theory::disk_point_loads`); Hertz
 //! (`theory::Hertz2D`) for a and p0 at the applied load. Expected values never come from rollbem's own output.
 
+use rollbem::pipeline::run_scene;
 use rollbem::results::{Report, SolverRun};
-use rollbem::run::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use rollbem::stresses::StressResult;
@@ -25,7 +25,7 @@ fn scene(text: &str) -> Scene {
 }
 
 fn run(s: &Scene) -> Report {
-    run_scene(s, Path::new("<test>")).unwrap()
+    run_scene(s).unwrap()
 }
 
 fn lemke(r: &Report) -> &SolverRun {
@@ -34,7 +34,7 @@ fn lemke(r: &Report) -> &SolverRun {
 
 fn stresses(r: &Report) -> &StressResult {
     let l = lemke(r);
-    assert_eq!(l.status, Status::Solved, "{}", l.message);
+    assert_eq!(l.status, Status::Solved, "{}", l.explanation());
     l.stresses.as_ref().expect("a solved run of a scene with [stresses] has its field")
 }
 
@@ -569,7 +569,7 @@ fn a_scene_without_stresses_computes_none() {
     // and without [stresses]: without it, "stresses" is not among the effects, no run carries a field (the result
     // document has no `stresses` key), and the source does not keep the boundary response the evaluation needs
     // (no memory held for it); with it, all three are there.
-    use rollbem::run::blocks_for;
+    use rollbem::pipeline::stages::blocks_for;
     for (with, text) in [(false, bem_scene_text("")), (true, bem_scene_text(GOOD_STRESSES))] {
         let s = scene(&text);
         let r = run(&s);
@@ -679,7 +679,7 @@ fn near_boundary_reach_is_where_the_bem_field_goes_wrong() {
         let (s, h) = small_contact("bem", element, n, ar);
         let r = run(&s);
         let nodes = &lemke(&r).nodes;
-        let built = rollbem::source::build(&s, rollbem::run::blocks_for(&s)).unwrap();
+        let built = rollbem::source::build(&s, rollbem::pipeline::stages::blocks_for(&s)).unwrap();
         let response = built.boundary.as_ref().unwrap();
         let (l0, e) = (built.flex.scales.length, E);
         let p: Vec<f64> = nodes.iter().map(|n| n.pressure / e).collect();
@@ -742,4 +742,55 @@ fn half_plane_strip_edge_on_the_surface_under_shear_is_refused_not_nan() {
         }
     }
     assert_eq!(doc["refused"], serde_json::json!({"singular": 3}));
+}
+
+/// Issue 19: with μ = 0.4 in full slip the maximum principal shear is μ p0 on the surface (McEwen / Smith & Liu:
+/// τ₁ = μp0 at every surface point of the contact for μ ≥ 1/√7). A grid whose surface row falls on the strips'
+/// edges (where σ_xx of a piecewise-uniform shear is singular and the points are refused) used to report the
+/// subsurface 0.392 p0; the surface values at the elements' centres put the maximum back at the surface.
+#[test]
+fn full_slip_maximum_principal_shear_is_on_the_surface_whatever_the_grid() {
+    use rollbem::stresses::StressQuantity::PrincipalShear;
+    let mu = 0.4;
+    let h = hertz(P, R);
+    let contact = format!("friction = {mu}\ncoupling = false");
+    let drive = format!("normal_load = {P}\ntangential_load = {}", mu * P);
+    // 120 strips on |x| ≤ 9 mm: edges every 0.15 mm from −9; a grid of 121 nodes on [−9, 9] sits on every edge.
+    let grid = format!("x = [-9.0, 9.0]\ndepth = [0.0, {}]\npoints = [121, 61]", 1.5 * h.a);
+    let r = run(&half_plane(120, &contact, &drive, &grid));
+    let st = stresses(&r);
+    assert!(st.refused()["singular"] > 0, "the grid's surface row is on the strips' edges: refused there");
+    let m = st.maximum_of(PrincipalShear).expect("a maximum");
+    assert_eq!(m.depth, 0.0, "the maximum is on the surface: {m:?}");
+    assert!((m.value / (mu * h.p0) - 1.0).abs() <= 0.01, "max τ₁ = {} p0, μ = {mu}", m.value / h.p0);
+}
+
+/// The elastic counter-body's field is reported beside the wheel's. Two identical steel half-planes, frictionless:
+/// the rail carries the same pressure, so its field is the wheel's (McEwen: max τ₁ = 0.300 p0 at depth 0.786a,
+/// Johnson §4.2, with a and p0 of the pair); with friction the shear flips sign with the body, so the rail's τ_xz
+/// field is the mirror image of the wheel's (τ_xz(x) of the rail = −τ_xz(x) of the wheel's q → −q problem).
+#[test]
+fn the_elastic_rail_gets_its_own_field() {
+    use rollbem::stresses::StressQuantity::{PrincipalShear, Szz};
+    let text = half_plane_text(
+        160,
+        "friction = 0.0",
+        &format!("normal_load = {P}"),
+        "x = [-12.0, 12.0]\ndepth = [0.0, 20.0]\npoints = [81, 201]",
+    )
+    .replace("contact_half_width = 9.0", "contact_half_width = 12.0")
+    .replace("[mesh]", "[counter_body]\nkind = \"half_plane\"\nyoungs_modulus = 210000.0\npoisson_ratio = 0.3\n[mesh]");
+    let r = run(&scene(&text));
+    let l = lemke(&r);
+    let (wheel, rail) = (l.stresses.as_ref().unwrap(), l.counter_body_stresses.as_ref().expect("the rail's field"));
+    assert_eq!((wheel.body.as_str(), rail.body.as_str()), ("wheel", "counter_body"));
+    // The pair's Hertz: E* = E/(2(1 − ν²)).
+    let h = Hertz2D::from_load(P, R, estar() / 2.0);
+    for st in [wheel, rail] {
+        let t1 = st.maximum_of(PrincipalShear).unwrap();
+        assert!((t1.value / h.p0 - 0.300).abs() <= 0.003, "{}: max τ₁ {} p0", st.body, t1.value / h.p0);
+        assert!((t1.depth / h.a - 0.786).abs() <= 0.02, "{}: at depth {} a", st.body, t1.depth / h.a);
+        let szz = st.maximum_of(Szz).unwrap();
+        assert!((szz.value / h.p0 + 1.0).abs() <= 0.01 && szz.depth == 0.0, "{}: σ_zz {szz:?}", st.body);
+    }
 }

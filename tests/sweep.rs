@@ -76,10 +76,10 @@ contact.friction = [0.1, 0.2]     # unquoted dotted key: a nested table, same me
             c.params,
             vec![("mesh.contact_elements".to_string(), n.to_string()), ("wheel.poisson_ratio".into(), nu.into())]
         );
-        assert_eq!(c.scene.mesh.contact_elements, n.parse::<usize>().unwrap());
-        assert_eq!(c.scene.wheel.poisson_ratio, nu.parse::<f64>().unwrap());
-        assert_eq!(c.scene.mesh.element, ElementKind::Constant);
-        assert_eq!(c.scene.name, "seed-fig6-constant");
+        assert_eq!(c.scene.document().mesh.contact_elements, n.parse::<usize>().unwrap());
+        assert_eq!(c.scene.document().wheel.poisson_ratio, nu.parse::<f64>().unwrap());
+        assert_eq!(c.scene.document().mesh.element, ElementKind::Constant);
+        assert_eq!(c.scene.name(), "seed-fig6-constant");
     }
 
     // A grid of known keys only: cases numbered on after the first grid.
@@ -103,11 +103,15 @@ base = '{}'
     let cases = SweepSpec::from_file(&spec2).unwrap().cases(&spec2).unwrap();
     assert_eq!(cases.len(), 2 + 3);
     assert_eq!(cases.iter().map(|c| c.index).collect::<Vec<_>>(), [0, 1, 2, 3, 4]);
-    assert_eq!(cases[1].scene.mesh.element, ElementKind::Quadratic);
-    assert_eq!(cases[1].scene.mesh.contact_elements, 8);
-    assert_eq!(cases[4].scene.contact.friction, 0.4);
+    assert_eq!(cases[1].scene.document().mesh.element, ElementKind::Quadratic);
+    assert_eq!(cases[1].scene.document().mesh.contact_elements, 8);
+    assert_eq!(cases[4].scene.document().contact.friction, 0.4);
     assert_eq!(cases[4].params[1], ("solvers.use".to_string(), r#"["lemke"]"#.to_string()));
-    assert_eq!(cases[4].scene.mesh.element, ElementKind::Constant, "the second grid keeps the base's element");
+    assert_eq!(
+        cases[4].scene.document().mesh.element,
+        ElementKind::Constant,
+        "the second grid keeps the base's element"
+    );
 }
 
 /// A small sweep: frictionless and frictional cases, constant and quadratic elements and an error case (clarabel
@@ -137,17 +141,11 @@ base = '{}'
     )
 }
 
-#[test]
-fn shards_merge_to_the_unsharded_sweep() {
-    let dir = tempfile::tempdir().unwrap();
-    let spec = small_spec(dir.path());
-    let whole = dir.path().join("whole.csv");
-    let n_rows = run_sweep(&spec, None, &whole, false).unwrap();
-    let (header, rows) = read_csv(&whole);
-    assert_eq!(rows.len(), n_rows);
-
-    let mut expect_header = vec!["case", "contact.friction", "mesh.contact_elements", "mesh.element", "solvers.use"];
-    expect_header.extend([
+/// The published header of the small spec's CSV, written out independently of the code that writes it (the
+/// swept keys, then the documented columns; `rollbem::sweep::row`).
+fn expected_header() -> Vec<&'static str> {
+    let mut h = vec!["case", "contact.friction", "mesh.contact_elements", "mesh.element", "solvers.use"];
+    h.extend([
         "scene",
         "element",
         "contact_elements",
@@ -201,9 +199,21 @@ fn shards_merge_to_the_unsharded_sweep() {
         "t_total_min",
         "t_total_max",
         "timing_runs",
+        "setup",
         "message",
     ]);
-    assert_eq!(header, expect_header);
+    h
+}
+
+#[test]
+fn the_sweep_csv_has_one_row_per_run_under_the_published_header() {
+    let dir = tempfile::tempdir().unwrap();
+    let spec = small_spec(dir.path());
+    let whole = dir.path().join("whole.csv");
+    let n_rows = run_sweep(&spec, None, &whole, false).unwrap();
+    let (header, rows) = read_csv(&whole);
+    assert_eq!(rows.len(), n_rows);
+    assert_eq!(header, expected_header());
     let col = |name: &str| header.iter().position(|h| h == name).unwrap();
     // 4 frictionless cases × (lemke, clarabel) + 8 frictional cases × 1 row.
     assert_eq!(rows.len(), 4 * 2 + 8);
@@ -227,7 +237,15 @@ fn shards_merge_to_the_unsharded_sweep() {
     assert!(rows
         .iter()
         .any(|r| r[col("solver")] == "lemke" && r[col("contact.friction")] == "0.2" && r[col("status")] == "solved"));
+}
 
+#[test]
+fn shards_merge_to_the_unsharded_sweep() {
+    let dir = tempfile::tempdir().unwrap();
+    let spec = small_spec(dir.path());
+    let whole = dir.path().join("whole.csv");
+    let n_rows = run_sweep(&spec, None, &whole, false).unwrap();
+    let (header, rows) = read_csv(&whole);
     // Shards 1/3, 2/3, 3/3 then merge: the same rows except for the timings.
     let mut parts = Vec::new();
     let mut total = 0;
@@ -279,6 +297,26 @@ fn bad_specs_are_errors_naming_the_key() {
     assert_eq!(f, "grid");
     let (f, _) = field_of(&format!("name = 'x'\nbase = '{base}'\n[[grid]]\n"));
     assert_eq!(f, "grid");
+    // The spec says what the sweep is; an analysis that cannot apply to the grid is bad input naming `analysis`.
+    let (f, m) = field_of(&format!(
+        "name = 'x'\nbase = '{base}'\nanalysis = 'creep_curve'\n[[grid]]\n'mesh.contact_elements' = [4, 8]\n"
+    ));
+    assert_eq!(f, "analysis");
+    assert!(m.contains("rolling.creepage"), "{m}");
+    let (f, m) =
+        field_of(&format!("name = 'x'\nbase = '{base}'\nanalysis = 'guess'\n[[grid]]\n'contact.friction' = [0.1]\n"));
+    assert_eq!(f, "analysis");
+    assert!(m.contains("accuracy") && m.contains("creep_curve"), "{m}");
+    // Overlapping keys: a table and a key inside it, or a key given plainly and inside a zipped key.
+    let (f, m) = field_of(&format!(
+        "name = 'x'\nbase = '{base}'\n[[grid]]\n'drive' = [{{ normal_load = 1.0 }}]\n'drive.normal_load' = [2.0]\n"
+    ));
+    assert_eq!(f, "grid.drive.normal_load");
+    assert!(m.contains("overlaps `drive`"), "{m}");
+    let (f, _) = field_of(&format!(
+        "name = 'x'\nbase = '{base}'\n[[grid]]\n'wheel.radius' = [1.0]\n'wheel.radius & mesh.contact_elements' = [[1.0, 4]]\n"
+    ));
+    assert_eq!(f, "grid.wheel.radius");
     let (f, m) = field_of("name = 'x'\nbase = 'no/such/scene.toml'\n[[grid]]\n'mesh.contact_elements' = [4]\n");
     assert_eq!(f, "base");
     assert!(m.contains("no/such/scene.toml"), "{m}");
@@ -314,10 +352,23 @@ fn bad_specs_are_errors_naming_the_key() {
 
 #[test]
 fn merge_refuses_different_headers() {
+    use rollbem::sweep::row::header;
+    use rollbem::sweep::{RowStatus, SweepRow};
+    // Shard CSVs as `run_sweep` writes them: the header of their swept keys, one typed row per line.
+    let csv = |key: &str, rows: &[(usize, &str, &str)]| {
+        let keys = vec![key.to_string()];
+        let mut text = header(&keys).join(",") + "\n";
+        for &(case, solver, x) in rows {
+            let mut r = SweepRow::new(case, solver, RowStatus::Run(rollbem::status::Status::Solved));
+            r.params = vec![(key.to_string(), x.to_string())];
+            text += &(r.record(&keys).join(",") + "\n");
+        }
+        text
+    };
     let dir = tempfile::tempdir().unwrap();
-    let a = write(dir.path(), "a.csv", "case,x,solver,t_total\n0,1,lemke,1e0\n");
-    let b = write(dir.path(), "b.csv", "case,y,solver,t_total\n1,1,lemke,1e0\n");
-    let c = write(dir.path(), "c.csv", "case,x,solver,t_total\n1,2,clarabel,2e0\n1,2,lemke,2e0\n");
+    let a = write(dir.path(), "a.csv", &csv("x", &[(0, "lemke", "1")]));
+    let b = write(dir.path(), "b.csv", &csv("y", &[(1, "lemke", "1")]));
+    let c = write(dir.path(), "c.csv", &csv("x", &[(1, "clarabel", "2"), (1, "lemke", "2")]));
     let out = dir.path().join("out.csv");
     let e = merge(&[a.clone(), b.clone()], &out).unwrap_err();
     assert!(matches!(e, Error::Invalid { ref field, .. } if field == "header"), "{e}");
@@ -325,7 +376,7 @@ fn merge_refuses_different_headers() {
     assert_eq!(merge(&[c, a], &out).unwrap(), 3);
     let (_, rows) = read_csv(&out);
     assert_eq!(
-        rows.iter().map(|r| (r[0].as_str(), r[2].as_str())).collect::<Vec<_>>(),
+        rows.iter().map(|r| (r[0].as_str(), r[6].as_str())).collect::<Vec<_>>(),
         [("0", "lemke"), ("1", "clarabel"), ("1", "lemke")]
     );
     assert!(merge(&[], &out).is_err());
@@ -402,10 +453,10 @@ base = '{}'
         cases[1].params,
         vec![("drive.normal_load".into(), "4.0".into()), ("mesh.contact_half_width".into(), "2.0".into())]
     );
-    assert_eq!(cases[1].scene.drive.normal_load, Some(4.0));
-    assert_eq!(cases[1].scene.mesh.contact_half_width, Some(2.0));
-    assert_eq!(cases[0].scene.name, "hp");
-    assert_ne!(cases[2].scene.name, "hp", "the second grid's own base");
+    assert_eq!(cases[1].scene.document().drive.normal_load, Some(4.0));
+    assert_eq!(cases[1].scene.document().mesh.contact_half_width, Some(2.0));
+    assert_eq!(cases[0].scene.name(), "hp");
+    assert_ne!(cases[2].scene.name(), "hp", "the second grid's own base");
     // A tuple of the wrong length names the key.
     let bad = write(
         dir.path(),

@@ -2,9 +2,9 @@
 //! issue's text and shown to end in its own status, exit code and message. Expected values come from theory
 //! (Hertz's half-width, the statics of a wheel free to turn, gross sliding), never from rollbem's own output.
 
+use rollbem::pipeline::run_scene;
 use rollbem::post::NodeState;
 use rollbem::results::CheckKind;
-use rollbem::run::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::Status;
 use std::path::{Path, PathBuf};
@@ -125,10 +125,10 @@ fn hertz_a(p: f64, r: f64, e: f64, nu: f64) -> f64 {
 fn item1_a_contact_cut_off_by_the_candidate_zone_is_not_solved_and_says_how_wide_the_zone_must_be() {
     let dir = tempfile::tempdir().unwrap();
     let (s, p) = scene_of(dir.path(), "steel.toml", &steel("steel-arc1", "1e7"));
-    let r = run_scene(&s, &p).unwrap();
+    let r = run_scene(&s).unwrap();
     let run = &r.runs[0];
-    assert_eq!(run.status, Status::ContactAtZoneEdge, "{}", run.message);
-    assert!(run.message.contains("edge of the candidate zone"), "{}", run.message);
+    assert_eq!(run.status, Status::ContactAtZoneEdge, "{}", run.explanation());
+    assert!(run.explanation().contains("edge of the candidate zone"), "{}", run.explanation());
     // The evidence is kept: the nodal answer that was judged, loaded up to the zone's last node (the issue: the
     // edge pressure 2.97 GPa against 1.30 GPa at mid-width), but no resultants or contact summary to be mistaken for
     // an answer.
@@ -137,32 +137,32 @@ fn item1_a_contact_cut_off_by_the_candidate_zone_is_not_solved_and_says_how_wide
     assert!(first.pressure > 0.0 && last.pressure > 0.0, "contact reaches both ends of the zone");
     assert!(run.resultants.is_none() && run.contact.is_none() && run.residuals.is_none());
     // The zone suggested must hold Hertz's contact: 2 asin(a/R) = 1.255° at P = 1e7 (a = 5.04 mm), more than 1°.
-    let arc = number_after(&run.message, "contact_arc_deg ≥");
+    let arc = number_after(&run.explanation(), "contact_arc_deg ≥");
     let hertz_arc = 2.0 * (hertz_a(1e7, 0.46, 210e9, 0.3) / 0.46).asin().to_degrees();
     assert!(hertz_arc > 1.0 && arc > hertz_arc, "suggested {arc}°, Hertz's contact spans {hertz_arc}°");
     // Following the advice (the arc and the element count it names) gives a contact inside the zone.
-    let elements = number_after(&run.message, "contact_elements ≥");
+    let elements = number_after(&run.explanation(), "contact_elements ≥");
     let advised = steel("steel-advised", "1e7")
         .replace("contact_arc_deg = 1.0", &format!("contact_arc_deg = {arc}"))
         .replace("contact_elements = 100", &format!("contact_elements = {elements}"));
-    let (s2, p2) = scene_of(dir.path(), "advised.toml", &advised);
-    let r2 = run_scene(&s2, &p2).unwrap();
+    let (s2, _) = scene_of(dir.path(), "advised.toml", &advised);
+    let r2 = run_scene(&s2).unwrap();
     assert_eq!(r2.runs[0].status, Status::Solved, "{}", r2.runs[0].message);
-    // `check` fails it (exit 1) and says why; `run` (no expectations declared) exits 0 and shows the status.
+    // `check` and `run` both exit 5 (a requested solver did not solve: `rollbem::exit`) and say why.
     let o = bin().arg("check").arg(&p).output().unwrap();
     let (out, _) = text(&o);
-    assert_eq!(o.status.code(), Some(1), "{out}");
+    assert_eq!(o.status.code(), Some(i32::from(rollbem::exit::NOT_SOLVED)), "{out}");
     assert!(out.contains("contact_at_zone_edge") && out.contains("contact_arc_deg ≥"), "{out}");
     let o = bin().arg("run").arg(&p).output().unwrap();
-    assert_eq!(o.status.code(), Some(0));
+    assert_eq!(o.status.code(), Some(i32::from(rollbem::exit::NOT_SOLVED)));
     assert!(text(&o).0.contains("contact_at_zone_edge"));
 
     // P = 1e12: Hertz's a = 1.59 m on a 0.46 m wheel: no zone can hold it, and the message says so.
-    let (s, p) = scene_of(dir.path(), "huge.toml", &steel("steel-huge", "1e12"));
-    let run = &run_scene(&s, &p).unwrap().runs[0];
+    let (s, _) = scene_of(dir.path(), "huge.toml", &steel("steel-huge", "1e12"));
+    let run = &run_scene(&s).unwrap().runs[0];
     assert!(hertz_a(1e12, 0.46, 210e9, 0.3) > 0.46);
-    assert_eq!(run.status, Status::ContactAtZoneEdge, "{}", run.message);
-    assert!(run.message.contains("no candidate zone on this wheel can hold it"), "{}", run.message);
+    assert_eq!(run.status, Status::ContactAtZoneEdge, "{}", run.explanation());
+    assert!(run.explanation().contains("no candidate zone on this wheel can hold it"), "{}", run.explanation());
 }
 
 #[test]
@@ -172,7 +172,7 @@ fn item1_too_few_elements_across_the_contact_warn_in_run_and_fail_in_check() {
     let (s, p) = scene_of(dir.path(), "tiny.toml", &steel("steel-tiny", "1e-3"));
     let element = 0.46 * 1f64.to_radians() / 100.0;
     assert!(2.0 * hertz_a(1e-3, 0.46, 210e9, 0.3) < 2e-3 * element, "about a thousandth of an element");
-    let r = run_scene(&s, &p).unwrap();
+    let r = run_scene(&s).unwrap();
     assert_eq!(r.runs[0].status, Status::Solved);
     let c = r.checks.iter().find(|c| c.name.contains("elements across the contact")).expect("a resolution check");
     assert!(!c.pass && c.measured <= 2.0 && c.reference == 4.0, "{c:?}");
@@ -198,16 +198,23 @@ fn item1_a_reference_check_that_cannot_be_evaluated_fails_with_the_reason() {
     // across), whose elliptic fit is then taken away: the Hertz check fails, saying why, instead of dropping out.
     let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/scenes/hertz-hub-fine.toml");
     let mut s = Scene::from_file(&p).unwrap();
-    s.solvers.use_ = vec!["lemke".into()];
-    let r = run_scene(&s, &p).unwrap();
+    s = s.edit(|d| d.solvers.use_ = vec!["lemke".into()]).unwrap();
+    let r = run_scene(&s).unwrap();
     assert!(r.checks.iter().any(|c| c.name.contains("Hertz half-width") && c.pass));
     let mut runs = r.runs.clone();
     let c = runs[0].contact.as_mut().unwrap();
     c.fit_half_width = None;
     c.fit_peak_pressure = None;
     let hertz = rollbem::references::hertz_for(&s, &runs[0]).expect("Hertz applies to this frictionless scene");
-    let checks =
-        rollbem::checks::make_checks(&s, r.mesh.element, r.mesh.contact_element_length, &runs, &[1e-10], Some(&hertz));
+    let checks = rollbem::checks::make_checks(
+        &s,
+        r.mesh.element,
+        r.mesh.contact_element_length,
+        &runs,
+        &[1e-10],
+        Some(&hertz),
+        None,
+    );
     let h = checks.iter().find(|c| c.name.contains("Hertz")).expect("the Hertz check is not dropped");
     assert!(!h.pass && h.kind == CheckKind::Verdict, "{h:?}");
     assert!(h.note.as_deref().unwrap().contains("cannot be evaluated"), "{h:?}");
@@ -276,34 +283,38 @@ fn item4_a_free_wheel_under_a_tangential_load_is_never_solved() {
     // R = 1: the linearised answer turns the wheel by φ with φR many contact widths; refused by every solver.
     let (s, p) =
         scene_of(dir.path(), "free.toml", &free_wheel("normal_load = {P}\ntangential_load = {Q}\nmoment = 0.0"));
-    let r = run_scene(&s, &p).unwrap();
+    let r = run_scene(&s).unwrap();
     assert!(!r.runs.is_empty());
     for run in &r.runs {
-        assert_ne!(run.status, Status::Solved, "{}: {}", run.solver, run.message);
+        assert_ne!(run.status, Status::Solved, "{}: {}", run.solver, run.explanation());
     }
-    let lemke = r.runs.iter().find(|x| x.solver.0 == "lemke").unwrap();
-    assert_eq!(lemke.status, Status::KinematicsOutOfRange, "{}", lemke.message);
+    let lemke = r.runs.iter().find(|x| x.solver.name() == "lemke").unwrap();
+    assert_eq!(lemke.status, Status::KinematicsOutOfRange, "{}", lemke.explanation());
     // φR against a = 0.05 (Hertz at this P), far beyond 0.1a.
-    let arc = number_after(&lemke.message, "φR =");
-    assert!(arc > 0.05, "φR = {arc}: {}", lemke.message);
+    let arc = number_after(&lemke.explanation(), "φR =");
+    assert!(arc > 0.05, "φR = {arc}: {}", lemke.explanation());
     // The statics of a wheel free to turn: the moment about the axle needs the pressure centre at −R̄Q/P ≈ −0.1R
     // (R̄ the candidate nodes' depth, between R cos 6° and R).
-    let xc = number_after(&lemke.message, "(M − RQ)/P =");
+    let xc = number_after(&lemke.explanation(), "(M − RQ)/P =");
     assert!((-0.1..=-0.1 * 6f64.to_radians().cos()).contains(&xc), "x_c = {xc}");
     let o = bin().arg("check").arg(&p).output().unwrap();
-    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(o.status.code(), Some(i32::from(rollbem::exit::NOT_SOLVED)));
     assert!(text(&o).0.contains("kinematics_out_of_range"));
 
     // The steel wheel: the pressure centre would need to be at −R̄Q/P ≈ −0.046 m, outside the ±4.0 mm zone, so no
     // contact forces carry the loads: the LP proves it, and Lemke's ray becomes `infeasible` with the proof.
-    let (s, p) = scene_of(dir.path(), "steel-free.toml", STEEL_FREE);
-    let run = &run_scene(&s, &p).unwrap().runs[0];
-    assert_eq!(run.status, Status::Infeasible, "{}", run.message);
-    assert!(run.message.contains("Farkas") && run.message.contains("pressure centre"), "{}", run.message);
+    let (s, _) = scene_of(dir.path(), "steel-free.toml", STEEL_FREE);
+    let run = &run_scene(&s).unwrap().runs[0];
+    assert_eq!(run.status, Status::Infeasible, "{}", run.explanation());
+    assert!(
+        run.explanation().contains("Farkas") && run.explanation().contains("pressure centre"),
+        "{}",
+        run.explanation()
+    );
     // Lemke's own words are kept, naming the variable as the LCP does (issue: "entering Z(Z(123))").
-    assert!(run.message.contains("entering z[") && !run.message.contains("Z("), "{}", run.message);
-    let built = rollbem::source::build(&s, rollbem::run::blocks_for(&s)).unwrap();
-    let problem = rollbem::run::build_problem(&s, &built.flex, &p).unwrap();
+    assert!(run.explanation().contains("entering z[") && !run.explanation().contains("Z("), "{}", run.explanation());
+    let built = rollbem::source::build(&s, rollbem::pipeline::stages::blocks_for(&s)).unwrap();
+    let problem = rollbem::pipeline::stages::scene_problem(&s, &built.flex).unwrap();
     let zone = 0.46 * 0.5f64.to_radians().sin();
     let centre = rollbem::admissible::required_centre(&problem).unwrap();
     assert!((centre + 0.1 * 0.46).abs() < 0.1 * 0.46 * (1.0 - 0.5f64.to_radians().cos()) + 1e-12, "{centre}");
@@ -318,9 +329,9 @@ fn item4_a_free_wheel_under_a_tangential_load_is_never_solved() {
     // zone, and Q = 0.1P < μP), contact forces exist and the LP says so.
     let depth = -problem.flex.y.iter().sum::<f64>() / problem.n() as f64 * problem.flex.scales.length;
     let held = STEEL_FREE.replace("moment = 0.0", &format!("moment = {:?}", depth * 1e6));
-    let (s, p) = scene_of(dir.path(), "steel-held.toml", &held);
-    let built = rollbem::source::build(&s, rollbem::run::blocks_for(&s)).unwrap();
-    let problem = rollbem::run::build_problem(&s, &built.flex, &p).unwrap();
+    let (s, _) = scene_of(dir.path(), "steel-held.toml", &held);
+    let built = rollbem::source::build(&s, rollbem::pipeline::stages::blocks_for(&s)).unwrap();
+    let problem = rollbem::pipeline::stages::scene_problem(&s, &built.flex).unwrap();
     assert_eq!(rollbem::admissible::admissibility(&problem), rollbem::admissible::Admissibility::Feasible);
 }
 
@@ -330,9 +341,9 @@ fn item4_a_huge_rigid_shift_is_gross_sliding_or_refused_never_a_wrong_solved() {
     // prescribed shift (10 R) is exact: the answer must be gross sliding from rest, Q = −μP with every loaded node
     // slipping at |q| = μp (theory), or a refusal — never another `solved`.
     let dir = tempfile::tempdir().unwrap();
-    let (s, p) =
+    let (s, _) =
         scene_of(dir.path(), "shift.toml", &free_wheel("normal_load = {P}\ntangential_shift = 10.0\nrotation = 0.0"));
-    let r = run_scene(&s, &p).unwrap();
+    let r = run_scene(&s).unwrap();
     let mut solved = 0;
     for run in &r.runs {
         if run.status != Status::Solved {
@@ -361,33 +372,41 @@ fn item5_health_lines_say_what_they_measure() {
     // The asymmetry line is K_NN's whatever the load: at Q = 0, at |Q| = μP (where the normal problem's own matrix
     // is K_NN + σμK_NT) and at |Q| > μP (where nothing is solved) it is the same number, and not 0.
     let base = Scene::from_file(&hard("load-above-mu-p.toml")).unwrap();
-    let p_load = base.drive.normal_load.unwrap();
+    let p_load = base.document().drive.normal_load.unwrap();
     let mut asym = Vec::new();
-    for q in [0.0, 0.3 * p_load, base.drive.tangential_load.unwrap()] {
+    for q in [0.0, 0.3 * p_load, base.document().drive.tangential_load.unwrap()] {
         let mut s = base.clone();
-        s.drive.tangential_load = Some(q);
-        s.solvers.use_ = vec!["lemke".into()];
-        asym.push(run_scene(&s, &hard("x")).unwrap().diagnostics.flexibility_asymmetry);
+        s = s
+            .edit(|d| {
+                d.drive.tangential_load = Some(q);
+                d.solvers.use_ = vec!["lemke".into()];
+            })
+            .unwrap();
+        asym.push(run_scene(&s).unwrap().diagnostics.flexibility_asymmetry);
     }
     assert!(asym[0] > 0.0 && asym.iter().all(|a| *a == asym[0]), "{asym:?}");
 
     // Frictionless contact nodes are `contact`, neither stick nor slip.
     let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/scenes");
     let mut s = Scene::from_file(&scenes.join("seed-fig6-constant.toml")).unwrap();
-    s.solvers.use_ = vec!["lemke".into()];
-    let r = run_scene(&s, &scenes).unwrap();
+    s = s.edit(|d| d.solvers.use_ = vec!["lemke".into()]).unwrap();
+    let r = run_scene(&s).unwrap();
     let nodes = &r.runs[0].nodes;
     assert!(nodes.iter().any(|n| n.state == NodeState::Contact));
     assert!(nodes.iter().all(|n| matches!(n.state, NodeState::Contact | NodeState::Separated)));
     assert_eq!(r.runs[0].contact.as_ref().unwrap().nodes_slip, 0);
 
     // PGS out of sweeps says which count hit the limit and how many sweeps it made in all (the work column's).
-    s.solvers.use_ = vec!["pgs".into()];
-    s.solvers.set("pgs", "max_sweeps", 3i64);
-    let run = &run_scene(&s, &scenes).unwrap().runs[0];
-    assert_eq!(run.status, Status::NotConverged, "{}", run.message);
+    s = s
+        .edit(|d| {
+            d.solvers.use_ = vec!["pgs".into()];
+            d.solvers.set("pgs", "max_sweeps", 3i64);
+        })
+        .unwrap();
+    let run = &run_scene(&s).unwrap().runs[0];
+    assert_eq!(run.status, Status::NotConverged, "{}", run.explanation());
     let sweeps = run.work.0.iter().find(|(k, _)| *k == "sweeps").unwrap().1;
-    assert!(run.message.contains(&format!("{sweeps} sweeps in all")), "{} vs {sweeps}", run.message);
+    assert!(run.explanation().contains(&format!("{sweeps} sweeps in all")), "{} vs {sweeps}", run.explanation());
 
     // "cannot read" without calling every file a scene file.
     let dir = tempfile::tempdir().unwrap();
@@ -453,14 +472,14 @@ fn item5_the_half_plane_datum_term_is_not_called_a_mesh_asymmetry() {
     let dir = tempfile::tempdir().unwrap();
     // Under load control the datum's rank-one column term is absorbed by the approach; what is left is the
     // half-plane's Toeplitz kernel on a uniform mesh, symmetric to round-off (theory), so no warning.
-    let (s, p) = scene_of(dir.path(), "load.toml", HALF_PLANE);
-    let d = run_scene(&s, &p).unwrap().diagnostics;
+    let (s, _) = scene_of(dir.path(), "load.toml", HALF_PLANE);
+    let d = run_scene(&s).unwrap().diagnostics;
     assert!(d.flexibility_asymmetry < 1e-12, "{}", d.flexibility_asymmetry);
     assert!(d.warnings.is_empty(), "{:?}", d.warnings);
     // With the approach prescribed the term matters (the full K_NN is measured) and the warning says what it is.
-    let (s, p) =
+    let (s, _) =
         scene_of(dir.path(), "approach.toml", &HALF_PLANE.replace("normal_load = 20000.0", "normal_approach = 0.1"));
-    let d = run_scene(&s, &p).unwrap().diagnostics;
+    let d = run_scene(&s).unwrap().diagnostics;
     assert!(d.flexibility_asymmetry > 1e-2, "{}", d.flexibility_asymmetry);
     let w = d.warnings.iter().find(|w| w.contains("far from symmetric")).expect("the asymmetry warning");
     assert!(w.contains("datum term") && !w.contains("refine the mesh"), "{w}");

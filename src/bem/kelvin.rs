@@ -16,6 +16,8 @@
 //! [`crate::source::bem_wheel::Model`], moduli divided by Young's modulus), so that `ln r` never depends on the user's unit
 //! of length.
 
+use crate::material::Material;
+
 /// Material constants of the Kelvin kernels, dimensionless (Young's modulus scaled to 1 by the caller or not).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Kelvin {
@@ -36,7 +38,7 @@ pub struct Kelvin {
 impl Kelvin {
     /// Kernel constants for Young's modulus `e` and Poisson's ratio `nu` (plane strain).
     pub fn new(e: f64, nu: f64) -> Self {
-        let g = e / (2.0 * (1.0 + nu));
+        let g = Material::new(e, nu).shear_modulus();
         let pi = std::f64::consts::PI;
         Kelvin {
             nu,

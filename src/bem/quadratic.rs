@@ -83,35 +83,8 @@ const MAX_DEPTH: u32 = 40;
 pub fn integrate(el: &ArcElement, source: [f64; 2], self_node: Option<usize>, k: &Kelvin) -> (NodeBlocks, NodeBlocks) {
     let mut h = [[[0.0; 2]; 2]; 3];
     let mut g = [[[0.0; 2]; 2]; 3];
-    let jac = el.jacobian();
-    let hang = el.half_angle();
-    let thm = el.theta_mid();
-    let sg = el.orientation();
-    let r_el = el.radius;
     match self_node {
-        None => {
-            let sing = off_element_singularities(el, source);
-            let cs = [el.centre[0] - source[0], el.centre[1] - source[1]];
-            adaptive(-1.0, 1.0, &sing, MAX_DEPTH, &mut |xi, w| {
-                let (s, c) = (thm + hang * xi).sin_cos();
-                // r = x − source = (centre − source) + R (cos θ, sin θ); kernels depend on x − ξ only.
-                let r = [cs[0] + r_el * c, cs[1] + r_el * s];
-                let n = [sg * c, sg * s];
-                let t = k.t(r, n, [0.0, 0.0]);
-                let u = k.u(r, [0.0, 0.0]);
-                let nn = shape(xi);
-                let wj = w * jac;
-                for j in 0..3 {
-                    let f = nn[j] * wj;
-                    for l in 0..2 {
-                        for m in 0..2 {
-                            h[j][l][m] += t[l][m] * f;
-                            g[j][l][m] += u[l][m] * f;
-                        }
-                    }
-                }
-            });
-        }
+        None => integrate_off_element(el, source, k, &mut h, &mut g),
         Some(i) => {
             assert!(i < 3, "integrate: self_node must be 0, 1 or 2");
             let xs = XI_NODES[i];
@@ -120,68 +93,121 @@ pub fn integrate(el: &ArcElement, source: [f64; 2], self_node: Option<usize>, k:
                 let d = ((p[0] - source[0]).powi(2) + (p[1] - source[1]).powi(2)).sqrt();
                 d <= 1e-9 * (el.radius + p[0].abs() + p[1].abs())
             });
-            let ths = thm + hang * xs;
-            // Periodic images of the source along the circle: θ = θ_s ± 2π.
-            let period = 2.0 * PI / hang.abs();
-            let sing = [[xs - period, 0.0], [xs + period, 0.0], [f64::INFINITY, 0.0]];
-            let log_coef = k.cu * k.a34;
             for (a, b) in [(-1.0, xs), (xs, 1.0)] {
-                // Regular parts by (adaptive) Gauss–Legendre.
-                adaptive(a, b, &sing, MAX_DEPTH, &mut |xi, w| {
-                    let th = thm + hang * xi;
-                    let (s, c) = th.sin_cos();
-                    // Chord x(ξ) − x(ξ_s) = 2R sin(Δ/2) (−sin θ̄, cos θ̄), Δ = θ − θ_s, θ̄ = (θ + θ_s)/2.
-                    let (sb, cb) = (0.5 * (th + ths)).sin_cos();
-                    let amp = 2.0 * r_el * (0.5 * (th - ths)).sin();
-                    let r = [-amp * sb, amp * cb];
-                    let n = [sg * c, sg * s];
-                    let t = k.t(r, n, [0.0, 0.0]);
-                    let mut u = k.u(r, [0.0, 0.0]);
-                    // Remove the ln|ξ − ξ_s| part (integrated below with the log rule): U* has −cu·a34·ln r δ_lk.
-                    let lnd = log_coef * (xi - xs).abs().ln();
-                    u[0][0] += lnd;
-                    u[1][1] += lnd;
-                    let nn = shape(xi);
-                    let wj = w * jac;
-                    for j in 0..3 {
-                        let f = nn[j] * wj;
-                        for l in 0..2 {
-                            for m in 0..2 {
-                                if j != i {
-                                    h[j][l][m] += t[l][m] * f;
-                                }
-                                g[j][l][m] += u[l][m] * f;
-                            }
-                        }
-                    }
-                });
-                // Singular part −cu·a34·δ_lk ∫_a^b ln|ξ − ξ_s| N_j(ξ) J dξ. With ξ = ξ_s ± L τ (L = b − a, τ ∈ [0, 1]):
-                // ∫ ln(Lτ) N_j L dτ = L ln L ∫₀¹ N_j dτ − L ∫₀¹ (−ln τ) N_j dτ; both exact for the quadratic N_j.
-                let len = b - a;
-                let dir = if a < xs { -1.0 } else { 1.0 };
-                let mut plain = [0.0; 3];
-                for (tq, wq) in gl(2).iter() {
-                    let nn = shape(xs + dir * len * 0.5 * (tq + 1.0));
-                    for j in 0..3 {
-                        plain[j] += 0.5 * wq * nn[j];
-                    }
-                }
-                let mut logw = [0.0; 3];
-                for (tq, wq) in lg(2).iter() {
-                    let nn = shape(xs + dir * len * tq);
-                    for j in 0..3 {
-                        logw[j] += wq * nn[j];
-                    }
-                }
-                for j in 0..3 {
-                    let val = -log_coef * jac * len * (len.ln() * plain[j] - logw[j]);
-                    g[j][0][0] += val;
-                    g[j][1][1] += val;
-                }
+                integrate_self_regular(el, i, (a, b), k, &mut h, &mut g);
+                add_self_log_part(el, xs, (a, b), k, &mut g);
             }
         }
     }
     (h, g)
+}
+
+/// Add one quadrature point's contribution `t·N_j·w·J` to `h` and `u·N_j·w·J` to `g` for every node j, the
+/// h block of node `skip_h` excepted (the self node's strongly singular block, set by the caller).
+#[inline]
+fn accumulate(
+    h: &mut NodeBlocks,
+    g: &mut NodeBlocks,
+    (t, u): (&[[f64; 2]; 2], &[[f64; 2]; 2]),
+    nn: [f64; 3],
+    wj: f64,
+    skip_h: Option<usize>,
+) {
+    for j in 0..3 {
+        let f = nn[j] * wj;
+        let add_h = skip_h != Some(j);
+        for l in 0..2 {
+            for m in 0..2 {
+                if add_h {
+                    h[j][l][m] += t[l][m] * f;
+                }
+                g[j][l][m] += u[l][m] * f;
+            }
+        }
+    }
+}
+
+/// The off-element case of [`integrate`]: adaptive Gauss–Legendre guided by the integrands' complex
+/// singularities ([`off_element_singularities`]), all h and g blocks added to `h`, `g`.
+fn integrate_off_element(el: &ArcElement, source: [f64; 2], k: &Kelvin, h: &mut NodeBlocks, g: &mut NodeBlocks) {
+    let (jac, hang, thm, sg, r_el) = (el.jacobian(), el.half_angle(), el.theta_mid(), el.orientation(), el.radius);
+    let sing = off_element_singularities(el, source);
+    let cs = [el.centre[0] - source[0], el.centre[1] - source[1]];
+    adaptive(-1.0, 1.0, &sing, MAX_DEPTH, &mut |xi, w| {
+        let (s, c) = (thm + hang * xi).sin_cos();
+        // r = x − source = (centre − source) + R (cos θ, sin θ); kernels depend on x − ξ only.
+        let r = [cs[0] + r_el * c, cs[1] + r_el * s];
+        let n = [sg * c, sg * s];
+        let t = k.t(r, n, [0.0, 0.0]);
+        let u = k.u(r, [0.0, 0.0]);
+        accumulate(h, g, (&t, &u), shape(xi), w * jac, None);
+    });
+}
+
+/// The regular part of the self case of [`integrate`] on the side `(a, b)` of the source node `i`: adaptive
+/// Gauss–Legendre of T* (h blocks j ≠ i) and of U* less its `ln|ξ − ξ_s|` part (added by [`add_self_log_part`]),
+/// with the field-minus-source vector formed by the chord formula.
+fn integrate_self_regular(
+    el: &ArcElement,
+    i: usize,
+    (a, b): (f64, f64),
+    k: &Kelvin,
+    h: &mut NodeBlocks,
+    g: &mut NodeBlocks,
+) {
+    let (jac, hang, thm, sg, r_el) = (el.jacobian(), el.half_angle(), el.theta_mid(), el.orientation(), el.radius);
+    let xs = XI_NODES[i];
+    let ths = thm + hang * xs;
+    // Periodic images of the source along the circle: θ = θ_s ± 2π.
+    let period = 2.0 * PI / hang.abs();
+    let sing = [[xs - period, 0.0], [xs + period, 0.0], [f64::INFINITY, 0.0]];
+    let log_coef = k.cu * k.a34;
+    adaptive(a, b, &sing, MAX_DEPTH, &mut |xi, w| {
+        let th = thm + hang * xi;
+        let (s, c) = th.sin_cos();
+        // Chord x(ξ) − x(ξ_s) = 2R sin(Δ/2) (−sin θ̄, cos θ̄), Δ = θ − θ_s, θ̄ = (θ + θ_s)/2.
+        let (sb, cb) = (0.5 * (th + ths)).sin_cos();
+        let amp = 2.0 * r_el * (0.5 * (th - ths)).sin();
+        let r = [-amp * sb, amp * cb];
+        let n = [sg * c, sg * s];
+        let t = k.t(r, n, [0.0, 0.0]);
+        let mut u = k.u(r, [0.0, 0.0]);
+        // Remove the ln|ξ − ξ_s| part (integrated by `add_self_log_part`): U* has −cu·a34·ln r δ_lk.
+        let lnd = log_coef * (xi - xs).abs().ln();
+        u[0][0] += lnd;
+        u[1][1] += lnd;
+        accumulate(h, g, (&t, &u), shape(xi), w * jac, Some(i));
+    });
+}
+
+/// The singular part of the self case of [`integrate`] on the side `(a, b)` of the source at `xs`, added to the
+/// diagonal of the g blocks: −cu·a34·δ_lk ∫_a^b ln|ξ − ξ_s| N_j(ξ) J dξ. With ξ = ξ_s ± L τ (L = b − a,
+/// τ ∈ [0, 1]): ∫ ln(Lτ) N_j L dτ = L ln L ∫₀¹ N_j dτ − L ∫₀¹ (−ln τ) N_j dτ; both exact for the quadratic N_j
+/// (2-point Gauss–Legendre and logarithmic Gauss rules).
+fn add_self_log_part(el: &ArcElement, xs: f64, (a, b): (f64, f64), k: &Kelvin, g: &mut NodeBlocks) {
+    let jac = el.jacobian();
+    let log_coef = k.cu * k.a34;
+    let len = b - a;
+    let dir = if a < xs { -1.0 } else { 1.0 };
+    let mut plain = [0.0; 3];
+    for (tq, wq) in gl(2).iter() {
+        let nn = shape(xs + dir * len * 0.5 * (tq + 1.0));
+        for j in 0..3 {
+            plain[j] += 0.5 * wq * nn[j];
+        }
+    }
+    let mut logw = [0.0; 3];
+    for (tq, wq) in lg(2).iter() {
+        let nn = shape(xs + dir * len * tq);
+        for j in 0..3 {
+            logw[j] += wq * nn[j];
+        }
+    }
+    for j in 0..3 {
+        let val = -log_coef * jac * len * (len.ln() * plain[j] - logw[j]);
+        g[j][0][0] += val;
+        g[j][1][1] += val;
+    }
 }
 
 /// Complex singularities (re, im) of the integrands in the element's ξ coordinate for an off-element source:

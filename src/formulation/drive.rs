@@ -4,10 +4,10 @@
 
 use super::slip::SlipOperator;
 use crate::flexibility::{Flexibility, ModeKind};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// One rigid degree of freedom's drive.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub enum Dof {
     /// Prescribed rigid displacement (or rotation).
     Displacement(f64),
@@ -27,7 +27,7 @@ impl Dof {
 
 /// The drive of the three rigid degrees of freedom in the user's units (`DESIGN.md`): approach d_N or load P,
 /// shift d_T or load Q, rotation φ or moment M.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Drive {
     /// Normal: approach d_N (length) or P = ∫p dx.
     pub normal: Dof,

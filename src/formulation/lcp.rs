@@ -160,33 +160,75 @@ pub struct Frictional {
 pub fn frictional_lcp(p: &ContactProblem, signs: &[f64]) -> Frictional {
     let flex = p.flex;
     let n = flex.n();
-    let mu = p.law.friction;
-    let k_nn = &flex.k_nn;
-    let a = p.slip.apply_mat(flex.k_tt.as_ref().expect("tangential blocks condensed"));
-    let (k_nt, b) = if p.law.coupling {
-        (flex.k_nt.clone().expect("K_NT"), p.slip.apply_mat(flex.k_tn.as_ref().expect("K_TN")))
-    } else {
-        (Mat::zeros(n, n), Mat::zeros(n, n))
-    };
+    let k_nt = if p.law.coupling { flex.k_nt.clone().expect("K_NT") } else { Mat::zeros(n, n) };
     let nd = p.dofs.len();
     let r_n = Mat::from_fn(n, nd, |i, m| p.dofs[m].gap[i]);
-    let r_t = Mat::from_fn(n, nd, |i, m| p.dofs[m].slip.as_ref().expect("tangential rigid responses")[i]);
     let given = p.given();
-    // Load-driven DOFs: (DOF index, row on f, row on h, slack sign, load).
-    type LoadRow<'r> = (usize, &'r [f64], &'r [f64], f64, f64);
-    let loads: Vec<LoadRow> = p
-        .dofs
+    let loads = load_rows(p, signs);
+    let map = tangential_map(p, &loads, &given);
+    let (g_x, g_0) = gap_map(p, &k_nt, &r_n, &map, &loads, &given);
+    let (e_x, e_0) = equilibrium_map(&loads, &map);
+    let nx = 3 * n + loads.len();
+    // Rows g, γ⁺ = μ f − h, γ⁻ = μ f + h, then v⁺, v⁻ = ∓σ e for each load-driven DOF.
+    let mu = p.law.friction;
+    let mut rows: Vec<(Vec<f64>, f64)> = Vec::with_capacity(3 * n + 2 * loads.len());
+    for i in 0..n {
+        rows.push(((0..nx).map(|c| g_x[(i, c)]).collect(), g_0[i]));
+    }
+    let fmu = |i: usize, c: usize| if c == i { mu } else { 0.0 };
+    for i in 0..n {
+        rows.push(((0..nx).map(|c| fmu(i, c) - map.h_x[(i, c)]).collect(), -map.h_0[i]));
+    }
+    for i in 0..n {
+        rows.push(((0..nx).map(|c| fmu(i, c) + map.h_x[(i, c)]).collect(), map.h_0[i]));
+    }
+    for (b, ld) in loads.iter().enumerate() {
+        let sg = ld.sign;
+        rows.push(((0..nx).map(|c| -sg * e_x[(b, c)]).collect(), -sg * e_0[b]));
+        rows.push(((0..nx).map(|c| sg * e_x[(b, c)]).collect(), sg * e_0[b]));
+    }
+    Frictional { lcp: assemble_split_columns(n, &rows), map }
+}
+
+/// A load-driven rigid DOF as the frictional LCP uses it.
+struct LoadRow<'r> {
+    /// Index of the DOF in [`ContactProblem::dofs`].
+    dof: usize,
+    /// Its equilibrium row on the normal forces f.
+    row_n: &'r [f64],
+    /// Its equilibrium row on the tangential forces h.
+    row_t: &'r [f64],
+    /// Slack sign σ of its rigid displacement.
+    sign: f64,
+    /// The prescribed load.
+    load: f64,
+}
+
+/// The load-driven DOFs of `p`, in [`ContactProblem::load_dofs`] order, with their slack signs `signs`.
+fn load_rows<'r>(p: &'r ContactProblem, signs: &[f64]) -> Vec<LoadRow<'r>> {
+    p.dofs
         .iter()
         .enumerate()
         .filter(|(_, d)| p.is_unknown(d))
         .zip(signs)
         .map(|((k, d), &s)| {
             let Dof::Load(l) = d.drive else { unreachable!("load-driven") };
-            (k, d.row_n.as_slice(), d.row_t.as_slice(), s, l)
+            LoadRow { dof: k, row_n: d.row_n.as_slice(), row_t: d.row_t.as_slice(), sign: s, load: l }
         })
-        .collect();
-    let nl = loads.len();
-    let nx = 3 * n + nl;
+        .collect()
+}
+
+/// The tangential forces eliminated from the slip `s = D u_T + c = λ⁻ − λ⁺` (module docs):
+/// `h = S (λ⁻ − λ⁺ − B f − Σ_m t_m ρ_m − c)` with `S = (D K_TT)⁻¹`, `B = D K_TN` (zero without coupling), as an
+/// affine map of `x = [f; λ⁺; λ⁻; ρ_L]`; the displacement-driven part of ρ (`given`) goes into the constant.
+fn tangential_map(p: &ContactProblem, loads: &[LoadRow<'_>], given: &[f64]) -> TangentialMap {
+    let flex = p.flex;
+    let n = flex.n();
+    let a = p.slip.apply_mat(flex.k_tt.as_ref().expect("tangential blocks condensed"));
+    let b = if p.law.coupling { p.slip.apply_mat(flex.k_tn.as_ref().expect("K_TN")) } else { Mat::zeros(n, n) };
+    let nd = p.dofs.len();
+    let r_t = Mat::from_fn(n, nd, |i, m| p.dofs[m].slip.as_ref().expect("tangential rigid responses")[i]);
+    let nx = 3 * n + loads.len();
     // S = (D K_TT)⁻¹ and the affine map of h.
     let lu = a.partial_piv_lu();
     let s = lu.solve(Mat::<f64>::identity(n, n));
@@ -203,45 +245,71 @@ pub fn frictional_lcp(p: &ContactProblem, signs: &[f64]) -> Frictional {
             h_x[(i, 2 * n + j)] = s[(i, j)];
         }
         for (b, ld) in loads.iter().enumerate() {
-            h_x[(i, 3 * n + b)] = -sr[(i, ld.0)];
+            h_x[(i, 3 * n + b)] = -sr[(i, ld.dof)];
         }
         h_0[i] = -(0..nd).map(|m| sr[(i, m)] * given[m]).sum::<f64>();
         if let Some(sc) = &sc {
             h_0[i] -= sc[i];
         }
     }
-    // g = g0 + R_N (ρ_D + E ρ_L) + K_NN f + K_NT h.
-    let mut g_x = &k_nt * &h_x;
+    TangentialMap { h_x, h_0 }
+}
+
+/// The gap as an affine map `g = g_x x + g_0` of the unknowns: g = g0 + R_N (ρ_D + E ρ_L) + K_NN f + K_NT h.
+fn gap_map(
+    p: &ContactProblem,
+    k_nt: &Mat<f64>,
+    r_n: &Mat<f64>,
+    map: &TangentialMap,
+    loads: &[LoadRow<'_>],
+    given: &[f64],
+) -> (Mat<f64>, Vec<f64>) {
+    let flex = p.flex;
+    let (n, nd) = (flex.n(), p.dofs.len());
+    let k_nn = &flex.k_nn;
+    let mut g_x = k_nt * &map.h_x;
     for i in 0..n {
         for j in 0..n {
             g_x[(i, j)] += k_nn[(i, j)];
         }
         for (b, ld) in loads.iter().enumerate() {
-            g_x[(i, 3 * n + b)] += r_n[(i, ld.0)];
+            g_x[(i, 3 * n + b)] += r_n[(i, ld.dof)];
         }
     }
     let g_0: Vec<f64> = (0..n)
         .map(|i| {
             flex.g0[i]
                 + (0..nd).map(|m| r_n[(i, m)] * given[m]).sum::<f64>()
-                + (0..n).map(|j| k_nt[(i, j)] * h_0[j]).sum::<f64>()
+                + (0..n).map(|j| k_nt[(i, j)] * map.h_0[j]).sum::<f64>()
         })
         .collect();
-    // Equilibrium residuals e_m = a_Nᵀ f + a_Tᵀ h − L_m.
+    (g_x, g_0)
+}
+
+/// The equilibrium residuals of the load-driven DOFs as an affine map `e = e_x x + e_0` of the unknowns:
+/// e_m = a_Nᵀ f + a_Tᵀ h − L_m.
+fn equilibrium_map(loads: &[LoadRow<'_>], map: &TangentialMap) -> (Mat<f64>, Vec<f64>) {
+    let n = map.h_0.len();
+    let (nl, nx) = (loads.len(), map.h_x.ncols());
     let mut e_x = Mat::<f64>::zeros(nl, nx);
     let mut e_0 = vec![0.0; nl];
-    for (b, &(_, row_n, row_t, _, load)) in loads.iter().enumerate() {
+    for (b, ld) in loads.iter().enumerate() {
         for c in 0..nx {
-            let mut v: f64 = (0..n).map(|i| row_t[i] * h_x[(i, c)]).sum();
+            let mut v: f64 = (0..n).map(|i| ld.row_t[i] * map.h_x[(i, c)]).sum();
             if c < n {
-                v += row_n[c];
+                v += ld.row_n[c];
             }
             e_x[(b, c)] = v;
         }
-        e_0[b] = (0..n).map(|i| row_t[i] * h_0[i]).sum::<f64>() - load;
+        e_0[b] = (0..n).map(|i| ld.row_t[i] * map.h_0[i]).sum::<f64>() - ld.load;
     }
-    // Assemble the LCP: columns x → z (ρ_L splits into u⁺, u⁻), rows g, γ⁺, γ⁻, v⁺, v⁻.
-    let size = 3 * n + 2 * nl;
+    (e_x, e_0)
+}
+
+/// The LCP of the rows `(coefficients on x, constant)`: the columns of x become columns of z, the first 3n one to
+/// one, each load-driven ρ_L split into u⁺ − u⁻ (two columns, the second with the opposite sign).
+fn assemble_split_columns(n: usize, rows: &[(Vec<f64>, f64)]) -> Lcp {
+    let size = rows.len();
     let mut m = Mat::<f64>::zeros(size, size);
     let mut q = vec![0.0; size];
     let zcol = |c: usize| -> (usize, Option<usize>) {
@@ -252,27 +320,15 @@ pub fn frictional_lcp(p: &ContactProblem, signs: &[f64]) -> Frictional {
             (3 * n + 2 * b, Some(3 * n + 2 * b + 1))
         }
     };
-    let mut put_row = |row: usize, coef: &dyn Fn(usize) -> f64, c0: f64, m: &mut Mat<f64>| {
-        for c in 0..nx {
-            let v = coef(c);
+    for (row, (coef, c0)) in rows.iter().enumerate() {
+        for (c, &v) in coef.iter().enumerate() {
             let (cp, cm) = zcol(c);
             m[(row, cp)] = v;
             if let Some(cm) = cm {
                 m[(row, cm)] = -v;
             }
         }
-        q[row] = c0;
-    };
-    for i in 0..n {
-        put_row(i, &|c| g_x[(i, c)], g_0[i], &mut m);
-        let fmu = |c: usize| if c == i { mu } else { 0.0 };
-        put_row(n + i, &|c| fmu(c) - h_x[(i, c)], -h_0[i], &mut m);
-        put_row(2 * n + i, &|c| fmu(c) + h_x[(i, c)], h_0[i], &mut m);
+        q[row] = *c0;
     }
-    for (b, ld) in loads.iter().enumerate() {
-        let sg = ld.3;
-        put_row(3 * n + 2 * b, &|c| -sg * e_x[(b, c)], -sg * e_0[b], &mut m);
-        put_row(3 * n + 2 * b + 1, &|c| sg * e_x[(b, c)], sg * e_0[b], &mut m);
-    }
-    Frictional { lcp: Lcp { m, q }, map: TangentialMap { h_x, h_0 } }
+    Lcp { m, q }
 }

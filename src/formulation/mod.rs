@@ -33,7 +33,7 @@ pub use slip::{SlipKind, SlipOperator};
 use crate::flexibility::Flexibility;
 use crate::tolerances::SLIDING_LIMIT_BAND;
 use faer::Mat;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// Which problem a scene poses (see the module docs).
 #[derive(Debug, Clone, PartialEq)]
@@ -55,7 +55,7 @@ pub enum ProblemKind {
 }
 
 /// The formulation's name in results: the seed's two approaches, or the frictionless problem.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum FormulationName {
     /// The normal problem of a frictionless scene.

@@ -14,11 +14,12 @@
 
 use crate::error::{Error, Result};
 use crate::io::write_atomic;
+use crate::pipeline::run_scene;
 use crate::plot::{Chart, Series, Style};
 use crate::post::NodeState;
 use crate::results::{Report, SolverRun};
-use crate::run::run_scene;
 use crate::scene::Scene;
+use crate::sweep::Analysis;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -28,6 +29,41 @@ mod paths;
 mod physics;
 mod rolling;
 mod table;
+
+pub use paths::{md_curve, md_pattern, md_shift, path_figures};
+pub use table::Units;
+
+/// A sweep's rows read from its CSV, drawn as its analysis draws them (what `rollbem plot SWEEP.csv` does).
+pub struct SweepFigures {
+    sweep: table::Sweep,
+}
+
+impl SweepFigures {
+    /// Read a sweep's CSV (`stem` names its figures).
+    pub fn from_csv(path: &Path, stem: &str) -> Result<SweepFigures> {
+        let (header, rows) = crate::sweep::SweepRow::read_csv(path)?;
+        Ok(SweepFigures {
+            sweep: table::Sweep {
+                name: stem.to_string(),
+                description: String::new(),
+                stem: stem.to_string(),
+                keys: header.keys,
+                rows,
+            },
+        })
+    }
+
+    /// Draw the figures of an analysis into `figs` (the Markdown the report would write beside them is dropped).
+    pub fn draw(mut self, analysis: Analysis, figs: &mut Figs) -> Result<()> {
+        let mut md = String::new();
+        match analysis {
+            Analysis::CreepCurve => physics::creep_curves(&self.sweep, &mut md, figs),
+            Analysis::FiniteVsHalfPlane => physics::finite_vs_half_plane(&self.sweep, &mut md, figs),
+            Analysis::Accuracy => accuracy::sections(&mut self.sweep, &mut md, figs),
+            Analysis::Table => Ok(()),
+        }
+    }
+}
 
 /// Where to read and write.
 #[derive(Debug, Clone)]
@@ -61,11 +97,39 @@ fn fmt_e(v: Option<f64>) -> String {
 /// Figures written so far: (title, file relative to the report folder).
 pub type Figures = Vec<(String, String)>;
 
-/// Regenerate everything; returns the path of the Markdown summary.
-pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
-    let out = &opts.out;
-    // Every input is read and checked before anything is written: scene names are safe file names by validation,
-    // sweep names are checked here, and both must be unique (they name the output files).
+/// Where a section's figures go: `root/sub` + a file name, listed with their titles (files relative to `root`). The
+/// report writes into `reports/figures/`; `rollbem plot` into its output folder.
+pub struct Figs<'a> {
+    /// The folder the listed file names are relative to.
+    pub root: &'a Path,
+    /// The sub-folder prefix of the files (`"figures/"` or `""`).
+    pub sub: &'a str,
+    /// The figures written, (title, file relative to `root`).
+    pub list: Figures,
+}
+
+impl<'a> Figs<'a> {
+    /// A sink writing `root/sub/NAME`.
+    pub fn new(root: &'a Path, sub: &'a str) -> Figs<'a> {
+        Figs { root, sub, list: Vec::new() }
+    }
+
+    /// Write a chart as `name` (e.g. `x-creep-curves.svg`), list it under `title`; returns its path relative to
+    /// `root` (what a Markdown link needs).
+    pub fn save(&mut self, chart: &Chart, name: &str, title: String) -> Result<String> {
+        let file = format!("{}{name}", self.sub);
+        chart.write(&self.root.join(&file)).map_err(plot_err)?;
+        self.list.push((title, file.clone()));
+        Ok(file)
+    }
+}
+
+/// The reference scenes and sweep specs of a report, read and checked.
+type Inputs = (Vec<(PathBuf, Scene)>, Vec<(PathBuf, crate::sweep::SweepSpec)>);
+
+/// Read and check every input before anything is written: scene names are safe file names by validation, sweep
+/// names are checked here, and both must be unique (they name the output files).
+fn read_inputs(opts: &ReportOptions) -> Result<Inputs> {
     let mut scenes = Vec::new();
     for p in toml_files(&opts.reference.join("scenes"))? {
         let s = Scene::from_file(&p)?;
@@ -83,6 +147,13 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
         specs.push((p, spec));
     }
     crate::scene::unique_output_names(specs.iter().map(|(p, s)| (p.as_path(), s.name.as_str())))?;
+    Ok((scenes, specs))
+}
+
+/// Regenerate everything; returns the path of the Markdown summary.
+pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
+    let out = &opts.out;
+    let (scenes, specs) = read_inputs(opts)?;
     for d in [out.clone(), out.join("runs"), out.join("sweeps"), out.join("figures")] {
         std::fs::create_dir_all(&d).map_err(|source| Error::Write { path: d.clone(), source })?;
     }
@@ -104,8 +175,9 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
     let maps = stress_maps(&reports, out)?;
     let (sweep_md, plots) = sweeps(opts, specs)?;
     let mut path_md = String::new();
-    let mut path_figs: Figures = Vec::new();
-    paths::sections(&reports, out, &mut path_md, &mut path_figs)?;
+    let mut sink = Figs::new(out, "figures/");
+    paths::sections(&reports, &mut path_md, &mut sink)?;
+    let mut path_figs = sink.list;
     let mut roll_md = String::new();
     rolling::seed_vs_steady(&reports, out, &mut roll_md, &mut path_figs)?;
 
@@ -143,6 +215,19 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
         }
     }
     md.push_str(&roll_md);
+    peer_and_maps(&mut md, out, &maps);
+    writeln!(md, "\n## Files\n\n- `runs/NAME.json`: result document of every reference scene").unwrap();
+    writeln!(md, "- `solver-comparison.csv`, `sweeps/*.csv`: the tables behind this page").unwrap();
+    for (title, file) in plots.iter().chain(&path_figs).chain(&figures).chain(&maps) {
+        writeln!(md, "- [{title}]({file})").unwrap();
+    }
+    let path = out.join("README.md");
+    write_atomic(&path, &md)?;
+    Ok(path)
+}
+
+/// The Siconos peer table (when present) and the stress maps' section.
+fn peer_and_maps(md: &mut String, out: &Path, maps: &Figures) {
     // The peer benchmark is not part of `report` (it installs Siconos and runs for minutes): its table is included
     // when `benches/peer/run.sh OUT/peer-lcp.md` has written it into this folder.
     let peer = out.join("peer-lcp.md");
@@ -170,14 +255,6 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
             writeln!(md, "### {title}\n\n![{title}]({file})\n").unwrap();
         }
     }
-    writeln!(md, "\n## Files\n\n- `runs/NAME.json`: result document of every reference scene").unwrap();
-    writeln!(md, "- `solver-comparison.csv`, `sweeps/*.csv`: the tables behind this page").unwrap();
-    for (title, file) in plots.iter().chain(&path_figs).chain(&figures).chain(&maps) {
-        writeln!(md, "- [{title}]({file})").unwrap();
-    }
-    let path = out.join("README.md");
-    write_atomic(&path, &md)?;
-    Ok(path)
 }
 
 /// Run every reference scene: its JSON, `solver-comparison.csv`, and the comparison table (Markdown).
@@ -193,15 +270,15 @@ fn reference_scenes(opts: &ReportOptions, scenes: Vec<(PathBuf, Scene)>) -> Resu
         "| scene | solver | status | size | work | residual | Δ vs Lemke (/p0) | state mismatches | QP symmetrisation effect | solve time [s] |\n\
          |---|---|---|---|---|---|---|---|---|---|\n",
     );
-    for (p, s) in scenes {
-        let r = run_scene(&s, &p)?;
+    for (_, s) in scenes {
+        let r = run_scene(&s)?;
         let text = serde_json::to_string_pretty(&r).expect("report serialises");
-        write_atomic(&out.join("runs").join(format!("{}.json", s.name)), &text)?;
+        write_atomic(&out.join("runs").join(format!("{}.json", s.name())), &text)?;
         let lemke = r.runs.iter().find(|x| x.solver == "lemke");
         for run in &r.runs {
             let cmp_lemke = match (lemke, &run.contact) {
                 (Some(l), Some(_)) if l.contact.is_some() && run.solver != "lemke" => {
-                    Some(crate::checks::compare(l, run, s.contact.friction))
+                    Some(crate::checks::compare(l, run, s.friction()))
                 }
                 _ => None,
             };
@@ -211,7 +288,7 @@ fn reference_scenes(opts: &ReportOptions, scenes: Vec<(PathBuf, Scene)>) -> Resu
             writeln!(
                 cmp,
                 "{},{},{},{},{},{},{},{},{},{},{},{},{},{:e},{:e},{:e}",
-                s.name,
+                s.name(),
                 run.solver,
                 run.formulation,
                 run.status,
@@ -232,7 +309,7 @@ fn reference_scenes(opts: &ReportOptions, scenes: Vec<(PathBuf, Scene)>) -> Resu
             writeln!(
                 cmp_md,
                 "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {:.4} |",
-                s.name,
+                s.name(),
                 run.solver,
                 run.status,
                 run.problem_size,
@@ -245,7 +322,7 @@ fn reference_scenes(opts: &ReportOptions, scenes: Vec<(PathBuf, Scene)>) -> Resu
             )
             .unwrap();
         }
-        reports.insert(s.name.clone(), r);
+        reports.insert(s.name().to_string(), r);
     }
     write_atomic(&out.join("solver-comparison.csv"), &cmp)?;
     Ok((reports, cmp_md))
@@ -255,7 +332,7 @@ fn reference_scenes(opts: &ReportOptions, scenes: Vec<(PathBuf, Scene)>) -> Resu
 /// `figures/`): (title, file) of Lemke's map per quantity, in the scene's and the quantities' order.
 fn stress_maps(reports: &BTreeMap<String, Report>, out: &Path) -> Result<Vec<(String, String)>> {
     let mut maps = Vec::new();
-    for (name, r) in reports.iter().filter(|(_, r)| r.scene.stresses.is_some()) {
+    for (name, r) in reports.iter().filter(|(_, r)| r.scene.stresses().is_some()) {
         let json = out.join("runs").join(format!("{name}.json"));
         crate::plot_result::plot_result(&json, Some(&out.join("figures")))?;
         let Some(st) = r.runs.iter().find(|x| x.solver == "lemke").and_then(|x| x.stresses.as_ref()) else {
@@ -275,7 +352,7 @@ fn stress_maps(reports: &BTreeMap<String, Report>, out: &Path) -> Result<Vec<(St
 fn sweeps(opts: &ReportOptions, specs: Vec<(PathBuf, crate::sweep::SweepSpec)>) -> Result<(String, Figures)> {
     let out = &opts.out;
     let mut md = String::new();
-    let mut figs: Figures = Vec::new();
+    let mut sink = Figs::new(out, "figures/");
     for (spec_path, spec) in specs {
         let stem = spec.name.clone();
         let csv_path = out.join("sweeps").join(format!("{stem}.csv"));
@@ -285,19 +362,19 @@ fn sweeps(opts: &ReportOptions, specs: Vec<(PathBuf, crate::sweep::SweepSpec)>) 
             description: spec.description.clone(),
             stem: stem.clone(),
             keys: spec.keys(),
-            rows: table::Table::read(&csv_path)?.rows,
+            rows: crate::sweep::SweepRow::read_csv(&csv_path)?.1,
         };
         writeln!(md, "\n### {} ([CSV](sweeps/{stem}.csv), {} rows)\n\n{}\n", sw.name, sw.rows.len(), sw.description)
             .unwrap();
-        if physics::is_creep_curve(&sw) {
-            physics::creep_curves(&sw, out, &mut md, &mut figs)?;
-        } else if physics::compares_models(&sw) {
-            physics::finite_vs_half_plane(&sw, out, &mut md, &mut figs)?;
-        } else {
-            accuracy::sections(&mut sw, out, &mut md, &mut figs)?;
+        // The spec says what the sweep is; the report never guesses it from the rows.
+        match spec.analysis {
+            Analysis::CreepCurve => physics::creep_curves(&sw, &mut md, &mut sink)?,
+            Analysis::FiniteVsHalfPlane => physics::finite_vs_half_plane(&sw, &mut md, &mut sink)?,
+            Analysis::Accuracy => accuracy::sections(&mut sw, &mut md, &mut sink)?,
+            Analysis::Table => {}
         }
     }
-    Ok((md, figs))
+    Ok((md, sink.list))
 }
 
 fn lemke_of<'a>(reports: &'a BTreeMap<String, Report>, name: &str) -> Option<&'a SolverRun> {
@@ -309,116 +386,126 @@ fn lemke_run(r: &Report) -> Option<&SolverRun> {
     r.runs.iter().find(|r| r.solver == "lemke" && r.contact.is_some())
 }
 
+/// Write a chart into the figures folder and record it.
+fn save(dir: &Path, out: &mut Vec<(String, String)>, chart: Chart, file: &str, title: &str) -> Result<()> {
+    chart.write(&dir.join(file)).map_err(plot_err)?;
+    out.push((title.to_string(), format!("figures/{file}")));
+    Ok(())
+}
+
+/// The seed's groups of figures: tractions (Figs. 7–9 / 12–13 / 16–17), slip velocity (Figs. 10 / 14 / 18) and
+/// state maps (Figs. 11 / 15), each from its reference scenes (name, label).
+const SEED_GROUPS: [SeedGroup; 3] = SEED;
+
+/// A group of the seed's figures: (file tag, title, its scenes as (name, label)).
+type SeedGroup = (&'static str, &'static str, &'static [(&'static str, &'static str)]);
+
+const SEED: [SeedGroup; 3] = [
+    (
+        "07-10",
+        "Figs. 7–10 (normal displacement)",
+        &[("seed-fig07-mu002", "μ = 0.02"), ("seed-fig08-mu01", "μ = 0.1"), ("seed-fig09-mu05", "μ = 0.5")],
+    ),
+    (
+        "11-14",
+        "Figs. 11–14 (normal and tangential displacement)",
+        &[("seed-fig12-mu01", "μ = 0.1"), ("seed-fig13-mu03", "μ = 0.3")],
+    ),
+    ("15-18", "Figs. 15–18 (loading, |Q/P| = 0.1)", &[("seed-fig16-mu01", "μ = 0.1"), ("seed-fig17-mu07", "μ = 0.7")]),
+];
+
 /// The seed's figures from the reference scenes' Lemke runs. Returns (title, file) pairs.
 fn seed_figures(reports: &BTreeMap<String, Report>, dir: &Path) -> Result<Vec<(String, String)>> {
     let mut out = Vec::new();
-    let mut save = |chart: Chart, file: &str, title: &str| -> Result<()> {
-        chart.write(&dir.join(file)).map_err(plot_err)?;
-        out.push((title.to_string(), format!("figures/{file}")));
-        Ok(())
-    };
-    // Fig. 6: frictionless pressure, constant and quadratic elements, against Hertz.
-    if let (Some(c), Some(q)) = (lemke_of(reports, "seed-fig6-constant"), lemke_of(reports, "seed-fig6-quadratic")) {
-        let h = reports["seed-fig6-constant"].references.hertz;
-        let mut chart = Chart::new("Seed Fig. 6: frictionless pressure against Hertz", "x", "pressure p")
-            .add(Series::new("constant elements", c.nodes.iter().map(|n| (n.x, n.pressure)).collect(), Style::Markers))
-            .add(Series::new(
-                "quadratic elements",
-                q.nodes.iter().map(|n| (n.x, n.pressure)).collect(),
-                Style::Markers,
-            ));
-        if let Some(h) = h {
-            let xs: Vec<f64> = (0..=200).map(|i| -1.5 * h.half_width + 3.0 * h.half_width * i as f64 / 200.0).collect();
-            chart = chart.add(Series::new("Hertz", xs.iter().map(|&x| (x, h.pressure(x))).collect(), Style::Dashed));
-        }
-        save(
-            chart,
-            "seed-fig06-pressure.svg",
-            "Fig. 6: frictionless pressure, constant and quadratic elements, and Hertz",
-        )?;
+    if let Some(chart) = seed_fig6(reports) {
+        let title = "Fig. 6: frictionless pressure, constant and quadratic elements, and Hertz";
+        save(dir, &mut out, chart, "seed-fig06-pressure.svg", title)?;
     }
-    // Figs. 7–9 / 12–13 / 16–17: tractions; Figs. 10 / 14 / 18: slip velocity; Figs. 11 / 15: state maps.
-    let groups: [(&str, &[(&str, &str)]); 3] = [
-        (
-            "Figs. 7–10 (normal displacement)",
-            &[("seed-fig07-mu002", "μ = 0.02"), ("seed-fig08-mu01", "μ = 0.1"), ("seed-fig09-mu05", "μ = 0.5")],
-        ),
-        (
-            "Figs. 11–14 (normal and tangential displacement)",
-            &[("seed-fig12-mu01", "μ = 0.1"), ("seed-fig13-mu03", "μ = 0.3")],
-        ),
-        ("Figs. 15–18 (loading, |Q/P| = 0.1)", &[("seed-fig16-mu01", "μ = 0.1"), ("seed-fig17-mu07", "μ = 0.7")]),
-    ];
-    for (gi, (title, members)) in groups.iter().enumerate() {
-        let tag = ["07-10", "11-14", "15-18"][gi];
-        let units = members
-            .first()
-            .and_then(|(n, _)| reports.get(*n))
-            .map(|r| table::Units::parse(r.scene.units.as_deref()))
-            .unwrap_or_default();
-        let mut tr = Chart::new(format!("Seed {title}: tractions"), "x", "traction (p markers, q lines)")
-            .x_unit(units.length.clone())
-            .y_unit(units.stress.clone());
-        let mut sv = Chart::new(format!("Seed {title}: slip velocity s_t* (eq. 12)"), "x", "s_t*")
-            .x_unit(units.length.clone())
-            .y_unit("1");
-        let mut st = Chart::new(format!("Seed {title}: node states"), "x", "state")
-            .x_unit(units.length.clone())
-            .categories_y(&["separated", "slip", "stick"]);
-        let mut any = false;
-        for (k, (name, label)) in members.iter().enumerate() {
-            let Some(l) = lemke_of(reports, name) else { continue };
-            if !any {
-                // Hertz's pressure at this scene's load, the analytic curve the seed compares its tractions with.
-                let sc = &reports[*name].scene;
-                if let Some(res) = l.resultants.filter(|r| r.normal > 0.0) {
-                    let w = &sc.wheel;
-                    let h = crate::hertz::Hertz::new(w.radius, w.youngs_modulus, w.poisson_ratio, res.normal);
-                    let xs: Vec<f64> =
-                        (0..=200).map(|i| -1.5 * h.half_width + 3.0 * h.half_width * i as f64 / 200.0).collect();
-                    tr = tr.add(Series::new(
-                        format!("Hertz p at P = {:.4e}", res.normal),
-                        xs.iter().map(|&x| (x, h.pressure(x))).collect(),
-                        Style::Dashed,
-                    ));
-                }
-            }
-            any = true;
-            if k == 0 || gi > 0 {
-                tr = tr.add(Series::new(
-                    format!("p, {label}"),
-                    l.nodes.iter().map(|n| (n.x, n.pressure)).collect(),
-                    Style::Markers,
-                ));
-            }
-            tr = tr.add(Series::new(
-                format!("q, {label}"),
-                l.nodes.iter().map(|n| (n.x, n.shear)).collect(),
-                Style::LineMarkers,
-            ));
-            sv = sv.add(Series::new(
-                label.to_string(),
-                l.nodes.iter().filter_map(|n| n.slip_velocity.map(|v| (n.x, v))).collect(),
-                Style::LineMarkers,
-            ));
-            let code = |s: NodeState| match s {
-                NodeState::Stick => 2.0,
-                NodeState::Slip | NodeState::Contact => 1.0,
-                NodeState::Separated => 0.0,
-            } + 0.06 * k as f64;
-            st = st.add(Series::new(
-                label.to_string(),
-                l.nodes.iter().map(|n| (n.x, code(n.state))).collect(),
-                Style::Markers,
-            ));
-        }
-        if any {
-            save(tr, &format!("seed-fig{tag}-tractions.svg"), &format!("{title}: pressure and shear"))?;
-            save(sv, &format!("seed-fig{tag}-slip-velocity.svg"), &format!("{title}: slip velocity"))?;
-            save(st, &format!("seed-fig{tag}-states.svg"), &format!("{title}: stick / slip / separation"))?;
+    for (gi, (tag, title, members)) in SEED_GROUPS.iter().enumerate() {
+        if let Some([tr, sv, st]) = seed_group(reports, gi, title, members) {
+            save(dir, &mut out, tr, &format!("seed-fig{tag}-tractions.svg"), &format!("{title}: pressure and shear"))?;
+            save(dir, &mut out, sv, &format!("seed-fig{tag}-slip-velocity.svg"), &format!("{title}: slip velocity"))?;
+            let what = format!("{title}: stick / slip / separation");
+            save(dir, &mut out, st, &format!("seed-fig{tag}-states.svg"), &what)?;
         }
     }
     Ok(out)
+}
+
+/// Fig. 6: frictionless pressure, constant and quadratic elements, against Hertz.
+fn seed_fig6(reports: &BTreeMap<String, Report>) -> Option<Chart> {
+    let (c, q) = (lemke_of(reports, "seed-fig6-constant")?, lemke_of(reports, "seed-fig6-quadratic")?);
+    let h = reports["seed-fig6-constant"].references.hertz;
+    let mut chart = Chart::new("Seed Fig. 6: frictionless pressure against Hertz", "x", "pressure p")
+        .add(Series::new("constant elements", c.nodes.iter().map(|n| (n.x, n.pressure)).collect(), Style::Markers))
+        .add(Series::new("quadratic elements", q.nodes.iter().map(|n| (n.x, n.pressure)).collect(), Style::Markers));
+    if let Some(h) = h {
+        let xs: Vec<f64> = (0..=200).map(|i| -1.5 * h.half_width + 3.0 * h.half_width * i as f64 / 200.0).collect();
+        chart = chart.add(Series::new("Hertz", xs.iter().map(|&x| (x, h.pressure(x))).collect(), Style::Dashed));
+    }
+    Some(chart)
+}
+
+/// One group of the seed's figures: [tractions, slip velocity, node states], `None` when none of its scenes has a
+/// solved Lemke run.
+fn seed_group(
+    reports: &BTreeMap<String, Report>,
+    gi: usize,
+    title: &str,
+    members: &[(&str, &str)],
+) -> Option<[Chart; 3]> {
+    let units = members
+        .first()
+        .and_then(|(n, _)| reports.get(*n))
+        .map(|r| table::Units::parse(r.scene.units()))
+        .unwrap_or_default();
+    let mut tr = Chart::new(format!("Seed {title}: tractions"), "x", "traction (p markers, q lines)")
+        .x_unit(units.length.clone())
+        .y_unit(units.stress.clone());
+    let mut sv = Chart::new(format!("Seed {title}: slip velocity s_t* (eq. 12)"), "x", "s_t*")
+        .x_unit(units.length.clone())
+        .y_unit("1");
+    let mut st = Chart::new(format!("Seed {title}: node states"), "x", "state")
+        .x_unit(units.length.clone())
+        .categories_y(&["separated", "slip", "stick"]);
+    let mut any = false;
+    for (k, (name, label)) in members.iter().enumerate() {
+        let Some(l) = lemke_of(reports, name) else { continue };
+        if !any {
+            // Hertz's pressure at this scene's load, the analytic curve the seed compares its tractions with.
+            let sc = &reports[*name].scene;
+            if let Some(res) = l.resultants.filter(|r| r.normal > 0.0) {
+                let h = crate::hertz::Hertz::with_modulus(sc.radius(), sc.contact_modulus(), res.normal);
+                let xs: Vec<f64> =
+                    (0..=200).map(|i| -1.5 * h.half_width + 3.0 * h.half_width * i as f64 / 200.0).collect();
+                tr = tr.add(Series::new(
+                    format!("Hertz p at P = {:.4e}", res.normal),
+                    xs.iter().map(|&x| (x, h.pressure(x))).collect(),
+                    Style::Dashed,
+                ));
+            }
+        }
+        any = true;
+        if k == 0 || gi > 0 {
+            let p = l.nodes.iter().map(|n| (n.x, n.pressure)).collect();
+            tr = tr.add(Series::new(format!("p, {label}"), p, Style::Markers));
+        }
+        let q = l.nodes.iter().map(|n| (n.x, n.shear)).collect();
+        tr = tr.add(Series::new(format!("q, {label}"), q, Style::LineMarkers));
+        let v = l.nodes.iter().filter_map(|n| n.slip_velocity.map(|v| (n.x, v))).collect();
+        sv = sv.add(Series::new(label.to_string(), v, Style::LineMarkers));
+        let code = |s: NodeState| match s {
+            NodeState::Stick => 2.0,
+            NodeState::Slip | NodeState::Contact => 1.0,
+            NodeState::Separated => 0.0,
+        } + 0.06 * k as f64;
+        st = st.add(Series::new(
+            label.to_string(),
+            l.nodes.iter().map(|n| (n.x, code(n.state))).collect(),
+            Style::Markers,
+        ));
+    }
+    any.then_some([tr, sv, st])
 }
 
 #[cfg(test)]
@@ -444,7 +531,7 @@ mod tests {
             ("without", ""),
         ] {
             let s = Scene::from_toml(&text(name, st), Path::new("<test>")).unwrap();
-            let r = run_scene(&s, Path::new("<test>")).unwrap();
+            let r = run_scene(&s).unwrap();
             let json = serde_json::to_string_pretty(&r).unwrap();
             std::fs::write(dir.path().join("runs").join(format!("{name}.json")), json).unwrap();
             reports.insert(name.to_string(), r);

@@ -4,17 +4,17 @@
 //! under constant P and a tangential load cycled ±Q*, Spence for a coupled half-plane under a growing normal load.
 
 use super::table::Units;
-use super::{plot_err, Figures};
+use super::Figs;
 use crate::error::Result;
+use crate::pipeline::run_scene;
 use crate::plot::{Chart, Series, Style};
-use crate::references::{beta_zero, stick_edges};
+use crate::post::stick_edges;
+use crate::references::beta_zero;
 use crate::results::{Report, SolverRun};
-use crate::run::run_scene;
 use crate::scene::{BodyModel, CounterBody, RollingMode, Scene};
 use crate::theory::{self, Hertz2D, TangentialPath};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use std::path::Path;
 
 /// The runs of one solver along a path, in order (a solver whose path broke has fewer).
 fn runs_of<'a>(r: &'a Report, solver: &str) -> Vec<(usize, &'a SolverRun)> {
@@ -22,20 +22,20 @@ fn runs_of<'a>(r: &'a Report, solver: &str) -> Vec<(usize, &'a SolverRun)> {
 }
 
 /// The Mindlin–Deresiewicz pattern: step 0 loads P alone, then every step holds P and takes Q to +Q*, −Q*, +Q*, …
-/// (|Q*| ≤ μP), on a single half-plane with β = 0 and a rigid flat. Returns (P, Q*).
-fn md_pattern(s: &Scene) -> Option<(f64, f64)> {
-    let single = s.wheel.model == BodyModel::HalfPlane && matches!(s.counter_body, CounterBody::Rigid);
-    let p = s.steps.first()?.normal_load?;
-    if !single || s.rolling.is_some() || !beta_zero(s, p) || s.steps.len() < 3 {
+/// (|Q*| ≤ μP), on the half-plane model with β = 0 — against a rigid flat, or against an elastic half-plane of a
+/// β = 0 pair (steel on steel). Returns (P, Q*).
+pub fn md_pattern(s: &Scene) -> Option<(f64, f64)> {
+    let p = s.document().steps.first()?.normal_load?;
+    if s.model() != BodyModel::HalfPlane || s.rolling().is_some() || !beta_zero(s, p) || s.document().steps.len() < 3 {
         return None;
     }
-    if s.steps[0].tangential_load.unwrap_or(0.0) != 0.0 || s.steps[0].tangential_shift.is_some() {
+    if s.document().steps[0].tangential_load.unwrap_or(0.0) != 0.0 || s.document().steps[0].tangential_shift.is_some() {
         return None;
     }
-    let q_star = s.steps[1].tangential_load?;
+    let q_star = s.document().steps[1].tangential_load?;
     let ok = q_star > 0.0
-        && q_star <= s.contact.friction * p
-        && s.steps[1..].iter().enumerate().all(|(k, st)| {
+        && q_star <= s.friction() * p
+        && s.document().steps[1..].iter().enumerate().all(|(k, st)| {
             st.normal_load == Some(p) && st.tangential_load == Some(if k % 2 == 0 { q_star } else { -q_star })
         });
     ok.then_some((p, q_star))
@@ -53,43 +53,53 @@ fn md_branch(r: &Report, k: usize, q_star: f64) -> TangentialPath {
 /// Spence's pattern: a coupled half-plane (β ≠ 0) on a rigid flat, one or more steps raising the normal load
 /// monotonically from rest with no tangential drive. Returns β.
 fn spence_pattern(s: &Scene) -> Option<f64> {
-    let single = s.wheel.model == BodyModel::HalfPlane && matches!(s.counter_body, CounterBody::Rigid);
-    let p_end = s.steps.last()?.normal_load?;
-    let monotone = s.steps.windows(2).all(|w| w[0].normal_load.unwrap_or(0.0) <= w[1].normal_load.unwrap_or(0.0));
-    let no_tangential = s.steps.iter().all(|st| st.tangential_load.unwrap_or(0.0) == 0.0 && st.roll.is_none());
-    (single && s.contact.coupling && s.contact.friction > 0.0 && monotone && no_tangential && !beta_zero(s, p_end))
+    let single = s.model() == BodyModel::HalfPlane && matches!(s.counter_body(), CounterBody::Rigid);
+    let p_end = s.document().steps.last()?.normal_load?;
+    let monotone =
+        s.document().steps.windows(2).all(|w| w[0].normal_load.unwrap_or(0.0) <= w[1].normal_load.unwrap_or(0.0));
+    let no_tangential =
+        s.document().steps.iter().all(|st| st.tangential_load.unwrap_or(0.0) == 0.0 && st.roll.is_none());
+    (single && s.law().coupling && s.friction() > 0.0 && monotone && no_tangential && !beta_zero(s, p_end))
         .then(|| s.dundurs_beta())
 }
 
 /// The path sections of every reference scene with `[[steps]]`.
-pub fn sections(reports: &BTreeMap<String, Report>, out: &Path, md: &mut String, figs: &mut Figures) -> Result<()> {
+pub fn sections(reports: &BTreeMap<String, Report>, md: &mut String, figs: &mut Figs) -> Result<()> {
     for (name, r) in reports.iter().filter(|(_, r)| !r.steps.is_empty()) {
-        let units = Units::parse(r.scene.units.as_deref());
-        writeln!(md, "### `{name}`\n\n{}\n", r.scene.description.split_whitespace().collect::<Vec<_>>().join(" "))
+        writeln!(md, "### `{name}`\n\n{}\n", r.scene.description().split_whitespace().collect::<Vec<_>>().join(" "))
             .unwrap();
         summary(r, md);
-        let solver = r.runs.first().map(|x| x.solver.0).unwrap_or("lemke");
-        // The figures and theory comparisons use the solved substeps only (a path that broke, or a substep judged
-        // not an answer, has no tractions to compare); the summary above says how many there are.
-        let all = runs_of(r, solver);
-        let runs: Vec<(usize, &SolverRun)> =
-            all.iter().copied().filter(|(_, x)| x.status == crate::solvers::Status::Solved).collect();
-        if runs.len() < all.len() {
-            writeln!(
-                md,
-                "{solver} solved {} of the path's {} substeps; the figures below show the solved ones.\n",
-                runs.len(),
-                r.steps.len()
-            )
-            .unwrap();
-        }
-        if r.scene.steps.iter().any(|st| st.roll.unwrap_or(0.0) > 0.0) {
-            rolling_approach(name, r, &runs, &units, out, md, figs)?;
-        } else {
-            hysteresis(name, r, &runs, &units, out, md, figs)?;
-        }
-        stick_zone(name, r, &runs, &units, out, md, figs)?;
+        path_figures(name, r, md, figs)?;
     }
+    Ok(())
+}
+
+/// The figures of one load path (its first solver's solved substeps): the Q–δ_T loop (or, rolling, the approach to
+/// steady rolling) and the stick zone along the path, each with the theory where it applies; what they show is
+/// written to `md`.
+pub fn path_figures(name: &str, r: &Report, md: &mut String, figs: &mut Figs) -> Result<()> {
+    let units = Units::parse(r.scene.units());
+    let solver = r.runs.first().map(|x| x.solver.name()).unwrap_or("lemke");
+    // The figures and theory comparisons use the solved substeps only (a path that broke, or a substep judged
+    // not an answer, has no tractions to compare); the summary above says how many there are.
+    let all = runs_of(r, solver);
+    let runs: Vec<(usize, &SolverRun)> =
+        all.iter().copied().filter(|(_, x)| x.status == crate::solvers::Status::Solved).collect();
+    if runs.len() < all.len() {
+        writeln!(
+            md,
+            "{solver} solved {} of the path's {} substeps; the figures below show the solved ones.\n",
+            runs.len(),
+            r.steps.len()
+        )
+        .unwrap();
+    }
+    if r.scene.document().steps.iter().any(|st| st.roll.unwrap_or(0.0) > 0.0) {
+        rolling_approach(name, r, &runs, &units, md, figs)?;
+    } else {
+        hysteresis(name, r, &runs, &units, md, figs)?;
+    }
+    stick_zone(name, r, &runs, &units, md, figs)?;
     Ok(())
 }
 
@@ -101,7 +111,7 @@ fn summary(r: &Report, md: &mut String) {
     )
     .unwrap();
     for run in &r.runs {
-        let runs = runs_of(r, run.solver.0);
+        let runs = runs_of(r, run.solver.name());
         let solved = runs.iter().filter(|(_, x)| x.status == crate::solvers::Status::Solved).count();
         // The total dissipated up to the last solved substep.
         let dissipated = runs
@@ -127,9 +137,8 @@ fn hysteresis(
     r: &Report,
     runs: &[(usize, &SolverRun)],
     units: &Units,
-    out: &Path,
     md: &mut String,
-    figs: &mut Figures,
+    figs: &mut Figs,
 ) -> Result<()> {
     let pts: Vec<(f64, f64)> =
         runs.iter().filter_map(|(_, x)| Some((x.rigid_body?.tangential?, x.resultants?.tangential))).collect();
@@ -137,65 +146,17 @@ fn hysteresis(
     // Q at round-off, which is no loop.
     let tangential = r
         .scene
+        .document()
         .steps
         .iter()
         .any(|st| st.tangential_load.is_some_and(|q| q != 0.0) || st.tangential_shift.is_some_and(|d| d != 0.0));
     if !tangential || pts.is_empty() {
         return Ok(());
     }
-    let solver = runs.first().map(|(_, x)| x.solver.0).unwrap_or("");
+    let solver = runs.first().map(|(_, x)| x.solver.name()).unwrap_or("");
     let mut series: Vec<Curve> = vec![(format!("{solver}, substep ends"), pts.clone(), Style::LineMarkers)];
-    let s = &r.scene;
-    if let Some((p, q_star)) = md_pattern(s) {
-        let h = Hertz2D::from_load(p, s.wheel.radius, s.contact_modulus());
-        let mu = s.contact.friction;
-        // The half-plane's datum is the material point at depth D; theory's log datum is D' = D e^(1/(2(1 − ν)))
-        // (tests/history.rs derives it); the wheel's shift is minus the counter-body's δ.
-        let d_prime = s.wheel.datum() * (0.5 / (1.0 - s.wheel.poisson_ratio)).exp();
-        let delta =
-            |path: TangentialPath, q: f64| -theory::md_displacement(&h, mu, s.contact_modulus(), d_prime, path, q);
-        let qs: Vec<f64> = (0..=100).map(|i| q_star * (i as f64 / 50.0 - 1.0)).collect();
-        let mut curve: Vec<(f64, f64)> =
-            (0..=50).map(|i| q_star * i as f64 / 50.0).map(|q| (delta(TangentialPath::Loading, q), q)).collect();
-        curve.extend(qs.iter().rev().map(|&q| (delta(TangentialPath::Unloading { q_star }, q), q)));
-        curve.extend(qs.iter().map(|&q| (delta(TangentialPath::Reloading { q_star }, q), q)));
-        series.push(("Mindlin–Deresiewicz (2D)".into(), curve, Style::Dashed));
-        let w: f64 = runs
-            .iter()
-            .filter(|(k, _)| r.steps[*k].step >= 2 && r.steps[*k].step <= 3)
-            .filter_map(|(_, x)| x.history.as_ref().map(|h| h.dissipated))
-            .sum();
-        let exact = theory::md_cycle_dissipation(mu, p, s.contact_modulus(), q_star);
-        let in_cycle = |k: usize| (2..=3).contains(&r.steps[k].step);
-        let complete =
-            runs.iter().filter(|(k, _)| in_cycle(*k)).count() == (0..r.steps.len()).filter(|&k| in_cycle(k)).count();
-        if r.scene.steps.len() >= 4 && !complete {
-            writeln!(md, "The cycle +Q* → −Q* → +Q* did not complete ({solver} failed in it): no cycle energy.\n")
-                .unwrap();
-        } else if r.scene.steps.len() >= 4 {
-            writeln!(
-                md,
-                "Energy dissipated in the cycle +Q* → −Q* → +Q* (Q* = {q_star}, {solver}): {w:.6e}; Mindlin–Deresiewicz \
-                 in 2D, W = (2μ²P²/(πE*))[1 − γ² + 2γ ln γ] with γ = 1 − Q*/(μP): {exact:.6e} (relative difference \
-                 {:+.1e}).\n",
-                w / exact - 1.0
-            )
-            .unwrap();
-        }
-        let worst = runs
-            .iter()
-            .filter_map(|(k, x)| {
-                let q = x.resultants?.tangential;
-                Some((x.rigid_body?.tangential? - delta(md_branch(r, *k, q_star), q)).abs())
-            })
-            .fold(0.0, f64::max);
-        let span = delta(TangentialPath::Loading, q_star).abs();
-        writeln!(
-            md,
-            "Largest distance of the computed shift from the theory's loop: {:.1e} of the loop's half-span.\n",
-            worst / span
-        )
-        .unwrap();
+    if let Some(curve) = md_loop(r, runs, solver, md) {
+        series.push(curve);
     }
     let mut chart = Chart::new(format!("{name}: tangential force against rigid shift"), "rigid shift δ_T", "Q")
         .x_unit(units.length.clone())
@@ -203,10 +164,101 @@ fn hysteresis(
     for (label, p, style) in &series {
         chart = chart.add(Series::new(label.clone(), p.clone(), *style));
     }
-    let file = format!("figures/{name}-hysteresis.svg");
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    figs.push((format!("{name}: Q against δ_T"), file.clone()));
+    let file = figs.save(&chart, &format!("{name}-hysteresis.svg"), format!("{name}: Q against δ_T"))?;
     writeln!(md, "![hysteresis loop]({file})\n").unwrap();
+    opened_loop(name, &pts, &series, units, md, figs)?;
+    Ok(())
+}
+
+/// Mindlin–Deresiewicz's loop for a path of its pattern ([`md_pattern`]), with the cycle's dissipation and the
+/// distance of the computed shifts from the loop written to `md`; `None` for other paths.
+fn md_loop(r: &Report, runs: &[(usize, &SolverRun)], solver: &str, md: &mut String) -> Option<Curve> {
+    let s = &r.scene;
+    let (p, q_star) = md_pattern(s)?;
+    let mu = s.friction();
+    let delta = md_shift(s, p);
+    let curve = md_curve(s, p, q_star);
+    let w: f64 = runs
+        .iter()
+        .filter(|(k, _)| r.steps[*k].step >= 2 && r.steps[*k].step <= 3)
+        .filter_map(|(_, x)| x.history.as_ref().map(|h| h.dissipated))
+        .sum();
+    let exact = theory::md_cycle_dissipation(mu, p, s.contact_modulus(), q_star);
+    let in_cycle = |k: usize| (2..=3).contains(&r.steps[k].step);
+    let complete =
+        runs.iter().filter(|(k, _)| in_cycle(*k)).count() == (0..r.steps.len()).filter(|&k| in_cycle(k)).count();
+    if r.scene.document().steps.len() >= 4 && !complete {
+        writeln!(md, "The cycle +Q* → −Q* → +Q* did not complete ({solver} failed in it): no cycle energy.\n").unwrap();
+    } else if r.scene.document().steps.len() >= 4 {
+        writeln!(
+            md,
+            "Energy dissipated in the cycle +Q* → −Q* → +Q* (Q* = {q_star}, {solver}): {w:.6e}; Mindlin–Deresiewicz \
+             in 2D, W = (2μ²P²/(πE*))[1 − γ² + 2γ ln γ] with γ = 1 − Q*/(μP): {exact:.6e} (relative difference \
+             {:+.1e}).\n",
+            w / exact - 1.0
+        )
+        .unwrap();
+    }
+    let worst = runs
+        .iter()
+        .filter_map(|(k, x)| {
+            let q = x.resultants?.tangential;
+            Some((x.rigid_body?.tangential? - delta(md_branch(r, *k, q_star), q)).abs())
+        })
+        .fold(0.0, f64::max);
+    let span = delta(TangentialPath::Loading, q_star).abs();
+    writeln!(
+        md,
+        "Largest distance of the computed shift from the theory's loop: {:.1e} of the loop's half-span.\n",
+        worst / span
+    )
+    .unwrap();
+    Some(("Mindlin–Deresiewicz (2D)".into(), curve, Style::Dashed))
+}
+
+/// The wheel's rigid shift on Mindlin–Deresiewicz's loop at load P, as a function of the branch and Q, for a scene
+/// of the pattern ([`md_pattern`]). Each half-plane's datum is the material point at its depth D; theory's log datum
+/// is D' = D e^(1/(2(1 − ν))) (tests/history.rs derives it); the compliances of the two bodies of a pair add (the
+/// displacement is linear in 1/E*, each body with its own datum); the wheel's shift is minus the counter-body's δ.
+pub fn md_shift(s: &Scene, p: f64) -> impl Fn(TangentialPath, f64) -> f64 {
+    let h = Hertz2D::from_load(p, s.radius(), s.contact_modulus());
+    let mu = s.friction();
+    let wheel_datum = match s.body() {
+        crate::scene::Body::HalfPlane { datum_depth, .. } => *datum_depth,
+        crate::scene::Body::Bem { .. } => s.radius(),
+    };
+    let log_datum = |d: f64, nu: f64| d * (0.5 / (1.0 - nu)).exp();
+    let w = s.wheel().material;
+    let mut bodies = vec![(w.plane_strain_modulus(), log_datum(wheel_datum, w.poisson_ratio))];
+    if let CounterBody::HalfPlane { material, datum_depth } = s.counter_body() {
+        bodies.push((material.plane_strain_modulus(), log_datum(*datum_depth, material.poisson_ratio)));
+    }
+    move |path: TangentialPath, q: f64| {
+        -bodies.iter().map(|&(e, d)| theory::md_displacement(&h, mu, e, d, path, q)).sum::<f64>()
+    }
+}
+
+/// Mindlin–Deresiewicz's loop (shift, Q) at P: loading to Q*, unloading to −Q*, reloading to Q*.
+pub fn md_curve(s: &Scene, p: f64, q_star: f64) -> Vec<(f64, f64)> {
+    let delta = md_shift(s, p);
+    let qs: Vec<f64> = (0..=100).map(|i| q_star * (i as f64 / 50.0 - 1.0)).collect();
+    let mut curve: Vec<(f64, f64)> =
+        (0..=50).map(|i| q_star * i as f64 / 50.0).map(|q| (delta(TangentialPath::Loading, q), q)).collect();
+    curve.extend(qs.iter().rev().map(|&q| (delta(TangentialPath::Unloading { q_star }, q), q)));
+    curve.extend(qs.iter().map(|&q| (delta(TangentialPath::Reloading { q_star }, q), q)));
+    curve
+}
+
+/// The loop with the chord through its tips subtracted, so that its width shows (the loop is thin beside the
+/// elastic compliance): the shifts at the largest and smallest Q define the chord.
+fn opened_loop(
+    name: &str,
+    pts: &[(f64, f64)],
+    series: &[Curve],
+    units: &Units,
+    md: &mut String,
+    figs: &mut Figs,
+) -> Result<()> {
     // The loop is thin beside the elastic compliance: subtract the chord through the computed loop's tips
     // (the shifts at the largest and smallest Q) so that its width can be seen.
     let hi = pts.iter().copied().max_by(|a, b| a.1.total_cmp(&b.1));
@@ -219,12 +271,11 @@ fn hysteresis(
             let mut chart = Chart::new(format!("{name}: loop less its chord"), "δ_T − chord(Q)", "Q")
                 .x_unit(units.length.clone())
                 .y_unit(units.line_load());
-            for (label, p, style) in &series {
+            for (label, p, style) in series {
                 chart = chart.add(Series::new(label.clone(), open(p), *style));
             }
-            let file = format!("figures/{name}-hysteresis-opened.svg");
-            chart.write(&out.join(&file)).map_err(plot_err)?;
-            figs.push((format!("{name}: the loop opened"), file.clone()));
+            let file =
+                figs.save(&chart, &format!("{name}-hysteresis-opened.svg"), format!("{name}: the loop opened"))?;
             writeln!(
                 md,
                 "The same loop with the straight chord through its tips (δ_T at the largest and smallest Q, compliance \
@@ -244,9 +295,8 @@ fn stick_zone(
     r: &Report,
     runs: &[(usize, &SolverRun)],
     units: &Units,
-    out: &Path,
     md: &mut String,
-    figs: &mut Figures,
+    figs: &mut Figs,
 ) -> Result<()> {
     let pts: Vec<(f64, f64)> = runs
         .iter()
@@ -258,7 +308,7 @@ fn stick_zone(
     if pts.is_empty() {
         return Ok(());
     }
-    let solver = runs.first().map(|(_, x)| x.solver.0).unwrap_or("");
+    let solver = runs.first().map(|(_, x)| x.solver.name()).unwrap_or("");
     let mut chart = Chart::new(format!("{name}: stick zone along the path"), "substep", "stick half-width")
         .x_unit("1")
         .y_unit(units.length.clone())
@@ -267,21 +317,21 @@ fn stick_zone(
     let mut theory_pts = Vec::new();
     let mut what = "";
     if let Some((p, q_star)) = md_pattern(s) {
-        let h = Hertz2D::from_load(p, s.wheel.radius, s.contact_modulus());
+        let h = Hertz2D::from_load(p, s.radius(), s.contact_modulus());
         for (k, x) in runs {
             if let Some(f) = x.resultants {
                 if r.steps[*k].step >= 1 {
-                    let c = theory::md_stick_half_width(&h, s.contact.friction, md_branch(r, *k, q_star), f.tangential);
+                    let c = theory::md_stick_half_width(&h, s.friction(), md_branch(r, *k, q_star), f.tangential);
                     theory_pts.push(((k + 1) as f64, c));
                 }
             }
         }
         what = "Mindlin–Deresiewicz: the current branch's stick zone";
     } else if let Some(beta) = spence_pattern(s) {
-        let k_ratio = theory::spence_c_over_a(beta.abs() / s.contact.friction);
+        let k_ratio = theory::spence_c_over_a(beta.abs() / s.friction());
         for (k, x) in runs {
             if let Some(f) = x.resultants.filter(|f| f.normal > 0.0) {
-                let a = Hertz2D::from_load(f.normal, s.wheel.radius, s.contact_modulus()).a;
+                let a = Hertz2D::from_load(f.normal, s.radius(), s.contact_modulus()).a;
                 theory_pts.push(((k + 1) as f64, k_ratio * a));
             }
         }
@@ -293,7 +343,7 @@ fn stick_zone(
             .find(|(k, _)| (k + 1) as f64 == k_last)
             .and_then(|(_, x)| x.resultants)
             .map_or(0.0, |f| f.normal);
-        let a_end = Hertz2D::from_load(p_last, s.wheel.radius, s.contact_modulus()).a;
+        let a_end = Hertz2D::from_load(p_last, s.radius(), s.contact_modulus()).a;
         writeln!(
             md,
             "Final stick half-width {last:.4} {} against Spence's {:.4} (c/a = {:.4} computed against {k_ratio:.4} for \
@@ -301,7 +351,7 @@ fn stick_zone(
             units.length,
             k_ratio * a_end,
             last / a_end,
-            beta.abs() / s.contact.friction
+            beta.abs() / s.friction()
         )
         .unwrap();
     }
@@ -310,34 +360,33 @@ fn stick_zone(
             .iter()
             .filter_map(|(k, c)| theory_pts.iter().find(|t| t.0 == *k).map(|t| (c - t.1).abs()))
             .fold(0.0, f64::max);
-        let h = s.mesh.element_length(s.wheel.radius);
+        let h = s.zone().element_length(s.radius());
         writeln!(md, "{what}; largest difference along the path {:.2} elements.\n", worst / h).unwrap();
         chart = chart.add(Series::new(what.split(':').next().unwrap_or(what), theory_pts, Style::Dashed));
     }
-    let file = format!("figures/{name}-stick-zone.svg");
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    figs.push((format!("{name}: stick zone along the path"), file.clone()));
+    let file = figs.save(&chart, &format!("{name}-stick-zone.svg"), format!("{name}: stick zone along the path"))?;
     writeln!(md, "![stick zone along the path]({file})\n").unwrap();
     Ok(())
 }
 
 /// The steady-rolling counterpart of a rolling path: the last step's drive with `[rolling] mode = "steady"` (the
 /// tangential load kept when the path prescribes it, else the creepage with the tangential DOF free).
-fn steady_counterpart(s: &Scene) -> Scene {
-    let mut c = s.clone();
-    let last = s.steps.last().expect("a path").clone();
-    c.steps.clear();
-    c.drive = last.drive();
-    c.drive.tangential_shift = None;
-    c.drive.rotation = None;
-    c.drive.moment = None;
-    let rolling = c.rolling.as_mut().expect("a rolling path");
-    rolling.mode = RollingMode::Steady;
-    if c.drive.tangential_load.is_some() {
-        rolling.creepage = None;
-    }
-    c.solvers.use_ = vec!["lemke".into()];
-    c
+fn steady_counterpart(s: &Scene) -> Result<Scene> {
+    s.edit(|c| {
+        let last = c.steps.last().cloned().unwrap_or_default();
+        c.steps.clear();
+        c.drive = last.drive();
+        c.drive.tangential_shift = None;
+        c.drive.rotation = None;
+        c.drive.moment = None;
+        if let Some(rolling) = c.rolling.as_mut() {
+            rolling.mode = RollingMode::Steady;
+            if c.drive.tangential_load.is_some() {
+                rolling.creepage = None;
+            }
+        }
+        c.solvers.use_ = vec!["lemke".into()];
+    })
 }
 
 /// Distance of the tractions to the steady-rolling solution against the distance rolled (log scale).
@@ -346,11 +395,10 @@ fn rolling_approach(
     r: &Report,
     runs: &[(usize, &SolverRun)],
     units: &Units,
-    out: &Path,
     md: &mut String,
-    figs: &mut Figures,
+    figs: &mut Figs,
 ) -> Result<()> {
-    let steady = run_scene(&steady_counterpart(&r.scene), Path::new(name))?;
+    let steady = run_scene(&steady_counterpart(&r.scene)?)?;
     let Some(y) = steady.runs.first().filter(|y| y.status == crate::solvers::Status::Solved) else {
         writeln!(md, "The steady-rolling counterpart did not solve; no approach plot.\n").unwrap();
         return Ok(());
@@ -369,10 +417,8 @@ fn rolling_approach(
         .x_unit(units.length.clone())
         .y_unit("1")
         .log_y()
-        .add(Series::new(runs.first().map(|(_, x)| x.solver.0).unwrap_or(""), pts, Style::Line));
-    let file = format!("figures/{name}-approach.svg");
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    figs.push((format!("{name}: approach to steady rolling"), file.clone()));
+        .add(Series::new(runs.first().map(|(_, x)| x.solver.name()).unwrap_or(""), pts, Style::Line));
+    let file = figs.save(&chart, &format!("{name}-approach.svg"), format!("{name}: approach to steady rolling"))?;
     writeln!(
         md,
         "Against the steady-rolling solution of the same mesh (solved beside it, Lemke): after {end_x:.4} {} rolled \

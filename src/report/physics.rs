@@ -1,27 +1,13 @@
 //! Sweep sections about physics rather than cost: what the finite body changes against the half-plane (rows of both
 //! models at the same loads), and creep curves against Carter (steady rolling over a range of creepages).
 
-use super::table::{cell, log_slope, num, Row, Sweep};
-use super::{plot_err, Figures};
+use super::table::{log_slope, num, Row, Sweep};
+use super::Figs;
 use crate::error::Result;
 use crate::plot::{Chart, Series, Style};
 use crate::theory::{self, Hertz2D};
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
-use std::path::Path;
-
-/// Whether a sweep compares the two body models at equal loads (both models among its solved rows).
-pub fn compares_models(sw: &Sweep) -> bool {
-    let models: BTreeSet<&str> =
-        sw.rows.iter().filter(|r| cell(r, "status") == "solved").map(|r| cell(r, "model")).collect();
-    models.contains("bem") && models.contains("half_plane")
-}
-
-/// Whether a sweep is a creep curve: steady rolling at five or more creepages.
-pub fn is_creep_curve(sw: &Sweep) -> bool {
-    let xs: BTreeSet<&str> = sw.rows.iter().map(|r| cell(r, "creepage")).filter(|c| !c.is_empty()).collect();
-    xs.len() >= 5
-}
 
 /// (P, Q, μ) as text.
 type LoadKey = (String, String, String);
@@ -43,12 +29,12 @@ fn rel(a: Option<f64>, b: Option<f64>) -> Option<f64> {
 
 /// What the finite body changes: pair the finite wheel's and the half-plane's rows at the same (P, Q, μ); table and
 /// plot of the relative differences against a/R with their fitted slopes.
-pub fn finite_vs_half_plane(sw: &Sweep, out: &Path, md: &mut String, figs: &mut Figures) -> Result<()> {
-    let solved: Vec<&Row> = sw.rows.iter().filter(|r| cell(r, "status") == "solved").collect();
+pub fn finite_vs_half_plane(sw: &Sweep, md: &mut String, figs: &mut Figs) -> Result<()> {
+    let solved: Vec<&Row> = sw.rows.iter().filter(|r| r.status.solved()).collect();
     let mut pairs: BTreeMap<LoadKey, (Option<&Row>, Option<&Row>)> = BTreeMap::new();
     for r in &solved {
         let e = pairs.entry(load_key(r)).or_default();
-        match cell(r, "model") {
+        match r.model.map_or("", |m| m.name()) {
             "bem" => e.0 = Some(r),
             _ => e.1 = Some(r),
         }
@@ -57,15 +43,15 @@ pub fn finite_vs_half_plane(sw: &Sweep, out: &Path, md: &mut String, figs: &mut 
     // (friction, a/R, Δa, Δp0, Δc, Δshift)
     let mut data: Vec<(f64, f64, [Option<f64>; 4])> = Vec::new();
     for (f, h) in pairs.values().filter_map(|(f, h)| Some(((*f)?, (*h)?))) {
-        let (Some(a), Some(radius)) = (num(h, "hertz_a"), num(h, "radius")) else { continue };
+        let (Some(a), Some(radius)) = (h.hertz_a, h.radius) else { continue };
         let a_over_r = a / radius;
         let d = [
-            rel(num(f, "half_width_fit"), num(h, "half_width_fit")),
-            rel(num(f, "peak_pressure_fit"), num(h, "peak_pressure_fit")),
+            rel(f.half_width_fit, h.half_width_fit),
+            rel(f.peak_pressure_fit, h.peak_pressure_fit),
             rel(half(f), half(h)),
             rel(num(f, "shift"), num(h, "shift")),
         ];
-        data.push((num(f, "friction").unwrap_or(0.0), a_over_r, d));
+        data.push((f.friction.unwrap_or(0.0), a_over_r, d));
     }
     if data.is_empty() {
         writeln!(
@@ -123,9 +109,11 @@ pub fn finite_vs_half_plane(sw: &Sweep, out: &Path, md: &mut String, figs: &mut 
             chart = chart.add(Series::new(format!("{name}, μ = {mu}"), pts, Style::LineMarkers));
         }
     }
-    let file = format!("figures/{}-differences.svg", sw.stem);
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    figs.push((format!("{}: finite wheel against half-plane", sw.name), file.clone()));
+    let file = figs.save(
+        &chart,
+        &format!("{}-differences.svg", sw.stem),
+        format!("{}: finite wheel against half-plane", sw.name),
+    )?;
     writeln!(
         md,
         "\n![finite wheel against half-plane]({file})\n\nThe rigid shift is measured at different points — the finite \
@@ -139,20 +127,15 @@ pub fn finite_vs_half_plane(sw: &Sweep, out: &Path, md: &mut String, figs: &mut 
 
 /// Creep curves: Q/(μP) against ξR/(μa) per series, with Carter's curve; the largest departure from Carter and
 /// the free-rolling creepage (where Q changes sign) per series.
-pub fn creep_curves(sw: &Sweep, out: &Path, md: &mut String, figs: &mut Figures) -> Result<()> {
-    let solved: Vec<&Row> = sw.rows.iter().filter(|r| cell(r, "status") == "solved").collect();
+pub fn creep_curves(sw: &Sweep, md: &mut String, figs: &mut Figs) -> Result<()> {
+    let solved: Vec<&Row> = sw.rows.iter().filter(|r| r.status.solved()).collect();
     // The creepage is the curve's abscissa, not a series.
     let varied: Vec<String> = sw.varied(&solved).into_iter().filter(|k| !k.ends_with("creepage")).collect();
     let mut groups: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
     for r in &solved {
-        let (Some(xi), Some(q), Some(p), Some(mu), Some(a), Some(rad)) = (
-            num(r, "creepage"),
-            num(r, "tangential_load"),
-            num(r, "normal_load"),
-            num(r, "friction"),
-            num(r, "hertz_a"),
-            num(r, "radius"),
-        ) else {
+        let (Some(xi), Some(q), Some(p), Some(mu), Some(a), Some(rad)) =
+            (r.creepage, r.tangential_load, r.normal_load, r.friction, r.hertz_a, r.radius)
+        else {
             continue;
         };
         groups.entry(sw.label(r, &varied)).or_default().push((xi * rad / (mu * a), q / (mu * p)));
@@ -187,9 +170,7 @@ pub fn creep_curves(sw: &Sweep, out: &Path, md: &mut String, figs: &mut Figures)
         writeln!(md, "| {label} | {} | {dev:.2e} | {free} |", pts.len()).unwrap();
         chart = chart.add(Series::new(label, pts, Style::Markers));
     }
-    let file = format!("figures/{}-creep-curves.svg", sw.stem);
-    chart.write(&out.join(&file)).map_err(plot_err)?;
-    figs.push((format!("{}: creep curves", sw.name), file.clone()));
+    let file = figs.save(&chart, &format!("{}-creep-curves.svg", sw.stem), format!("{}: creep curves", sw.name))?;
     writeln!(md, "\n![creep curves]({file})\n").unwrap();
     Ok(())
 }

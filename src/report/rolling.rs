@@ -16,33 +16,43 @@
 use super::table::Units;
 use super::{lemke_run as lemke, plot_err, Figures};
 use crate::error::Result;
+use crate::pipeline::run_scene;
 use crate::plot::{Chart, Series, Style};
 use crate::post::NodeState;
 use crate::results::{Report, SolverRun};
-use crate::run::run_scene;
 use crate::scene::{RollingMode, Scene};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
 
 /// The steady counterpart of a seed rolling scene, and how it is driven (see the module docs).
-fn steady_counterpart(s: &Scene) -> Option<(Scene, &'static str)> {
-    let r = s.rolling.as_ref().filter(|r| r.mode == RollingMode::Seed)?;
-    let mut t = s.clone();
-    let mut roll = r.clone();
-    roll.mode = RollingMode::Steady;
-    let how = if s.drive.tangential_load.is_some() {
-        roll.creepage = None;
+fn steady_counterpart(s: &Scene) -> Result<Option<(Scene, &'static str)>> {
+    if !matches!(s.rolling(), Some(crate::scene::Rolling::Seed { .. })) {
+        return Ok(None);
+    }
+    let d = s.document();
+    let how = if d.drive.tangential_load.is_some() {
         "Q prescribed, ξ computed"
-    } else if s.drive.tangential_shift.is_some() {
-        t.drive.tangential_shift = None;
+    } else if d.drive.tangential_shift.is_some() {
         "ξ prescribed, seed's shift dropped"
     } else {
         "ξ prescribed"
     };
-    t.rolling = Some(roll);
-    t.name = format!("{}-steady", s.name);
-    Some((t, how))
+    let t = s.edit(|t| {
+        let q = t.drive.tangential_load.is_some();
+        t.drive.tangential_shift = None;
+        // Steady rolling turns the wheel continuously: its rotation is the creepage's, not a drive.
+        t.drive.rotation = None;
+        t.drive.moment = None;
+        if let Some(r) = t.rolling.as_mut() {
+            r.mode = RollingMode::Steady;
+            if q {
+                r.creepage = None;
+            }
+        }
+        t.name = format!("{}-steady", t.name);
+    })?;
+    Ok(Some((t, how)))
 }
 
 fn stick_range(run: &SolverRun) -> String {
@@ -51,6 +61,33 @@ fn stick_range(run: &SolverRun) -> String {
         (Some(l), Some(r)) => format!("{} on [{l:.4}, {r:.4}]", xs.len()),
         _ => "none".into(),
     }
+}
+
+/// The tangential force of a run ("–" without one).
+fn force(r: &SolverRun) -> String {
+    r.resultants.map(|f| format!("{:.4e}", f.tangential)).unwrap_or_else(|| "–".into())
+}
+
+/// The table row of a seed scene and its solved steady counterpart.
+fn compared_row(name: &str, rep: &Report, how: &str, seed: &SolverRun, st: &SolverRun) -> String {
+    let counts =
+        |r: &SolverRun| r.rolling.as_ref().map(|x| format!("{} / {}", x.stick_nodes_moving, x.slip_nodes_not_opposed));
+    let xi = |r: &SolverRun| r.rolling.as_ref().and_then(|x| x.creepage).map(|v| format!("{v:.4e}"));
+    format!(
+        "| {name} | {} | {how} | {} | {} | {} | {} | {} | {} | {} |\n",
+        rep.scene.friction(),
+        force(seed),
+        force(st),
+        xi(st).unwrap_or_else(|| "–".into()),
+        stick_range(seed),
+        stick_range(st),
+        counts(seed).unwrap_or_else(|| "–".into()),
+        if xi(st).is_some() {
+            counts(st).unwrap_or_else(|| "–".into())
+        } else {
+            "not evaluable: ξ indeterminate at full slip".into()
+        },
+    )
 }
 
 /// Table, slip-velocity figures and the inconsistency counts; nothing when no reference scene is a seed rolling scene.
@@ -64,37 +101,15 @@ pub fn seed_vs_steady(
     let mut charts: BTreeMap<String, Chart> = BTreeMap::new();
     let mut any = false;
     for (name, rep) in reports {
-        let Some((steady, how)) = steady_counterpart(&rep.scene) else { continue };
+        let Some((steady, how)) = steady_counterpart(&rep.scene)? else { continue };
         let Some(seed) = lemke(rep) else { continue };
         any = true;
-        let path = Path::new(name);
-        let sr = run_scene(&steady, path)?;
+        let sr = run_scene(&steady)?;
         let st = lemke(&sr);
-        let units = Units::parse(rep.scene.units.as_deref());
-        let q = |r: &SolverRun| r.resultants.map(|f| format!("{:.4e}", f.tangential)).unwrap_or_else(|| "–".into());
-        let counts = |r: &SolverRun| {
-            r.rolling.as_ref().map(|x| format!("{} / {}", x.stick_nodes_moving, x.slip_nodes_not_opposed))
-        };
-        let xi = |r: &SolverRun| r.rolling.as_ref().and_then(|x| x.creepage).map(|v| format!("{v:.4e}"));
+        let units = Units::parse(rep.scene.units());
         match st {
             Some(st) => {
-                writeln!(
-                    rows,
-                    "| {name} | {} | {how} | {} | {} | {} | {} | {} | {} | {} |",
-                    rep.scene.contact.friction,
-                    q(seed),
-                    q(st),
-                    xi(st).unwrap_or_else(|| "–".into()),
-                    stick_range(seed),
-                    stick_range(st),
-                    counts(seed).unwrap_or_else(|| "–".into()),
-                    if xi(st).is_some() {
-                        counts(st).unwrap_or_else(|| "–".into())
-                    } else {
-                        "not evaluable: ξ indeterminate at full slip".into()
-                    },
-                )
-                .unwrap();
+                rows.push_str(&compared_row(name, rep, how, seed, st));
                 // The group of the seed's figures this scene belongs to: one chart per drive.
                 let key = how.to_string();
                 let chart = charts.entry(key.clone()).or_insert_with(|| {
@@ -117,13 +132,13 @@ pub fn seed_vs_steady(
                     .runs
                     .iter()
                     .find(|r| r.solver == "lemke")
-                    .map(|r| (r.status.to_string(), r.message.clone()))
+                    .map(|r| (r.status.to_string(), r.explanation()))
                     .unwrap_or_else(|| ("not run".into(), "the steady counterpart has no Lemke run".into()));
                 writeln!(
                     rows,
                     "| {name} | {} | {how} | {} | {status}: {message} | | | | | |",
-                    rep.scene.contact.friction,
-                    q(seed)
+                    rep.scene.friction(),
+                    force(seed)
                 )
                 .unwrap();
             }

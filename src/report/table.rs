@@ -1,42 +1,19 @@
 //! Sweep CSVs as rows of named cells, and the sweep facts every section needs: what was varied, how to label a
 //! series, the scene's units.
 
-use crate::error::{Error, Result};
-use std::collections::{BTreeMap, BTreeSet};
-use std::path::Path;
+use std::collections::BTreeSet;
 
-/// One CSV row: column name → cell.
-pub type Row = BTreeMap<String, String>;
+/// One row of a sweep CSV, typed ([`crate::sweep::SweepRow`]: read by the type that wrote it).
+pub use crate::sweep::SweepRow as Row;
 
-/// A CSV read into rows of named cells.
-pub struct Table {
-    /// The rows, in file order.
-    pub rows: Vec<Row>,
-}
-
-impl Table {
-    /// Read a CSV with a header line.
-    pub fn read(path: &Path) -> Result<Table> {
-        let perr = |e: csv::Error| Error::Parse { path: path.to_path_buf(), message: e.to_string() };
-        let mut rd = csv::Reader::from_path(path).map_err(perr)?;
-        let headers = rd.headers().map_err(perr)?.clone();
-        let mut rows = Vec::new();
-        for rec in rd.records() {
-            let rec = rec.map_err(perr)?;
-            rows.push(headers.iter().zip(rec.iter()).map(|(h, v)| (h.to_string(), v.to_string())).collect());
-        }
-        Ok(Table { rows })
-    }
-}
-
-/// A finite number in a cell.
+/// A finite number in a column of a row (a figure, an error, a time, a derived figure).
 pub fn num(r: &Row, k: &str) -> Option<f64> {
-    r.get(k).and_then(|v| v.parse::<f64>().ok()).filter(|v| v.is_finite())
+    r.number(k)
 }
 
-/// A cell as text ("" when absent).
-pub fn cell<'a>(r: &'a Row, k: &str) -> &'a str {
-    r.get(k).map(|s| s.as_str()).unwrap_or("")
+/// A cell as text ("" when empty): a column, a swept key or a derived figure.
+pub fn cell(r: &Row, k: &str) -> String {
+    r.cell(k)
 }
 
 /// Units as the scene declares them (`units = "N, mm, MPa"`: force, length, stress), for axis and table labels.
@@ -107,7 +84,7 @@ impl Sweep {
                 .cloned(),
         );
         for k in columns {
-            let values: BTreeSet<&str> = rows.iter().map(|r| cell(r, &k)).collect();
+            let values: BTreeSet<String> = rows.iter().map(|r| cell(r, &k)).collect();
             if values.len() > 1 || (k == "solver" && !values.is_empty()) {
                 out.push(k);
             }
@@ -121,9 +98,9 @@ impl Sweep {
             .iter()
             .filter(|k| !cell(r, k).is_empty())
             .map(|k| match k.as_str() {
-                "element" | "solver" | "model" => cell(r, k).to_string(),
-                k if k.ends_with(".tolerance") => format!("τ {}", short_number(cell(r, k))),
-                _ => format!("{} {}", k.rsplit('.').next().unwrap_or(k), short_number(cell(r, k))),
+                "element" | "solver" | "model" => cell(r, k),
+                k if k.ends_with(".tolerance") => format!("τ {}", short_number(&cell(r, k))),
+                _ => format!("{} {}", k.rsplit('.').next().unwrap_or(k), short_number(&cell(r, k))),
             })
             .collect::<Vec<_>>()
             .join(" · ")

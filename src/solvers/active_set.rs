@@ -28,7 +28,7 @@
 //! shear fixed at zero (every node starting in contact), then friction starts with every contact node sticking.
 
 use super::lemke::{self, Lemke, LemkeSettings};
-use super::{Entry, Outcome, Solver, Status, Validate, Work};
+use super::{Entry, Outcome, Solver, SolverId, SolverSettings, Termination, Validate, Work};
 use crate::formulation::{ContactProblem, ProblemKind, Solution};
 use faer::linalg::solvers::Solve;
 use faer::Mat;
@@ -67,12 +67,13 @@ pub struct ActiveSet {
 
 /// Registry entry.
 pub const ENTRY: Entry = Entry {
+    id: SolverId::ActiveSet,
     name: "active_set",
     summary: "primal–dual active-set (semi-smooth Newton) on the physical unknowns, warm-started, Lemke as fallback; \
               every scene",
     in_all: true,
     counters: &["iterations", "factorisations", "gmres", "pivots"],
-    build: |raw| Ok(Box::new(ActiveSet { settings: super::parse_settings("active_set", raw)? })),
+    build: |s: &SolverSettings| Box::new(ActiveSet { settings: s.active_set }),
 };
 
 /// The state of a node.
@@ -687,7 +688,7 @@ impl ActiveSet {
         let cp = ContactProblem::new(&flex, p.law, p.drive, slip).ok()?;
         let out = self.solve(&cp);
         *count += out.work.get("iterations").unwrap_or(0) as usize;
-        let sol = out.solution.filter(|_| out.status == Status::Solved && out.work.get("pivots").is_none())?;
+        let sol = out.solution.filter(|_| out.status == Termination::Solved && out.work.get("pivots").is_none())?;
         let mu = p.law.friction;
         let frictional = p.kind == ProblemKind::Frictional;
         let nk = flex.n();
@@ -710,16 +711,12 @@ impl ActiveSet {
 }
 
 impl Solver for ActiveSet {
-    fn name(&self) -> &'static str {
-        "active_set"
+    fn id(&self) -> SolverId {
+        SolverId::ActiveSet
     }
 
     fn applies(&self, _problem: &ContactProblem) -> Result<(), String> {
         Ok(())
-    }
-
-    fn settings(&self) -> toml::Value {
-        super::settings_value(&self.settings)
     }
 
     fn solve(&self, p: &ContactProblem) -> Outcome {
@@ -780,13 +777,13 @@ impl Solver for ActiveSet {
                 let tangential_known = !matches!(p.kind, ProblemKind::SlidingLimit { .. });
                 Outcome {
                     solution: Some(Solution { f: it.f, h, rigid, tangential_known, support: None }),
-                    status: Status::Solved,
+                    status: Termination::Solved,
                     message: format!(
                         "active sets converged in {count} iterations ({} factorisations and {} GMRES iterations on \
                          the full grid)",
                         linear.factorisations, linear.gmres_iterations
                     ),
-                    work: Work(vec![
+                    work: Work::of(&[
                         ("iterations", count as u64),
                         ("factorisations", linear.factorisations as u64),
                         ("gmres", linear.gmres_iterations as u64),
@@ -796,11 +793,11 @@ impl Solver for ActiveSet {
             }
             Err(why) => {
                 // Fall back to Lemke on the problem's LCP.
-                let lemke = Lemke { name: "lemke", settings: LemkeSettings::default(), engine: lemke::solve };
+                let lemke = Lemke { id: SolverId::Lemke, settings: LemkeSettings::default(), engine: lemke::solve };
                 let mut out = lemke.solve(p);
                 out.message = format!("active set: {why}; fell back to Lemke: {}", out.message);
                 let pivots = out.work.get("pivots").unwrap_or(0);
-                out.work = Work(vec![("iterations", count as u64), ("pivots", pivots)]);
+                out.work = Work::of(&[("iterations", count as u64), ("pivots", pivots)]);
                 out
             }
         }

@@ -3,7 +3,7 @@
 //! ([`super::clarabel_qp`]). It applies to the frictionless problem without a prescribed moment.
 
 use super::clarabel_qp::{solve_frictionless, QpSettings, QpStatus};
-use super::{Entry, Outcome, Solver, Status, Work};
+use super::{Entry, Outcome, Solver, SolverId, SolverSettings, Termination, Work};
 use crate::formulation::{ContactProblem, Dof, DofKind, ProblemKind};
 
 /// clarabel on the frictionless QP.
@@ -14,17 +14,18 @@ pub struct Clarabel {
 
 /// Registry entry.
 pub const ENTRY: Entry = Entry {
+    id: SolverId::Clarabel,
     name: "clarabel",
     summary: "interior-point QP (symmetric part of K) + active-set polish with the nonsymmetric K; frictionless, no \
               moment load",
     in_all: true,
     counters: &["iterations"],
-    build: |raw| Ok(Box::new(Clarabel { settings: super::parse_settings("clarabel", raw)? })),
+    build: |s: &SolverSettings| Box::new(Clarabel { settings: s.clarabel.clone() }),
 };
 
 impl Solver for Clarabel {
-    fn name(&self) -> &'static str {
-        "clarabel"
+    fn id(&self) -> SolverId {
+        SolverId::Clarabel
     }
 
     fn applies(&self, p: &ContactProblem) -> Result<(), String> {
@@ -37,10 +38,6 @@ impl Solver for Clarabel {
                 Err("it solves the frictionless QP; with friction use normtang_qp (NORM-TANG with clarabel QPs)".into())
             }
         }
-    }
-
-    fn settings(&self) -> toml::Value {
-        super::settings_value(&self.settings)
     }
 
     fn solve(&self, p: &ContactProblem) -> Outcome {
@@ -60,7 +57,7 @@ impl Solver for Clarabel {
         let polish_change =
             out.f.iter().zip(&out.f_unpolished).zip(w).fold(0.0_f64, |a, ((f, g), w)| a.max((f - g).abs() / w))
                 / pmax.max(f64::MIN_POSITIVE);
-        let status = Status::from(&out.status);
+        let status = Termination::from(&out.status);
         let msg = match &out.status {
             QpStatus::NumericalError(m) => m.clone(),
             s => format!("{s}"),

@@ -98,11 +98,11 @@ impl crate::solvers::Validate for QpSettings {
     }
 }
 
-/// The one mapping of clarabel's outcome to rollbem's [`crate::status::Status`] (used by every solver that calls
+/// The one mapping of clarabel's outcome to rollbem's [`crate::status::Termination`] (used by every solver that calls
 /// clarabel).
-impl From<&QpStatus> for crate::status::Status {
+impl From<&QpStatus> for crate::status::Termination {
     fn from(s: &QpStatus) -> Self {
-        use crate::status::Status;
+        use crate::status::Termination as Status;
         match s {
             QpStatus::Solved | QpStatus::AlmostSolved => Status::Solved,
             QpStatus::MaxIterations => Status::NotConverged,

@@ -18,14 +18,15 @@ pub mod lemke;
 pub mod normtang;
 
 pub use crate::formulation::Lcp;
-pub use crate::status::Status;
+pub use crate::status::{Status, Termination};
 
 use crate::formulation::{ContactProblem, Solution};
 use crate::tolerances as tol;
 use serde::de::DeserializeOwned;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 
-/// The registry: every solver rollbem has, in the order runs are reported.
+/// The registry: every solver rollbem has, in the order runs are reported (the order of [`SolverId`]).
 pub static REGISTRY: &[Entry] = &[
     lemke::ENTRY,
     active_set::ENTRY,
@@ -35,11 +36,81 @@ pub static REGISTRY: &[Entry] = &[
     lemke::dense::ENTRY,
 ];
 
-/// Builds a solver from its settings table (`None`: the documented defaults).
-pub type Builder = fn(Option<&toml::Value>) -> Result<Box<dyn Solver>, SettingsError>;
+/// A solver's identity, as written in scene files (`[solvers] use`), on the command line and in results.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SolverId {
+    /// Lemke's method, block-revised engine.
+    Lemke,
+    /// Primal–dual active set on the physical unknowns.
+    ActiveSet,
+    /// clarabel on the frictionless QP.
+    Clarabel,
+    /// NORM-TANG with projected Gauss–Seidel sweeps.
+    Pgs,
+    /// NORM-TANG with clarabel QPs.
+    NormtangQp,
+    /// Lemke's method, dense reference engine.
+    LemkeDense,
+}
+
+impl SolverId {
+    /// Every solver, in registry order.
+    pub const ALL: [SolverId; 6] = [
+        SolverId::Lemke,
+        SolverId::ActiveSet,
+        SolverId::Clarabel,
+        SolverId::Pgs,
+        SolverId::NormtangQp,
+        SolverId::LemkeDense,
+    ];
+
+    /// Its registry entry.
+    pub fn entry(self) -> &'static Entry {
+        REGISTRY.iter().find(|e| e.id == self).expect("every SolverId has a registry entry")
+    }
+
+    /// Its name.
+    pub fn name(self) -> &'static str {
+        self.entry().name
+    }
+
+    /// The solver of a name, if there is one.
+    pub fn from_name(name: &str) -> Option<SolverId> {
+        REGISTRY.iter().find(|e| e.name == name).map(|e| e.id)
+    }
+
+    /// Build the solver with the given settings (validated settings cannot fail to build).
+    pub fn build(self, settings: &SolverSettings) -> Box<dyn Solver> {
+        (self.entry().build)(settings)
+    }
+}
+
+impl std::fmt::Display for SolverId {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.pad(self.name())
+    }
+}
+
+impl PartialEq<str> for SolverId {
+    fn eq(&self, other: &str) -> bool {
+        self.name() == other
+    }
+}
+
+impl PartialEq<&str> for SolverId {
+    fn eq(&self, other: &&str) -> bool {
+        self.name() == *other
+    }
+}
+
+/// Builds a solver from the (validated) settings of every solver.
+pub type Builder = fn(&SolverSettings) -> Box<dyn Solver>;
 
 /// One registered solver.
 pub struct Entry {
+    /// Its identity.
+    pub id: SolverId,
     /// Name in scene files, on the command line and in results.
     pub name: &'static str,
     /// One line: what it is and what it applies to.
@@ -48,23 +119,97 @@ pub struct Entry {
     pub in_all: bool,
     /// The work counters it reports, in display order (the sweep CSV's work columns are their union).
     pub counters: &'static [&'static str],
-    /// Build the solver from its settings table (`[solvers.NAME]`, `None`: the documented defaults).
+    /// Build the solver from its settings.
     pub build: Builder,
+}
+
+/// The settings of every solver (`[solvers.NAME]` tables), typed, with documented defaults. Built and validated
+/// when a scene is read ([`SolverSettings::from_tables`]) — no solver is built for that — so that a bad value is an
+/// input error naming its key before anything runs.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SolverSettings {
+    /// `[solvers.lemke]`.
+    pub lemke: lemke::LemkeSettings,
+    /// `[solvers.active_set]`.
+    pub active_set: active_set::ActiveSetSettings,
+    /// `[solvers.clarabel]`.
+    pub clarabel: clarabel_qp::QpSettings,
+    /// `[solvers.pgs]`.
+    pub pgs: normtang::PgsSettings,
+    /// `[solvers.normtang_qp]`.
+    pub normtang_qp: normtang::NormTangQpSettings,
+    /// `[solvers.lemke_dense]`.
+    pub lemke_dense: lemke::LemkeSettings,
+}
+
+impl SolverSettings {
+    /// Parse and validate the settings tables of a scene (`[solvers.NAME]`, keyed by solver name; absent tables take
+    /// the defaults). An unknown table or key, or a value out of range, is an error naming `solvers.NAME.KEY`.
+    pub fn from_tables(tables: &BTreeMap<String, toml::Value>) -> Result<SolverSettings, SettingsError> {
+        if let Some(k) = tables.keys().find(|k| SolverId::from_name(k).is_none()) {
+            return Err(SettingsError {
+                field: format!("solvers.{k}"),
+                message: format!("unknown solver settings table (solvers are: {})", names()),
+                unknown: true,
+            });
+        }
+        let t = |id: SolverId| tables.get(id.name());
+        Ok(SolverSettings {
+            lemke: parse_settings("lemke", t(SolverId::Lemke))?,
+            active_set: parse_settings("active_set", t(SolverId::ActiveSet))?,
+            clarabel: parse_settings("clarabel", t(SolverId::Clarabel))?,
+            pgs: parse_settings("pgs", t(SolverId::Pgs))?,
+            normtang_qp: parse_settings("normtang_qp", t(SolverId::NormtangQp))?,
+            lemke_dense: parse_settings("lemke_dense", t(SolverId::LemkeDense))?,
+        })
+    }
+
+    /// The settings as tables keyed by solver name, every default filled in (the scene as parsed).
+    pub fn tables(&self) -> BTreeMap<String, toml::Value> {
+        let mut out = BTreeMap::new();
+        let mut put = |id: SolverId, v: toml::Value| {
+            out.insert(id.name().to_string(), v);
+        };
+        put(SolverId::Lemke, settings_value(&self.lemke));
+        put(SolverId::ActiveSet, settings_value(&self.active_set));
+        put(SolverId::Clarabel, settings_value(&self.clarabel));
+        put(SolverId::Pgs, settings_value(&self.pgs));
+        put(SolverId::NormtangQp, settings_value(&self.normtang_qp));
+        put(SolverId::LemkeDense, settings_value(&self.lemke_dense));
+        out
+    }
+
+    /// Check every solver's ranges (for settings built in code; [`SolverSettings::from_tables`] already did).
+    pub fn validate(&self) -> Result<(), SettingsError> {
+        SolverSettings::from_tables(&self.tables()).map(|_| ())
+    }
+
+    /// The relative tolerance an iterative solver stops at (`None` for a direct one).
+    pub fn tolerance(&self, id: SolverId) -> Option<f64> {
+        match id {
+            SolverId::Pgs => Some(self.pgs.tolerance),
+            SolverId::NormtangQp => Some(self.normtang_qp.tolerance),
+            _ => None,
+        }
+    }
 }
 
 /// A contact solver (see the module docs).
 pub trait Solver: Send + Sync {
+    /// Its identity.
+    fn id(&self) -> SolverId;
+
     /// Its registry name.
-    fn name(&self) -> &'static str;
+    fn name(&self) -> &'static str {
+        self.id().name()
+    }
 
     /// Whether it applies to a problem; `Err` says why not.
     fn applies(&self, problem: &ContactProblem) -> Result<(), String>;
 
     /// Solve. Called only when [`Solver::applies`] is `Ok` and the problem has a static solution to look for.
     fn solve(&self, problem: &ContactProblem) -> Outcome;
-
-    /// Its settings with the defaults filled in (as written in the scene's `[solvers.NAME]` table).
-    fn settings(&self) -> toml::Value;
 
     /// The relative tolerance it stops at, for an iterative solver (`None` for a direct one).
     fn tolerance(&self) -> Option<f64> {
@@ -77,15 +222,31 @@ pub trait Solver: Send + Sync {
         false
     }
 
-    /// Whether the solver works on bare LCPs (`rollbem lcp solve`).
-    fn solves_lcp(&self) -> bool {
-        false
-    }
-
-    /// Solve a bare LCP, if the solver works on LCPs ([`Solver::solves_lcp`]).
-    fn solve_lcp(&self, _lcp: &Lcp) -> Option<lemke::LemkeOutcome> {
+    /// The solver as a solver of bare LCPs (`rollbem lcp solve`), if it is one.
+    fn lcp_solver(&self) -> Option<&dyn LcpSolver> {
         None
     }
+}
+
+/// A solver of bare LCPs `w = M z + q ≥ 0, z ≥ 0, wᵀz = 0` (`rollbem lcp solve`, LCP files).
+pub trait LcpSolver {
+    /// Solve the LCP.
+    fn solve_lcp(&self, lcp: &Lcp) -> LcpOutcome;
+}
+
+/// What a solver of bare LCPs returns.
+#[derive(Debug, Clone)]
+pub struct LcpOutcome {
+    /// z; when not solved, the solver's last iterate (not a solution).
+    pub z: Vec<f64>,
+    /// w = M z + q, recomputed from z.
+    pub w: Vec<f64>,
+    /// How the solver ended.
+    pub termination: Termination,
+    /// Detail (which variable ended it, etc.).
+    pub message: String,
+    /// Work counters.
+    pub work: Work,
 }
 
 /// (check bound, refusal bound) on a run's largest solver-independent residual: direct solvers are held to
@@ -97,12 +258,17 @@ pub fn residual_bounds(solver: &dyn Solver) -> (f64, f64) {
 
 /// Named work counters of a run (pivots, sweeps, iterations, outer iterations, ...), in the solver's order.
 #[derive(Debug, Clone, Default, PartialEq)]
-pub struct Work(pub Vec<(&'static str, u64)>);
+pub struct Work(pub Vec<(String, u64)>);
 
 impl Work {
     /// One counter.
-    pub fn one(name: &'static str, value: u64) -> Work {
-        Work(vec![(name, value)])
+    pub fn one(name: &str, value: u64) -> Work {
+        Work(vec![(name.to_string(), value)])
+    }
+
+    /// Counters from (name, value) pairs, in that order.
+    pub fn of(counters: &[(&str, u64)]) -> Work {
+        Work(counters.iter().map(|(k, v)| (k.to_string(), *v)).collect())
     }
 
     /// The value of a counter.
@@ -112,7 +278,7 @@ impl Work {
 
     /// Short text, e.g. `28 piv`, `120 sw/4`, `11 it`.
     pub fn short(&self) -> String {
-        fn abbrev(k: &'static str) -> &'static str {
+        fn abbrev(k: &str) -> &str {
             match k {
                 "pivots" => "piv",
                 "sweeps" => "sw",
@@ -139,6 +305,26 @@ impl Work {
     }
 }
 
+impl<'de> Deserialize<'de> for Work {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Work, D::Error> {
+        struct V;
+        impl<'de> serde::de::Visitor<'de> for V {
+            type Value = Work;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a map of work counters")
+            }
+            fn visit_map<A: serde::de::MapAccess<'de>>(self, mut m: A) -> Result<Work, A::Error> {
+                let mut out = Vec::new();
+                while let Some((k, v)) = m.next_entry::<String, u64>()? {
+                    out.push((k, v));
+                }
+                Ok(Work(out))
+            }
+        }
+        d.deserialize_map(V)
+    }
+}
+
 impl Serialize for Work {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         use serde::ser::SerializeMap;
@@ -155,8 +341,8 @@ impl Serialize for Work {
 pub struct Outcome {
     /// The solution in the problem's unknowns (`None` when nothing was computed).
     pub solution: Option<Solution>,
-    /// The solver's status (the harness may still refuse a `solved` claim on the independent residuals).
-    pub status: Status,
+    /// How the solver ended (the harness may still refuse a `solved` claim on the independent residuals).
+    pub status: Termination,
     /// Detail.
     pub message: String,
     /// Work counters.
@@ -246,10 +432,10 @@ pub fn names() -> String {
     REGISTRY.iter().map(|e| e.name).collect::<Vec<_>>().join(", ")
 }
 
-/// Build a registered solver from its settings table; an unknown name is an error listing the valid ones.
-pub fn build(name: &str, raw: Option<&toml::Value>) -> Result<Box<dyn Solver>, SettingsError> {
-    match entry(name) {
-        Some(e) => (e.build)(raw),
+/// The solver of a name with the default settings; an unknown name is an error listing the valid ones.
+pub fn build(name: &str) -> Result<Box<dyn Solver>, SettingsError> {
+    match SolverId::from_name(name) {
+        Some(id) => Ok(id.build(&SolverSettings::default())),
         None => Err(SettingsError {
             unknown: true,
             field: "solvers.use".into(),

@@ -21,7 +21,7 @@
 
 use super::clarabel_box::solve_box;
 use super::clarabel_qp::{solve_frictionless, QpSettings};
-use super::{Entry, Solver, Status, Validate, Work};
+use super::{Entry, Solver, SolverId, SolverSettings, Termination, Validate, Work};
 use crate::formulation::{ContactProblem, Dof, DofKind, ProblemKind, Solution};
 use faer::Mat;
 use serde::{Deserialize, Serialize};
@@ -244,7 +244,7 @@ pub struct Outcome {
     /// Rigid motion (shift, approach, rotation).
     pub rigid: [f64; 3],
     /// Outcome.
-    pub status: Status,
+    pub status: Termination,
     /// Detail.
     pub message: String,
     /// Total Gauss–Seidel sweeps (PGS inner).
@@ -256,7 +256,7 @@ pub struct Outcome {
 }
 
 /// Why an inner solve failed.
-struct Failure(Status, String);
+struct Failure(Termination, String);
 
 /// Projected Gauss–Seidel on `r = q + K x`, `lo ≤ x ≤ hi` (box LCP). `k` row-major. Returns sweeps used and
 /// whether the largest update fell under `tol · max|x|`.
@@ -298,7 +298,7 @@ pub fn pgs_box(
 fn check_diagonal(k: &[f64], n: usize, which: &str) -> Result<(), Failure> {
     match (0..n).find(|&i| k[i * n + i].is_nan() || k[i * n + i] <= 0.0) {
         Some(i) => Err(Failure(
-            Status::NumericalError,
+            Termination::NumericalError,
             format!(
                 "the {which} flexibility has a non-positive diagonal entry at contact node {i} ({:e}): it is not \
                  positive definite, so projected Gauss–Seidel cannot run (refine the mesh, or use lemke)",
@@ -326,7 +326,10 @@ fn root<F: FnMut(f64) -> Result<f64, Failure>>(
         if v.is_finite() {
             Ok(v)
         } else {
-            Err(Failure(Status::NumericalError, format!("the resultant is not finite at rigid displacement {d:e}")))
+            Err(Failure(
+                Termination::NumericalError,
+                format!("the resultant is not finite at rigid displacement {d:e}"),
+            ))
         }
     };
     let (mut a, mut ga) = (d0, g(eval(d0)?));
@@ -351,7 +354,7 @@ fn root<F: FnMut(f64) -> Result<f64, Failure>>(
         h *= 2.0;
         tries += 1;
         if tries > 200 {
-            return Err(Failure(Status::NotConverged, "could not bracket the prescribed load".into()));
+            return Err(Failure(Termination::NotConverged, "could not bracket the prescribed load".into()));
         }
     }
     let mut side = 0;
@@ -377,7 +380,7 @@ fn root<F: FnMut(f64) -> Result<f64, Failure>>(
             side = 1;
         }
     }
-    Err(Failure(Status::NotConverged, "the load root-find did not converge".into()))
+    Err(Failure(Termination::NotConverged, "the load root-find did not converge".into()))
 }
 
 /// Solve the split problem.
@@ -415,7 +418,7 @@ pub fn solve(p: &Split, inner: &Inner) -> Outcome {
         }
         if outer >= max_outer {
             break Err(Failure(
-                Status::NotConverged,
+                Termination::NotConverged,
                 format!(
                     "NORM-TANG did not converge in {max_outer} outer iterations: last change {change:.3e} > {tolerance:.0e} \
                      (strong normal–tangential coupling?)"
@@ -425,7 +428,7 @@ pub fn solve(p: &Split, inner: &Inner) -> Outcome {
     };
     let (status, message) = match result {
         Ok(()) => (
-            Status::Solved,
+            Termination::Solved,
             format!(
                 "converged in {outer} outer iteration(s), last change {:.3e}",
                 if change.is_finite() { change } else { 0.0 }
@@ -436,6 +439,8 @@ pub fn solve(p: &Split, inner: &Inner) -> Outcome {
     Outcome { f, h: frictional.then_some(h), rigid, status, message, sweeps, outer, qp_iterations }
 }
 
+/// The normal step of NORM-TANG: the normal forces `f` (and, under a normal load, the approach) for the shear
+/// forces `h`.
 fn norm(
     p: &Split,
     inner: &Inner,
@@ -466,14 +471,7 @@ fn norm(
                 let (sw, ok) = pgs_box(&p.knn_rows, n, &q, &lo, &hi, f, s.relaxation, 0.1 * s.tolerance, s.max_sweeps);
                 *sweeps += sw;
                 if !ok {
-                    return Err(Failure(
-                        Status::NotConverged,
-                        format!(
-                            "projected Gauss–Seidel did not converge in {} sweeps of one inner solve (max_sweeps; {} \
-                             sweeps in all, counting the inner solves before it)",
-                            s.max_sweeps, *sweeps
-                        ),
-                    ));
+                    return Err(pgs_not_converged(s.max_sweeps, *sweeps));
                 }
                 Ok(f.iter().sum())
             };
@@ -505,7 +503,7 @@ fn norm(
             let out = solve_frictionless(&p.knn_cols, n, &q, load, &s.qp);
             *qp_iterations += out.iterations;
             if !out.status.is_solved() {
-                return Err(Failure(Status::from(&out.status), format!("clarabel: {}", out.status)));
+                return Err(Failure(Termination::from(&out.status), format!("clarabel: {}", out.status)));
             }
             *f = out.f;
             if let Some(d) = out.approach {
@@ -516,6 +514,65 @@ fn norm(
     Ok(())
 }
 
+/// The failure of an inner PGS solve that used up `max_sweeps`; `sweeps` counts all sweeps so far.
+fn pgs_not_converged(max_sweeps: usize, sweeps: usize) -> Failure {
+    Failure(
+        Termination::NotConverged,
+        format!(
+            "projected Gauss–Seidel did not converge in {max_sweeps} sweeps of one inner solve (max_sweeps; {sweeps} \
+             sweeps in all, counting the inner solves before it)"
+        ),
+    )
+}
+
+/// The tangential sub-problem on the nodes in contact (those with a positive friction bound μ·f): the box LCP
+/// `r = q0 + c·d + K h`, `lo ≤ h ≤ hi`, with `d` the rigid shift.
+struct TangSub {
+    /// Indices of the nodes in contact, into the full node list.
+    act: Vec<usize>,
+    /// K_tt restricted to the nodes in contact, row-major, `act.len()²`.
+    ktt_rows: Vec<f64>,
+    /// Lower bounds −μ f.
+    lo: Vec<f64>,
+    /// Upper bounds μ f.
+    hi: Vec<f64>,
+    /// Slip without the shift term.
+    q0: Vec<f64>,
+    /// Shift column of the slip.
+    c: Vec<f64>,
+}
+
+impl TangSub {
+    /// The sub-problem for normal forces `f` and the other rigid modes fixed at `rigid`.
+    fn new(p: &Split, f: &[f64], rigid: &[f64; 3]) -> TangSub {
+        let (n, mu) = (p.n, p.mu);
+        let q0: Vec<f64> = (0..n)
+            .map(|i| {
+                p.rt[i][MODE_APPROACH] * rigid[MODE_APPROACH]
+                    + p.rt[i][MODE_ROTATION] * rigid[MODE_ROTATION]
+                    + if p.coupling { (0..n).map(|j| p.ktn_rows[i * n + j] * f[j]).sum::<f64>() } else { 0.0 }
+                    + p.slip_offset[i]
+            })
+            .collect();
+        let c: Vec<f64> = (0..n).map(|i| p.rt[i][MODE_SHIFT]).collect();
+        let lo: Vec<f64> = f.iter().map(|&v| -mu * v.max(0.0)).collect();
+        let hi: Vec<f64> = f.iter().map(|&v| mu * v.max(0.0)).collect();
+        // Nodes out of contact carry no shear: drop them from the sub-problem.
+        let act: Vec<usize> = (0..n).filter(|&i| hi[i] > 0.0).collect();
+        let mut ktt_rows = Vec::with_capacity(act.len() * act.len());
+        for &i in &act {
+            for &j in &act {
+                ktt_rows.push(p.ktt_rows[i * n + j]);
+            }
+        }
+        let pick = |v: &[f64]| act.iter().map(|&i| v[i]).collect::<Vec<f64>>();
+        let (lo, hi, q0, c) = (pick(&lo), pick(&hi), pick(&q0), pick(&c));
+        TangSub { act, ktt_rows, lo, hi, q0, c }
+    }
+}
+
+/// The tangential step of NORM-TANG: the shear forces `h` (and, under a tangential load, the shift) for the
+/// normal forces `f`. Fails with `Infeasible` at gross sliding (|Q| ≥ μP).
 fn tang(
     p: &Split,
     inner: &Inner,
@@ -525,24 +582,12 @@ fn tang(
     sweeps: &mut usize,
     qp_iterations: &mut u32,
 ) -> Result<(), Failure> {
-    let n = p.n;
     let mu = p.mu;
-    let q0: Vec<f64> = (0..n)
-        .map(|i| {
-            p.rt[i][MODE_APPROACH] * rigid[MODE_APPROACH]
-                + p.rt[i][MODE_ROTATION] * rigid[MODE_ROTATION]
-                + if p.coupling { (0..n).map(|j| p.ktn_rows[i * n + j] * f[j]).sum::<f64>() } else { 0.0 }
-                + p.slip_offset[i]
-        })
-        .collect();
-    let c: Vec<f64> = (0..n).map(|i| p.rt[i][MODE_SHIFT]).collect();
-    let lo: Vec<f64> = f.iter().map(|&v| -mu * v.max(0.0)).collect();
-    let hi: Vec<f64> = f.iter().map(|&v| mu * v.max(0.0)).collect();
     let psum: f64 = f.iter().sum();
     if let Dof::Load(ql) = p.tangential {
         if ql.abs() >= mu * psum {
             return Err(Failure(
-                Status::Infeasible,
+                Termination::Infeasible,
                 format!(
                     "gross sliding: the tangential load |Q| exceeds the friction limit μP (|Q|/(μP) = {:.6})",
                     ql.abs() / (mu * psum)
@@ -550,91 +595,99 @@ fn tang(
             ));
         }
     }
-    // Nodes out of contact carry no shear: drop them from the sub-problem.
-    let act: Vec<usize> = (0..n).filter(|&i| hi[i] > 0.0).collect();
-    let na = act.len();
-    for i in 0..n {
-        if hi[i] == 0.0 {
-            h[i] = 0.0;
+    let sub = TangSub::new(p, f, rigid);
+    // Nodes out of contact (μ f = 0) carry no shear.
+    for (i, hi) in h.iter_mut().enumerate() {
+        if mu * f[i].max(0.0) == 0.0 {
+            *hi = 0.0;
         }
     }
-    let sub = |m: &[f64]| -> Vec<f64> {
-        let mut out = Vec::with_capacity(na * na);
-        for &i in &act {
-            for &j in &act {
-                out.push(m[i * n + j]);
-            }
-        }
-        out
-    };
-    let ktt_rows = sub(&p.ktt_rows);
-    let pick = |v: &[f64]| act.iter().map(|&i| v[i]).collect::<Vec<f64>>();
-    let (lo_a, hi_a, q0_a, c_a) = (pick(&lo), pick(&hi), pick(&q0), pick(&c));
-    let mut x = pick(h);
+    let mut x: Vec<f64> = sub.act.iter().map(|&i| h[i]).collect();
     match inner {
-        Inner::Pgs(s) => {
-            check_diagonal(&ktt_rows, na, "tangential")?;
-            let mut solve_at = |d: f64, x: &mut Vec<f64>| -> Result<f64, Failure> {
-                let q: Vec<f64> = (0..na).map(|i| q0_a[i] + c_a[i] * d).collect();
-                let (sw, ok) =
-                    pgs_box(&ktt_rows, na, &q, &lo_a, &hi_a, x, s.relaxation, 0.1 * s.tolerance, s.max_sweeps);
-                *sweeps += sw;
-                if !ok {
-                    return Err(Failure(
-                        Status::NotConverged,
-                        format!(
-                            "projected Gauss–Seidel did not converge in {} sweeps of one inner solve (max_sweeps; {} \
-                             sweeps in all, counting the inner solves before it)",
-                            s.max_sweeps, *sweeps
-                        ),
-                    ));
-                }
-                Ok(x.iter().sum())
-            };
-            match p.tangential {
-                Dof::Displacement(_) => {
-                    solve_at(rigid[MODE_SHIFT], &mut x)?;
-                }
-                Dof::Load(ql) => {
-                    let kmax = (0..na).map(|i| ktt_rows[i * na + i]).fold(0.0_f64, f64::max);
-                    let step = (mu * psum * kmax).max(f64::MIN_POSITIVE);
-                    let tol = 0.1 * s.tolerance * mu * psum;
-                    let d = root(|d| solve_at(d, &mut x), ql, rigid[MODE_SHIFT], step, false, tol)?;
-                    solve_at(d, &mut x)?;
-                    rigid[MODE_SHIFT] = d;
-                }
-            }
+        Inner::Pgs(s) => tang_pgs(p, s, &sub, psum, &mut x, rigid, sweeps)?,
+        Inner::Qp(s) => tang_qp(p, s, &sub, &mut x, rigid, qp_iterations)?,
+    }
+    for (a, &i) in sub.act.iter().enumerate() {
+        h[i] = x[a];
+    }
+    Ok(())
+}
+
+/// The tangential sub-problem by projected Gauss–Seidel; under a tangential load the shift is found by a root
+/// search on the resultant (normal load `psum`).
+fn tang_pgs(
+    p: &Split,
+    s: &PgsSettings,
+    sub: &TangSub,
+    psum: f64,
+    x: &mut Vec<f64>,
+    rigid: &mut [f64; 3],
+    sweeps: &mut usize,
+) -> Result<(), Failure> {
+    let na = sub.act.len();
+    check_diagonal(&sub.ktt_rows, na, "tangential")?;
+    let mut solve_at = |d: f64, x: &mut Vec<f64>| -> Result<f64, Failure> {
+        let q: Vec<f64> = (0..na).map(|i| sub.q0[i] + sub.c[i] * d).collect();
+        let (sw, ok) =
+            pgs_box(&sub.ktt_rows, na, &q, &sub.lo, &sub.hi, x, s.relaxation, 0.1 * s.tolerance, s.max_sweeps);
+        *sweeps += sw;
+        if !ok {
+            return Err(pgs_not_converged(s.max_sweeps, *sweeps));
         }
-        Inner::Qp(s) => {
-            let q: Vec<f64> = match p.tangential {
-                Dof::Displacement(_) => (0..na).map(|i| q0_a[i] + c_a[i] * rigid[MODE_SHIFT]).collect(),
-                Dof::Load(_) => q0_a.clone(),
-            };
-            let mut cols = vec![0.0; na * na];
-            for i in 0..na {
-                for j in 0..na {
-                    cols[i + j * na] = ktt_rows[i * na + j];
-                }
-            }
-            let ones = vec![1.0; na];
-            let eq = match p.tangential {
-                Dof::Load(ql) => Some((ones.as_slice(), ql)),
-                Dof::Displacement(_) => None,
-            };
-            let out = solve_box(&cols, na, &q, &lo_a, &hi_a, eq, &s.qp);
-            *qp_iterations += out.iterations;
-            if !out.status.is_solved() {
-                return Err(Failure(Status::from(&out.status), format!("clarabel (TANG): {}", out.status)));
-            }
-            x = out.x;
-            if let Some(nu) = out.nu {
-                // Gradient K h + q + ν·1 with the shift column ≈ 1: ν is the shift.
-                rigid[MODE_SHIFT] = nu;
-            }
+        Ok(x.iter().sum())
+    };
+    match p.tangential {
+        Dof::Displacement(_) => {
+            solve_at(rigid[MODE_SHIFT], x)?;
+        }
+        Dof::Load(ql) => {
+            let mu = p.mu;
+            let kmax = (0..na).map(|i| sub.ktt_rows[i * na + i]).fold(0.0_f64, f64::max);
+            let step = (mu * psum * kmax).max(f64::MIN_POSITIVE);
+            let tol = 0.1 * s.tolerance * mu * psum;
+            let d = root(|d| solve_at(d, x), ql, rigid[MODE_SHIFT], step, false, tol)?;
+            solve_at(d, x)?;
+            rigid[MODE_SHIFT] = d;
         }
     }
-    for (a, &i) in act.iter().enumerate() {
-        h[i] = x[a];
+    Ok(())
+}
+
+/// The tangential sub-problem as a box QP by clarabel; under a tangential load the shift is the multiplier of
+/// the resultant constraint.
+fn tang_qp(
+    p: &Split,
+    s: &NormTangQpSettings,
+    sub: &TangSub,
+    x: &mut Vec<f64>,
+    rigid: &mut [f64; 3],
+    qp_iterations: &mut u32,
+) -> Result<(), Failure> {
+    let na = sub.act.len();
+    let q: Vec<f64> = match p.tangential {
+        Dof::Displacement(_) => (0..na).map(|i| sub.q0[i] + sub.c[i] * rigid[MODE_SHIFT]).collect(),
+        Dof::Load(_) => sub.q0.clone(),
+    };
+    let mut cols = vec![0.0; na * na];
+    for i in 0..na {
+        for j in 0..na {
+            cols[i + j * na] = sub.ktt_rows[i * na + j];
+        }
+    }
+    let ones = vec![1.0; na];
+    let eq = match p.tangential {
+        Dof::Load(ql) => Some((ones.as_slice(), ql)),
+        Dof::Displacement(_) => None,
+    };
+    let out = solve_box(&cols, na, &q, &sub.lo, &sub.hi, eq, &s.qp);
+    *qp_iterations += out.iterations;
+    if !out.status.is_solved() {
+        return Err(Failure(Termination::from(&out.status), format!("clarabel (TANG): {}", out.status)));
+    }
+    *x = out.x;
+    if let Some(nu) = out.nu {
+        // Gradient K h + q + ν·1 with the shift column ≈ 1: ν is the shift.
+        rigid[MODE_SHIFT] = nu;
     }
     Ok(())
 }
@@ -653,20 +706,22 @@ pub struct NormTangQp {
 
 /// Registry entry of NORM-TANG with PGS.
 pub const PGS_ENTRY: Entry = Entry {
+    id: SolverId::Pgs,
     name: "pgs",
     summary: "NORM-TANG split (Kalker; González & Abascal) with projected Gauss–Seidel sweeps; no moment load",
     in_all: true,
     counters: &["sweeps", "outer"],
-    build: |raw| Ok(Box::new(Pgs { settings: super::parse_settings("pgs", raw)? })),
+    build: |s: &SolverSettings| Box::new(Pgs { settings: s.pgs }),
 };
 
 /// Registry entry of NORM-TANG with clarabel QPs.
 pub const NORMTANG_QP_ENTRY: Entry = Entry {
+    id: SolverId::NormtangQp,
     name: "normtang_qp",
     summary: "NORM-TANG with clarabel QPs as the inner solver; no moment load",
     in_all: true,
     counters: &["iterations", "outer"],
-    build: |raw| Ok(Box::new(NormTangQp { settings: super::parse_settings("normtang_qp", raw)? })),
+    build: |s: &SolverSettings| Box::new(NormTangQp { settings: s.normtang_qp.clone() }),
 };
 
 /// Whether NORM-TANG applies: not with a prescribed moment, not at the sliding limit.
@@ -684,8 +739,8 @@ fn applies(p: &ContactProblem) -> Result<(), String> {
 fn run(p: &ContactProblem, inner: &Inner) -> super::Outcome {
     let out = solve(&Split::from_problem(p), inner);
     let work = match inner {
-        Inner::Pgs(_) => Work(vec![("sweeps", out.sweeps as u64), ("outer", out.outer as u64)]),
-        Inner::Qp(_) => Work(vec![("iterations", out.qp_iterations as u64), ("outer", out.outer as u64)]),
+        Inner::Pgs(_) => Work::of(&[("sweeps", out.sweeps as u64), ("outer", out.outer as u64)]),
+        Inner::Qp(_) => Work::of(&[("iterations", out.qp_iterations as u64), ("outer", out.outer as u64)]),
     };
     let rigid = p.dofs.iter().map(|d| out.rigid[slot(d.kind)]).collect();
     super::Outcome {
@@ -698,14 +753,11 @@ fn run(p: &ContactProblem, inner: &Inner) -> super::Outcome {
 }
 
 impl Solver for Pgs {
-    fn name(&self) -> &'static str {
-        "pgs"
+    fn id(&self) -> SolverId {
+        SolverId::Pgs
     }
     fn applies(&self, p: &ContactProblem) -> Result<(), String> {
         applies(p)
-    }
-    fn settings(&self) -> toml::Value {
-        super::settings_value(&self.settings)
     }
     fn tolerance(&self) -> Option<f64> {
         Some(self.settings.tolerance)
@@ -716,8 +768,8 @@ impl Solver for Pgs {
 }
 
 impl Solver for NormTangQp {
-    fn name(&self) -> &'static str {
-        "normtang_qp"
+    fn id(&self) -> SolverId {
+        SolverId::NormtangQp
     }
     fn applies(&self, p: &ContactProblem) -> Result<(), String> {
         if p.slip.is_steady() && p.law.friction > 0.0 {
@@ -726,9 +778,6 @@ impl Solver for NormTangQp {
                 .into());
         }
         applies(p)
-    }
-    fn settings(&self) -> toml::Value {
-        super::settings_value(&self.settings)
     }
     fn tolerance(&self) -> Option<f64> {
         Some(self.settings.tolerance)

@@ -22,8 +22,8 @@ use super::{Blocks, SourceTiming};
 use crate::bem::{assemble, kelvin::Kelvin, BlockSink};
 use crate::error::{Error, Result};
 use crate::flexibility::{Flexibility, ModeKind, RigidMode, Scales};
-use crate::mesh::{Bc, Mesh};
-use crate::scene::{Scene, Support};
+use crate::mesh::{Bc, Mesh, MeshSpec};
+use crate::scene::{Support, Wheel};
 use crate::tolerances::BEM_SINGULAR_PIVOT_RATIO;
 use faer::linalg::solvers::Solve;
 use faer::Mat;
@@ -43,21 +43,24 @@ pub struct Model {
 }
 
 impl Model {
-    /// Build the dimensionless model of a (validated) scene.
-    pub fn new(scene: &Scene) -> Model {
-        let w = &scene.wheel;
-        let length = 2.0 * w.radius;
-        let support = match w.support() {
+    /// The dimensionless model of a scene's BEM wheel (`None` for the half-plane model).
+    pub fn of_scene(scene: &crate::scene::Scene) -> Option<Model> {
+        crate::mesh::MeshSpec::of_scene(scene).map(|(support, spec)| Model::new(scene.wheel(), support, &spec))
+    }
+
+    /// Build the dimensionless model of a wheel with its support and mesh (lengths in the user's unit).
+    pub fn new(wheel: &Wheel, support: Support, spec: &MeshSpec) -> Model {
+        let length = 2.0 * wheel.radius;
+        let support = match support {
             Support::Hub { radius } => Support::Hub { radius: radius / length },
             s @ Support::TopArc { .. } => s,
         };
-        let mut spec = scene.mesh.clone();
-        spec.contact_half_width = spec.contact_half_width.map(|hw| hw / length);
+        let spec = MeshSpec { zone: spec.zone.scaled(length), ..*spec };
         Model {
-            mesh: Mesh::wheel(w.radius / length, support, &spec),
-            kelvin: Kelvin::new(1.0, w.poisson_ratio),
+            mesh: Mesh::wheel(wheel.radius / length, support, &spec),
+            kelvin: Kelvin::new(1.0, wheel.material.poisson_ratio),
             length,
-            modulus: w.youngs_modulus,
+            modulus: wheel.material.youngs_modulus,
         }
     }
 }

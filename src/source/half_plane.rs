@@ -30,7 +30,7 @@ use super::{Blocks, Built, SourceInfo, SourceTiming};
 use crate::error::Result;
 use crate::flexibility::{Flexibility, ModeKind, RigidMode, Scales};
 use crate::halfplane::{HalfPlane, InfluenceBlocks};
-use crate::scene::{CounterBody, ElementKind, Profile, Scene};
+use crate::scene::{Body, CounterBody, ElementKind, Profile, Scene, ZoneExtent};
 use faer::Mat;
 
 /// The contact grid of a scene, dimensionless: strip ends and collocation points.
@@ -50,18 +50,19 @@ impl Grid {
     /// The grid of a scene (lengths / L0): uniform in x with `contact_half_width`, the x-projections of the BEM
     /// wheel's contact chords with `contact_arc_deg`.
     pub fn of(scene: &Scene) -> Grid {
-        let l0 = 2.0 * scene.wheel.radius;
-        let n = scene.mesh.contact_elements;
-        match scene.mesh.contact_half_width {
-            Some(w) => {
+        let l0 = 2.0 * scene.radius();
+        let zone = scene.zone();
+        let n = zone.elements;
+        match zone.extent {
+            ZoneExtent::HalfWidth { half_width: w } => {
                 let (x0, h) = (-w / l0, 2.0 * w / l0 / n as f64);
                 let m = crate::halfplane::uniform_mesh(x0, h, n);
                 Grid { a: m.a, b: m.b, xc: m.xc, uniform: Some((x0, h)) }
             }
-            None => {
+            ZoneExtent::Arc { .. } => {
                 let rho = 0.5;
                 let x: Vec<f64> =
-                    crate::mesh::contact_vertex_angles(rho, &scene.mesh).iter().map(|t| rho * t.cos()).collect();
+                    crate::mesh::contact_vertex_angles(rho, &zone.scaled(l0)).iter().map(|t| rho * t.cos()).collect();
                 let xc = x.windows(2).map(|v| 0.5 * (v[0] + v[1])).collect();
                 Grid { a: x[..n].to_vec(), b: x[1..].to_vec(), xc, uniform: None }
             }
@@ -86,7 +87,10 @@ fn per_force(block: &[f64], w: &[f64]) -> Mat<f64> {
 /// Build the half-plane flexibility of a (validated) scene with `model = "half_plane"`.
 pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
     let t0 = std::time::Instant::now();
-    let w = &scene.wheel;
+    let w = scene.wheel();
+    let Body::HalfPlane { datum_depth, profile } = *scene.body() else {
+        unreachable!("half_plane::build is called for the half-plane model only")
+    };
     let l0 = 2.0 * w.radius;
     let grid = Grid::of(scene);
     let n = grid.xc.len();
@@ -94,13 +98,13 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
     let g0: Vec<f64> = grid
         .xc
         .iter()
-        .map(|&x| match w.profile.unwrap_or(Profile::Circle) {
+        .map(|&x| match profile {
             Profile::Circle => x * x / (rho + (rho * rho - x * x).sqrt()),
             Profile::Parabola => x * x / (2.0 * rho),
         })
         .collect();
     let weights: Vec<f64> = grid.a.iter().zip(&grid.b).map(|(a, b)| b - a).collect();
-    let hp = HalfPlane::new(1.0, w.poisson_ratio, w.datum() / l0);
+    let hp = HalfPlane::new(1.0, w.material.poisson_ratio, datum_depth / l0);
     let c = grid.blocks(&hp);
     let all = blocks == Blocks::All;
     let tangential = |v: f64| all.then(|| vec![v; n]);
@@ -117,7 +121,7 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
         x: grid.xc.clone(),
         g0,
         weights,
-        scales: Scales { length: l0, modulus: w.youngs_modulus },
+        scales: Scales { length: l0, modulus: w.material.youngs_modulus },
     };
     add_counter_body(&mut flex, scene, &grid);
     let assembly = t0.elapsed().as_secs_f64();
@@ -130,7 +134,7 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
             system_size: None,
             pivot_ratio: None,
             condition: None,
-            contact_element_length: scene.mesh.element_length(w.radius),
+            contact_element_length: scene.zone().element_length(w.radius),
         },
         timing: SourceTiming { assembly, condensation: 0.0 },
         boundary: None,
@@ -140,13 +144,9 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
 /// Add the elastic counter-body's flexibility (if the scene has one) on the grid of strips carrying the contact
 /// nodes' forces (see the module docs). A rigid counter-body adds nothing.
 pub fn add_counter_body(flex: &mut Flexibility, scene: &Scene, grid: &Grid) {
-    let CounterBody::HalfPlane { youngs_modulus, poisson_ratio, datum_depth } = scene.counter_body else { return };
+    let CounterBody::HalfPlane { material, datum_depth } = *scene.counter_body() else { return };
     let l0 = flex.scales.length;
-    let hp = HalfPlane::new(
-        youngs_modulus / flex.scales.modulus,
-        poisson_ratio,
-        datum_depth.unwrap_or(scene.wheel.radius) / l0,
-    );
+    let hp = HalfPlane::new(material.youngs_modulus / flex.scales.modulus, material.poisson_ratio, datum_depth / l0);
     let c = grid.blocks(&hp).into_counter_body();
     let w: Vec<f64> = grid.a.iter().zip(&grid.b).map(|(a, b)| b - a).collect();
     let add = |k: &mut Mat<f64>, block: &[f64]| {

@@ -11,7 +11,7 @@ pub mod half_plane;
 
 use crate::error::Result;
 use crate::flexibility::Flexibility;
-use crate::scene::{BodyModel, ElementKind, Scene};
+use crate::scene::{ElementKind, Scene};
 
 /// Which blocks of the flexibility to compute.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -66,17 +66,17 @@ pub struct Built {
 
 /// Build the flexibility a (validated) scene describes, with the blocks it needs.
 pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
-    if scene.wheel.model == BodyModel::HalfPlane {
-        let n = scene.mesh.contact_elements;
+    let Some((support, spec)) = crate::mesh::MeshSpec::of_scene(scene) else {
+        let n = scene.zone().elements;
         let _stage = crate::progress::stage(|| format!("building the half-plane influence matrices ({n} elements)"));
         return half_plane::build(scene, blocks);
-    }
-    let model = bem_wheel::Model::new(scene);
+    };
+    let model = bem_wheel::Model::new(scene.wheel(), support, &spec);
     let (mut flex, health, t, response) = bem_wheel::condense_with_response(&model, blocks)?;
     half_plane::add_counter_body(&mut flex, scene, &half_plane::Grid::of(scene));
     let mesh = &model.mesh;
     let (elements, nodes, element) = (mesh.elements.len(), mesh.n_nodes(), mesh.kind);
-    let boundary = scene.stresses.is_some().then(|| bem_wheel::BoundaryResponse {
+    let boundary = scene.stresses().is_some().then(|| bem_wheel::BoundaryResponse {
         tangential: blocks == Blocks::All,
         matrix: response,
         model,
@@ -89,7 +89,7 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
             system_size: Some(health.system_size),
             pivot_ratio: Some(health.pivot_ratio),
             condition: Some(health.system_condition),
-            contact_element_length: scene.mesh.element_length(scene.wheel.radius),
+            contact_element_length: scene.zone().element_length(scene.radius()),
         },
         flex,
         timing: SourceTiming { assembly: t.assembly, condensation: t.condensation },

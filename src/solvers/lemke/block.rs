@@ -34,7 +34,7 @@
 //! same pivot path on exact data.
 
 use super::{column, LemkeOutcome, LemkeSettings, Scaled, Z0_NEGLIGIBLE};
-use crate::solvers::Status;
+use crate::solvers::Termination;
 use faer::linalg::matmul::matmul;
 use faer::linalg::solvers::{PartialPivLu, Solve};
 use faer::{Accum, Mat, MatMut, MatRef, Par};
@@ -565,7 +565,13 @@ impl<'a> Engine<'a> {
 }
 
 fn numerical_failure(sc: &Scaled, msg: String, pivots: usize) -> LemkeOutcome {
-    LemkeOutcome { z: vec![0.0; sc.q.len()], w: sc.lcp.q.clone(), status: Status::NumericalError, pivots, message: msg }
+    LemkeOutcome {
+        z: vec![0.0; sc.q.len()],
+        w: sc.lcp.q.clone(),
+        status: Termination::NumericalError,
+        pivots,
+        message: msg,
+    }
 }
 
 /// The initial pivot (z₀ enters) and Lemke's loop from the engine's current complementary basis, whose basic
@@ -608,14 +614,14 @@ fn lemke_loop(e: &mut Engine, sc: &Scaled, settings: &LemkeSettings) -> LemkeOut
                 }
                 return sc.finish(
                     e.z_vector(),
-                    Status::Solved,
+                    Termination::Solved,
                     pivots,
                     format!("z0 reached zero after {pivots} pivots"),
                 );
             }
             return sc.finish(
                 e.z_vector(),
-                Status::RayTermination,
+                Termination::RayTermination,
                 pivots,
                 format!("secondary ray: entering {entering} is unblocked after {pivots} pivots"),
             );
@@ -628,10 +634,20 @@ fn lemke_loop(e: &mut Engine, sc: &Scaled, settings: &LemkeSettings) -> LemkeOut
             if !e.final_solve() {
                 return numerical_failure(sc, "the final basis is numerically singular".into(), pivots);
             }
-            return sc.finish(e.z_vector(), Status::Solved, pivots, format!("z0 left the basis after {pivots} pivots"));
+            return sc.finish(
+                e.z_vector(),
+                Termination::Solved,
+                pivots,
+                format!("z0 left the basis after {pivots} pivots"),
+            );
         }
         if pivots >= max_pivots {
-            return sc.finish(e.z_vector(), Status::NotConverged, pivots, format!("pivot limit {max_pivots} reached"));
+            return sc.finish(
+                e.z_vector(),
+                Termination::NotConverged,
+                pivots,
+                format!("pivot limit {max_pivots} reached"),
+            );
         }
         if e.eta_slots.len() >= settings.refactor_every.max(e.base.zvars.len() / 4) && !e.refactor() {
             return numerical_failure(
@@ -685,7 +701,7 @@ pub(crate) fn run_warm(sc: &Scaled, settings: &LemkeSettings, guess: &[bool]) ->
             String::new()
         };
         let message = format!("the guessed basis{repair} is feasible: solved with no pivot");
-        return Ok(sc.finish(e.z_vector(), Status::Solved, 0, message));
+        return Ok(sc.finish(e.z_vector(), Termination::Solved, 0, message));
     }
     // Covering vector d = B_g e (row space): z₀'s pivot column is −e, as in the cold start of the transformed LCP.
     let mut cover = vec![0.0; n];
@@ -706,7 +722,7 @@ pub(crate) fn run_warm(sc: &Scaled, settings: &LemkeSettings, guess: &[bool]) ->
     let nguess = guess.iter().filter(|&&g| g).count();
     let ninfeasible = e.x.iter().filter(|&&v| v < -feas_tol).count();
     let out = lemke_loop(&mut e, sc, settings);
-    if out.status == Status::Solved {
+    if out.status == Termination::Solved {
         let repair = if dropped > 0 { format!(" ({dropped} dropped to make it nonsingular)") } else { String::new() };
         let message = format!(
             "{} (warm start from {nguess} guessed basic z's{repair}, {ninfeasible} basic values infeasible)",

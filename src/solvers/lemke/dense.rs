@@ -18,20 +18,20 @@
 //! exactly as before the rework.
 
 use super::{column, prepare, Lemke, LemkeOutcome, LemkeSettings, Scaled, Z0_NEGLIGIBLE};
-use crate::solvers::{Entry, Lcp, Status};
+use crate::solvers::{Entry, Lcp, SolverId, SolverSettings, Termination};
 use faer::linalg::matmul::matmul;
 use faer::linalg::solvers::Solve;
 use faer::{Accum, Mat, MatMut, MatRef, Par};
 
 /// Registry entry: Lemke with the dense engine (not part of `all`: run it by name).
 pub const ENTRY: Entry = Entry {
+    id: SolverId::LemkeDense,
     name: "lemke_dense",
     summary: "Lemke's method, dense reference engine (whole basis inverse); every scene; run by name only",
     in_all: false,
     counters: &["pivots"],
-    build: |raw| {
-        let settings = crate::solvers::parse_settings("lemke_dense", raw)?;
-        Ok(Box::new(Lemke { name: "lemke_dense", settings, engine: solve_dense }))
+    build: |s: &SolverSettings| {
+        Box::new(Lemke { id: SolverId::LemkeDense, settings: s.lemke_dense, engine: solve_dense })
     },
 };
 
@@ -340,12 +340,12 @@ pub fn solve_dense(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
     let fail = |msg: String, pivots| LemkeOutcome {
         z: vec![0.0; n],
         w: lcp.q.clone(),
-        status: Status::NumericalError,
+        status: Termination::NumericalError,
         pivots,
         message: msg,
     };
     let finish =
-        |z_s: Vec<f64>, status: Status, pivots: usize, message: String| sc.finish(z_s, status, pivots, message);
+        |z_s: Vec<f64>, status: Termination, pivots: usize, message: String| sc.finish(z_s, status, pivots, message);
     let mut wk = Work {
         sc: &sc,
         n,
@@ -389,12 +389,12 @@ pub fn solve_dense(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
                     return fail("the final basis is numerically singular".into(), pivots);
                 }
                 let z = extract_z(&wk);
-                return finish(z, Status::Solved, pivots, format!("z0 reached zero after {pivots} pivots"));
+                return finish(z, Termination::Solved, pivots, format!("z0 reached zero after {pivots} pivots"));
             }
             let z = extract_z(&wk);
             return finish(
                 z,
-                Status::RayTermination,
+                Termination::RayTermination,
                 pivots,
                 format!("secondary ray: entering {entering} is unblocked after {pivots} pivots"),
             );
@@ -407,11 +407,11 @@ pub fn solve_dense(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
                 return fail("the final basis is numerically singular".into(), pivots);
             }
             let z = extract_z(&wk);
-            return finish(z, Status::Solved, pivots, format!("z0 left the basis after {pivots} pivots"));
+            return finish(z, Termination::Solved, pivots, format!("z0 left the basis after {pivots} pivots"));
         }
         if pivots >= max_pivots {
             let z = extract_z(&wk);
-            return finish(z, Status::NotConverged, pivots, format!("pivot limit {max_pivots} reached"));
+            return finish(z, Termination::NotConverged, pivots, format!("pivot limit {max_pivots} reached"));
         }
         if wk.eta_rows.len() >= settings.refactor_every && !wk.absorb() {
             return fail(format!("the basis became numerically singular after {pivots} pivots"), pivots);

@@ -74,7 +74,7 @@
 pub mod block;
 pub mod dense;
 
-use super::{Entry, Outcome, Solver, Status, Validate, Work};
+use super::{Entry, LcpOutcome, LcpSolver, Outcome, Solver, SolverId, SolverSettings, Termination, Validate, Work};
 use crate::formulation::{lcp::frictional_lcp, ContactProblem, Dof, Lcp, ProblemKind};
 use faer::Mat;
 
@@ -126,8 +126,8 @@ pub struct LemkeOutcome {
     pub z: Vec<f64>,
     /// w = M z + q (unscaled), recomputed from z.
     pub w: Vec<f64>,
-    /// Outcome.
-    pub status: Status,
+    /// How the engine ended.
+    pub status: Termination,
     /// Number of pivots, including the initial z₀ pivot.
     pub pivots: usize,
     /// Human-readable detail (which variable ended it, etc.).
@@ -225,7 +225,7 @@ impl Scaled<'_> {
     }
 
     /// Unscale z, recompute w = M z + q from the original data, and wrap up.
-    pub(crate) fn finish(&self, z_s: Vec<f64>, status: Status, pivots: usize, message: String) -> LemkeOutcome {
+    pub(crate) fn finish(&self, z_s: Vec<f64>, status: Termination, pivots: usize, message: String) -> LemkeOutcome {
         let z: Vec<f64> = z_s.iter().zip(&self.dc).map(|(z, d)| z * d).collect();
         let w = self.lcp.w_of(&z);
         LemkeOutcome { z, w, status, pivots, message }
@@ -238,7 +238,7 @@ pub(crate) fn prepare(lcp: &Lcp) -> Result<Scaled<'_>, LemkeOutcome> {
     let fail = |msg: String| LemkeOutcome {
         z: vec![0.0; n],
         w: lcp.q.clone(),
-        status: Status::NumericalError,
+        status: Termination::NumericalError,
         pivots: 0,
         message: msg,
     };
@@ -253,7 +253,7 @@ pub(crate) fn prepare(lcp: &Lcp) -> Result<Scaled<'_>, LemkeOutcome> {
     let qscale = q.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
     let sc = Scaled { lcp, q, dr, dc, qscale };
     if sc.q.iter().all(|&v| v >= 0.0) {
-        return Err(sc.finish(vec![0.0; n], Status::Solved, 0, "q ≥ 0: z = 0 is the solution".into()));
+        return Err(sc.finish(vec![0.0; n], Termination::Solved, 0, "q ≥ 0: z = 0 is the solution".into()));
     }
     Ok(sc)
 }
@@ -304,8 +304,8 @@ pub type Engine = fn(&Lcp, &LemkeSettings) -> LemkeOutcome;
 /// Lemke's method as a contact solver: one engine ([`solve`] or [`dense::solve_dense`]) with the
 /// slack-sign retry and the ray interpretation of this module.
 pub struct Lemke {
-    /// Registry name.
-    pub name: &'static str,
+    /// Which registered engine this is.
+    pub id: SolverId,
     /// Its settings.
     pub settings: LemkeSettings,
     /// The pivoting engine.
@@ -314,40 +314,43 @@ pub struct Lemke {
 
 /// Registry entry of the block-revised engine.
 pub const ENTRY: Entry = Entry {
+    id: SolverId::Lemke,
     name: "lemke",
     summary: "Lemke's method, block-revised (only the z-part of the basis is factorised), lexicographic anti-cycling; \
               every scene",
     in_all: true,
     counters: &["pivots"],
-    build: |raw| {
-        let settings = crate::solvers::parse_settings("lemke", raw)?;
-        Ok(Box::new(Lemke { name: "lemke", settings, engine: solve }))
-    },
+    build: |s: &SolverSettings| Box::new(Lemke { id: SolverId::Lemke, settings: s.lemke, engine: solve }),
 };
 
+impl LcpSolver for Lemke {
+    fn solve_lcp(&self, lcp: &Lcp) -> LcpOutcome {
+        let o = (self.engine)(lcp, &self.settings);
+        LcpOutcome {
+            z: o.z,
+            w: o.w,
+            termination: o.status,
+            message: o.message,
+            work: Work::one("pivots", o.pivots as u64),
+        }
+    }
+}
+
 impl Solver for Lemke {
-    fn name(&self) -> &'static str {
-        self.name
+    fn id(&self) -> SolverId {
+        self.id
     }
 
     fn applies(&self, _problem: &ContactProblem) -> Result<(), String> {
         Ok(())
     }
 
-    fn settings(&self) -> toml::Value {
-        crate::solvers::settings_value(&self.settings)
-    }
-
-    fn solves_lcp(&self) -> bool {
-        true
-    }
-
     fn uses_lcp(&self) -> bool {
         true
     }
 
-    fn solve_lcp(&self, lcp: &Lcp) -> Option<LemkeOutcome> {
-        Some((self.engine)(lcp, &self.settings))
+    fn lcp_solver(&self) -> Option<&dyn LcpSolver> {
+        Some(self)
     }
 
     fn solve(&self, p: &ContactProblem) -> Outcome {
@@ -384,7 +387,7 @@ impl Lemke {
     fn first_attempt(&self, p: &ContactProblem, lcp: &Lcp) -> LemkeOutcome {
         let guess = p.warm.as_ref().and_then(|w| w.support.as_ref()).filter(|g| g.len() == lcp.size());
         match guess {
-            Some(g) if self.settings.warm_start && self.name == "lemke" => solve_warm(lcp, &self.settings, g),
+            Some(g) if self.settings.warm_start && self.id == SolverId::Lemke => solve_warm(lcp, &self.settings, g),
             _ => (self.engine)(lcp, &self.settings),
         }
     }
@@ -397,7 +400,7 @@ impl Lemke {
         let mut out = self.first_attempt(p, lcp);
         let defaults: Vec<f64> = p.load_dofs().map(|d| d.default_sign()).collect();
         let loads = defaults.len();
-        if out.status != Status::RayTermination || loads == 0 {
+        if out.status != Termination::RayTermination || loads == 0 {
             return (None, out);
         }
         let mut pivots = out.pivots;
@@ -407,7 +410,7 @@ impl Lemke {
             let alt = frictional_lcp(p, &signs).lcp;
             let o = (self.engine)(&alt, &self.settings);
             pivots += o.pivots;
-            if o.status == Status::Solved {
+            if o.status == Termination::Solved {
                 let msg = format!(
                     "{} (solved with flipped slack signs, attempt {} of {})",
                     o.message,
@@ -445,8 +448,8 @@ impl Lemke {
 /// - a frictionless LCP (copositive-plus: the ray is the proof).
 ///
 /// Otherwise the status stays `ray_termination` and the message says that feasibility is undecided.
-pub fn classify_ray(status: Status, message: String, p: &ContactProblem) -> (Status, String) {
-    if status != Status::RayTermination {
+pub fn classify_ray(status: Termination, message: String, p: &ContactProblem) -> (Termination, String) {
+    if status != Termination::RayTermination {
         return (status, message);
     }
     let mu = p.law.friction;
@@ -458,7 +461,7 @@ pub fn classify_ray(status: Status, message: String, p: &ContactProblem) -> (Sta
     if let (Dof::Load(q), Dof::Load(pl)) = (tangential, normal) {
         if q.abs() > mu * pl {
             return (
-                Status::Infeasible,
+                Termination::Infeasible,
                 format!("infeasible: |Q| = {:.6e} exceeds μP = {:.6e} (Lemke: {message})", q.abs(), mu * pl),
             );
         }
@@ -471,7 +474,7 @@ pub fn classify_ray(status: Status, message: String, p: &ContactProblem) -> (Sta
         let bound = pl * xmax + mu * pl * ymax + r * qterm;
         if m.abs() > bound {
             return (
-                Status::Infeasible,
+                Termination::Infeasible,
                 format!(
                     "infeasible: the moment |M| = {:.6e} exceeds what any static state can carry, \
                      P·max|x| + μP·max|y + R| + R·|Q| = {bound:.6e} (the pressure centre would have to leave the \
@@ -486,12 +489,12 @@ pub fn classify_ray(status: Status, message: String, p: &ContactProblem) -> (Sta
     // their ray is a solver failure, not a diagnosis.
     if mu == 0.0 {
         return (
-            Status::Infeasible,
+            Termination::Infeasible,
             format!("infeasible: the LCP has no solution (Lemke's ray on a copositive-plus LCP: {message})"),
         );
     }
     (
-        Status::RayTermination,
+        Termination::RayTermination,
         format!(
             "Lemke ended on a secondary ray with every choice of slack signs; the frictional LCP is not copositive-plus, \
              so this does not prove that no static solution exists ({message})"
@@ -513,7 +516,7 @@ mod tests {
         // M = [[2,1],[1,2]], q = [-5,-6]: both positive, z = M⁻¹(−q) = (4/3, 7/3), w = 0 (solved by hand).
         let p = lcp(&[&[2.0, 1.0], &[1.0, 2.0]], &[-5.0, -6.0]);
         let out = solve(&p, &LemkeSettings::default());
-        assert_eq!(out.status, Status::Solved);
+        assert_eq!(out.status, Termination::Solved);
         assert!((out.z[0] - 4.0 / 3.0).abs() < 1e-14 && (out.z[1] - 7.0 / 3.0).abs() < 1e-14);
     }
 
@@ -522,7 +525,7 @@ mod tests {
         // w1 = 0·z − 1 ≥ 0 is impossible whatever z (by inspection): Lemke must end on a secondary ray.
         let p = lcp(&[&[0.0, 0.0], &[0.0, 1.0]], &[-1.0, 1.0]);
         let out = solve(&p, &LemkeSettings::default());
-        assert_eq!(out.status, Status::RayTermination);
+        assert_eq!(out.status, Termination::RayTermination);
     }
 
     #[test]
@@ -531,7 +534,7 @@ mod tests {
         // checked against the LCP conditions themselves.
         let p = lcp(&[&[1.0, 1.0, 1.0], &[1.0, 1.0, 1.0], &[1.0, 1.0, 2.0]], &[-1.0, -1.0, -1.0]);
         let out = solve(&p, &LemkeSettings::default());
-        assert_eq!(out.status, Status::Solved, "{}", out.message);
+        assert_eq!(out.status, Termination::Solved, "{}", out.message);
         for i in 0..3 {
             assert!(out.w[i] >= -1e-14 && out.z[i] >= 0.0 && (out.w[i] * out.z[i]).abs() < 1e-14);
         }

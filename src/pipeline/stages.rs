@@ -1,68 +1,75 @@
-//! The pipeline for one scene: flexibility source → contact problem → every requested solver → post-processing →
-//! checks, producing the result document ([`Report`]).
-//!
-//! Only the effects the scene calls for are simulated: a frictionless scene builds only the normal columns of the
-//! flexibility ([`Blocks::Normal`]), a problem of one unknown per contact node (plus two per load-driven rigid
-//! degree of freedom) and does no tangential or rolling work; `effects` and `problem_size` in the report show it.
+//! The stages every solve shares, one function each: which flexibility blocks a scene needs, its contact problem,
+//! its solvers, a timed solve, the harness's verdict on an outcome, and the result document. The one-step solve
+//! ([`super::single`]) and the load path ([`super::path`]) are built from these; neither calls the other.
 
-use crate::checks::make_checks;
+use crate::checks::{make_checks, ModelReference};
 use crate::diagnostics::{asymmetry, diagnose};
 use crate::error::{Error, Result};
-use crate::formulation::{ContactProblem, DriveIssue, Lcp, ProblemKind, SlipOperator};
+use crate::formulation::{ContactProblem, Drive, DriveIssue, ProblemKind, SlipOperator};
 use crate::hertz::Hertz;
-use crate::post::{evaluate, RollingPost};
-use crate::results::{MeshInfo, References, Report, SolverName, SolverRun, Timing};
-use crate::scene::{BodyModel, Dof, RollingMode, Scene};
-use crate::solvers::{Outcome, Solver, Status, Work, REGISTRY};
-use crate::source::{self, Blocks};
-use std::path::Path;
+use crate::post::{evaluate, Evaluation, RollingPost};
+use crate::results::{MeshInfo, ProblemClass, References, Report, SolverRun, Timing};
+use crate::scene::{BodyModel, CounterBody, Dof, Rolling, Scene};
+use crate::solvers::{Outcome, Solver, SolverId, Termination, Work, REGISTRY};
+use crate::source::{Blocks, Built};
+use crate::status::{Status, Verdict, VerdictReason};
 use std::time::Instant;
 
 /// Which flexibility blocks the scene needs: the tangential columns only with friction or rolling.
 pub fn blocks_for(scene: &Scene) -> Blocks {
-    if scene.contact.friction > 0.0 || scene.rolling.is_some() {
+    if scene.friction() > 0.0 || scene.rolling().is_some() {
         Blocks::All
     } else {
         Blocks::Normal
     }
 }
 
-/// The rolling post-processing a scene asks for.
+/// The rolling post-processing a one-step scene asks for.
 pub fn rolling_post(scene: &Scene) -> Option<RollingPost> {
-    scene.rolling.as_ref().map(|r| match r.mode {
-        RollingMode::Steady => RollingPost::Steady,
-        RollingMode::Seed => RollingPost::Seed {
-            creepage: r.creepage.expect("validated: seed mode has a creepage"),
-            direction: r.direction,
-        },
-        // A history sets the rolled distance per step (crate::history); this is the one-step default.
-        RollingMode::Transient => RollingPost::Transient { creepage: r.creepage.unwrap_or(0.0), roll: 0.0 },
+    scene.rolling().map(|r| match *r {
+        Rolling::Steady { .. } => RollingPost::Steady,
+        Rolling::Seed { creepage, direction } => RollingPost::Seed { creepage, direction },
+        // A load path sets the rolled distance per step (super::path); this is the one-step default.
+        Rolling::Transient { creepage, .. } => RollingPost::Transient { creepage, roll: 0.0 },
     })
 }
 
 /// The slip operator of a scene on a flexibility: steady rolling's upwind slip velocity, or the static slip.
 pub fn slip_operator(scene: &Scene, flex: &crate::flexibility::Flexibility) -> SlipOperator {
-    match &scene.rolling {
-        Some(r) if r.mode == RollingMode::Steady => SlipOperator::steady(&flex.x, r.direction),
+    match scene.rolling() {
+        Some(Rolling::Steady { direction }) => SlipOperator::steady(&flex.x, *direction),
         _ => SlipOperator::static_slip(),
     }
 }
 
-/// Build the scene's contact problem on a flexibility (an unformulable drive is an input error naming the key).
+/// Build the contact problem of a drive on a flexibility (an unformulable drive is an input error naming the key).
 pub fn build_problem<'a>(
     scene: &Scene,
     flex: &'a crate::flexibility::Flexibility,
-    path: &Path,
+    drive: Drive,
+    slip: SlipOperator,
 ) -> Result<ContactProblem<'a>> {
-    ContactProblem::new(flex, scene.law(), scene.drive_dofs(), slip_operator(scene, flex))
-        .map_err(|DriveIssue::TangentialLoadWithoutFriction(_)| drive_error(scene, path))
+    ContactProblem::new(flex, scene.law(), drive, slip)
+        .map_err(|DriveIssue::TangentialLoadWithoutFriction(_)| drive_error(scene))
+}
+
+/// The contact problem of a one-step scene on a flexibility (its drive and slip operator); a load path has none
+/// (an error saying so).
+pub fn scene_problem<'a>(scene: &Scene, flex: &'a crate::flexibility::Flexibility) -> Result<ContactProblem<'a>> {
+    let Some(drive) = scene.drive() else {
+        return Err(Error::Unsupported {
+            path: scene.origin().to_path_buf(),
+            message: "steps: a load path poses one problem per substep, not one".into(),
+        });
+    };
+    build_problem(scene, flex, *drive, slip_operator(scene, flex))
 }
 
 /// The input error of a tangential load on a frictionless contact.
-pub fn drive_error(scene: &Scene, path: &Path) -> Error {
-    let key = if scene.steps.is_empty() { "drive.tangential_load" } else { "steps[].tangential_load" };
+pub fn drive_error(scene: &Scene) -> Error {
+    let key = if scene.steps().is_empty() { "drive.tangential_load" } else { "steps[].tangential_load" };
     Error::Unsupported {
-        path: path.to_path_buf(),
+        path: scene.origin().to_path_buf(),
         message: format!(
             "{key}: a frictionless contact carries no tangential load (gross sliding); use a zero tangential load \
              or friction > 0"
@@ -72,137 +79,71 @@ pub fn drive_error(scene: &Scene, path: &Path) -> Error {
 
 /// Build the scene's solvers (`solvers.use`): `all` expands to every solver of the registry's `all` set that
 /// applies to the problem; an explicitly named solver that does not apply is an error naming `solvers.use` and the
-/// reason; a bad setting is an input error naming its key. Registry order, no duplicates.
-pub fn solvers_for(scene: &Scene, problem: &ContactProblem, path: &Path) -> Result<Vec<Box<dyn Solver>>> {
-    let invalid = |e: crate::solvers::SettingsError| e.into_error(path);
+/// reason. Registry order, no duplicates. The settings were validated with the scene, so building cannot fail.
+pub fn solvers_for(scene: &Scene, problem: &ContactProblem) -> Result<Vec<Box<dyn Solver>>> {
+    let set = scene.solvers();
     let mut out = Vec::new();
     for e in REGISTRY {
-        let named = scene.solvers.use_.iter().any(|u| u == e.name);
-        let all = e.in_all && scene.solvers.use_.iter().any(|u| u == "all");
-        if !named && !all {
+        let named = set.names(e.id);
+        if !(named || set.all && e.in_all) {
             continue;
         }
-        let solver = scene.solvers.build(e.name).map_err(invalid)?;
+        let solver = e.id.build(&set.settings);
         match solver.applies(problem) {
             Ok(()) => out.push(solver),
             Err(why) if named => {
                 return Err(Error::Unsupported {
-                    path: path.to_path_buf(),
+                    path: scene.origin().to_path_buf(),
                     message: format!("solvers.use: {} does not apply to this scene: {why}", e.name),
                 })
             }
             Err(_) => {}
         }
     }
-    if let Some(u) = scene.solvers.use_.iter().find(|u| *u != "all" && crate::solvers::entry(u).is_none()) {
-        return Err(invalid(crate::solvers::SettingsError {
-            unknown: true,
-            field: "solvers.use".into(),
-            message: format!("unknown solver `{u}` (expected one of: all, {})", crate::solvers::names()),
-        }));
+    if out.is_empty() {
+        return Err(Error::Unsupported {
+            path: scene.origin().to_path_buf(),
+            message: "solvers.use: no requested solver applies to this scene".into(),
+        });
     }
     Ok(out)
 }
 
-/// (check bound, refusal bound) of a scene's solver by name, with the scene's settings
+/// (check bound, refusal bound) of a scene's solver, with the scene's settings
 /// ([`crate::solvers::residual_bounds`]).
-///
-/// # Panics
-/// If the solver is not registered or its settings are invalid (a validated scene's are not).
-pub fn residual_bounds(scene: &Scene, solver: &str) -> (f64, f64) {
-    let s = scene.solvers.build(solver).expect("a registered solver with valid settings");
-    crate::solvers::residual_bounds(s.as_ref())
-}
-
-/// The LCP that Lemke solves for a scene (for `rollbem lcp export`): frictionless, frictional (displacement,
-/// loading or mixed, with the slack signs of the attempt that succeeded) or the sliding-limit problem. A scene
-/// beyond gross sliding has no LCP.
-pub fn scene_lcp(scene: &Scene, path: &Path) -> Result<Lcp> {
-    let built = source::build(scene, blocks_for(scene))?;
-    let problem = build_problem(scene, &built.flex, path)?;
-    let settings =
-        crate::solvers::parse_settings("lemke", scene.solvers.settings.get("lemke")).map_err(|e| e.into_error(path))?;
-    let lemke = crate::solvers::lemke::Lemke { name: "lemke", settings, engine: crate::solvers::lemke::solve };
-    lemke.solved_lcp(&problem).ok_or_else(|| match &problem.kind {
-        ProblemKind::GrossSliding { message } => {
-            Error::Unsupported { path: path.to_path_buf(), message: format!("no static problem to export: {message}") }
-        }
-        _ => unreachable!("every other problem has an LCP"),
-    })
+pub fn residual_bounds(scene: &Scene, solver: SolverId) -> (f64, f64) {
+    crate::solvers::residual_bounds(solver.build(&scene.solvers().settings).as_ref())
 }
 
 /// The effects a scene simulates.
 pub fn effects(scene: &Scene) -> Vec<String> {
     let mut effects = vec!["normal".to_string()];
-    if scene.contact.friction > 0.0 {
+    if scene.friction() > 0.0 {
         effects.push("friction".into());
-        if scene.contact.coupling {
+        if scene.law().coupling {
             effects.push("coupling".into());
         }
     }
-    if scene.rolling.is_some() {
+    if scene.rolling().is_some() {
         effects.push("rolling".into());
     }
-    if scene.counter_body != crate::scene::CounterBody::Rigid {
+    if *scene.counter_body() != CounterBody::Rigid {
         effects.push("counter_body".into());
     }
-    if !scene.steps.is_empty() {
+    if !scene.steps().is_empty() {
         effects.push("history".into());
     }
-    if scene.stresses.is_some() {
+    if scene.stresses().is_some() {
         effects.push("stresses".into());
     }
     effects
-}
-
-/// Run a validated scene (one step from rest, or a load path: [`crate::history`]). `path` is used in error
-/// messages.
-pub fn run_scene(scene: &Scene, path: &Path) -> Result<Report> {
-    if !scene.steps.is_empty() {
-        return crate::history::run_history(scene, path);
-    }
-    let built = source::build(scene, blocks_for(scene))?;
-    let flex = &built.flex;
-    let tf = Instant::now();
-    let problem = build_problem(scene, flex, path)?;
-    let formulation_time = tf.elapsed().as_secs_f64();
-    let problem_size = problem.lcp_size();
-    let solvers = solvers_for(scene, &problem, path)?;
-    let rolling = rolling_post(scene);
-    let stresses = crate::stresses::StressEvaluator::new(scene, &built, path)?;
-    let mut runs = Vec::new();
-    let mut bounds = Vec::new();
-    for solver in &solvers {
-        let (outcome, solve_time) = solve_timed(solver.as_ref(), &problem);
-        let formulation = formulation_time + lcp_time(solver.as_ref(), &problem);
-        let timing = Timing {
-            assembly: built.timing.assembly,
-            condensation: built.timing.condensation,
-            formulation,
-            solve: solve_time,
-            total: built.timing.assembly + built.timing.condensation + formulation + solve_time,
-        };
-        let (check_bound, refuse_bound) = crate::solvers::residual_bounds(solver.as_ref());
-        let (mut run, _) =
-            evaluate_outcome(scene, &problem, solver.name(), problem_size, outcome, timing, refuse_bound, rolling);
-        add_stresses(&mut run, stresses.as_ref());
-        runs.push(run);
-        bounds.push(check_bound);
-    }
-    Ok(assemble_report(
-        scene,
-        &built,
-        normal_asymmetry(&problem, scene.wheel.model == BodyModel::HalfPlane),
-        runs,
-        &bounds,
-        Vec::new(),
-    ))
 }
 
 /// Evaluate a solved run's subsurface stresses when the scene asks for them (`[stresses]`).
 pub fn add_stresses(run: &mut SolverRun, stresses: Option<&crate::stresses::StressEvaluator>) {
     if let (Some(ev), Status::Solved) = (stresses, run.status) {
         run.stresses = Some(ev.evaluate(&run.nodes));
+        run.counter_body_stresses = ev.evaluate_counter_body(&run.nodes);
     }
 }
 
@@ -228,7 +169,7 @@ pub fn solve_timed(solver: &dyn Solver, problem: &ContactProblem) -> (Outcome, f
     let outcome = match &problem.kind {
         ProblemKind::GrossSliding { message } => Outcome {
             solution: None,
-            status: Status::Infeasible,
+            status: Termination::Infeasible,
             message: message.clone(),
             work: Work::default(),
             polish_change: None,
@@ -251,7 +192,7 @@ pub fn solve_timed(solver: &dyn Solver, problem: &ContactProblem) -> (Outcome, f
 /// ([`crate::diagnostics::diagnose`]).
 pub fn normal_asymmetry(problem: &ContactProblem, half_plane: bool) -> f64 {
     let k = &problem.flex.k_nn;
-    let load_driven = matches!(problem.drive.normal, crate::formulation::Dof::Load(_));
+    let load_driven = matches!(problem.drive.normal, Dof::Load(_));
     let approach = problem.flex.mode(crate::flexibility::ModeKind::Approach);
     match (half_plane && load_driven, approach) {
         (true, Some(m)) => asymmetry(&project_out(k, &m.normal)),
@@ -278,21 +219,30 @@ fn project_out(k: &faer::Mat<f64>, u: &[f64]) -> faer::Mat<f64> {
 /// health. `bounds[k]` is run k's residual check bound.
 pub fn assemble_report(
     scene: &Scene,
-    built: &source::Built,
+    built: &Built,
     asym: f64,
     runs: Vec<SolverRun>,
     bounds: &[f64],
     steps: Vec<crate::results::StepResult>,
 ) -> Report {
     let flex = &built.flex;
-    let hertz = if scene.contact.friction > 0.0 { None } else { reference_hertz(scene, &runs) };
-    let checks =
-        make_checks(scene, built.info.element, built.info.contact_element_length, &runs, bounds, hertz.as_ref());
+    let hertz = if scene.friction() > 0.0 { None } else { reference_hertz(scene, &runs) };
+    let (element, length) = (built.info.element, built.info.contact_element_length);
+    // A finite wheel compared with a half-space theory: the same loads on the half-plane counterpart give the model
+    // error beside the comparison (`checks::ModelReference`).
+    let counterpart = crate::references::half_space_counterpart(scene).and_then(|s| s.ok());
+    let counterpart_report = counterpart.as_ref().and_then(|s| super::run_scene(s).ok());
+    let model = counterpart
+        .as_ref()
+        .map(|s| ModelReference { scene: s, run: counterpart_report.as_ref().and_then(|r| r.runs.first()) });
+    let checks = make_checks(scene, element, length, &runs, bounds, hertz.as_ref(), model.as_ref());
+    let warnings = crate::checks::run_warnings(scene, element, length, &runs);
     Report {
+        schema: crate::results::SCHEMA_VERSION,
         scene: scene.clone(),
         effects: effects(scene),
         mesh: MeshInfo {
-            model: scene.wheel.model,
+            model: scene.model(),
             elements: built.info.elements,
             nodes: built.info.nodes,
             contact_nodes: flex.n(),
@@ -305,48 +255,64 @@ pub fn assemble_report(
         runs,
         checks,
         steps,
+        warnings,
     }
 }
 
-/// Post-process a solver's outcome as `run_scene` does — evaluate a claimed solution by the solver-independent
-/// residuals and refuse it above `refuse` (`numerical_error`); judge an accepted one by the range of the model
+/// What a run's post-processing needs beside the outcome: the scene, the problem, the solver, its timing and the
+/// bound above which a claimed solution is refused.
+pub struct RunContext<'a, 'p> {
+    /// The scene.
+    pub scene: &'a Scene,
+    /// The problem solved.
+    pub problem: &'a ContactProblem<'p>,
+    /// Which solver.
+    pub solver: SolverId,
+    /// Time per stage.
+    pub timing: Timing,
+    /// Refusal bound of the largest solver-independent residual.
+    pub refuse: f64,
+    /// The rolling post-processing.
+    pub rolling: Option<RollingPost>,
+}
+
+/// Post-process a solver's outcome — evaluate a claimed solution by the solver-independent residuals and refuse
+/// it above the refusal bound (`numerical_error`); judge an accepted one by the range of the model
 /// ([`crate::validity::judge`]: linearised kinematics, candidate zone); decide a failed load-driven solve exactly
 /// ([`crate::validity::decide`]) — returning also the evaluation of an accepted solution (a load path carries its
-/// state on).
-#[allow(clippy::too_many_arguments)]
-pub fn evaluate_outcome(
-    scene: &Scene,
-    problem: &ContactProblem,
-    solver: &'static str,
-    problem_size: usize,
-    outcome: Outcome,
-    timing: Timing,
-    refuse: f64,
-    rolling: Option<RollingPost>,
-) -> (SolverRun, Option<crate::post::Evaluation>) {
-    let Outcome { solution, mut status, mut message, work, polish_change } = outcome;
-    let ev = match (&solution, status) {
-        (Some(sol), Status::Solved) => Some(evaluate(problem, sol, rolling)),
+/// state on). The solver's termination and message are kept as they are; the harness's conclusion is the run's
+/// `status`, with a [`Verdict`] when it is not simply the termination.
+pub fn evaluate_outcome(ctx: &RunContext, outcome: Outcome) -> (SolverRun, Option<Evaluation>) {
+    let RunContext { scene, problem, solver, .. } = *ctx;
+    let Outcome { solution, status: termination, message, work, polish_change } = outcome;
+    let ev = match (&solution, termination) {
+        (Some(sol), Termination::Solved) => Some(evaluate(problem, sol, ctx.rolling)),
         _ => None,
     };
+    let mut status = Status::from(termination);
+    let mut verdict = None;
     if let Some(ev) = &ev {
         let worst = ev.residuals.max();
-        if worst.is_nan() || worst > refuse {
+        if worst.is_nan() || worst > ctx.refuse {
             status = Status::NumericalError;
-            message = format!(
-                "solver reported success but the independent residual is {worst:.3e} > {refuse:.0e}; {message}"
-            );
+            verdict = Some(Verdict {
+                reason: VerdictReason::ResidualTooLarge,
+                message: format!(
+                    "the solver reported success but the independent residual is {worst:.3e} > {:.0e}",
+                    ctx.refuse
+                ),
+            });
         }
     }
     if let (Some(ev), Status::Solved) = (&ev, status) {
-        if let Some((judged, why)) = crate::validity::judge(scene, problem, ev) {
+        if let Some((judged, reason, why)) = crate::validity::judge(scene, problem, ev) {
             status = judged;
-            message = format!("{why}; {solver}: {message}");
+            verdict = Some(Verdict { reason, message: why });
         }
     }
-    if let Some((decided, why)) = crate::validity::decide(problem, solver, status, &message) {
+    if let Some((decided, why)) = crate::validity::decide(problem, solver, status) {
         status = decided;
-        message = why;
+        verdict = Some(Verdict { reason: VerdictReason::Admissibility, message: why });
     }
     // A run judged `contact_at_zone_edge` or `kinematics_out_of_range` keeps its nodal values (and only those:
     // no resultants, contact summary or residuals, so no check, comparison or metric treats it as an answer): they
@@ -358,13 +324,16 @@ pub fn evaluate_outcome(
     };
     let ev = ev.filter(|_| status == Status::Solved);
     let run = SolverRun {
-        solver: SolverName(solver),
+        solver,
         formulation: problem.formulation(),
+        problem: ProblemClass::of(&problem.kind),
         status,
+        termination,
         message,
-        problem_size,
+        verdict,
+        problem_size: problem.lcp_size(),
         work,
-        timing_s: timing,
+        timing_s: ctx.timing,
         residuals: ev.as_ref().map(|e| e.residuals),
         resultants: ev.as_ref().map(|e| e.resultants),
         rigid_body: ev.as_ref().map(|e| e.rigid_body),
@@ -374,15 +343,22 @@ pub fn evaluate_outcome(
         polish_change,
         history: None,
         stresses: None,
+        counter_body_stresses: None,
     };
     (run, ev)
 }
 
-/// Hertz at the scene's load, or at the first solved run's load when the approach is prescribed.
+/// Hertz at the scene's load, or at the first solved run's load when the approach is prescribed (and for a load
+/// path, whose runs are at its end).
 fn reference_hertz(scene: &Scene, runs: &[SolverRun]) -> Option<Hertz> {
-    let p = match scene.drive.normal() {
-        Dof::Load(p) => Some(p),
-        Dof::Displacement(_) => runs.iter().find_map(|r| r.resultants.map(|x| x.normal)),
+    let p = match scene.drive().map(|d| d.normal) {
+        Some(Dof::Load(p)) => Some(p),
+        _ => runs.iter().find_map(|r| r.resultants.map(|x| x.normal)),
     }?;
-    (p > 0.0).then(|| Hertz::with_modulus(scene.wheel.radius, scene.contact_modulus(), p))
+    (p > 0.0).then(|| Hertz::with_modulus(scene.radius(), scene.contact_modulus(), p))
+}
+
+/// Whether the scene's wheel is the half-plane model.
+pub fn is_half_plane(scene: &Scene) -> bool {
+    scene.model() == BodyModel::HalfPlane
 }

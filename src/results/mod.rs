@@ -2,34 +2,56 @@
 //! and that other tools, the sweeps, the reports and the regression suite read. Keys are stable: add freely,
 //! rename none.
 
-use crate::formulation::FormulationName;
+use crate::formulation::{FormulationName, ProblemKind};
 use crate::hertz::Hertz;
 use crate::post::{ContactSummary, NodeResult, Residuals, Resultants, RigidBody, RollingResult};
 use crate::scene::{BodyModel, ElementKind, Scene};
-use crate::solvers::Work;
-use crate::status::Status;
-use serde::Serialize;
+use crate::solvers::{SolverId, Work};
+use crate::status::{Status, Termination, Verdict};
+use serde::{Deserialize, Serialize};
 
-/// A solver's registry name ([`crate::solvers::REGISTRY`]), as written in results.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
-#[serde(transparent)]
-pub struct SolverName(pub &'static str);
+mod export;
+pub mod render;
 
-impl std::fmt::Display for SolverName {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.pad(self.0)
-    }
+/// The version of the result document's layout ([`Report::schema`]): raised when a key changes meaning or is
+/// removed (keys are only ever added within a version).
+pub const SCHEMA_VERSION: u32 = 2;
+
+/// Whether a run's flexibility was built for it or reused from an earlier solve on the same model
+/// ([`crate::pipeline::Model`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Setup {
+    /// Built for this solve: its assembly and condensation times were spent here.
+    #[default]
+    Built,
+    /// Reused: the assembly and condensation times are those of the model's one build, not spent again.
+    Reused,
 }
 
-impl PartialEq<str> for SolverName {
-    fn eq(&self, other: &str) -> bool {
-        self.0 == other
-    }
+/// Which contact problem a run solved (how the drive and the friction limit posed it).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ProblemClass {
+    /// μ = 0: the normal problem only.
+    Frictionless,
+    /// μ > 0: the frictional problem.
+    Frictional,
+    /// |Q| = μP with both prescribed: every node slips, the normal problem with q = μp sgn Q; shift indeterminate.
+    SlidingLimit,
+    /// |Q| > μP with both prescribed: no static solution.
+    GrossSliding,
 }
 
-impl PartialEq<&str> for SolverName {
-    fn eq(&self, other: &&str) -> bool {
-        self.0 == *other
+impl ProblemClass {
+    /// The class of a problem.
+    pub fn of(kind: &ProblemKind) -> ProblemClass {
+        match kind {
+            ProblemKind::Frictionless => ProblemClass::Frictionless,
+            ProblemKind::Frictional => ProblemClass::Frictional,
+            ProblemKind::SlidingLimit { .. } => ProblemClass::SlidingLimit,
+            ProblemKind::GrossSliding { .. } => ProblemClass::GrossSliding,
+        }
     }
 }
 
@@ -39,8 +61,9 @@ impl PartialEq<&str> for FormulationName {
     }
 }
 
-/// Wall-clock time per stage, seconds. Assembly and condensation are shared by all solvers of a scene.
-#[derive(Debug, Clone, Copy, Default, Serialize)]
+/// Wall-clock time per stage, seconds. Assembly and condensation are shared by all solvers of a scene, and by every
+/// solve on one model ([`Timing::setup`] says whether they were spent for this run).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct Timing {
     /// Flexibility assembly (BEM: H and G).
     pub assembly: f64,
@@ -50,21 +73,46 @@ pub struct Timing {
     pub formulation: f64,
     /// The solver.
     pub solve: f64,
-    /// Sum of the above.
+    /// Sum of the above: the cost of this answer from scratch.
     pub total: f64,
+    /// Whether the flexibility (assembly, condensation) was built for this run or reused from the model's build.
+    #[serde(default)]
+    pub setup: Setup,
+}
+
+impl Timing {
+    /// A run's timing from its source's build time and its own formulation and solve times.
+    pub fn of(source: &crate::source::SourceTiming, formulation: f64, solve: f64, setup: Setup) -> Timing {
+        Timing {
+            assembly: source.assembly,
+            condensation: source.condensation,
+            formulation,
+            solve,
+            total: source.assembly + source.condensation + formulation + solve,
+            setup,
+        }
+    }
 }
 
 /// One solver's run on the scene.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct SolverRun {
     /// Solver name.
-    pub solver: SolverName,
+    pub solver: SolverId,
     /// `frictionless` | `displacement` | `loading`.
     pub formulation: FormulationName,
-    /// Outcome (after the solver-independent residual check).
+    /// Which contact problem the drive posed (e.g. `sliding_limit`).
+    pub problem: ProblemClass,
+    /// The harness's conclusion (after the solver-independent residual check and the model-range checks): what a
+    /// user acts on.
     pub status: Status,
-    /// Detail from the solver or the residual check.
+    /// How the solver itself ended.
+    pub termination: Termination,
+    /// The solver's own message.
     pub message: String,
+    /// Why `status` is not simply the solver's `termination` (null when it is).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub verdict: Option<Verdict>,
     /// Number of complementarity (or QP) unknowns solved.
     pub problem_size: usize,
     /// Work counters (named: pivots, sweeps, iterations, outer, ...).
@@ -81,7 +129,7 @@ pub struct SolverRun {
     pub contact: Option<ContactSummary>,
     /// Rolling figures: creepage (prescribed or computed) and Coulomb-law inconsistencies of the slip velocities
     /// (null without rolling, or unless solved).
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rolling: Option<RollingResult>,
     /// Per contact node: empty unless solved, or judged `contact_at_zone_edge` / `kinematics_out_of_range` (then the
     /// discrete answer that was judged, kept as the evidence for the verdict; such a run has no resultants, contact
@@ -89,18 +137,32 @@ pub struct SolverRun {
     pub nodes: Vec<NodeResult>,
     /// For clarabel: max |p − p_unpolished| / p_max, the effect of solving the symmetrised QP before the
     /// active-set polish with the nonsymmetric flexibility.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub polish_change: Option<f64>,
     /// A step of a load path: the frictional energy dissipated in the step and since the start.
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub history: Option<StepEnergy>,
     /// Subsurface stresses (only with `[stresses]`, for a solved run; a load path's at the end of each step):
     /// [`crate::stresses`].
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stresses: Option<crate::stresses::StressResult>,
+    /// The elastic counter-body's subsurface stresses from the same tractions (with `[stresses]` and
+    /// `[counter_body] kind = "half_plane"`; depth measured into the counter-body): [`crate::stresses`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub counter_body_stresses: Option<crate::stresses::StressResult>,
 }
 
 impl SolverRun {
+    /// What to tell a user about the run: the verdict's explanation (when the harness overrode the solver), then
+    /// the solver's message.
+    pub fn explanation(&self) -> String {
+        match &self.verdict {
+            Some(v) if self.message.is_empty() => v.message.clone(),
+            Some(v) => format!("{}; {}: {}", v.message, self.solver, self.message),
+            None => self.message.clone(),
+        }
+    }
+
     /// The nodes of the answer: the run's nodes when it solved, none otherwise (a run judged
     /// `contact_at_zone_edge` or `kinematics_out_of_range` keeps its nodes as evidence, not as an answer). Every
     /// figure derived from the nodes (stick edges, node counts) reads them through this.
@@ -115,7 +177,7 @@ impl SolverRun {
 
 /// The frictional dissipation of a load step (energy per unit thickness, user's units): Σ −h_i Δs_i with the
 /// step's end forces (backward Euler; converges with the substeps).
-#[derive(Debug, Clone, Copy, Serialize)]
+#[derive(Debug, Clone, Copy, Serialize, Deserialize)]
 pub struct StepEnergy {
     /// Dissipated in this (sub)step.
     pub dissipated: f64,
@@ -124,7 +186,7 @@ pub struct StepEnergy {
 }
 
 /// One (sub)step of a load path: where it is on the path and every solver's run at its end.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct StepResult {
     /// Step index (from 0, as in `[[steps]]`).
     pub step: usize,
@@ -141,7 +203,7 @@ pub struct StepResult {
 }
 
 /// Mesh facts.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct MeshInfo {
     /// The wheel's model: `bem` (the finite wheel) or `half_plane`.
     pub model: BodyModel,
@@ -160,7 +222,7 @@ pub struct MeshInfo {
 }
 
 /// Numerical health of the flexibility source and of the contact flexibility.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Diagnostics {
     /// Largest/smallest |U_ii| of the BEM system's LU (a lower bound of its condition number; null without BEM).
     pub bem_pivot_ratio: Option<f64>,
@@ -177,7 +239,7 @@ pub struct Diagnostics {
 }
 
 /// Analytic references that apply to the scene.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct References {
     /// Hertz at the run's load (frictionless scenes), from the first solved run's P when displacement-driven, with
     /// the pair's contact modulus E*.
@@ -188,7 +250,7 @@ pub struct References {
 }
 
 /// What a check compares.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum CheckKind {
     /// A measured figure against a reference within a tolerance (the numbers mean what they say).
@@ -198,10 +260,15 @@ pub enum CheckKind {
     Verdict,
     /// A reference that does not apply to this scene or run (it passes; `note` says why it does not apply).
     NotApplicable,
+    /// A theory used outside the conditions it assumes (a half-space theory on the finite wheel): no verdict, the
+    /// measured difference from the theory (`error`, in the quantity's unit) with the **model error** beside it
+    /// (`model_error`: the same loads on the model the theory assumes, computed by rollbem, subtracted) and its
+    /// uncertainty. It passes: refining the mesh converges the difference to the model error, it does not fail it.
+    ModelComparison,
 }
 
 /// One check: a measured figure against a reference.
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Check {
     /// What is checked.
     pub name: String,
@@ -215,17 +282,27 @@ pub struct Check {
     pub tolerance: f64,
     /// error ≤ tolerance (for a verdict: the verdict; a reference that does not apply passes).
     pub pass: bool,
-    /// Whether this is a figure, a verdict or a reference that does not apply.
+    /// Whether this is a figure, a verdict, a reference that does not apply or a model comparison.
     pub kind: CheckKind,
+    /// For a model comparison: measured minus the same figure on the model the theory assumes (e.g. the finite wheel
+    /// minus the half-plane pair at the same loads and mesh), in the quantity's unit.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub model_error: Option<f64>,
+    /// For a model comparison: the uncertainty of `model_error` (e.g. one contact element length for a stick-zone
+    /// edge located on the nodes).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub uncertainty: Option<f64>,
     /// What was found, for a verdict or a reference that could not be evaluated or does not apply; what to do about
     /// a failed figure where there is advice (null otherwise).
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
 }
 
 /// The JSON document of one scene run (`DESIGN.md`, "Result files").
-#[derive(Debug, Clone, Serialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Report {
+    /// The layout version of this document ([`SCHEMA_VERSION`]).
+    pub schema: u32,
     /// The scene as parsed, with defaults filled in.
     pub scene: Scene,
     /// Effects simulated.
@@ -239,13 +316,50 @@ pub struct Report {
     /// One entry per solver (for a load path: its run at the last step it reached).
     pub runs: Vec<SolverRun>,
     /// A load path's steps (empty for a one-step scene).
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub steps: Vec<StepResult>,
     /// Checks against theory and between solvers.
     pub checks: Vec<Check>,
+    /// Run-level warnings: a contact with too few elements across it (a failed check in `check`, a warning in
+    /// `run`), one line per distinct finding with the solvers it concerns.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
 }
 
 impl Report {
+    /// Read a result document (`rollbem run --json`): JSON of this layout ([`SCHEMA_VERSION`]), its scene valid. A
+    /// document of another schema (or of none: written before the schema was recorded) is refused with a message
+    /// saying so, never read wrongly.
+    pub fn read(path: &std::path::Path) -> crate::Result<Report> {
+        let text =
+            std::fs::read_to_string(path).map_err(|source| crate::Error::Io { path: path.to_path_buf(), source })?;
+        Report::from_json(&text, path)
+    }
+
+    /// Parse a result document's text (`path` names it in messages); see [`Report::read`].
+    pub fn from_json(text: &str, path: &std::path::Path) -> crate::Result<Report> {
+        let bad = |message: String| crate::Error::Parse { path: path.to_path_buf(), message };
+        let value: serde_json::Value = serde_json::from_str(text).map_err(|e| bad(format!("not JSON: {e}")))?;
+        if value.get("runs").is_none() {
+            return Err(bad("not a rollbem result document: no `runs` array".into()));
+        }
+        match value.get("schema").and_then(serde_json::Value::as_u64) {
+            Some(v) if v == u64::from(SCHEMA_VERSION) => {}
+            Some(v) => {
+                return Err(bad(format!(
+                    "result document of schema {v}; this rollbem reads schema {SCHEMA_VERSION}: rerun the scene"
+                )))
+            }
+            None => {
+                return Err(bad(format!(
+                    "result document without a schema version (written by an older rollbem); this rollbem reads \
+                     schema {SCHEMA_VERSION}: rerun the scene"
+                )))
+            }
+        }
+        serde_json::from_value(value).map_err(|e| bad(format!("not a result document of schema {SCHEMA_VERSION}: {e}")))
+    }
+
     /// Whether every check passed.
     pub fn all_pass(&self) -> bool {
         self.checks.iter().all(|c| c.pass)
@@ -276,53 +390,5 @@ impl Report {
             }
         }
         out
-    }
-
-    /// The nodal table as CSV (`rollbem run --csv`): one row per contact node and solver run that has nodes (a run
-    /// that did not solve has none, except the evidence kept by a run judged `contact_at_zone_edge` or
-    /// `kinematics_out_of_range`: the `status` column tells them apart), with the keys of `runs[].nodes[]` in the user's units; empty cells where a
-    /// value is null (u_x without the tangential problem, the slip of a separated node, the slip velocity without
-    /// rolling).
-    pub fn nodes_csv(&self) -> String {
-        let mut w = csv::Writer::from_writer(Vec::new());
-        let head = [
-            "solver",
-            "status",
-            "node",
-            "x",
-            "y",
-            "pressure",
-            "shear",
-            "u_x",
-            "u_y",
-            "gap",
-            "slip",
-            "state",
-            "slip_velocity",
-        ];
-        w.write_record(head).expect("CSV into memory");
-        let opt = |v: Option<f64>| v.map(|v| format!("{v:e}")).unwrap_or_default();
-        for run in &self.runs {
-            for (i, n) in run.nodes.iter().enumerate() {
-                let state = serde_json::to_value(n.state).expect("a state serialises");
-                w.write_record([
-                    run.solver.0.to_string(),
-                    run.status.name().to_string(),
-                    i.to_string(),
-                    format!("{:e}", n.x),
-                    format!("{:e}", n.y),
-                    format!("{:e}", n.pressure),
-                    format!("{:e}", n.shear),
-                    opt(n.u_x),
-                    format!("{:e}", n.u_y),
-                    format!("{:e}", n.gap),
-                    opt(n.slip),
-                    state.as_str().unwrap_or_default().to_string(),
-                    opt(n.slip_velocity),
-                ])
-                .expect("CSV into memory");
-            }
-        }
-        String::from_utf8(w.into_inner().expect("CSV into memory")).expect("CSV of UTF-8 cells is UTF-8")
     }
 }

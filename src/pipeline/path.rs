@@ -25,15 +25,17 @@
 //! slip increment, so every term is ≥ 0), in energy per unit thickness; with enough substeps it converges to the
 //! path integral.
 
+use super::stages::{
+    add_stresses, assemble_report, build_problem, evaluate_outcome, is_half_plane, lcp_time, normal_asymmetry,
+    solve_timed, solvers_for, RunContext,
+};
 use crate::error::Result;
 use crate::formulation::{ContactProblem, Dof, Drive, SlipOperator, Solution};
 use crate::post::RollingPost;
-use crate::results::{Report, SolverRun, StepEnergy, StepResult, Timing};
-use crate::run::{assemble_report, blocks_for, evaluate_outcome, normal_asymmetry, solve_timed, solvers_for};
-use crate::scene::Scene;
+use crate::results::{Report, Setup, SolverRun, StepEnergy, StepResult, Timing};
+use crate::scene::{PathStep, Rolling, Scene};
 use crate::solvers::{Solver, Status};
-use crate::source;
-use std::path::Path;
+use crate::source::Built;
 use std::time::Instant;
 
 /// A solver's state at the end of a step (user's units for the rigid motion and the resultants).
@@ -65,20 +67,19 @@ struct Substep {
     roll: f64,
 }
 
-/// Every substep of a scene's path, in order.
-fn substeps(scene: &Scene) -> Vec<Substep> {
+/// Every substep of a path, in order.
+fn substeps(steps: &[PathStep]) -> Vec<Substep> {
     let mut out = Vec::new();
-    for (k, st) in scene.steps.iter().enumerate() {
-        let d = st.drive();
-        let m = st.substeps.unwrap_or(1);
+    for (k, st) in steps.iter().enumerate() {
+        let (d, m) = (st.end, st.substeps);
         for j in 1..=m {
             out.push(Substep {
                 step: k,
                 substep: j,
                 substeps: m,
-                end: [d.tangential(), d.normal(), d.rotational()],
+                end: [d.tangential, d.normal, d.rotational],
                 fraction: j as f64 / m as f64,
-                roll: st.roll.unwrap_or(0.0) / m as f64,
+                roll: st.roll / m as f64,
             });
         }
     }
@@ -110,9 +111,10 @@ fn offset(x: &[f64], u_prev: &[f64], roll: f64, creepage: f64, direction: i32) -
                     (1.0 - t) * u_prev[k] + t * u_prev[k + 1]
                 })
             };
+            // Without rolling, node i holds its own material (its index is that of xi).
             let u = match u {
                 Some(u) => u,
-                None if roll == 0.0 => u_prev[x.iter().position(|v| *v == xi).expect("a node")],
+                None if roll == 0.0 => x.iter().position(|v| *v == xi).map_or(0.0, |i| u_prev[i]),
                 None => 0.0,
             };
             -u + creepage * roll
@@ -120,27 +122,29 @@ fn offset(x: &[f64], u_prev: &[f64], roll: f64, creepage: f64, direction: i32) -
         .collect()
 }
 
-/// Walk a scene's load path with every requested solver.
-pub fn run_history(scene: &Scene, path: &Path) -> Result<Report> {
-    let built = source::build(scene, blocks_for(scene))?;
+/// Walk a load path with every requested solver, on a built flexibility; `setup` says whether the flexibility was
+/// built for this walk.
+pub(super) fn solve(scene: &Scene, steps: &[PathStep], built: &Built, setup: Setup) -> Result<Report> {
     let flex = &built.flex;
     let n = flex.n();
     let l0 = flex.scales.length;
-    let (creepage, direction) = scene.rolling.as_ref().map_or((0.0, 1), |r| (r.creepage.unwrap_or(0.0), r.direction));
-    let subs = substeps(scene);
+    let (creepage, direction) = match scene.rolling() {
+        Some(Rolling::Transient { creepage, direction }) => (*creepage, *direction),
+        _ => (0.0, 1),
+    };
+    let subs = substeps(steps);
     let rest = PathState { u_t: vec![0.0; n], rigid: [0.0; 3], loads: [0.0; 3], solution: None, dissipated: 0.0 };
     // The problem of a substep: the slip increment from the previous substep's state `st`, the drive interpolated
     // from the step's start `start`.
     let problem_at = |sub: &Substep, st: &PathState, start: &PathState| -> Result<ContactProblem<'_>> {
         let slip = SlipOperator::increment(offset(&flex.x, &st.u_t, sub.roll / l0, creepage, direction));
-        let mut p = ContactProblem::new(flex, scene.law(), drive_at(sub, start), slip)
-            .map_err(|_| crate::run::drive_error(scene, path))?;
+        let mut p = build_problem(scene, flex, drive_at(sub, start), slip)?;
         p.warm = st.solution.clone();
         Ok(p)
     };
     let first = problem_at(&subs[0], &rest, &rest)?;
-    let solvers = solvers_for(scene, &first, path)?;
-    let asym = normal_asymmetry(&first, scene.wheel.model == crate::scene::BodyModel::HalfPlane);
+    let solvers = solvers_for(scene, &first)?;
+    let asym = normal_asymmetry(&first, is_half_plane(scene));
     let mut steps: Vec<StepResult> = Vec::with_capacity(subs.len());
     let mut rolled = 0.0;
     for sub in &subs {
@@ -156,19 +160,21 @@ pub fn run_history(scene: &Scene, path: &Path) -> Result<Report> {
     }
     let mut finals = Vec::new();
     let mut bounds = Vec::new();
-    let stresses = crate::stresses::StressEvaluator::new(scene, &built, path)?;
+    let stresses = crate::stresses::StressEvaluator::new(scene, built)?;
     for solver in &solvers {
-        let ctx = PathContext { source_time: &built.timing, scene, stresses: stresses.as_ref() };
+        let ctx = PathContext { source_time: &built.timing, setup, scene, stresses: stresses.as_ref() };
         let (last, bound) = walk(solver.as_ref(), &subs, &rest, &problem_at, &ctx, &mut steps)?;
         finals.push(last);
         bounds.push(bound);
     }
-    Ok(assemble_report(scene, &built, asym, finals, &bounds, steps))
+    Ok(assemble_report(scene, built, asym, finals, &bounds, steps))
 }
 
 /// What a walk along the path needs of the scene beyond its problems.
 struct PathContext<'s> {
-    source_time: &'s source::SourceTiming,
+    source_time: &'s crate::source::SourceTiming,
+    /// Whether the flexibility was built for this walk (its time is then counted on the first substep).
+    setup: Setup,
     scene: &'s Scene,
     /// The stress evaluation, when the scene asks for it (at the end of each step).
     stresses: Option<&'s crate::stresses::StressEvaluator<'s>>,
@@ -198,21 +204,22 @@ fn walk<'a>(
         let formulation = tf.elapsed().as_secs_f64();
         steps[k].drive = problem.drive;
         let (outcome, solve) = solve_timed(solver, &problem);
-        let formulation = formulation + crate::run::lcp_time(solver, &problem);
-        let timing = Timing {
-            assembly: if k == 0 { source_time.assembly } else { 0.0 },
-            condensation: if k == 0 { source_time.condensation } else { 0.0 },
-            formulation,
-            solve,
-            total: formulation + solve + if k == 0 { source_time.assembly + source_time.condensation } else { 0.0 },
+        let formulation = formulation + lcp_time(solver, &problem);
+        // The flexibility's setup is counted once, on the path's first substep.
+        let timing = if k == 0 {
+            Timing::of(source_time, formulation, solve, ctx.setup)
+        } else {
+            Timing::of(&Default::default(), formulation, solve, Setup::Reused)
         };
-        let rolling = scene.rolling.as_ref().map(|r| RollingPost::Transient {
-            creepage: r.creepage.unwrap_or(0.0),
-            roll: sub.roll / problem.flex.scales.length,
-        });
-        let size = problem.lcp_size();
+        let rolling = match scene.rolling() {
+            Some(Rolling::Transient { creepage, .. }) => {
+                Some(RollingPost::Transient { creepage: *creepage, roll: sub.roll / problem.flex.scales.length })
+            }
+            _ => None,
+        };
         let solution = outcome.solution.clone();
-        let (mut run, ev) = evaluate_outcome(scene, &problem, solver.name(), size, outcome, timing, refuse, rolling);
+        let run_ctx = RunContext { scene, problem: &problem, solver: solver.id(), timing, refuse, rolling };
+        let (mut run, ev) = evaluate_outcome(&run_ctx, outcome);
         let solved = run.status == Status::Solved;
         if let (true, Some(ev), Some(sol)) = (solved, ev, solution) {
             let sc = problem.flex.scales;
@@ -230,7 +237,7 @@ fn walk<'a>(
             state.u_t = ev.u_t.clone().unwrap_or_else(|| vec![0.0; problem.n()]);
             state.solution = Some(sol);
             if sub.substep == sub.substeps {
-                crate::run::add_stresses(&mut run, ctx.stresses);
+                add_stresses(&mut run, ctx.stresses);
             }
         }
         steps[k].runs.push(run.clone());
@@ -239,59 +246,8 @@ fn walk<'a>(
             break;
         }
     }
-    Ok((last.expect("a path has at least one step"), check))
-}
-
-/// The path as CSV: one row per substep and solver (a solver whose path broke earlier has no row), in the user's
-/// units. Columns: where on the path (`step`, `substep`, `substeps`, `rolled`), the solver and its status, the
-/// resultants (`Q`, `P`, `M`), the rigid motion (`shift`, `approach`, `rotation`; `shift` empty when indeterminate at
-/// the sliding limit), the stick zone (`stick_left`, `stick_right`: midway between the outermost sticking node and
-/// its neighbour, empty when nothing sticks), node counts per state, the dissipated energy of the substep and since
-/// the start of the path (energy per unit thickness), the largest residual and the solve time in seconds.
-pub fn path_csv(report: &Report) -> String {
-    use std::fmt::Write as _;
-    let mut out = String::from(
-        "step,substep,substeps,rolled,solver,status,Q,P,M,shift,approach,rotation,stick_left,stick_right,\
-         nodes_stick,nodes_slip,nodes_separated,dissipated,dissipated_total,residual,t_solve\n",
-    );
-    // `+ 0.0` prints −0 as 0.
-    let opt = |v: Option<f64>| v.map(|v| format!("{:e}", v + 0.0)).unwrap_or_default();
-    for st in &report.steps {
-        for run in &st.runs {
-            let f = run.resultants;
-            let rb = run.rigid_body;
-            // A substep judged not an answer keeps its nodes as evidence; its row reports no stick zone or counts.
-            let nodes = run.answer_nodes();
-            let edges = crate::references::stick_edges(nodes);
-            let count = |s: crate::post::NodeState| nodes.iter().filter(|n| n.state == s).count();
-            let e = run.history.as_ref();
-            writeln!(
-                out,
-                "{},{},{},{:e},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{:e}",
-                st.step,
-                st.substep,
-                st.substeps,
-                st.rolled,
-                run.solver,
-                run.status,
-                opt(f.map(|f| f.tangential)),
-                opt(f.map(|f| f.normal)),
-                opt(f.map(|f| f.moment)),
-                opt(rb.and_then(|r| r.tangential)),
-                opt(rb.map(|r| r.normal)),
-                opt(rb.map(|r| r.rotation)),
-                opt(edges.map(|e| e.0)),
-                opt(edges.map(|e| e.1)),
-                count(crate::post::NodeState::Stick),
-                count(crate::post::NodeState::Slip),
-                count(crate::post::NodeState::Separated),
-                opt(e.map(|e| e.dissipated)),
-                opt(e.map(|e| e.dissipated_total)),
-                opt(run.residuals.map(|r| r.max())),
-                run.timing_s.solve
-            )
-            .expect("writing to a String");
-        }
+    match last {
+        Some(run) => Ok((run, check)),
+        None => unreachable!("a validated path has at least one substep"),
     }
-    out
 }

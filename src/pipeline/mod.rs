@@ -1,0 +1,209 @@
+//! The pipeline: a [`Model`] is built once from a valid scene — the mesh, the BEM assembly and its condensation to
+//! the contact flexibility (or the half-plane's influence coefficients) — and solved for as many drives as the
+//! caller has: a creep curve, a family of loads, a load path, every case of a sweep that shares bodies and mesh.
+//!
+//! Its files are its stages: [`stages`] (what every solve shares: the problem, the solvers, a timed solve, the
+//! verdict, the document), [`single`] (one step from rest) and [`path`] (a load path with memory). A solve returns
+//! the result document ([`crate::results::Report`]); a problem without a solution is a status in it, never an
+//! error, and no entry point panics on a validated scene.
+//!
+//! ```
+//! use rollbem::pipeline::Model;
+//! use rollbem::scene::Scene;
+//! use rollbem::status::Status;
+//! let scene = Scene::from_toml(
+//!     r#"
+//! name = "carter"
+//! [wheel]
+//! radius = 500.0
+//! youngs_modulus = 209920.0
+//! poisson_ratio = 0.28
+//! model = "half_plane"
+//! [counter_body]
+//! kind = "half_plane"
+//! youngs_modulus = 209920.0
+//! poisson_ratio = 0.28
+//! [mesh]
+//! element = "constant"
+//! contact_half_width = 1.5
+//! contact_elements = 60
+//! [contact]
+//! friction = 0.3
+//! [drive]
+//! normal_load = 178.9
+//! [rolling]
+//! mode = "steady"
+//! creepage = -1e-4
+//! direction = 1
+//! [solvers]
+//! use = ["active_set"]
+//! "#,
+//!     std::path::Path::new("carter.toml"),
+//! )
+//! .unwrap();
+//! // Build once, solve a creep curve on the same flexibility.
+//! let model = Model::build(&scene).unwrap();
+//! let mut forces = Vec::new();
+//! for xi in [-1e-4, -2e-4, -4e-4] {
+//!     let report = model.solve(&scene.with_creepage(xi).unwrap()).unwrap();
+//!     let run = &report.runs[0];
+//!     assert_eq!(run.status, Status::Solved);
+//!     forces.push(run.resultants.unwrap().tangential);
+//! }
+//! // The creep force grows with the creepage (Carter), and the flexibility was built once.
+//! assert!(forces[0] < forces[1] && forces[1] < forces[2]);
+//! assert_eq!(model.solves(), 3);
+//! ```
+
+pub mod path;
+pub mod single;
+pub mod stages;
+
+use crate::error::{Error, Result};
+use crate::formulation::Lcp;
+use crate::results::{Report, Setup};
+use crate::scene::{Loading, Scene};
+use crate::source::{self, Blocks, Built, SourceTiming};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// A scene's flexibility, built once and solved for many drives (see the module docs).
+#[derive(Debug)]
+pub struct Model {
+    /// The scene it was built for.
+    scene: Scene,
+    /// The flexibility (and, for a BEM wheel with `[stresses]`, its boundary response).
+    built: Built,
+    /// Which blocks were built.
+    blocks: Blocks,
+    /// Number of solves so far.
+    solves: AtomicUsize,
+}
+
+impl Model {
+    /// Build the flexibility of a scene: the mesh, the BEM system and its condensation (a BEM wheel) or the
+    /// half-plane's influence coefficients, plus an elastic counter-body's; only the blocks the scene needs.
+    ///
+    /// # Errors
+    /// [`Error::Numerical`] when the BEM system is singular or not finite (a degenerate mesh or support).
+    pub fn build(scene: &Scene) -> Result<Model> {
+        let blocks = stages::blocks_for(scene);
+        let built = source::build(scene, blocks)?;
+        Ok(Model { scene: scene.clone(), built, blocks, solves: AtomicUsize::new(0) })
+    }
+
+    /// The scene the model was built for.
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+
+    /// The built flexibility.
+    pub fn built(&self) -> &Built {
+        &self.built
+    }
+
+    /// The time the build took, per stage (seconds).
+    pub fn timing(&self) -> SourceTiming {
+        self.built.timing
+    }
+
+    /// How many solves the model has done.
+    pub fn solves(&self) -> usize {
+        self.solves.load(Ordering::Relaxed)
+    }
+
+    /// Whether `scene` can be solved on this model: the same bodies, mesh and candidate zone (and counter-body), the
+    /// tangential blocks when it needs them, the boundary response when it asks for a BEM wheel's stresses. `Err`
+    /// names the part of the scene that differs.
+    pub fn accepts(&self, scene: &Scene) -> Result<()> {
+        let m = &self.scene;
+        let differs = |field: &str, what: &str| Error::Invalid {
+            path: scene.origin().to_path_buf(),
+            field: field.into(),
+            message: format!(
+                "{what} differs from the scene the model was built for ({}): build a model for this scene",
+                m.name()
+            ),
+        };
+        if let Some((field, what)) = source_difference(m, scene) {
+            return Err(differs(field, what));
+        }
+        if stages::blocks_for(scene) == Blocks::All && self.blocks == Blocks::Normal {
+            return Err(differs("contact.friction", "friction or rolling (the model holds the normal problem only)"));
+        }
+        if scene.stresses().is_some()
+            && crate::mesh::MeshSpec::of_scene(scene).is_some()
+            && self.built.boundary.is_none()
+        {
+            return Err(differs("stresses", "asking for the BEM wheel's stresses"));
+        }
+        Ok(())
+    }
+
+    /// Whether two scenes have the same flexibility source (bodies, mesh, zone, counter-body): one model, built from
+    /// the one that [`Model::needs`] more, solves both.
+    pub fn shares_source(a: &Scene, b: &Scene) -> bool {
+        source_difference(a, b).is_none()
+    }
+
+    /// What a scene needs of a model beyond its source, ordered: (the tangential blocks, the BEM wheel's boundary
+    /// response for stresses). A model built from the scene that needs the most accepts every scene sharing its
+    /// source.
+    pub fn needs(scene: &Scene) -> (bool, bool) {
+        (stages::blocks_for(scene) == Blocks::All, scene.stresses().is_some())
+    }
+
+    /// Solve a scene on this model: its one-step drive or its load path, with its friction, rolling, solvers and
+    /// checks. The scene must share the model's bodies and mesh ([`Model::accepts`]).
+    ///
+    /// The runs' timings carry the model's build time (assembly, condensation) as the cost of their answer, marked
+    /// [`Setup::Built`] on the model's first solve and [`Setup::Reused`] after it.
+    pub fn solve(&self, scene: &Scene) -> Result<Report> {
+        self.accepts(scene)?;
+        let setup = match self.solves.fetch_add(1, Ordering::Relaxed) {
+            0 => Setup::Built,
+            _ => Setup::Reused,
+        };
+        match scene.loading() {
+            Loading::Drive(drive) => single::solve(scene, *drive, &self.built, setup),
+            Loading::Path(steps) => path::solve(scene, steps, &self.built, setup),
+        }
+    }
+
+    /// Solve many scenes sharing the model's bodies and mesh, in order (a creep curve, a family of loads).
+    pub fn solve_all<'a>(&self, scenes: impl IntoIterator<Item = &'a Scene>) -> Result<Vec<Report>> {
+        scenes.into_iter().map(|s| self.solve(s)).collect()
+    }
+
+    /// The LCP that Lemke solves for a one-step scene (`rollbem lcp export`); a load path, or a load beyond gross
+    /// sliding, has none (an error saying why).
+    pub fn lcp(&self, scene: &Scene) -> Result<Lcp> {
+        self.accepts(scene)?;
+        match scene.loading() {
+            Loading::Drive(drive) => single::lcp(scene, *drive, &self.built),
+            Loading::Path(_) => Err(Error::Unsupported {
+                path: scene.origin().to_path_buf(),
+                message: "steps: a load path is a sequence of LCPs, one per substep; export a one-step scene".into(),
+            }),
+        }
+    }
+}
+
+/// The first part of the flexibility source in which two scenes differ: (key, what), or `None`.
+fn source_difference(a: &Scene, b: &Scene) -> Option<(&'static str, &'static str)> {
+    if a.wheel() != b.wheel() {
+        Some(("wheel", "the wheel's radius or material"))
+    } else if a.body() != b.body() {
+        Some(("wheel.model", "the wheel's model, support or mesh"))
+    } else if a.zone() != b.zone() {
+        Some(("mesh", "the candidate contact zone or its elements"))
+    } else if a.counter_body() != b.counter_body() {
+        Some(("counter_body", "the counter-body"))
+    } else {
+        None
+    }
+}
+
+/// Build a scene's model and solve the scene once (what `rollbem run` does for each scene).
+pub fn run_scene(scene: &Scene) -> Result<Report> {
+    Model::build(scene)?.solve(scene)
+}

@@ -1,0 +1,524 @@
+//! Validation: a [`SceneDocument`] checked range by range and turned into a [`Scene`] whose parts cannot hold an
+//! invalid value. Every error names the file and the dotted key.
+
+use super::document::{CounterBodyTable, DriveTable, MeshTable, SceneDocument};
+use super::{
+    safe_name, Body, BodyModel, ContactZone, CounterBody, ElementKind, Loading, Material, PathStep, Profile, Rolling,
+    RollingMode, Scene, StressQuantity, Support, Wheel, ZoneExtent, MAX_HALF_PLANE_ELEMENTS, MAX_NODES,
+    MAX_STRESS_POINTS,
+};
+use crate::error::{Error, Result};
+use crate::formulation::{ContactLaw, Dof};
+use std::path::Path;
+
+/// Validate a document and build the typed scene.
+pub(super) fn validate(mut document: SceneDocument, path: &Path) -> Result<Scene> {
+    document.validate(path)?;
+    let solvers = document.solvers.typed().map_err(|e| e.into_error(path))?;
+    // The scene as parsed: every solver's settings with the defaults filled in.
+    document.solvers.settings = solvers.settings.tables();
+    let d = &document;
+    let w = &d.wheel;
+    let wheel = Wheel {
+        radius: w.radius,
+        material: Material { youngs_modulus: w.youngs_modulus, poisson_ratio: w.poisson_ratio },
+    };
+    let body = match (w.model, w.support, d.mesh.other_elements) {
+        (BodyModel::Bem, Some(support), Some(other_elements)) => {
+            Body::Bem { support, element: d.mesh.element, other_elements }
+        }
+        (BodyModel::HalfPlane, _, _) => Body::HalfPlane {
+            datum_depth: w.datum_depth.unwrap_or(w.radius),
+            profile: w.profile.unwrap_or(Profile::Circle),
+        },
+        _ => unreachable!("validate() requires a BEM wheel's support and other_elements"),
+    };
+    let counter_body = match d.counter_body {
+        CounterBodyTable::Rigid => CounterBody::Rigid,
+        CounterBodyTable::HalfPlane { youngs_modulus, poisson_ratio, datum_depth } => CounterBody::HalfPlane {
+            material: Material { youngs_modulus, poisson_ratio },
+            datum_depth: datum_depth.unwrap_or(w.radius),
+        },
+    };
+    let rolling = d.rolling.as_ref().map(|r| match r.mode {
+        RollingMode::Steady => Rolling::Steady { direction: r.direction },
+        RollingMode::Seed => Rolling::Seed { creepage: r.creepage.unwrap_or(0.0), direction: r.direction },
+        RollingMode::Transient => Rolling::Transient { creepage: r.creepage.unwrap_or(0.0), direction: r.direction },
+    });
+    let loading = if d.steps.is_empty() {
+        let mut drive = d.drive.dofs();
+        if let (Some(Rolling::Steady { .. }), Some(xi)) = (rolling, d.rolling.as_ref().and_then(|r| r.creepage)) {
+            drive.tangential = Dof::Displacement(xi);
+        }
+        Loading::Drive(drive)
+    } else {
+        Loading::Path(
+            d.steps
+                .iter()
+                .map(|st| PathStep {
+                    end: st.drive().dofs(),
+                    substeps: st.substeps.unwrap_or(1),
+                    roll: st.roll.unwrap_or(0.0),
+                })
+                .collect(),
+        )
+    };
+    Ok(Scene {
+        origin: path.to_path_buf(),
+        wheel,
+        body,
+        zone: zone_of(&d.mesh),
+        counter_body,
+        law: ContactLaw { friction: d.contact.friction, coupling: d.contact.coupling },
+        loading,
+        rolling,
+        solvers,
+        document,
+    })
+}
+
+/// The contact zone of a mesh table (a validated one has exactly one of the two extents).
+fn zone_of(m: &MeshTable) -> ContactZone {
+    let extent = match (m.contact_half_width, m.contact_arc_deg) {
+        (Some(half_width), _) => ZoneExtent::HalfWidth { half_width },
+        (None, degrees) => ZoneExtent::Arc { degrees: degrees.unwrap_or(0.0) },
+    };
+    ContactZone { extent, elements: m.contact_elements }
+}
+
+/// Range checks of scene values; every error names the file and the dotted key.
+struct Checker<'a> {
+    path: &'a Path,
+}
+
+impl Checker<'_> {
+    fn bad(&self, field: &str, message: String) -> Error {
+        Error::Invalid { path: self.path.to_path_buf(), field: field.to_string(), message }
+    }
+
+    fn positive(&self, field: &str, v: f64) -> Result<()> {
+        if !v.is_finite() || v <= 0.0 {
+            return Err(self.bad(field, format!("must be a finite number > 0 (got {v})")));
+        }
+        Ok(())
+    }
+
+    fn poisson(&self, field: &str, nu: f64) -> Result<()> {
+        if !nu.is_finite() || !(0.0..=0.5).contains(&nu) {
+            return Err(self.bad(field, format!("must lie in [0, 0.5] (got {nu})")));
+        }
+        Ok(())
+    }
+
+    /// A key that means nothing for the half-plane model.
+    fn meaningless(&self, field: &str) -> Error {
+        self.bad(
+            field,
+            "means nothing for wheel.model = \"half_plane\" (an unbounded body has no support, no other boundary \
+             and no rotation about a centre): remove it"
+                .into(),
+        )
+    }
+
+    fn finite(&self, field: &str, v: f64) -> Result<()> {
+        if !v.is_finite() {
+            return Err(self.bad(field, format!("must be a finite number (got {v})")));
+        }
+        Ok(())
+    }
+}
+
+/// Which solvers to run (`[solvers] use = [...]`, registry names or `"all"`), with their settings tables
+/// (`[solvers.NAME]`, validated by each solver: [`crate::solvers::Validate`]). After [`Scene::from_toml`] (or
+impl SceneDocument {
+    /// Check every value's range; the error names the dotted key.
+    fn validate(&self, path: &Path) -> Result<()> {
+        let c = Checker { path };
+        if let Err(why) = safe_name(&self.name) {
+            return Err(c.bad("name", why));
+        }
+        self.validate_wheel(&c)?;
+        self.validate_mesh(&c)?;
+        self.validate_counter_body(&c)?;
+        let mu = self.contact.friction;
+        if !mu.is_finite() || mu < 0.0 {
+            return Err(c.bad("contact.friction", format!("must be a finite number ≥ 0 (got {mu})")));
+        }
+        self.validate_drive(&c)?;
+        self.validate_stresses(&c)?;
+        let ck = self.checks.clone().unwrap_or_default();
+        for (field, v) in [
+            ("checks.hertz", ck.hertz),
+            ("checks.agreement", ck.agreement),
+            ("checks.residual", ck.residual),
+            ("checks.cattaneo_elements", ck.cattaneo_elements),
+            ("checks.contact_elements", ck.contact_elements),
+        ] {
+            if let Some(v) = v {
+                c.positive(field, v)?;
+            }
+        }
+        Ok(())
+    }
+
+    fn validate_wheel(&self, c: &Checker) -> Result<()> {
+        let w = &self.wheel;
+        c.positive("wheel.radius", w.radius)?;
+        c.positive("wheel.youngs_modulus", w.youngs_modulus)?;
+        c.poisson("wheel.poisson_ratio", w.poisson_ratio)?;
+        let nu = w.poisson_ratio;
+        let support = match (w.model, w.support) {
+            (BodyModel::Bem, Some(s)) => s,
+            (BodyModel::Bem, None) => {
+                return Err(c.bad("wheel.support", "missing: the BEM wheel needs a support (hub or top_arc)".into()))
+            }
+            (BodyModel::HalfPlane, Some(_)) => return Err(c.meaningless("wheel.support")),
+            (BodyModel::HalfPlane, None) => {
+                if let Some(d) = w.datum_depth {
+                    c.positive("wheel.datum_depth", d)?;
+                }
+                return Ok(());
+            }
+        };
+        if w.datum_depth.is_some() {
+            return Err(c.bad(
+                "wheel.datum_depth",
+                "only for model = \"half_plane\": the BEM wheel's rigid motion is that of its support".into(),
+            ));
+        }
+        if w.profile.is_some_and(|p| p != Profile::Circle) {
+            return Err(c.bad("wheel.profile", "only for model = \"half_plane\": the BEM wheel is a circle".into()));
+        }
+        match support {
+            Support::Hub { radius } => {
+                c.positive("wheel.support.radius", radius)?;
+                if nu == 0.5 {
+                    return Err(c.bad(
+                        "wheel.poisson_ratio",
+                        "ν = 0.5 with a hub support is degenerate for the displacement BIE: in incompressible plane \
+                         strain a uniform radial traction on the clamped hub circle produces no displacement anywhere, \
+                         so the hub pressure is undetermined (the BEM system is singular). Use ν ≤ 0.4999, or the \
+                         top_arc support (an open clamped arc), for which ν = 0.5 is well posed"
+                            .into(),
+                    ));
+                }
+                if radius >= 0.95 * w.radius {
+                    return Err(c.bad(
+                        "wheel.support.radius",
+                        format!("hub radius {radius} must be below 0.95 × wheel.radius = {}", 0.95 * w.radius),
+                    ));
+                }
+            }
+            Support::TopArc { angle_deg } => {
+                if !angle_deg.is_finite() || angle_deg <= 0.0 || angle_deg >= 180.0 {
+                    return Err(
+                        c.bad("wheel.support.angle_deg", format!("must lie in (0, 180) degrees (got {angle_deg})"))
+                    );
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn validate_stresses(&self, c: &Checker) -> Result<()> {
+        let Some(st) = &self.stresses else { return Ok(()) };
+        let r = self.wheel.radius;
+        let bem = self.wheel.model == BodyModel::Bem;
+        for (key, [lo, hi]) in [("stresses.x", st.x), ("stresses.depth", st.depth)] {
+            c.finite(key, lo)?;
+            c.finite(key, hi)?;
+            if lo >= hi {
+                return Err(c.bad(key, format!("[min, max] must have min < max (got [{lo}, {hi}])")));
+            }
+        }
+        if st.depth[0] < 0.0 {
+            return Err(c.bad(
+                "stresses.depth",
+                format!("depths are measured into the wheel from the flat and must be ≥ 0 (got {})", st.depth[0]),
+            ));
+        }
+        if bem && (st.x[0] <= -r || st.x[1] >= r) {
+            return Err(c.bad(
+                "stresses.x",
+                format!("the grid must lie inside the wheel: −R < x < R = {r} (got [{}, {}])", st.x[0], st.x[1]),
+            ));
+        }
+        if bem && st.depth[1] >= 2.0 * r {
+            return Err(c.bad(
+                "stresses.depth",
+                format!("the grid must lie inside the wheel: depth < 2R = {} (got {})", 2.0 * r, st.depth[1]),
+            ));
+        }
+        let [nx, nz] = st.points;
+        if nx < 2 || nz < 2 {
+            return Err(c.bad("stresses.points", format!("[nx, nz] must both be at least 2 (got [{nx}, {nz}])")));
+        }
+        if nx.checked_mul(nz).is_none_or(|n| n > MAX_STRESS_POINTS) {
+            return Err(c.bad(
+                "stresses.points",
+                format!("{nx} × {nz} points: rollbem allows at most {MAX_STRESS_POINTS} (nx·nz)"),
+            ));
+        }
+        if st.quantities.is_empty() {
+            return Err(c.bad("stresses.quantities", "must name at least one quantity (or leave it out: all)".into()));
+        }
+        if let Some(q) = st.quantities.iter().find(|q| StressQuantity::from_name(q).is_none()) {
+            let names: Vec<&str> = StressQuantity::ALL.iter().map(|q| q.name()).collect();
+            return Err(c.bad(
+                "stresses.quantities",
+                format!("unknown quantity `{q}` (expected one of: {})", names.join(", ")),
+            ));
+        }
+        Ok(())
+    }
+
+    fn validate_counter_body(&self, c: &Checker) -> Result<()> {
+        if let CounterBodyTable::HalfPlane { youngs_modulus, poisson_ratio, datum_depth } = self.counter_body {
+            c.positive("counter_body.youngs_modulus", youngs_modulus)?;
+            c.poisson("counter_body.poisson_ratio", poisson_ratio)?;
+            if let Some(d) = datum_depth {
+                c.positive("counter_body.datum_depth", d)?;
+            }
+            if self.mesh.element == ElementKind::Quadratic {
+                return Err(c.bad(
+                    "mesh.element",
+                    "an elastic counter-body needs constant elements: its influence coefficients are those of \
+                     uniform-traction strips"
+                        .into(),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    fn validate_mesh(&self, c: &Checker) -> Result<()> {
+        let w = &self.wheel;
+        let m = &self.mesh;
+        match (m.contact_arc_deg, m.contact_half_width) {
+            (Some(_), Some(_)) => {
+                return Err(c.bad(
+                    "mesh.contact_arc_deg",
+                    "give either `mesh.contact_arc_deg` or `mesh.contact_half_width`, not both".into(),
+                ))
+            }
+            (None, None) => {
+                return Err(
+                    c.bad("mesh", "give `contact_arc_deg` or `contact_half_width` (the potential contact zone)".into())
+                )
+            }
+            (Some(a), None) => {
+                if !a.is_finite() || a <= 0.0 || a >= 180.0 {
+                    return Err(c.bad("mesh.contact_arc_deg", format!("must lie in (0, 180) degrees (got {a})")));
+                }
+            }
+            (None, Some(hw)) => {
+                if !hw.is_finite() || hw <= 0.0 || hw >= w.radius {
+                    return Err(c.bad(
+                        "mesh.contact_half_width",
+                        format!("must lie in (0, wheel.radius = {}) (got {hw})", w.radius),
+                    ));
+                }
+            }
+        }
+        if m.contact_elements < 1 {
+            return Err(c.bad("mesh.contact_elements", "must be at least 1".into()));
+        }
+        if w.model == BodyModel::HalfPlane {
+            if m.other_elements.is_some() {
+                return Err(c.meaningless("mesh.other_elements"));
+            }
+            if m.element != ElementKind::Constant {
+                return Err(c.bad(
+                    "mesh.element",
+                    "the half-plane has closed-form influence coefficients for uniform-traction (constant) elements \
+                     only"
+                        .into(),
+                ));
+            }
+            if m.contact_elements > MAX_HALF_PLANE_ELEMENTS {
+                return Err(c.bad(
+                    "mesh.contact_elements",
+                    format!(
+                        "{} elements: the dense influence blocks and the frictional LCP would not fit in memory; \
+                         rollbem allows at most {MAX_HALF_PLANE_ELEMENTS} on the half-plane",
+                        m.contact_elements
+                    ),
+                ));
+            }
+            return Ok(());
+        }
+        let Some(other) = m.other_elements else {
+            return Err(c.bad("mesh.other_elements", "missing: the BEM wheel's mesh needs it (≥ 4)".into()));
+        };
+        let arc = zone_of(m).arc_rad(w.radius).to_degrees();
+        if let Some(Support::TopArc { angle_deg }) = w.support {
+            if arc + angle_deg >= 300.0 {
+                return Err(c.bad(
+                    "wheel.support.angle_deg",
+                    "the clamped top arc and the contact arc overlap or leave no free boundary".into(),
+                ));
+            }
+        }
+        if other < 4 {
+            return Err(c.bad("mesh.other_elements", format!("must be at least 4 (got {other})")));
+        }
+        // The dense BEM system holds (2N)² doubles for N nodes (plus its LU copy): bound N so that it fits in a few
+        // GiB instead of failing to allocate (an abort, not an error).
+        let per = match m.element {
+            ElementKind::Constant => 1,
+            ElementKind::Quadratic => 3,
+        };
+        let outer_nodes = m.contact_elements.saturating_add(other).saturating_mul(per);
+        let hub_nodes = match w.support.unwrap_or(Support::TopArc { angle_deg: 0.0 }) {
+            Support::Hub { radius } => ((outer_nodes as f64) * radius / w.radius).ceil() as usize + 12 * per,
+            Support::TopArc { .. } => 0,
+        };
+        let nodes = outer_nodes.saturating_add(hub_nodes);
+        if nodes > MAX_NODES {
+            let gib = (2.0 * nodes as f64).powi(2) * 8.0 * 2.0 / (1u64 << 30) as f64;
+            return Err(c.bad(
+                "mesh",
+                format!(
+                    "about {nodes} boundary nodes: the dense BEM system and its LU would need about {gib:.1} GiB; \
+                     rollbem allows at most {MAX_NODES} nodes (use fewer elements, or constant elements)"
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Check one drive table (`[drive]`, or a step's keys) under the key prefix `prefix` (e.g. `drive` or
+    /// `steps[2]`).
+    fn check_drive(&self, c: &Checker, prefix: &str, d: &DriveTable) -> Result<()> {
+        let key = |k: &str| format!("{prefix}.{k}");
+        let pairs = [
+            ("normal_approach", d.normal_approach, "normal_load", d.normal_load),
+            ("tangential_shift", d.tangential_shift, "tangential_load", d.tangential_load),
+            ("rotation", d.rotation, "moment", d.moment),
+        ];
+        for (a, va, b, vb) in pairs {
+            if va.is_some() && vb.is_some() {
+                return Err(c.bad(&key(a), format!("give either `{}` or `{}`, not both", key(a), key(b))));
+            }
+            if let Some(v) = va {
+                c.finite(&key(a), v)?;
+            }
+            if let Some(v) = vb {
+                c.finite(&key(b), v)?;
+            }
+        }
+        if d.normal_approach.is_none() && d.normal_load.is_none() {
+            return Err(c.bad(prefix, "give `normal_approach` or `normal_load`".into()));
+        }
+        if let Some(p) = d.normal_load {
+            c.positive(&key("normal_load"), p)?;
+        }
+        if self.wheel.model == BodyModel::HalfPlane {
+            if d.rotation.is_some() {
+                return Err(c.meaningless(&key("rotation")));
+            }
+            if d.moment.is_some() {
+                return Err(c.meaningless(&key("moment")));
+            }
+        }
+        Ok(())
+    }
+
+    fn validate_steps(&self, c: &Checker) -> Result<()> {
+        if self.drive != DriveTable::default() {
+            return Err(c.bad(
+                "steps",
+                "give either `[drive]` (one step from rest) or `[[steps]]` (a load path), not both".into(),
+            ));
+        }
+        let mut rolls = false;
+        for (k, st) in self.steps.iter().enumerate() {
+            let prefix = format!("steps[{k}]");
+            self.check_drive(c, &prefix, &st.drive())?;
+            if st.substeps == Some(0) {
+                return Err(c.bad(&format!("{prefix}.substeps"), "must be at least 1".into()));
+            }
+            if let Some(r) = st.roll {
+                if !r.is_finite() || r < 0.0 {
+                    return Err(c.bad(&format!("{prefix}.roll"), format!("must be a finite length ≥ 0 (got {r})")));
+                }
+                rolls |= r > 0.0;
+            }
+        }
+        match &self.rolling {
+            Some(r) if r.mode != RollingMode::Transient => Err(c.bad(
+                "rolling.mode",
+                "a load path rolls with mode = \"transient\" (steady and seed are one-step formulations)".into(),
+            )),
+            Some(r) if r.creepage.is_none() => {
+                Err(c.bad("rolling.creepage", "missing: transient rolling rolls at the scene's creepage".into()))
+            }
+            None if rolls => Err(c.bad(
+                "rolling",
+                "a step rolls (`roll` > 0): give `[rolling] mode = \"transient\"` with the creepage and direction"
+                    .into(),
+            )),
+            _ => Ok(()),
+        }
+    }
+
+    fn validate_drive(&self, c: &Checker) -> Result<()> {
+        if let Some(r) = &self.rolling {
+            if let Some(xi) = r.creepage {
+                c.finite("rolling.creepage", xi)?;
+            }
+            if r.direction != 1 && r.direction != -1 {
+                return Err(c.bad("rolling.direction", format!("must be 1 or -1 (got {})", r.direction)));
+            }
+        }
+        if !self.steps.is_empty() {
+            return self.validate_steps(c);
+        }
+        let d = &self.drive;
+        self.check_drive(c, "drive", d)?;
+        if let Some(r) = &self.rolling {
+            match r.mode {
+                RollingMode::Transient => {
+                    return Err(
+                        c.bad("rolling.mode", "transient rolling needs a load path (`[[steps]]` with `roll`)".into())
+                    )
+                }
+                RollingMode::Seed if r.creepage.is_none() => {
+                    return Err(c.bad("rolling.creepage", "missing: the seed's eq. 12 needs the creepage".into()))
+                }
+                RollingMode::Seed => {}
+                RollingMode::Steady => {
+                    match (r.creepage, d.tangential_load) {
+                        (Some(_), Some(_)) => {
+                            return Err(c.bad(
+                                "rolling.creepage",
+                                "give either `rolling.creepage` (the tangential force is computed) or \
+                                 `drive.tangential_load` (the creepage is computed), not both"
+                                    .into(),
+                            ))
+                        }
+                        (None, None) => {
+                            return Err(c.bad(
+                                "rolling.creepage",
+                                "steady rolling needs `rolling.creepage` or `drive.tangential_load`".into(),
+                            ))
+                        }
+                        _ => {}
+                    }
+                    let steady = "means nothing in steady rolling (mode = \"steady\"): the wheel turns \
+                                  continuously, its tangential motion is the creepage";
+                    for (key, given) in [
+                        ("drive.tangential_shift", d.tangential_shift.is_some()),
+                        ("drive.rotation", d.rotation.is_some()),
+                        ("drive.moment", d.moment.is_some()),
+                    ] {
+                        if given {
+                            return Err(c.bad(key, steady.into()));
+                        }
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}

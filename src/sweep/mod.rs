@@ -1,0 +1,591 @@
+//! Sweeps: a grid of scene variants, run in parallel, one CSV row per (case, solver run) (`DESIGN.md`, "Scaling
+//! out").
+//!
+//! A sweep spec is a TOML file:
+//!
+//! ```toml
+//! name = "hertz-accuracy"
+//! description = "..."
+//! base = "../scenes/hertz-hub-fine.toml"     # relative to the spec file (or absolute)
+//!
+//! [[grid]]                                    # a union of cartesian products: one [[grid]] table each
+//! "mesh.element" = ["constant"]
+//! "mesh.contact_elements" = [20, 40, 80]
+//! "solvers.use" = [["lemke"], ["clarabel"]]
+//! ```
+//!
+//! Each key of a `[[grid]]` table is a dotted path into the base scene's TOML document and its value the array of
+//! values to try (an unquoted dotted key, `mesh.element = [...]`, means the same as the quoted one). Cases are
+//! numbered from 0: grids in file order, within a grid the cartesian product with the keys in sorted order and the
+//! last key varying fastest. Every variant goes through [`Scene::from_toml`], so it is validated like a scene file.
+//!
+//! Two refinements for studies whose variants are not a plain product:
+//! - **Zipped keys**: a key made of several dotted keys joined by `&` takes an array of tuples, one value per key,
+//!   set together (`"drive.normal_load & mesh.contact_half_width" = [[1000.0, 2.0], [4000.0, 4.0]]`: the mesh grows
+//!   with the load). The CSV has one column per key.
+//! - **A grid's own base**: `base = "..."` inside a `[[grid]]` table (a string, not an array) replaces the spec's
+//!   base scene for that grid, so one sweep can compare models whose scenes differ in more than the swept keys (a
+//!   finite wheel with a hub beside a half-plane that refuses one).
+//!
+//! A sweep can be cut into shards (`k/n`: the cases with `index % n == k − 1`) that run on different machines;
+//! [`merge`] joins the shards' CSVs into the CSV the unsharded sweep writes (up to the [`TIMING_COLUMNS`]).
+
+pub mod row;
+mod run;
+
+pub use row::{RowStatus, SweepRow, TIMING_COLUMNS};
+pub use run::{error_rows_in, merge, run_sweep, REPEAT_BELOW_S};
+
+use crate::error::{Error, Result};
+use crate::scene::Scene;
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+use toml::{Table, Value};
+
+/// A sweep specification, as read from its TOML file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepSpec {
+    /// Short identifier of the sweep.
+    pub name: String,
+    /// What the sweep measures.
+    pub description: String,
+    /// The base scene file, as written in the spec (relative paths are relative to the spec file's folder).
+    pub base: PathBuf,
+    /// The grids: each maps a dotted scene key to the (non-empty) array of values to try. Nested tables in the
+    /// file are flattened to dotted keys.
+    pub grid: Vec<Table>,
+    /// Per grid (same order as `grid`), its own base scene file when it names one (`base` inside `[[grid]]`); a
+    /// missing entry means the spec's `base`.
+    pub grid_base: Vec<Option<PathBuf>>,
+    /// How many warm repeats time a case (`timing_repeats`, default 1: the case runs once and that run is timed;
+    /// above 1 the cases run one at a time instead of in parallel, for timings free of contention): cases whose first run took less
+    /// than [`REPEAT_BELOW_S`] are run `timing_repeats` more times, in rounds over all such cases, and their times are
+    /// the median repeat's (the upper middle one for an even count; all stages from that repeat), with the fastest and slowest repeat in `t_total_min`, `t_total_max` (the first, cold run
+    /// is not timed). Results (not
+    /// times) are those of the first run; they do not change.
+    pub timing_repeats: usize,
+    /// What the sweep is (`analysis`; default `table`).
+    pub analysis: Analysis,
+}
+
+/// What a sweep is, as its spec says (`analysis = "..."`): what `rollbem report` makes of its rows. The report never
+/// infers it from the rows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Analysis {
+    /// `accuracy`: errors against theory and against each mesh's limit, against cost (a mesh refinement:
+    /// `mesh.contact_elements` must be swept).
+    Accuracy,
+    /// `finite_vs_half_plane`: the finite wheel against the half-plane at equal loads (`wheel.model` swept, or grids
+    /// with their own base scenes of both models).
+    FiniteVsHalfPlane,
+    /// `creep_curve`: steady-rolling creep curves against Carter (`rolling.creepage` or `drive.tangential_load`
+    /// swept).
+    CreepCurve,
+    /// `table` (default): the rows only.
+    #[default]
+    Table,
+}
+
+impl Analysis {
+    /// The name in a spec.
+    pub fn name(self) -> &'static str {
+        match self {
+            Analysis::Accuracy => "accuracy",
+            Analysis::FiniteVsHalfPlane => "finite_vs_half_plane",
+            Analysis::CreepCurve => "creep_curve",
+            Analysis::Table => "table",
+        }
+    }
+
+    /// The analysis of a name; an unknown one is bad input naming `field` of `path`.
+    pub fn from_name(name: &str, path: &Path) -> Result<Analysis> {
+        let all = [Analysis::Accuracy, Analysis::FiniteVsHalfPlane, Analysis::CreepCurve, Analysis::Table];
+        all.into_iter().find(|x| x.name() == name).ok_or_else(|| {
+            let names: Vec<&str> = all.iter().map(|x| x.name()).collect();
+            invalid(path, "analysis", format!("unknown analysis `{name}` (expected one of: {})", names.join(", ")))
+        })
+    }
+
+    /// The swept keys (one of which) the analysis needs, and why.
+    fn needs(self) -> (&'static [&'static str], &'static str) {
+        match self {
+            Analysis::Accuracy => (&["mesh.contact_elements"], "a mesh refinement"),
+            Analysis::FiniteVsHalfPlane => (&["wheel.model"], "both models of the wheel"),
+            Analysis::CreepCurve => (&["rolling.creepage", "drive.tangential_load"], "the creepage or the creep force"),
+            Analysis::Table => (&[], ""),
+        }
+    }
+}
+
+/// The dotted keys of a (possibly zipped, `a & b`) grid key.
+fn zipped_keys(key: &str) -> Vec<&str> {
+    key.split('&').map(str::trim).collect()
+}
+
+/// One variant of the base scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Case {
+    /// Position in the sweep's enumeration, from 0 (the `case` column of the CSV).
+    pub index: usize,
+    /// The swept keys of this case's grid with the values set, in sorted key order. Strings are given bare,
+    /// other values in TOML syntax (e.g. `40`, `0.001`, `["lemke"]`).
+    pub params: Vec<(String, String)>,
+    /// The validated scene.
+    pub scene: Scene,
+}
+
+/// One shard of a sweep: `k` of `n` (1-based), the cases with `index % n == k − 1`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Shard {
+    /// Which shard, 1 ≤ k ≤ n.
+    pub k: usize,
+    /// Number of shards, n ≥ 1.
+    pub n: usize,
+}
+
+impl Shard {
+    /// Whether the case numbered `index` belongs to this shard.
+    pub fn contains(&self, index: usize) -> bool {
+        index % self.n == self.k - 1
+    }
+}
+
+impl std::str::FromStr for Shard {
+    type Err = String;
+
+    /// Parse `k/n`, e.g. `2/8`, with 1 ≤ k ≤ n.
+    fn from_str(s: &str) -> std::result::Result<Shard, String> {
+        let bad = |why: &str| format!("invalid shard `{s}`: {why} (expected k/n with 1 ≤ k ≤ n, e.g. 2/8)");
+        let (k, n) = s.split_once('/').ok_or_else(|| bad("no `/`"))?;
+        let k: usize = k.trim().parse().map_err(|_| bad("k is not a positive integer"))?;
+        let n: usize = n.trim().parse().map_err(|_| bad("n is not a positive integer"))?;
+        if n == 0 {
+            return Err(bad("n must be at least 1"));
+        }
+        if k == 0 || k > n {
+            return Err(bad("k must lie in 1..=n"));
+        }
+        Ok(Shard { k, n })
+    }
+}
+
+impl std::fmt::Display for Shard {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}/{}", self.k, self.n)
+    }
+}
+
+/// Most cases a sweep spec may define: every case's scene is built before any runs ([`SweepSpec::cases`]), so a
+/// larger grid (a few keys of many values multiply quickly) is refused when the spec is read rather than by an
+/// allocation failure, or an overflow of the count, later.
+pub const MAX_CASES: usize = 100_000;
+
+pub(crate) fn invalid(path: &Path, field: &str, message: impl Into<String>) -> Error {
+    Error::Invalid { path: path.to_path_buf(), field: field.to_string(), message: message.into() }
+}
+
+/// A value as written in `Case::params` and the CSV: strings bare, everything else in TOML syntax.
+fn show(v: &Value) -> String {
+    match v {
+        Value::String(s) => s.clone(),
+        v => v.to_string(),
+    }
+}
+
+/// Flatten nested tables of a grid into dotted keys; every leaf must be a non-empty array.
+fn flatten(path: &Path, prefix: &str, table: &Table, out: &mut Table) -> Result<()> {
+    for (k, v) in table {
+        let key = if prefix.is_empty() { k.clone() } else { format!("{prefix}.{k}") };
+        if key.split('.').any(|s| s.trim().is_empty()) {
+            return Err(invalid(path, &format!("grid.{key}"), "a dotted key with an empty component"));
+        }
+        match v {
+            Value::Table(t) => flatten(path, &key, t, out)?,
+            Value::Array(a) if a.is_empty() => {
+                return Err(invalid(path, &format!("grid.{key}"), "empty array: give at least one value to try"))
+            }
+            Value::Array(_) => {
+                if out.insert(key.clone(), v.clone()).is_some() {
+                    return Err(invalid(path, &format!("grid.{key}"), "key given twice in the same grid"));
+                }
+            }
+            other => {
+                return Err(invalid(
+                    path,
+                    &format!("grid.{key}"),
+                    format!(
+                        "must be an array of the values to try, e.g. [{}] (got {} `{}`)",
+                        other,
+                        other.type_str(),
+                        other
+                    ),
+                ))
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A path in a spec, resolved against the spec file's folder.
+fn resolve(spec_path: &Path, p: &Path) -> PathBuf {
+    if p.is_absolute() {
+        p.to_path_buf()
+    } else {
+        spec_path.parent().unwrap_or(Path::new("")).join(p)
+    }
+}
+
+/// Read a base scene as a TOML table; errors name `field` (`base` or `grid[i].base`).
+fn read_base(spec_path: &Path, base_path: &Path, field: &str) -> Result<Table> {
+    let text = std::fs::read_to_string(base_path)
+        .map_err(|e| invalid(spec_path, field, format!("cannot read the base scene {}: {e}", base_path.display())))?;
+    toml::from_str(&text).map_err(|e| {
+        invalid(spec_path, field, format!("the base scene {} is not valid TOML: {e}", base_path.display()))
+    })
+}
+
+/// Zipped keys (`a & b`) take arrays of tuples with one value per key.
+fn check_zipped(path: &Path, grid: &Table) -> Result<()> {
+    for (key, v) in grid {
+        let keys = zipped_keys(key);
+        if keys.len() < 2 {
+            continue;
+        }
+        if keys.iter().any(|k| k.is_empty()) {
+            return Err(invalid(path, &format!("grid.{key}"), "a zipped key with an empty component"));
+        }
+        for t in v.as_array().expect("grid values are arrays") {
+            match t {
+                Value::Array(t) if t.len() == keys.len() => {}
+                other => {
+                    return Err(invalid(
+                        path,
+                        &format!("grid.{key}"),
+                        format!("zipped keys take tuples of {} values (one per key), got `{other}`", keys.len()),
+                    ))
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// No swept key may be given twice, or set a table and a key inside it (`drive` and `drive.normal_load`): the CSV
+/// would record both and the later one would silently override part of the earlier.
+fn check_overlaps(path: &Path, grid: &Table) -> Result<()> {
+    let keys: Vec<&str> = grid.keys().flat_map(|k| zipped_keys(k)).collect();
+    for (i, a) in keys.iter().enumerate() {
+        for b in &keys[i + 1..] {
+            let (short, long) = if a.len() <= b.len() { (a, b) } else { (b, a) };
+            if short == long {
+                return Err(invalid(
+                    path,
+                    &format!("grid.{a}"),
+                    "key given twice in the same grid (once in a zipped key)",
+                ));
+            }
+            if long.starts_with(&format!("{short}.")) {
+                return Err(invalid(
+                    path,
+                    &format!("grid.{long}"),
+                    format!("overlaps `{short}`, which the same grid sets as a whole: give one or the other"),
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Set the dotted `key` of a TOML document, creating missing intermediate tables.
+fn set_dotted(doc: &mut Table, key: &str, value: Value) -> std::result::Result<(), String> {
+    let parts: Vec<&str> = key.split('.').collect();
+    let (last, inner) = parts.split_last().expect("split yields at least one part");
+    let mut t = doc;
+    for (i, p) in inner.iter().enumerate() {
+        let entry = t.entry(p.to_string()).or_insert_with(|| Value::Table(Table::new()));
+        t = match entry {
+            Value::Table(t) => t,
+            other => {
+                return Err(format!(
+                    "`{}` is a {} in the base scene, not a table: cannot set `{key}`",
+                    parts[..=i].join("."),
+                    other.type_str()
+                ))
+            }
+        };
+    }
+    t.insert(last.to_string(), value);
+    Ok(())
+}
+
+/// A variant of the base scene: the case number, its parameters and the validated scene.
+struct Variant {
+    index: usize,
+    params: Vec<(String, String)>,
+    scene: Scene,
+}
+
+impl Variant {
+    /// The variant's scene.
+    fn scene(&self) -> &Scene {
+        &self.scene
+    }
+}
+
+impl SweepSpec {
+    /// Read and check a sweep spec file. Unknown top-level keys, a missing or empty grid, and grid values that are
+    /// not non-empty arrays are [`Error::Invalid`] naming the key.
+    pub fn from_file(path: &Path) -> Result<SweepSpec> {
+        let text = std::fs::read_to_string(path).map_err(|source| Error::Io { path: path.to_path_buf(), source })?;
+        SweepSpec::from_toml(&text, path)
+    }
+
+    /// Parse and check the text of a sweep spec like [`SweepSpec::from_file`]; `path` names the file in errors and
+    /// is not read (nor is the base scene).
+    pub fn from_toml(text: &str, path: &Path) -> Result<SweepSpec> {
+        let doc: Table = toml::from_str(text)
+            .map_err(|e| Error::Parse { path: path.to_path_buf(), message: e.to_string().trim_end().to_string() })?;
+        for key in doc.keys() {
+            if !["name", "description", "base", "grid", "timing_repeats", "analysis"].contains(&key.as_str()) {
+                return Err(invalid(
+                    path,
+                    key,
+                    "unknown key in a sweep spec (expected `name`, `description`, `base`, `analysis`, \
+                     `timing_repeats` and `[[grid]]` tables)",
+                ));
+            }
+        }
+        let string = |key: &str, required: bool| -> Result<String> {
+            match doc.get(key) {
+                Some(Value::String(s)) => Ok(s.clone()),
+                Some(other) => Err(invalid(path, key, format!("must be a string (got {})", other.type_str()))),
+                None if required => Err(invalid(path, key, "missing")),
+                None => Ok(String::new()),
+            }
+        };
+        let name = string("name", true)?;
+        if name.trim().is_empty() {
+            return Err(invalid(path, "name", "must not be empty"));
+        }
+        let description = string("description", false)?;
+        let base = PathBuf::from(string("base", true)?);
+        let grids = match doc.get("grid") {
+            Some(Value::Array(a)) if !a.is_empty() => a,
+            Some(Value::Array(_)) | None => {
+                return Err(invalid(path, "grid", "give at least one [[grid]] table of keys and values to try"))
+            }
+            Some(other) => {
+                return Err(invalid(
+                    path,
+                    "grid",
+                    format!("must be an array of tables ([[grid]]), got {}", other.type_str()),
+                ))
+            }
+        };
+        let mut grid = Vec::with_capacity(grids.len());
+        let mut grid_base = Vec::with_capacity(grids.len());
+        for (i, g) in grids.iter().enumerate() {
+            let Value::Table(t) = g else {
+                return Err(invalid(path, "grid", format!("grid {} is a {}, not a table", i + 1, g.type_str())));
+            };
+            let mut t = t.clone();
+            grid_base.push(match t.remove("base") {
+                Some(Value::String(b)) => Some(PathBuf::from(b)),
+                Some(other) => {
+                    return Err(invalid(
+                        path,
+                        &format!("grid[{i}].base"),
+                        format!("must be the path of a base scene (a string), got {}", other.type_str()),
+                    ))
+                }
+                None => None,
+            });
+            let t = &t;
+            let mut flat = Table::new();
+            flatten(path, "", t, &mut flat)?;
+            if flat.is_empty() {
+                return Err(invalid(path, "grid", format!("grid {} is empty: give at least one key to sweep", i + 1)));
+            }
+            check_zipped(path, &flat)?;
+            check_overlaps(path, &flat)?;
+            grid.push(flat);
+        }
+        let cases = grid.iter().try_fold(0usize, |sum, g| {
+            let product = g.values().try_fold(1usize, |p, v| p.checked_mul(v.as_array().map_or(1, Vec::len)));
+            product.and_then(|c| sum.checked_add(c))
+        });
+        if cases.is_none_or(|c| c > MAX_CASES) {
+            let count = cases.map_or(format!("more than {}", usize::MAX), |c| c.to_string());
+            return Err(invalid(
+                path,
+                "grid",
+                format!("{count} cases, more than a sweep may have ({MAX_CASES}): split it"),
+            ));
+        }
+        let timing_repeats = match doc.get("timing_repeats") {
+            None => 1,
+            Some(Value::Integer(k)) if (1..=20).contains(k) => *k as usize,
+            Some(other) => {
+                return Err(invalid(path, "timing_repeats", format!("must be an integer from 1 to 20 (got {other})")))
+            }
+        };
+        let analysis = match doc.get("analysis") {
+            None => Analysis::Table,
+            Some(Value::String(a)) => Analysis::from_name(a, path)?,
+            Some(other) => {
+                return Err(invalid(path, "analysis", format!("must be a string (got {})", other.type_str())))
+            }
+        };
+        let spec = SweepSpec { name, description, base, grid, grid_base, timing_repeats, analysis };
+        spec.check_analysis(path)?;
+        Ok(spec)
+    }
+
+    /// The analysis must be able to apply to the grid: the keys it needs are swept (a finite-vs-half-plane sweep may
+    /// instead give its grids their own base scenes).
+    fn check_analysis(&self, path: &Path) -> Result<()> {
+        let (needed, what) = self.analysis.needs();
+        let keys = self.keys();
+        let own_bases = self.grid_base.iter().filter(|b| b.is_some()).count() >= 2;
+        let ok = needed.is_empty()
+            || needed.iter().any(|k| keys.iter().any(|x| x == k))
+            || (self.analysis == Analysis::FiniteVsHalfPlane && own_bases);
+        if ok {
+            return Ok(());
+        }
+        Err(invalid(
+            path,
+            "analysis",
+            format!(
+                "`{}` needs {what}: sweep {} (the grid sweeps {})",
+                self.analysis.name(),
+                needed.iter().map(|k| format!("`{k}`")).collect::<Vec<_>>().join(" or "),
+                if keys.is_empty() { "nothing".to_string() } else { keys.join(", ") }
+            ),
+        ))
+    }
+
+    /// The base scene file's path, resolved against the spec file's folder.
+    pub fn base_path(&self, spec_path: &Path) -> PathBuf {
+        resolve(spec_path, &self.base)
+    }
+
+    /// The base scene of grid `i` as written (its own `base`, else the spec's).
+    pub fn grid_base(&self, i: usize) -> &Path {
+        self.grid_base.get(i).and_then(|b| b.as_deref()).unwrap_or(&self.base)
+    }
+
+    /// Every swept key of every grid, sorted (the parameter columns of the CSV).
+    pub fn keys(&self) -> Vec<String> {
+        let keys: BTreeSet<&str> = self.grid.iter().flat_map(|g| g.keys()).flat_map(|k| zipped_keys(k)).collect();
+        keys.into_iter().map(str::to_string).collect()
+    }
+
+    /// Number of cases: the sum over the grids of the products of their arrays' lengths.
+    pub fn len(&self) -> usize {
+        self.grid.iter().map(|g| g.values().map(|v| v.as_array().map_or(1, Vec::len)).product::<usize>()).sum()
+    }
+
+    /// Whether the sweep has no case (never, for a spec read by [`SweepSpec::from_file`]).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Build every variant; the scene of each is parsed and validated but errors are kept per variant. The
+    /// variants' errors name `label` as their file (the spec's path, or its bare file name for CSV cells that must
+    /// not depend on where a shard ran) and the base scene as written in the spec.
+    fn variants(&self, spec_path: &Path, label: &Path) -> Result<Vec<Variant>> {
+        // A variant's error names the spec by `label` in the case's words; the spec's error names its file.
+        let readdress = |e: Error| match e {
+            Error::Invalid { field, message, .. } => invalid(spec_path, &field, message),
+            Error::Parse { message, .. } => Error::Parse { path: spec_path.to_path_buf(), message },
+            other => other,
+        };
+        self.variants_labelled(spec_path, label).map_err(readdress)
+    }
+
+    fn variants_labelled(&self, spec_path: &Path, label: &Path) -> Result<Vec<Variant>> {
+        let mut out = Vec::with_capacity(self.len());
+        for (gi, g) in self.grid.iter().enumerate() {
+            let base_name = self.grid_base(gi).to_path_buf();
+            let own = self.grid_base.get(gi).is_some_and(Option::is_some);
+            let field = if own { format!("grid[{gi}].base") } else { "base".to_string() };
+            let base = read_base(spec_path, &resolve(spec_path, &base_name), &field)?;
+            let entries: Vec<(&String, &Vec<Value>)> =
+                g.iter().map(|(k, v)| (k, v.as_array().expect("grid values are arrays"))).collect();
+            let total: usize = entries.iter().map(|(_, a)| a.len()).product();
+            for m in 0..total {
+                // Mixed-radix digits of m, the last key varying fastest.
+                let mut rest = m;
+                let mut picks = vec![0; entries.len()];
+                for (j, (_, a)) in entries.iter().enumerate().rev() {
+                    picks[j] = rest % a.len();
+                    rest /= a.len();
+                }
+                let index = out.len();
+                let mut doc = base.clone();
+                let mut params = Vec::with_capacity(entries.len());
+                let mut set_err = None;
+                for ((key, a), &p) in entries.iter().zip(&picks) {
+                    let keys = zipped_keys(key);
+                    let values = match (&a[p], keys.len()) {
+                        (v, 1) => vec![v.clone()],
+                        (Value::Array(t), _) => t.clone(),
+                        _ => unreachable!("zipped grid values are checked to be tuples"),
+                    };
+                    for (k, v) in keys.iter().zip(values) {
+                        params.push((k.to_string(), show(&v)));
+                        if let Err(e) = set_dotted(&mut doc, k, v) {
+                            set_err.get_or_insert((k.to_string(), e));
+                        }
+                    }
+                }
+                let what = describe(index, &params);
+                if let Some((key, e)) = set_err {
+                    return Err(invalid(label, &key, format!("{what}: {e}")));
+                }
+                // The case's messages name the spec and the case, wherever the scene came from.
+                let origin = PathBuf::from(format!("{} [case {index}]", label.display()));
+                let scene = build_scene(&doc, label, &base_name, &what)?.relabel(origin);
+                out.push(Variant { index, params, scene });
+            }
+        }
+        Ok(out)
+    }
+
+    /// Every case of the sweep, in enumeration order. A variant that does not parse or validate is an error naming
+    /// the spec file, the case's parameters and the offending field.
+    pub fn cases(&self, spec_path: &Path) -> Result<Vec<Case>> {
+        Ok(self
+            .variants(spec_path, spec_path)?
+            .into_iter()
+            .map(|v| Case { index: v.index, params: v.params, scene: v.scene })
+            .collect())
+    }
+}
+
+/// `case 3 (mesh.contact_elements = 40, solvers.use = ["lemke"])`.
+fn describe(index: usize, params: &[(String, String)]) -> String {
+    let p: Vec<String> = params.iter().map(|(k, v)| format!("{k} = {v}")).collect();
+    format!("case {index} ({})", p.join(", "))
+}
+
+/// Serialize a variant's document and parse it as a scene; errors are re-addressed to the spec (`spec_label`), name
+/// the case (`what`) and the base scene as written in the spec (`base`).
+fn build_scene(doc: &Table, spec_label: &Path, base: &Path, what: &str) -> Result<Scene> {
+    let text = toml::to_string(doc).map_err(|e| invalid(spec_label, "base", format!("{what}: {e}")))?;
+    Scene::from_toml(&text, base).map_err(|e| match e {
+        Error::Invalid { field, message, .. } => {
+            invalid(spec_label, &field, format!("{what}: in the variant of {}: {message}", base.display()))
+        }
+        Error::Parse { message, .. } => Error::Parse {
+            path: spec_label.to_path_buf(),
+            message: format!(
+                "{what}: the variant of {} is not a valid scene: {}",
+                base.display(),
+                message.split_whitespace().collect::<Vec<_>>().join(" ")
+            ),
+        },
+        other => other,
+    })
+}
