@@ -20,7 +20,8 @@ fn reference(rel: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("reference").join(rel)
 }
 
-// Half libFuzzer's byte-level mutations, half structure-aware ones that keep the input TOML (`toml_mutator.rs`).
+// A quarter libFuzzer's byte-level mutations, three quarters structure-aware ones that keep the input TOML
+// (`toml_mutator.rs`).
 libfuzzer_sys::fuzz_mutator!(|data: &mut [u8], size: usize, max_size: usize, seed: u32| {
     toml_mutator::mutate(data, size, max_size, seed, include_str!("../dicts/sweep_spec.dict"))
 });
