@@ -6,7 +6,8 @@
 //! - scene: `Scene::from_toml` returns `Ok` or an `Err` with a message; a valid scene is run through the model API
 //!   exactly as the `scene` target runs it (`fuzz/fuzz_targets/bounded.rs`, included here): scenes of more than
 //!   `MAX_RUN_ELEMENTS` = 24 elements or `MAX_SUBSTEPS` = 16 load-path substeps are only validated, the others
-//!   built and solved with capped iteration budgets, and the report's runs must be consistent;
+//!   built and solved with capped iteration budgets, and the report's runs must be consistent; a regression scene
+//!   is then also built and solved as written (budgets not capped);
 //! - LCP file: `lcp_io::parse` returns `Ok` or an `Err` with a message; an LCP of size ≤ 30 is solved by both
 //!   Lemke engines within the pivot budget 5 n + 100;
 //! - sweep spec: `SweepSpec::from_toml` returns `Ok` with 1 to `MAX_CASES` cases or an `Err` with a message; a spec
@@ -20,6 +21,7 @@ mod bounded;
 
 use bounded::Ran;
 use rollbem::lcp_io;
+use rollbem::pipeline::Model;
 use rollbem::scene::Scene;
 use rollbem::solvers::lemke::{self, dense::solve_dense, LemkeSettings};
 use rollbem::sweep::{SweepSpec, MAX_CASES};
@@ -90,6 +92,7 @@ fn every_regression_input_has_a_kind() {
 fn scene_inputs_are_refused_with_a_message_or_run_on_a_model_without_panicking() {
     let all = inputs(Kind::Scene);
     let (mut invalid, mut too_large, mut refused, mut reported, mut solved_runs) = (0, 0, 0, 0, 0);
+    let mut regressions_uncapped = 0;
     for p in &all {
         match Scene::from_toml(&text(p), p) {
             Err(e) => {
@@ -97,6 +100,16 @@ fn scene_inputs_are_refused_with_a_message_or_run_on_a_model_without_panicking()
                 invalid += 1;
             }
             Ok(scene) => match bounded::run(&scene) {
+                // A regression input is also run as written, its budgets not capped (the Lemke pivot-limit overflow
+                // needs its huge `max_pivots_per_unknown`); they are few and small.
+                Ran::Reported { .. } if p.starts_with(root().join("fuzz/regressions")) => {
+                    let model = Model::build(&scene).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
+                    if let Err(e) = model.solve(&scene) {
+                        assert!(has_message(&e), "{}: an error without a message", p.display());
+                    }
+                    reported += 1;
+                    regressions_uncapped += 1;
+                }
                 Ran::TooLarge => too_large += 1,
                 Ran::CapRefused | Ran::BuildRefused | Ran::SolveRefused => refused += 1,
                 Ran::Reported { solved, .. } => {
@@ -108,11 +121,13 @@ fn scene_inputs_are_refused_with_a_message_or_run_on_a_model_without_panicking()
     }
     eprintln!(
         "{} scene inputs: {invalid} invalid, {too_large} valid but too large to run, {refused} refused by the model \
-         API, {reported} solved to a report ({solved_runs} runs `solved`)",
+         API, {reported} solved to a report ({solved_runs} runs `solved`); {regressions_uncapped} regression inputs \
+         also run uncapped",
         all.len()
     );
     // The seeds alone give valid scenes, tiny ones that are run and solved, and full-size ones that are not.
     assert!(reported > 0 && solved_runs > 0 && too_large > 0, "nothing was run");
+    assert!(regressions_uncapped > 0, "no regression scene was run as written");
 }
 
 #[test]
