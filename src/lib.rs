@@ -74,8 +74,6 @@ pub mod material;
 pub mod mesh;
 pub mod pipeline;
 pub mod plot;
-pub mod plot_csv;
-pub mod plot_result;
 pub mod post;
 pub mod progress;
 pub mod references;
@@ -92,3 +90,5 @@ pub mod tolerances;
 pub mod validity;
 
 pub use error::{Error, Result};
+/// `rollbem plot` on a result document (JSON) or a CSV: part of [`report`], re-exported at the root.
+pub use report::{plot_csv, plot_result};

@@ -63,16 +63,29 @@ enum Cmd {
     },
     /// List the registered solvers.
     Solvers,
-    /// Run a sweep (a grid of scene variants × solvers) in parallel and write one CSV row per solver run.
+    /// Run a sweep (a grid of scene variants × solvers) in parallel and write one CSV row per solver run. Before it
+    /// starts it prints the number of cases and an estimate of time and memory; while it runs, each case's rows are
+    /// appended to OUT.partial as the case finishes; at the end they are written to OUT sorted by case and solver.
     Sweep {
         /// Sweep specification (TOML; see reference/sweeps/).
         spec: PathBuf,
         /// Run only shard k of n (1-based), for a batch scheduler; join the shards with `sweep-merge`.
         #[arg(long)]
         shard: Option<rollbem::sweep::Shard>,
-        /// Output CSV (default: next to the spec, SPEC.csv or SPEC.shard-K-of-N.csv).
+        /// Output CSV (default: next to the spec, SPEC.csv or SPEC.shard-K-of-N.csv; `-` for standard output).
         #[arg(long)]
         out: Option<PathBuf>,
+        /// Go on from the rows already written: those of a stopped run (OUT.partial; its last case is run again) or
+        /// of the finished OUT. Cases there (matched by case number and parameters) are not run again; a file of
+        /// another spec or shard is refused. With neither file, the sweep starts afresh.
+        #[arg(long)]
+        resume: bool,
+        /// Run a grid of more than 100 000 cases (refused without it).
+        #[arg(long)]
+        allow_large: bool,
+        /// Validate every case, print the plan and its estimate, run nothing.
+        #[arg(long)]
+        dry_run: bool,
     },
     /// Join shard CSVs into the CSV of the whole sweep (rows sorted by case and solver).
     SweepMerge {
@@ -81,6 +94,9 @@ enum Cmd {
         /// Shard CSVs.
         #[arg(required = true)]
         inputs: Vec<PathBuf>,
+        /// The sweep spec: check that the inputs hold each of its cases exactly once, with its parameters.
+        #[arg(long)]
+        spec: Option<PathBuf>,
     },
     /// Regenerate reports/ from the reference scenes and sweeps: JSON runs, CSVs, SVG plots, README.md.
     Report {
@@ -322,6 +338,39 @@ fn run(
     ExitCode::from(code)
 }
 
+/// `rollbem sweep`: plan (size guard, validation, resume), print the plan, run it unless `dry_run`. Messages go to
+/// standard error when the CSV goes to standard output.
+fn sweep(spec: &Path, out: &Path, options: &rollbem::sweep::SweepOptions, dry_run: bool) -> ExitCode {
+    let plan = match rollbem::sweep::Plan::new(spec, out, options) {
+        Ok(p) => p,
+        Err(e) => return fail(&e),
+    };
+    eprintln!("{}", plan.summary());
+    if dry_run {
+        return ExitCode::SUCCESS;
+    }
+    match plan.run() {
+        Ok(o) => {
+            let peak = peak_memory().map(|kb| format!("; peak memory {:.1} MB", kb as f64 / 1e3)).unwrap_or_default();
+            let line = format!("{} rows written to {} ({} cases run now{peak})", o.rows, out.display(), o.ran);
+            if rollbem::io::is_stdout(out) {
+                eprintln!("{line}");
+            } else {
+                say!("{line}");
+            }
+            if o.errors > 0 {
+                eprintln!(
+                    "warning: {} of the {} rows have status `error` (a variant that could not run, e.g. a solver \
+                     that does not apply to it): see their `message` column",
+                    o.errors, o.rows
+                );
+            }
+            ExitCode::SUCCESS
+        }
+        Err(e) => fail(&e),
+    }
+}
+
 /// `rollbem plot`: a result document, or a CSV table (with its analysis or its scene).
 fn plot(
     input: &Path,
@@ -336,6 +385,14 @@ fn plot(
         return rollbem::plot_csv::plot_csv(input, out.unwrap_or(dir), analysis, scene.as_ref());
     }
     rollbem::plot_result::plot_result(input, out)
+}
+
+/// The process's peak resident memory in kB (`VmHWM` of /proc/self/status; `None` where there is none): a sweep
+/// says it beside its estimate.
+fn peak_memory() -> Option<u64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    line.split_whitespace().nth(1)?.parse().ok()
 }
 
 /// Print an error and turn it into the process exit code.
@@ -371,29 +428,27 @@ fn main() -> ExitCode {
             Ok(code) => ExitCode::from(code),
             Err(e) => fail(&e),
         },
-        Cmd::Sweep { spec, shard, out } => {
+        Cmd::Sweep { spec, shard, out, resume, allow_large, dry_run } => {
             let out = out.unwrap_or_else(|| match &shard {
                 Some(s) => spec.with_extension(format!("shard-{}-of-{}.csv", s.k, s.n)),
                 None => spec.with_extension("csv"),
             });
-            match rollbem::sweep::run_sweep(&spec, shard, &out, !cli.quiet) {
-                Ok(rows) => {
-                    say!("{rows} rows written to {}", out.display());
-                    let errors = rollbem::sweep::error_rows_in(&out);
-                    if errors > 0 {
-                        eprintln!(
-                            "warning: {errors} of the {rows} rows have status `error` (a variant that could not run, \
-                             e.g. a solver that does not apply to it): see their `message` column"
-                        );
-                    }
-                    ExitCode::SUCCESS
-                }
-                Err(e) => fail(&e),
-            }
+            let options = rollbem::sweep::SweepOptions {
+                shard,
+                resume,
+                allow_large: allow_large || dry_run,
+                progress: !cli.quiet,
+            };
+            sweep(&spec, &out, &options, dry_run)
         }
-        Cmd::SweepMerge { out, inputs } => match rollbem::sweep::merge(&inputs, &out) {
+        Cmd::SweepMerge { out, inputs, spec } => match rollbem::sweep::merge_checked(&inputs, &out, spec.as_deref()) {
             Ok(rows) => {
-                say!("{rows} rows written to {}", out.display());
+                let line = format!("{rows} rows written to {}", out.display());
+                if rollbem::io::is_stdout(&out) {
+                    eprintln!("{line}");
+                } else {
+                    say!("{line}");
+                }
                 ExitCode::SUCCESS
             }
             Err(e) => fail(&e),

@@ -126,6 +126,37 @@ fn spence_needs_the_path_a_single_step_misses_it() {
     assert!(errs[0] > 3.0 * errs[1] && errs[0] > 0.05, "one step {} vs path {}", errs[0], errs[1]);
 }
 
+#[test]
+fn spence_outside_the_goodman_approximation_matches_the_coupled_reference() {
+    // Steel on a rigid flat: β = 0.2857, μ = 0.3 (βμ = 0.086), the shipped scene spence-steel-rigid. Expected: the
+    // coupled numerical reference theory::spence_coupled_c_over_a (an incremental active-set solver on its own
+    // half grid, independent of the BEM and LCP pipeline, checked in its unit tests against an earlier independent
+    // Python computation), c/a = stick half-width over contact half-width, to the two resolutions (reference: 2
+    // of its elements; rollbem: one element over the contact half-width). Spence's closed form (the Goodman
+    // approximation, 0.744) is outside its range here: the computed c/a differs from it by more than 0.04.
+    let s = Scene::from_file(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/reference/scenes/spence-steel-rigid.toml")))
+        .unwrap();
+    let beta = s.dundurs_beta();
+    assert!((beta - 0.4 / 1.4).abs() < 1e-12, "β = {beta}");
+    let rep = run(&s);
+    let l = get(&rep.steps.last().unwrap().runs, "lemke");
+    assert_eq!(l.status, Status::Solved, "{}", l.explanation());
+    let h = 18.0 / 300.0;
+    let contact = l.contact.as_ref().unwrap().half_width.unwrap() + 0.5 * h;
+    let c = stick_half_width(l) / contact;
+    let reference = theory::spence_coupled_c_over_a(beta, 0.3, 250);
+    let closed = theory::spence_c_over_a(beta / 0.3);
+    eprintln!("c/a = {c:.4}, coupled reference {:.4}, closed form {closed:.4}", reference.c_over_a);
+    assert!((c - reference.c_over_a).abs() <= 2.0 * reference.resolution + h / contact, "{c} vs {reference:?}");
+    assert!((c - closed).abs() > 0.04, "{c} vs closed form {closed}");
+    // The report says which one is the check.
+    let dir = tempfile::tempdir().unwrap();
+    let mut md = String::new();
+    let mut figs = rollbem::report::Figs::new(dir.path(), "");
+    rollbem::report::path_figures("spence-steel-rigid", &rep, &mut md, &mut figs).unwrap();
+    assert!(md.contains("Goodman approximation") && md.contains("outside its range here"), "{md}");
+}
+
 /// The Mindlin–Deresiewicz path: P, then Q to +Q*, down to −Q*, back to +Q* (substeps m per branch).
 fn md_scene(n: usize, q_star: f64, m: usize, solvers: &str) -> Scene {
     let body = format!(

@@ -34,6 +34,7 @@ use = ["lemke", "active_set"]
 
 const SWEEP: &str = r#"name = "pad-mesh-study"
 description = "pad mesh study, two direct solvers"
+analysis = "accuracy"
 base = "../scenes/a-file-name.toml"
 
 [[grid]]

@@ -271,28 +271,15 @@ fn front_and_cheapest(
     for r in &rows {
         problems.entry(sw.label(r, &problem_keys)).or_default().push(r);
     }
-    writeln!(
-        md,
-        "Times: a configuration's total time is its setup (assembly and condensation: the same computation for every \
-         configuration on the same scene and mesh, so the fastest median among them) plus its own formulation and \
-         solve time (the median of repeated runs where the sweep asks for them; their fastest and slowest in \
-         brackets). Configurations that differ only in the solver or its settings and whose errors agree within \
-         {imp:.0} % compute the same answer: they are one entry, as fast as its fastest solver. Pareto front: the \
-         entries no other beats, where an entry beats another if it is faster at an error no more than {imp:.0} % \
-         larger, or no slower and at least {imp:.0} % more accurate. {}\n",
-        if problems.len() > 1 {
-            format!(
-                "Entries are compared only within one problem ({} {} several values: a different problem, not a \
-                 cheaper method).",
-                problem_keys.iter().map(|k| format!("`{k}`")).collect::<Vec<_>>().join(", "),
-                if problem_keys.len() == 1 { "takes" } else { "take" }
-            )
-        } else {
-            String::new()
-        },
-        imp = 100.0 * PARETO_IMPROVEMENT,
-    )
-    .unwrap();
+    if problems.len() > 1 {
+        writeln!(
+            md,
+            "Compared within one problem only ({} {} several values: a different problem, not a cheaper method).\n",
+            problem_keys.iter().map(|k| format!("`{k}`")).collect::<Vec<_>>().join(", "),
+            if problem_keys.len() == 1 { "takes" } else { "take" }
+        )
+        .unwrap();
+    }
     let names = Names { sw, disc_keys: &disc_keys, solver_keys: &solver_keys, cost: &cost };
     for (problem, rows) in &problems {
         if problems.len() > 1 {
@@ -303,6 +290,38 @@ fn front_and_cheapest(
         cheapest_table(&cl, err, &names, md);
     }
     Ok(())
+}
+
+/// How to read the accuracy tables: said once, at the top of the report (every sweep's tables follow it).
+pub fn how_to_read() -> String {
+    format!(
+        "**Times.** A configuration's total time is its setup (assembly and condensation: the same computation for \
+         every configuration on the same scene and mesh, so the fastest median among them) plus its own formulation \
+         and solve time (the median of repeated runs where the sweep asks for them; their fastest and slowest in \
+         brackets). Read times as ratios between methods: consecutive sweeps differed by up to 1.5×.\n\n\
+         **Entries and Pareto fronts.** Configurations that differ only in the solver or its settings and whose \
+         errors agree within {imp:.0} % compute the same answer: they are one entry, as fast as its fastest solver \
+         (each solver's own time is listed). The Pareto front holds the entries no other beats; an entry beats \
+         another if it is faster at an error no more than {imp:.0} % larger, or no slower and at least {imp:.0} % \
+         more accurate.\n\n\
+         **Recommended configuration per accuracy.** Among the entries reaching the target error, the fastest entry of \
+         their Pareto front (the least accurate one that reaches it, since along a front time falls as the error \
+         rises), chosen by its error, which repeats exactly from run to run. Its solver is the first, in the order of \
+         preference {pref}, that reaches the target and whose median time is within {tie:.0}× of the fastest solver \
+         of the same answer; error and time are that solver's own. Alternatives: the other entries of that front, \
+         with their time as a multiple of the recommended one's (between 1/1.5 and 1.5: within the noise).\n\n\
+         **Errors.** An error against theory mixes discretisation error, model error (a finite wheel is not a \
+         half-space) and solver error. Direct solvers (lemke, lemke_dense, active_set, clarabel with polish) are \
+         exact to round-off on the discrete problem; an iterative solver at tolerance τ (pgs, normtang_qp) adds an \
+         error of order τ, which can land closer to the theory by chance, not by merit (read a solver's error \
+         against Lemke in the solver comparison). On the finite wheel an accuracy sweep separates the \
+         discretisation error (against the series' own converged-mesh limit, what refining buys) from the model \
+         error (that limit against the theory, what no mesh buys); its fronts and recommendations use the \
+         discretisation error.\n",
+        imp = 100.0 * PARETO_IMPROVEMENT,
+        pref = SOLVER_PREFERENCE.join(", "),
+        tie = (1.0 + TIMING_NOISE).powi(2),
+    )
 }
 
 /// How the tables name and time things.
@@ -462,20 +481,7 @@ fn cheapest_table(cl: &[Class], err: &str, names: &Names, md: &mut String) {
     present.sort_by(|a, b| preference(a).cmp(&preference(b)).then(a.solver.as_str().cmp(b.solver.as_str())));
     let mut present: Vec<&str> = present.iter().map(|r| r.solver.as_str()).collect();
     present.dedup();
-    writeln!(
-        md,
-        "Recommended configuration per accuracy: among the entries reaching it, the fastest entry of their Pareto \
-         front — the least accurate entry of that front, since along a front time falls as the error rises; chosen by \
-         its error, which repeats exactly from run to run. Its solver is the first of {} (in this order of \
-         preference) that reaches the accuracy and whose median time is within a factor {tie:.0} of the fastest \
-         solver of the same answer (the noise between consecutive sweeps reached 1.5×), so it can be up to {tie:.0}× \
-         slower than that solver (all are listed with their times in the front above); error and time are the \
-         recommended solver's own. Alternatives: the other entries of that front, with their time as a multiple of \
-         the recommended one's; a multiple between 1/1.5 and 1.5 is within the noise.\n",
-        present.join(", "),
-        tie = (1.0 + TIMING_NOISE).powi(2),
-    )
-    .unwrap();
+    writeln!(md, "Recommended (solvers in order of preference: {}):\n", present.join(", ")).unwrap();
     writeln!(
         md,
         "| target | recommended | solver | elements | error | total time [s] | alternatives |\n|---|---|---|---|---|---|---|"

@@ -27,6 +27,8 @@ use std::path::{Path, PathBuf};
 mod accuracy;
 mod paths;
 mod physics;
+pub mod plot_csv;
+pub mod plot_result;
 mod rolling;
 mod table;
 
@@ -182,15 +184,8 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
     rolling::seed_vs_steady(&reports, out, &mut roll_md, &mut path_figs)?;
 
     // ---- Markdown ----------------------------------------------------------------------------------------------
+    writeln!(md, "## How to read the tables\n\n{}", accuracy::how_to_read()).unwrap();
     writeln!(md, "## The sweeps: accuracy against cost, and what the models change\n").unwrap();
-    writeln!(
-        md,
-        "An error against theory mixes discretisation error, model error (a finite wheel is not a half-space) and \
-         solver error. Direct solvers (lemke, active_set, clarabel with polish) are exact to round-off on the discrete \
-         problem; PGS at tolerance τ adds an error of order τ, which can land closer to the theory by chance, not by \
-         merit — read a solver's error against Lemke in the solver comparison.\n"
-    )
-    .unwrap();
     md.push_str(&sweep_md);
     if !path_md.is_empty() {
         writeln!(md, "\n## Load paths\n").unwrap();
@@ -334,7 +329,7 @@ fn stress_maps(reports: &BTreeMap<String, Report>, out: &Path) -> Result<Vec<(St
     let mut maps = Vec::new();
     for (name, r) in reports.iter().filter(|(_, r)| r.scene.stresses().is_some()) {
         let json = out.join("runs").join(format!("{name}.json"));
-        crate::plot_result::plot_result(&json, Some(&out.join("figures")))?;
+        plot_result::plot_result(&json, Some(&out.join("figures")))?;
         let Some(st) = r.runs.iter().find(|x| x.solver == "lemke").and_then(|x| x.stresses.as_ref()) else {
             continue;
         };

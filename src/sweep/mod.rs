@@ -30,11 +30,14 @@
 //! A sweep can be cut into shards (`k/n`: the cases with `index % n == k − 1`) that run on different machines;
 //! [`merge`] joins the shards' CSVs into the CSV the unsharded sweep writes (up to the [`TIMING_COLUMNS`]).
 
+pub mod journal;
+pub mod plan;
 pub mod row;
 mod run;
 
+pub use plan::{Counts, Estimate, Plan, SweepOptions};
 pub use row::{RowStatus, SweepRow, TIMING_COLUMNS};
-pub use run::{error_rows_in, merge, run_sweep, REPEAT_BELOW_S};
+pub use run::{error_rows_in, merge, merge_checked, run_sweep, Outcome, REPEAT_BELOW_S, TIMING_BATCH};
 
 use crate::error::{Error, Result};
 use crate::scene::Scene;
@@ -175,10 +178,16 @@ impl std::fmt::Display for Shard {
     }
 }
 
-/// Most cases a sweep spec may define: every case's scene is built before any runs ([`SweepSpec::cases`]), so a
-/// larger grid (a few keys of many values multiply quickly) is refused when the spec is read rather than by an
-/// allocation failure, or an overflow of the count, later.
-pub const MAX_CASES: usize = 100_000;
+/// Most cases a sweep spec may define, refused when the spec is read: a case's number must fit the 4 bytes a run's
+/// plan keeps per case, and a grid this large would take days to validate, let alone run (a few keys of many values
+/// multiply quickly: before this limit, 2^40 cases aborted the process and 2^64 overflowed the count).
+pub const MAX_CASES: usize = 100_000_000;
+
+/// Most cases a sweep runs without being told that its size is intended (`--allow-large`,
+/// [`SweepOptions::allow_large`]): above it, a grid is refused before anything is validated or run, with its count
+/// (`--dry-run` prints its estimate of time and memory). 10^5 cases of the smallest meshes take a few minutes on two
+/// cores; of the reference meshes, hours.
+pub const LARGE_SWEEP_CASES: usize = 100_000;
 
 pub(crate) fn invalid(path: &Path, field: &str, message: impl Into<String>) -> Error {
     Error::Invalid { path: path.to_path_buf(), field: field.to_string(), message: message.into() }
@@ -270,6 +279,25 @@ fn check_zipped(path: &Path, grid: &Table) -> Result<()> {
     Ok(())
 }
 
+/// No swept value may hold a line break: a sweep CSV has one line per row (its journal relies on it to find a cut
+/// row, [`journal`]).
+fn check_one_line(path: &Path, grid: &Table) -> Result<()> {
+    fn breaks(v: &Value) -> bool {
+        match v {
+            Value::String(s) => s.contains(['\n', '\r']),
+            Value::Array(a) => a.iter().any(breaks),
+            Value::Table(t) => t.values().any(breaks),
+            _ => false,
+        }
+    }
+    match grid.iter().find(|(_, v)| breaks(v)) {
+        Some((key, _)) => {
+            Err(invalid(path, &format!("grid.{key}"), "a value with a line break: a sweep CSV row is one line"))
+        }
+        None => Ok(()),
+    }
+}
+
 /// No swept key may be given twice, or set a table and a key inside it (`drive` and `drive.normal_load`): the CSV
 /// would record both and the later one would silently override part of the earlier.
 fn check_overlaps(path: &Path, grid: &Table) -> Result<()> {
@@ -316,20 +344,6 @@ fn set_dotted(doc: &mut Table, key: &str, value: Value) -> std::result::Result<(
     }
     t.insert(last.to_string(), value);
     Ok(())
-}
-
-/// A variant of the base scene: the case number, its parameters and the validated scene.
-struct Variant {
-    index: usize,
-    params: Vec<(String, String)>,
-    scene: Scene,
-}
-
-impl Variant {
-    /// The variant's scene.
-    fn scene(&self) -> &Scene {
-        &self.scene
-    }
 }
 
 impl SweepSpec {
@@ -408,6 +422,7 @@ impl SweepSpec {
             }
             check_zipped(path, &flat)?;
             check_overlaps(path, &flat)?;
+            check_one_line(path, &flat)?;
             grid.push(flat);
         }
         let cases = grid.iter().try_fold(0usize, |sum, g| {
@@ -419,7 +434,7 @@ impl SweepSpec {
             return Err(invalid(
                 path,
                 "grid",
-                format!("{count} cases, more than a sweep may have ({MAX_CASES}): split it"),
+                format!("{count} cases, more than a sweep spec may define ({MAX_CASES}): split it"),
             ));
         }
         let timing_repeats = match doc.get("timing_repeats") {
@@ -491,76 +506,162 @@ impl SweepSpec {
         self.len() == 0
     }
 
-    /// Build every variant; the scene of each is parsed and validated but errors are kept per variant. The
-    /// variants' errors name `label` as their file (the spec's path, or its bare file name for CSV cells that must
-    /// not depend on where a shard ran) and the base scene as written in the spec.
-    fn variants(&self, spec_path: &Path, label: &Path) -> Result<Vec<Variant>> {
-        // A variant's error names the spec by `label` in the case's words; the spec's error names its file.
-        let readdress = |e: Error| match e {
-            Error::Invalid { field, message, .. } => invalid(spec_path, &field, message),
-            Error::Parse { message, .. } => Error::Parse { path: spec_path.to_path_buf(), message },
-            other => other,
-        };
-        self.variants_labelled(spec_path, label).map_err(readdress)
+    /// The spec's variants, built one at a time on demand ([`Expansion`]): the base scenes are read now, a case's
+    /// scene when it is asked for. Errors name the spec file; a case's scene names its file as `label` (the spec's
+    /// path, or its bare file name for CSV cells that must not depend on where a shard ran).
+    pub fn expand(&self, spec_path: &Path, label: &Path) -> Result<Expansion> {
+        Expansion::new(self, spec_path, label)
     }
 
-    fn variants_labelled(&self, spec_path: &Path, label: &Path) -> Result<Vec<Variant>> {
-        let mut out = Vec::with_capacity(self.len());
-        for (gi, g) in self.grid.iter().enumerate() {
-            let base_name = self.grid_base(gi).to_path_buf();
-            let own = self.grid_base.get(gi).is_some_and(Option::is_some);
+    /// Every case of the sweep, in enumeration order, each scene built and validated (all in memory: for a small
+    /// sweep, a test, a fuzz target; a sweep runs from [`SweepSpec::expand`] one case at a time). A variant that
+    /// does not parse or validate is an error naming the spec file, the case's parameters and the offending field.
+    pub fn cases(&self, spec_path: &Path) -> Result<Vec<Case>> {
+        let e = self.expand(spec_path, spec_path)?;
+        (0..e.len()).map(|i| e.case(i)).collect()
+    }
+}
+
+/// One grid of an [`Expansion`]: its base scene's TOML, its keys with their values, and where its cases start.
+#[derive(Debug, Clone)]
+struct GridCases {
+    /// The base scene as written in the spec.
+    base_name: PathBuf,
+    /// The base scene's document.
+    base: Table,
+    /// The (possibly zipped) keys in sorted order, each with its values.
+    entries: Vec<(String, Vec<Value>)>,
+    /// The number of its first case.
+    start: usize,
+    /// Its number of cases.
+    len: usize,
+}
+
+/// The variants of a sweep spec, built one at a time from their case numbers: what a sweep of any size holds in
+/// memory is the base scenes and the grids' values, never the list of its cases ([`SweepSpec::expand`]).
+#[derive(Debug, Clone)]
+pub struct Expansion {
+    grids: Vec<GridCases>,
+    spec_path: PathBuf,
+    label: PathBuf,
+}
+
+impl Expansion {
+    fn new(spec: &SweepSpec, spec_path: &Path, label: &Path) -> Result<Expansion> {
+        let mut grids = Vec::with_capacity(spec.grid.len());
+        let mut start = 0;
+        for (gi, g) in spec.grid.iter().enumerate() {
+            let base_name = spec.grid_base(gi).to_path_buf();
+            let own = spec.grid_base.get(gi).is_some_and(Option::is_some);
             let field = if own { format!("grid[{gi}].base") } else { "base".to_string() };
             let base = read_base(spec_path, &resolve(spec_path, &base_name), &field)?;
-            let entries: Vec<(&String, &Vec<Value>)> =
-                g.iter().map(|(k, v)| (k, v.as_array().expect("grid values are arrays"))).collect();
-            let total: usize = entries.iter().map(|(_, a)| a.len()).product();
-            for m in 0..total {
-                // Mixed-radix digits of m, the last key varying fastest.
-                let mut rest = m;
-                let mut picks = vec![0; entries.len()];
-                for (j, (_, a)) in entries.iter().enumerate().rev() {
-                    picks[j] = rest % a.len();
-                    rest /= a.len();
-                }
-                let index = out.len();
-                let mut doc = base.clone();
-                let mut params = Vec::with_capacity(entries.len());
-                let mut set_err = None;
-                for ((key, a), &p) in entries.iter().zip(&picks) {
-                    let keys = zipped_keys(key);
-                    let values = match (&a[p], keys.len()) {
-                        (v, 1) => vec![v.clone()],
-                        (Value::Array(t), _) => t.clone(),
-                        _ => unreachable!("zipped grid values are checked to be tuples"),
-                    };
-                    for (k, v) in keys.iter().zip(values) {
-                        params.push((k.to_string(), show(&v)));
-                        if let Err(e) = set_dotted(&mut doc, k, v) {
-                            set_err.get_or_insert((k.to_string(), e));
-                        }
-                    }
-                }
-                let what = describe(index, &params);
-                if let Some((key, e)) = set_err {
-                    return Err(invalid(label, &key, format!("{what}: {e}")));
-                }
-                // The case's messages name the spec and the case, wherever the scene came from.
-                let origin = PathBuf::from(format!("{} [case {index}]", label.display()));
-                let scene = build_scene(&doc, label, &base_name, &what)?.relabel(origin);
-                out.push(Variant { index, params, scene });
-            }
+            let entries: Vec<(String, Vec<Value>)> =
+                g.iter().map(|(k, v)| (k.clone(), v.as_array().expect("grid values are arrays").clone())).collect();
+            let len = entries.iter().map(|(_, a)| a.len()).product();
+            grids.push(GridCases { base_name, base, entries, start, len });
+            start += len;
         }
-        Ok(out)
+        Ok(Expansion { grids, spec_path: spec_path.to_path_buf(), label: label.to_path_buf() })
     }
 
-    /// Every case of the sweep, in enumeration order. A variant that does not parse or validate is an error naming
-    /// the spec file, the case's parameters and the offending field.
-    pub fn cases(&self, spec_path: &Path) -> Result<Vec<Case>> {
-        Ok(self
-            .variants(spec_path, spec_path)?
-            .into_iter()
-            .map(|v| Case { index: v.index, params: v.params, scene: v.scene })
-            .collect())
+    /// Number of cases.
+    pub fn len(&self) -> usize {
+        self.grids.last().map_or(0, |g| g.start + g.len)
+    }
+
+    /// Whether there is no case.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The grid of case `index` and the case's position in it. Panics beyond [`Expansion::len`].
+    fn locate(&self, index: usize) -> (&GridCases, usize) {
+        let g = self.grids.iter().find(|g| index < g.start + g.len).expect("a case number below len()");
+        (g, index - g.start)
+    }
+
+    /// The swept keys of case `index` with their values (strings bare, other values in TOML syntax), in sorted key
+    /// order: what its CSV rows carry. Cheap: no scene is built.
+    pub fn params(&self, index: usize) -> Vec<(String, String)> {
+        self.values(index).into_iter().map(|(k, v)| (k, show(&v))).collect()
+    }
+
+    /// The swept keys of case `index` with their values: mixed-radix digits of its position in its grid, the last
+    /// key varying fastest.
+    fn values(&self, index: usize) -> Vec<(String, Value)> {
+        let (g, m) = self.locate(index);
+        let mut picks = vec![0; g.entries.len()];
+        let mut rest = m;
+        for (j, (_, a)) in g.entries.iter().enumerate().rev() {
+            picks[j] = rest % a.len();
+            rest /= a.len();
+        }
+        let mut out = Vec::with_capacity(g.entries.len());
+        for ((key, a), &p) in g.entries.iter().zip(&picks) {
+            let keys = zipped_keys(key);
+            let values = match (&a[p], keys.len()) {
+                (v, 1) => vec![v.clone()],
+                (Value::Array(t), _) => t.clone(),
+                _ => unreachable!("zipped grid values are checked to be tuples"),
+            };
+            out.extend(keys.iter().map(|k| k.to_string()).zip(values));
+        }
+        out
+    }
+
+    /// Whether `rows` (read from a sweep CSV) can be case `index`'s: the case is one of the spec's and every row
+    /// carries its parameters (empty values are not written). `Err` says why not.
+    pub fn check_rows(&self, index: usize, rows: &[SweepRow]) -> std::result::Result<(), String> {
+        if index >= self.len() {
+            return Err(format!("the spec has {} cases", self.len()));
+        }
+        let mut want = self.params(index);
+        want.retain(|(_, v)| !v.is_empty());
+        match rows.iter().find(|r| r.params != want) {
+            None => Ok(()),
+            Some(r) => {
+                let show = |p: &[(String, String)]| p.iter().map(|(k, v)| format!("{k} = {v}")).collect::<Vec<_>>();
+                Err(format!(
+                    "its row has parameters [{}], the spec's case has [{}]",
+                    show(&r.params).join(", "),
+                    show(&want).join(", ")
+                ))
+            }
+        }
+    }
+
+    /// Case `index`: its parameters and its scene, parsed and validated. An error names the spec file, the case's
+    /// parameters and the offending field. Panics beyond [`Expansion::len`].
+    pub fn case(&self, index: usize) -> Result<Case> {
+        // A variant's error names the spec by `label` in the case's words; the spec's error names its file.
+        let readdress = |e: Error| match e {
+            Error::Invalid { field, message, .. } => invalid(&self.spec_path, &field, message),
+            Error::Parse { message, .. } => Error::Parse { path: self.spec_path.clone(), message },
+            other => other,
+        };
+        self.build(index).map_err(readdress)
+    }
+
+    fn build(&self, index: usize) -> Result<Case> {
+        let (g, _) = self.locate(index);
+        let values = self.values(index);
+        let mut doc = g.base.clone();
+        let mut params = Vec::with_capacity(values.len());
+        let mut set_err = None;
+        for (k, v) in values {
+            params.push((k.clone(), show(&v)));
+            if let Err(e) = set_dotted(&mut doc, &k, v) {
+                set_err.get_or_insert((k, e));
+            }
+        }
+        let what = describe(index, &params);
+        if let Some((key, e)) = set_err {
+            return Err(invalid(&self.label, &key, format!("{what}: {e}")));
+        }
+        // The case's messages name the spec and the case, wherever the scene came from.
+        let origin = PathBuf::from(format!("{} [case {index}]", self.label.display()));
+        let scene = build_scene(&doc, &self.label, &g.base_name, &what)?.relabel(origin);
+        Ok(Case { index, params, scene })
     }
 }
 

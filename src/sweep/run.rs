@@ -1,43 +1,46 @@
-//! Running a sweep: the cases that share bodies and mesh are solved on one [`Model`] (built once), groups run in
-//! parallel, every solver run becomes a typed [`SweepRow`], and the CSV is written by [`SweepRow::record`] only.
+//! Running a sweep ([`Plan::run`]): the cases that share bodies and mesh are solved on one [`Model`] (built once per
+//! run of at most [`super::plan::UNIT_CASES`] cases), the runs go in parallel, every solver run becomes a typed
+//! [`SweepRow`], and each case's rows are appended to the journal the moment the case is done
+//! ([`super::journal`]). When every case is done, the journal is written out sorted by (case, solver) as the sweep's
+//! CSV and removed. [`merge`] joins shard CSVs the same way.
+//!
+//! What is in memory at any time: the plan (4 bytes per case to run), and per thread one model and one case; with
+//! `timing_repeats`, the rows of at most [`TIMING_BATCH`] cases waiting for their repeats. Never the grid's rows.
 
-use super::row::{header, RowStatus, SweepRow};
-use super::{Shard, SweepSpec, Variant};
+use super::journal::{self, Block, Journal, Written};
+use super::plan::{Plan, Start, SweepOptions};
+use super::row::{RowStatus, SweepRow};
+use super::{invalid, Case, Shard, SweepSpec};
 use crate::error::{Error, Result};
-use crate::io::write_output;
 use crate::pipeline::Model;
 use crate::references::metrics;
 use crate::results::{Report, SolverRun, Timing};
 use crate::scene::Scene;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
-use std::collections::{BTreeSet, HashSet};
+use std::collections::BTreeSet;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
+use std::sync::Mutex;
 
 /// A case is timed again (up to the spec's `timing_repeats`) only when its first run took less than this (seconds):
 /// repeating small cases is cheap and is where the noise of a busy machine dominates.
 pub const REPEAT_BELOW_S: f64 = 2.0;
 
-/// The rows of a run of one case; `spread` is (fastest, slowest, repeats) of each solver run's total time when the
-/// case was timed repeatedly.
-fn case_rows(case: &Variant, scene: &Scene, report: &Report, spreads: &[Option<(f64, f64, usize)>]) -> Vec<SweepRow> {
-    report
-        .runs
-        .iter()
-        .enumerate()
-        .map(|(i, r)| run_row(case, scene, report.mesh.contact_nodes, r, spreads.get(i).copied().flatten()))
-        .collect()
+/// With `timing_repeats`, the cases are timed in batches of this many: their first runs, then the repeats in rounds
+/// over the batch, then their rows are written (a sweep of fewer cases is one batch).
+pub const TIMING_BATCH: usize = 256;
+
+/// The rows of a run of one case, sorted by solver.
+fn case_rows(case: &Case, report: &Report) -> Vec<SweepRow> {
+    let mut rows: Vec<SweepRow> = report.runs.iter().map(|r| run_row(case, report.mesh.contact_nodes, r)).collect();
+    rows.sort_by(|a, b| a.solver.cmp(&b.solver));
+    rows
 }
 
 /// The row of one solver run.
-fn run_row(
-    case: &Variant,
-    scene: &Scene,
-    contact_nodes: usize,
-    r: &SolverRun,
-    spread: Option<(f64, f64, usize)>,
-) -> SweepRow {
+fn run_row(case: &Case, contact_nodes: usize, r: &SolverRun) -> SweepRow {
+    let scene = &case.scene;
     let mut row = SweepRow::new(case.index, r.solver.name(), RowStatus::Run(r.status));
     row.params = case.params.clone();
     row.scene = scene.name().to_string();
@@ -66,11 +69,14 @@ fn run_row(
     row.stick_left = edges.map(|e| e.0);
     row.stick_right = edges.map(|e| e.1);
     row.creepage = r.rolling.as_ref().and_then(|x| x.creepage);
-    set_timing(&mut row, &r.timing_s, spread);
-    row.message = r.explanation();
+    set_timing(&mut row, &r.timing_s, None);
+    // One line per row (the journal's rule): a line break in a message is written as a space.
+    row.message = r.explanation().replace(['\n', '\r'], " ");
     row
 }
 
+/// A row's timing columns; `spread` is (fastest, slowest, repeats) of the total time when the case was timed
+/// repeatedly.
 fn set_timing(row: &mut SweepRow, t: &Timing, spread: Option<(f64, f64, usize)>) {
     row.t_assembly = Some(t.assembly);
     row.t_condensation = Some(t.condensation);
@@ -86,13 +92,14 @@ fn set_timing(row: &mut SweepRow, t: &Timing, spread: Option<(f64, f64, usize)>)
 
 /// Rows for a case that could not be built or run: one per solver its scene asks for (by name; `all` when it asks
 /// for every solver), status `error`, the message last.
-fn error_rows(case: &Variant, scene: &Scene, err: &Error) -> Vec<SweepRow> {
+fn error_rows(case: &Case, err: &Error) -> Vec<SweepRow> {
+    let scene = &case.scene;
     let set = scene.solvers();
     let mut solvers: BTreeSet<String> = set.named.iter().map(|id| id.name().to_string()).collect();
     if set.all {
         solvers.insert("all".into());
     }
-    let message = err.to_string().replace('\n', " ");
+    let message = err.to_string().replace(['\n', '\r'], " ");
     solvers
         .into_iter()
         .map(|solver| {
@@ -107,246 +114,314 @@ fn error_rows(case: &Variant, scene: &Scene, err: &Error) -> Vec<SweepRow> {
         .collect()
 }
 
-/// Cases that share one model: the same bodies, mesh, zone and counter-body, and the same needs of the model (the
-/// tangential blocks, the BEM wheel's boundary response): a frictionless case is never solved on a model built
-/// with the tangential blocks another case needed.
-struct Group<'a> {
-    cases: Vec<&'a Variant>,
+/// The model a run of cases is solved on: built for the first case, kept while the next cases share its source and
+/// needs ([`Model::shares_source`], [`Model::needs`]: a frictionless case is never solved on a model built with the
+/// tangential blocks another case needed), built again for a case that does not.
+#[derive(Default)]
+struct Shared {
+    built: Option<(Scene, Result<Model>)>,
 }
 
-/// Group the cases by the model they share, keeping the enumeration order within a group.
-fn groups<'a>(cases: &[&'a Variant]) -> Vec<Group<'a>> {
-    let mut out: Vec<Group<'a>> = Vec::new();
-    for &v in cases {
-        let s = v.scene();
-        let fits = |g: &Group| {
-            let first = g.cases[0].scene();
-            Model::shares_source(first, s) && Model::needs(first) == Model::needs(s)
-        };
-        match out.iter_mut().find(|g| fits(g)) {
-            Some(g) => g.cases.push(v),
-            None => out.push(Group { cases: vec![v] }),
+impl Shared {
+    /// The rows of a case, sorted by solver.
+    fn rows(&mut self, case: &Case) -> Vec<SweepRow> {
+        let s = &case.scene;
+        let fits = |m: &Scene| Model::shares_source(m, s) && Model::needs(m) == Model::needs(s);
+        if !self.built.as_ref().is_some_and(|(m, _)| fits(m)) {
+            self.built = Some((s.clone(), Model::build(s)));
+        }
+        match &self.built.as_ref().expect("built above").1 {
+            Ok(m) => match m.solve(s) {
+                Ok(report) => case_rows(case, &report),
+                Err(e) => error_rows(case, &e),
+            },
+            Err(e) => error_rows(case, e),
         }
     }
-    out
 }
 
-/// Solve every case of a group on one model; the rows, and per case its report (for repeated timing).
-fn run_group(group: &Group, bar: &ProgressBar) -> Vec<(usize, std::result::Result<Report, Vec<SweepRow>>)> {
-    let model = Model::build(group.cases[0].scene());
-    group
-        .cases
-        .iter()
-        .map(|v| {
-            let outcome = match &model {
-                Ok(m) => m.solve(v.scene()).map_err(|e| error_rows(v, v.scene(), &e)),
-                Err(e) => Err(error_rows(v, v.scene(), e)),
-            };
-            bar.inc(1);
-            (v.index, outcome)
-        })
-        .collect()
+/// The counts of a finished sweep.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Outcome {
+    /// Rows of the CSV.
+    pub rows: usize,
+    /// Of which with status `error` (a variant that could not run).
+    pub errors: usize,
+    /// Cases run now (the others were done before: `--resume`).
+    pub ran: usize,
 }
 
-/// The rows of every case, each group on its own model, groups in parallel (or one at a time when `serial`).
-fn first_runs(
-    cases: &[&Variant],
-    serial: bool,
-    bar: &ProgressBar,
-) -> Vec<(usize, std::result::Result<Report, Vec<SweepRow>>)> {
-    let gs = groups(cases);
-    let mut out: Vec<(usize, std::result::Result<Report, Vec<SweepRow>>)> = if serial {
-        gs.iter().flat_map(|g| run_group(g, bar)).collect()
-    } else {
-        gs.par_iter().flat_map_iter(|g| run_group(g, bar)).collect()
-    };
-    out.sort_by_key(|(i, _)| *i);
-    out
+/// The journal, shared by the threads.
+type Shelf = Mutex<Journal>;
+
+fn append(journal: &Shelf, rows: &[SweepRow]) -> Result<()> {
+    journal.lock().unwrap_or_else(std::sync::PoisonError::into_inner).append(rows)
 }
 
-/// Time the fast cases (first run under [`REPEAT_BELOW_S`]) `repeats` more times in rounds — every fast case once
-/// per round, each repeat from scratch (model built and solved) — and give each solver run the timing of its
-/// median repeat, with the fastest and slowest. Results (not times) are the first run's.
-///
-/// The first run's times are left out: it runs cold (first touches of the allocator's pages, caches) and was
-/// measured 2–50× slower than the repeats on small cases (e.g. 1.2 ms against 0.11 ms for lemke on 50 half-plane
-/// elements). The repeats go in rounds rather than back to back so that a slow spell of the machine lands on one
-/// repeat of many cases instead of on every repeat of the few cases running during it: back to back, all of one
-/// sweep's active_set cases (a block of the grid) once came out 1.6× slower than in the next sweep while the lemke
-/// cases before them did not, and a Pareto front changed with it.
-fn retime(
-    cases: &[&Variant],
-    firsts: &mut [(usize, std::result::Result<Report, Vec<SweepRow>>)],
-    repeats: usize,
-    bar: &ProgressBar,
-) -> Vec<Vec<Option<(f64, f64, usize)>>> {
-    let fast = |r: &Report| r.runs.iter().map(|x| x.timing_s.total).fold(0.0, f64::max) < REPEAT_BELOW_S;
-    let mut times: Vec<Vec<Vec<Timing>>> =
-        firsts.iter().map(|(_, f)| f.as_ref().map_or(Vec::new(), |r| vec![Vec::new(); r.runs.len()])).collect();
-    let n_fast = firsts.iter().filter(|(_, f)| f.as_ref().is_ok_and(fast)).count();
-    bar.inc_length((repeats * n_fast) as u64);
-    for _ in 0..repeats {
-        for ((case, (_, first)), t) in cases.iter().zip(firsts.iter()).zip(times.iter_mut()) {
-            let Ok(report) = first else { continue };
-            if !fast(report) {
-                continue;
-            }
-            let again = crate::pipeline::run_scene(case.scene());
-            bar.inc(1);
-            let Ok(again) = again else { continue };
-            for (ti, r) in t.iter_mut().zip(&again.runs) {
-                ti.push(r.timing_s);
-            }
+impl Plan {
+    /// Run the plan: every case to run is solved and its rows appended to the journal as it finishes; then the
+    /// journal is written out as the sweep's CSV, sorted by (case, solver), and removed.
+    ///
+    /// Runs go in parallel with rayon, with an indicatif progress bar (hidden unless asked for and standard error
+    /// is a terminal). A sweep that asks for repeated timings runs its cases one at a time, so that no case is timed
+    /// while another competes for the cores (on 2 cores, parallel cases moved timings by tens of percent between
+    /// report runs and reordered configurations on the Pareto front). Sets faer's global parallelism to sequential:
+    /// the runs are the parallel unit.
+    pub fn run(self) -> Result<Outcome> {
+        let to_run = self.counts().to_run;
+        if to_run == 0 && self.start == Start::Output {
+            // Every case is in the finished output already: leave it as it is.
+            let mut n = Written::default();
+            journal::scan(&self.out, 0, false, None, |_, rows| {
+                n.rows += rows.len();
+                n.errors += rows.iter().filter(|r| r.status == RowStatus::Error).count();
+                Ok(())
+            })?;
+            return Ok(Outcome { rows: n.rows, errors: n.errors, ran: 0 });
         }
-    }
-    let mut spreads = Vec::with_capacity(firsts.len());
-    for ((_, first), t) in firsts.iter_mut().zip(times) {
-        let Ok(report) = first else {
-            spreads.push(Vec::new());
-            continue;
+        let journal = match self.start {
+            Start::Fresh => Journal::create(&self.journal, &self.keys, None)?,
+            Start::Output => Journal::create(&self.journal, &self.keys, Some(&self.out))?,
+            Start::Journal(keep) => Journal::reopen(&self.journal, &self.keys, keep)?,
         };
-        spreads.push(
-            report
-                .runs
-                .iter_mut()
-                .zip(t)
-                .map(|(r, mut t)| {
-                    if t.is_empty() {
-                        return None;
-                    }
-                    t.sort_by(|a, b| a.total.total_cmp(&b.total));
-                    r.timing_s = t[t.len() / 2];
-                    Some((t[0].total, t[t.len() - 1].total, t.len()))
-                })
-                .collect(),
+        faer::set_global_parallelism(faer::Par::Seq);
+        // The runs go in parallel: their stage spinners would draw over each other and over the bar below.
+        let _no_stages = crate::progress::suppress();
+        let bar = self.progress_bar(to_run);
+        let journal = Mutex::new(journal);
+        if self.spec.timing_repeats > 1 {
+            self.run_timed(&journal, &bar)?;
+        } else {
+            self.units.par_iter().try_for_each(|unit| {
+                let mut model = Shared::default();
+                for &i in unit {
+                    append(&journal, &model.rows(&self.expansion.case(i as usize)?))?;
+                    bar.inc(1);
+                }
+                Ok::<(), Error>(())
+            })?;
+        }
+        bar.finish_and_clear();
+        journal.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner).finish()?;
+        let written = self.write_out()?;
+        Ok(Outcome { rows: written.rows, errors: written.errors, ran: to_run })
+    }
+
+    fn progress_bar(&self, len: usize) -> ProgressBar {
+        let bar = if self.options.progress && std::io::stderr().is_terminal() {
+            ProgressBar::with_draw_target(Some(len as u64), ProgressDrawTarget::stderr())
+        } else {
+            ProgressBar::hidden()
+        };
+        bar.set_style(
+            ProgressStyle::with_template("{prefix} [{elapsed_precise}] {wide_bar} {pos}/{len} runs (eta {eta})")
+                .expect("valid template"),
         );
+        bar.set_prefix(match self.options.shard {
+            Some(s) => format!("{} {s}", self.spec.name),
+            None => self.spec.name.clone(),
+        });
+        bar
     }
-    spreads
-}
 
-/// Sort rows by (case, solver), the order of every sweep CSV.
-fn sort_rows(rows: &mut [SweepRow]) {
-    rows.sort_by(|a, b| (a.case, &a.solver).cmp(&(b.case, &b.solver)));
-}
-
-/// Write rows as a sweep CSV with the given swept keys.
-fn write_csv(out_csv: &Path, keys: &[String], rows: &[SweepRow]) -> Result<()> {
-    let werr = |e: csv::Error| Error::Write { path: out_csv.to_path_buf(), source: std::io::Error::other(e) };
-    let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record(header(keys)).map_err(werr)?;
-    for r in rows {
-        w.write_record(r.record(keys)).map_err(werr)?;
+    /// The finished journal, sorted, to the output; the journal removed.
+    fn write_out(&self) -> Result<Written> {
+        let mut blocks = Vec::with_capacity(self.counts().mine);
+        let scanned = journal::scan(&self.journal, 0, true, None, |b, _| {
+            blocks.push(b);
+            Ok(())
+        })?;
+        blocks.sort_unstable_by_key(|b| b.case);
+        let cases: Vec<u32> = blocks.iter().map(|b| b.case).collect();
+        let expected = (0..self.counts().cases).filter(|&i| self.options.shard.is_none_or(|s| s.contains(i)));
+        if scanned.cut || !cases.iter().map(|&c| c as usize).eq(expected) {
+            return Err(invalid(
+                &self.journal,
+                "journal",
+                "its cases are not the sweep's, each once: was it written by another process meanwhile? Run the \
+                 sweep again with --resume",
+            ));
+        }
+        let written = journal::write_sorted(std::slice::from_ref(&self.journal), blocks, &scanned.header, &self.out)?;
+        std::fs::remove_file(&self.journal).map_err(|source| Error::Write { path: self.journal.clone(), source })?;
+        Ok(written)
     }
-    let bytes = w.into_inner().map_err(|e| Error::Write { path: out_csv.to_path_buf(), source: e.into_error() })?;
-    let text = String::from_utf8(bytes).expect("CSV of UTF-8 cells is UTF-8");
-    write_output(out_csv, &text)
+
+    /// The cases one at a time, timed repeatedly ([`retime`]) in batches of [`TIMING_BATCH`].
+    fn run_timed(&self, journal: &Shelf, bar: &ProgressBar) -> Result<()> {
+        let mut model = Shared::default();
+        let mut cases = self.units.iter().flatten().copied().peekable();
+        while cases.peek().is_some() {
+            let mut batch = Vec::with_capacity(TIMING_BATCH);
+            for i in cases.by_ref().take(TIMING_BATCH) {
+                batch.push((i, model.rows(&self.expansion.case(i as usize)?)));
+                bar.inc(1);
+            }
+            self.retime(&mut batch, bar)?;
+            for (_, rows) in &batch {
+                append(journal, rows)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// Time the fast cases of a batch (every run under [`REPEAT_BELOW_S`]) `timing_repeats` more times in rounds —
+    /// every fast case once per round, in case order, each repeat from scratch (model built and solved) — and give
+    /// each row the timing of its median repeat, with the fastest and slowest. Results (not times) are the first
+    /// run's.
+    ///
+    /// The first run's times are left out: it runs cold (first touches of the allocator's pages, caches) and was
+    /// measured 2–50× slower than the repeats on small cases (e.g. 1.2 ms against 0.11 ms for lemke on 50 half-plane
+    /// elements). The repeats go in rounds rather than back to back so that a slow spell of the machine lands on one
+    /// repeat of many cases instead of on every repeat of the few cases running during it: back to back, all of one
+    /// sweep's active_set cases (a block of the grid) once came out 1.6× slower than in the next sweep while the
+    /// lemke cases before them did not, and a Pareto front changed with it.
+    fn retime(&self, batch: &mut [(u32, Vec<SweepRow>)], bar: &ProgressBar) -> Result<()> {
+        let repeats = self.spec.timing_repeats;
+        let fast = |rows: &[SweepRow]| {
+            !rows.is_empty()
+                && rows.iter().all(|r| r.status != RowStatus::Error && r.t_total.is_some_and(|t| t < REPEAT_BELOW_S))
+        };
+        let mut order: Vec<usize> = (0..batch.len()).filter(|&k| fast(&batch[k].1)).collect();
+        order.sort_by_key(|&k| batch[k].0);
+        bar.inc_length((repeats * order.len()) as u64);
+        let mut times: Vec<Vec<Vec<Timing>>> = batch.iter().map(|(_, rows)| vec![Vec::new(); rows.len()]).collect();
+        for _ in 0..repeats {
+            for &k in &order {
+                let again = crate::pipeline::run_scene(&self.expansion.case(batch[k].0 as usize)?.scene);
+                bar.inc(1);
+                let Ok(again) = again else { continue };
+                for r in &again.runs {
+                    if let Some(j) = batch[k].1.iter().position(|row| row.solver == r.solver.name()) {
+                        times[k][j].push(r.timing_s);
+                    }
+                }
+            }
+        }
+        for ((_, rows), times) in batch.iter_mut().zip(times) {
+            for (row, mut t) in rows.iter_mut().zip(times) {
+                if t.is_empty() {
+                    continue;
+                }
+                t.sort_by(|a, b| a.total.total_cmp(&b.total));
+                set_timing(row, &t[t.len() / 2], Some((t[0].total, t[t.len() - 1].total, t.len())));
+            }
+        }
+        Ok(())
+    }
 }
 
-/// Run the cases of this shard (all cases without one) and write the CSV: one row per (case, solver run), sorted by
-/// case then solver name. Returns the number of rows written.
+/// Run the cases of this shard (all cases without one) afresh and write the CSV: one row per (case, solver run),
+/// sorted by case then solver name. Returns the number of rows written. The library's short way to
+/// [`Plan::new`] then [`Plan::run`], without `--resume` and within the size limit.
 ///
 /// The spec and the base scene must read, and every variant of every grid (not only this shard's) must parse and
 /// validate as a scene: an unknown key, a value of the wrong type or out of range, an unknown solver stops the sweep
 /// before anything runs ([`Error::Parse`] or [`Error::Invalid`], naming the case and its keys). A valid variant
 /// that cannot run (e.g. a named solver that does not apply to it, [`Error::Unsupported`]) gets rows with status
 /// `error` and the message in the last column, `message` (which holds the solver's explanation for the runs that
-/// did run); [`error_rows_in`] counts them for the caller.
-///
-/// Cases sharing bodies and mesh are solved on one model (one BEM assembly and condensation); groups run in
-/// parallel with rayon, with an indicatif progress bar (hidden when `progress` is false or stderr is not a
-/// terminal). A sweep that asks for repeated timings runs its groups one at a time, so that no case is timed while
-/// another competes for the cores (on 2 cores, parallel cases moved timings by tens of percent between report runs
-/// and reordered configurations on the Pareto front). Sets faer's global parallelism to sequential: the groups are
-/// the parallel unit.
+/// did run).
 pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progress: bool) -> Result<usize> {
-    let spec = SweepSpec::from_file(spec_path)?;
-    // Per-case messages name the spec by its file name only: the CSV must not depend on where a shard ran.
-    let label = PathBuf::from(spec_path.file_name().unwrap_or(spec_path.as_os_str()));
-    let variants = spec.variants(spec_path, &label)?;
-    let mine: Vec<&Variant> = variants.iter().filter(|v| shard.is_none_or(|s| s.contains(v.index))).collect();
-    let keys = spec.keys();
-
-    faer::set_global_parallelism(faer::Par::Seq);
-    // The groups run in parallel: their stage spinners would draw over each other and over the bar below.
-    let _no_stages = crate::progress::suppress();
-    let bar = if progress && std::io::stderr().is_terminal() {
-        ProgressBar::with_draw_target(Some(mine.len() as u64), ProgressDrawTarget::stderr())
-    } else {
-        ProgressBar::hidden()
-    };
-    bar.set_style(
-        ProgressStyle::with_template("{prefix} [{elapsed_precise}] {wide_bar} {pos}/{len} runs (eta {eta})")
-            .expect("valid template"),
-    );
-    bar.set_prefix(match shard {
-        Some(s) => format!("{} {s}", spec.name),
-        None => spec.name.clone(),
-    });
-    let serial = spec.timing_repeats > 1;
-    let mut firsts = first_runs(&mine, serial, &bar);
-    let spreads = if serial { retime(&mine, &mut firsts, spec.timing_repeats, &bar) } else { Vec::new() };
-    bar.finish_and_clear();
-    let mut rows = Vec::new();
-    for (k, (case, (_, first))) in mine.iter().zip(firsts).enumerate() {
-        match first {
-            Ok(report) => {
-                rows.extend(case_rows(case, case.scene(), &report, spreads.get(k).map_or(&[], Vec::as_slice)))
-            }
-            Err(r) => rows.extend(r),
-        }
-    }
-    sort_rows(&mut rows);
-    write_csv(out_csv, &keys, &rows)?;
-    Ok(rows.len())
+    let options = SweepOptions { shard, progress, ..SweepOptions::default() };
+    Ok(Plan::new(spec_path, out_csv, &options)?.run()?.rows)
 }
 
-/// The number of rows with status `error` in a sweep CSV written by [`run_sweep`] (0 when it cannot be read).
+/// The number of rows with status `error` in a sweep CSV (0 when it cannot be read), read without keeping its rows.
 pub fn error_rows_in(csv_path: &Path) -> usize {
-    SweepRow::read_csv(csv_path).map_or(0, |(_, rows)| rows.iter().filter(|r| r.status == RowStatus::Error).count())
+    let mut n = 0;
+    let read = journal::scan(csv_path, 0, false, None, |_, rows| {
+        n += rows.iter().filter(|r| r.status == RowStatus::Error).count();
+        Ok(())
+    });
+    read.map_or(0, |_| n)
 }
 
 /// Join shard CSVs (the same header required, else an error) into one CSV sorted by (case, solver) — identical to
-/// the unsharded sweep's CSV except for the [`super::TIMING_COLUMNS`]. A (case, solver) pair present twice (the same
-/// shard given twice) is an error. Returns the number of rows written.
+/// the unsharded sweep's CSV except for the [`super::TIMING_COLUMNS`]. A case present twice (the same shard given
+/// twice) is an error, and so is a journal (a sweep that has not finished) or a file ending in a cut line. Returns
+/// the number of rows written. Reads the files block by block: memory is 24 bytes per case, not the rows.
 pub fn merge(inputs: &[PathBuf], out_csv: &Path) -> Result<usize> {
+    merge_checked(inputs, out_csv, None)
+}
+
+/// [`merge`], and with `spec` (a sweep spec's path) check that the inputs hold every case of that sweep, each with
+/// its parameters, and no other: nothing lost, nothing twice. Nothing is written when a check fails.
+pub fn merge_checked(inputs: &[PathBuf], out_csv: &Path, spec: Option<&Path>) -> Result<usize> {
     let Some(first) = inputs.first() else {
-        return Err(super::invalid(out_csv, "inputs", "no shard CSV to merge"));
+        return Err(invalid(out_csv, "inputs", "no shard CSV to merge"));
     };
-    let mut header: Option<super::row::Header> = None;
-    let mut rows: Vec<SweepRow> = Vec::new();
-    let mut seen = HashSet::new();
-    for path in inputs {
-        let (h, these) = SweepRow::read_csv(path)?;
-        match &header {
-            None => header = Some(h),
-            Some(h0) if h0.names != h.names => {
-                return Err(super::invalid(
-                    path,
-                    "header",
-                    format!(
-                        "its header differs from that of {}: the CSVs come from different sweeps (or \
-                         versions)\n  {}\n  {}",
-                        first.display(),
-                        h0.names.join(","),
-                        h.names.join(",")
-                    ),
-                ))
+    let expansion = match spec {
+        Some(p) => Some(SweepSpec::from_file(p)?.expand(p, p)?),
+        None => None,
+    };
+    let mut blocks: Vec<Block> = Vec::new();
+    let mut head: Option<super::row::Header> = None;
+    for (f, path) in inputs.iter().enumerate() {
+        let scanned = journal::scan(path, f as u32, false, head.as_ref().map(|h| h.names.as_slice()), |b, rows| {
+            if let Some(e) = &expansion {
+                check_case(e, path, b, rows)?;
             }
-            Some(_) => {}
+            blocks.push(b);
+            Ok(())
+        })
+        .map_err(|e| match e {
+            Error::Invalid { field, .. } if field == "header" => invalid(
+                path,
+                "header",
+                format!(
+                    "its header differs from that of {}: the CSVs come from different sweeps (or versions)",
+                    first.display()
+                ),
+            ),
+            other => other,
+        })?;
+        if scanned.cut {
+            return Err(invalid(path, "rows", "it ends in a cut line: a shard that did not finish?"));
         }
-        for r in these {
-            if !seen.insert((r.case, r.solver.clone())) {
-                return Err(super::invalid(
-                    path,
-                    "case",
-                    format!("case {}, solver {} appears twice: is a shard given twice?", r.case, r.solver),
-                ));
-            }
-            rows.push(r);
+        head.get_or_insert(scanned.header);
+    }
+    blocks.sort_by_key(|b| (b.case, b.file, b.start));
+    for w in blocks.windows(2) {
+        if w[0].case == w[1].case {
+            let (a, b) = (&inputs[w[0].file as usize], &inputs[w[1].file as usize]);
+            let place = if a == b {
+                format!("twice in {}", a.display())
+            } else {
+                format!("in {} and {}", a.display(), b.display())
+            };
+            return Err(invalid(b, "case", format!("case {} appears {place}: is a shard given twice?", w[0].case)));
         }
     }
-    sort_rows(&mut rows);
-    let keys = header.map(|h| h.keys).unwrap_or_default();
-    write_csv(out_csv, &keys, &rows)?;
-    Ok(rows.len())
+    if let Some(e) = &expansion {
+        let missing = missing_cases(e.len(), &blocks);
+        if let Some(first) = missing.first() {
+            return Err(invalid(
+                spec.expect("with an expansion"),
+                "case",
+                format!(
+                    "{} of its cases are in none of the inputs (the first: case {first}): a shard missing or not \
+                     finished?",
+                    missing.len()
+                ),
+            ));
+        }
+    }
+    let header = head.expect("at least one input");
+    Ok(journal::write_sorted(inputs, blocks, &header, out_csv)?.rows)
+}
+
+/// The cases below `n` that no block holds (blocks sorted by case).
+fn missing_cases(n: usize, blocks: &[Block]) -> Vec<usize> {
+    let mut present = blocks.iter().map(|b| b.case as usize).peekable();
+    (0..n)
+        .filter(|&i| {
+            while present.next_if(|&c| c < i).is_some() {}
+            present.peek() != Some(&i)
+        })
+        .collect()
+}
+
+/// A block of a merge's input belongs to the spec: its case is one of the spec's, with the case's parameters.
+fn check_case(e: &super::Expansion, path: &Path, b: Block, rows: &[SweepRow]) -> Result<()> {
+    e.check_rows(b.case as usize, rows).map_err(|why| invalid(path, "case", format!("case {}: {why}", b.case)))
 }

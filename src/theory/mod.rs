@@ -76,6 +76,7 @@ pub mod mcewen;
 pub mod mindlin_deresiewicz;
 pub mod special;
 pub mod spence;
+pub mod spence_coupled;
 pub mod stress;
 #[cfg(test)]
 mod test_support;
@@ -88,6 +89,7 @@ pub use mcewen::*;
 pub use mindlin_deresiewicz::*;
 pub use special::*;
 pub use spence::*;
+pub use spence_coupled::*;
 pub use stress::*;
 
 use crate::material::{self, Material};

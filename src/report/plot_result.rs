@@ -113,8 +113,8 @@ pub fn plot_result(json: &Path, out: Option<&Path>) -> Result<Plotted> {
     if !report.steps.is_empty() {
         // A load path: the loop (or the approach to steady rolling) and the stick zone along it, with the theory
         // where it applies, as the report draws them.
-        let mut figs = crate::report::Figs::new(&ctx.out, "");
-        crate::report::path_figures(&ctx.stem, &report, &mut String::new(), &mut figs)?;
+        let mut figs = super::Figs::new(&ctx.out, "");
+        super::path_figures(&ctx.stem, &report, &mut String::new(), &mut figs)?;
         done.files.extend(figs.list.into_iter().map(|(_, f)| ctx.out.join(f)));
     }
     Ok(done)

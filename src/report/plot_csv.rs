@@ -12,10 +12,10 @@
 //!
 //! Files are written into the output folder as `STEM-WHAT.svg` (STEM the table's file name without `.csv`).
 
+use super::plot_result::Plotted;
+use super::{Figs, SweepFigures};
 use crate::error::{Error, Result};
 use crate::plot::{Chart, Series, Style};
-use crate::plot_result::Plotted;
-use crate::report::{Figs, SweepFigures};
 use crate::scene::Scene;
 use crate::sweep::Analysis;
 use crate::theory::TangentialPath;
@@ -118,10 +118,10 @@ fn path_table(csv: &Path, stem: &str, out: &Path, scene: Option<&Scene>) -> Resu
         let runs = by_solver.entry(r.solver.as_str()).or_default();
         runs.push((runs.len() + 1, r));
     }
-    let md = scene.and_then(|s| Some((s, crate::report::md_pattern(s)?)));
+    let md = scene.and_then(|s| Some((s, super::md_pattern(s)?)));
     let (lu, fu) = match scene.and_then(Scene::units) {
         Some(u) => {
-            let u = crate::report::Units::parse(Some(u));
+            let u = super::Units::parse(Some(u));
             (u.length.clone(), u.line_load())
         }
         None => ("L".to_string(), "F/L".to_string()),
@@ -144,8 +144,7 @@ fn path_table(csv: &Path, stem: &str, out: &Path, scene: Option<&Scene>) -> Resu
         approach = approach.add(Series::new(*solver, d, Style::LineMarkers));
     }
     if let Some((s, (p, q_star))) = md {
-        loop_ =
-            loop_.add(Series::new("Mindlin–Deresiewicz (2D)", crate::report::md_curve(s, p, q_star), Style::Dashed));
+        loop_ = loop_.add(Series::new("Mindlin–Deresiewicz (2D)", super::md_curve(s, p, q_star), Style::Dashed));
         if let Some((_, runs)) = by_solver.iter().next() {
             let h = crate::theory::Hertz2D::from_load(p, s.radius(), s.contact_modulus());
             let c: Vec<(f64, f64)> = runs

@@ -1,0 +1,485 @@
+//! Before a sweep runs ([`Plan::new`]): the size guard, the cases already done (`--resume`), every grid point
+//! validated, the cases to run grouped by the model they share, and an estimate of time and memory
+//! ([`Plan::summary`]). Nothing is written until [`Plan::run`].
+//!
+//! **Bounded memory.** Every case's scene is built and validated in one streaming pass, in blocks of
+//! [`SURVEY_BLOCK`] cases validated in parallel, and dropped: what the plan keeps is 4 bytes per case to run (its
+//! number, in its model's group) and a bit per case (done or not). A case's scene is built again when it runs.
+//!
+//! **Resume.** With `--resume`, the rows already written count: the journal's (`OUT.partial`, the rows of a run that
+//! was stopped) or, without one, the output's (a finished sweep CSV). A row counts for its case only if its
+//! parameters are that case's in the spec, and every case of the file must belong to this sweep and shard: a file
+//! written for another spec, shard or version of rollbem is refused, never mixed in. A journal's last case is run
+//! again (its rows may be incomplete: [`super::journal`]), and a cut last line is dropped.
+//!
+//! **Estimate.** From the sizes of each case's dense matrices: a model's build costs about
+//! `k·N² + 2.5e-10·(2N)³` s and `24·(2N)²` bytes for a BEM wheel of N nodes (k = 2e-7 s for constant elements, 8e-7 s
+//! for quadratic ones), `1.5e-7·n²` s and `32·n²` bytes for a half-plane of n strips; a solver run on m
+//! complementarity unknowns about 0.5 ms plus `4e-10·m³` s (Lemke), `1e-7·m²` s (active set), `5e-9·m³` s (PGS) or
+//! `2e-9·m³` s (the QP solvers), per substep, and `24·m²` bytes (`8·m²` for the active set). The constants were fitted
+//! on this project's 2-core development machine (BEM meshes up to 2688 unknowns, half-planes up to 3200 strips). The
+//! estimate is rough — on the six reference sweeps it came out between 0.6× and 2.5× the measured time and between
+//! 0.6× and 1.0× the measured peak memory — and is meant to tell minutes from days and megabytes from the machine's
+//! memory.
+
+use super::journal::{self, Block, Target};
+use super::row::header;
+use super::{invalid, Expansion, Shard, SweepSpec, LARGE_SWEEP_CASES, REPEAT_BELOW_S};
+use crate::error::Result;
+use crate::pipeline::Model;
+use crate::scene::{CounterBody, ElementKind, Loading, Scene};
+use crate::solvers::SolverId;
+use rayon::prelude::*;
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+/// Cases validated together (in parallel) in the validation pass; only their model keys are kept.
+pub const SURVEY_BLOCK: usize = 1024;
+
+/// Most cases solved on one model: a larger group of cases sharing bodies and mesh is cut into runs of this many,
+/// each with its own model, so that it spreads over the cores (the build is then repeated once per 256 cases).
+pub const UNIT_CASES: usize = 256;
+
+/// Memory of the process before any model: the binary, the allocator, the threads (measured: 8–10 MB).
+const BASE_BYTES: f64 = 10e6;
+
+/// How a sweep runs (the `sweep` command's flags).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct SweepOptions {
+    /// Run only this shard's cases.
+    pub shard: Option<Shard>,
+    /// Go on from the rows already written (the journal of a stopped run, or a finished output) instead of
+    /// starting afresh.
+    pub resume: bool,
+    /// Run a grid of more than [`LARGE_SWEEP_CASES`] cases.
+    pub allow_large: bool,
+    /// Show a progress bar (only when standard error is a terminal).
+    pub progress: bool,
+}
+
+/// Where a run starts from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Start {
+    /// A new journal.
+    Fresh,
+    /// The journal, kept up to this byte: its cases known complete.
+    Journal(u64),
+    /// A new journal holding the output's rows (a finished sweep CSV).
+    Output,
+}
+
+/// The counts of a plan.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Counts {
+    /// Cases of the whole sweep.
+    pub cases: usize,
+    /// Cases of this shard (all without one).
+    pub mine: usize,
+    /// Of those, already done (`--resume`).
+    pub done: usize,
+    /// Of those, to run now.
+    pub to_run: usize,
+    /// Models the cases to run are solved on.
+    pub models: usize,
+    /// The journal's last case, run again (`--resume` after a stop).
+    pub redone: Option<usize>,
+}
+
+/// An estimate of a run's time and memory (see the module docs for the cost model).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Estimate {
+    /// Seconds of work, summed over the model builds, solves and timing repeats.
+    pub work_s: f64,
+    /// Threads the run uses.
+    pub threads: usize,
+    /// The largest memory of one run in flight: a model and one case's problem (bytes).
+    pub unit_bytes: f64,
+    /// What the plan keeps (bytes): 4 per case to run, a bit per case.
+    pub plan_bytes: f64,
+}
+
+impl Estimate {
+    /// Wall-clock seconds.
+    pub fn seconds(&self) -> f64 {
+        self.work_s / self.threads.max(1) as f64
+    }
+
+    /// Peak resident memory (bytes).
+    pub fn peak_bytes(&self) -> f64 {
+        BASE_BYTES + self.threads.max(1) as f64 * self.unit_bytes + self.plan_bytes
+    }
+}
+
+/// A sweep ready to run: checked, validated, grouped, estimated.
+#[derive(Debug)]
+pub struct Plan {
+    pub(crate) spec: SweepSpec,
+    pub(crate) expansion: Expansion,
+    pub(crate) keys: Vec<String>,
+    pub(crate) options: SweepOptions,
+    pub(crate) out: PathBuf,
+    pub(crate) journal: PathBuf,
+    pub(crate) start: Start,
+    /// The cases to run, in runs sharing one model.
+    pub(crate) units: Vec<Vec<u32>>,
+    counts: Counts,
+    estimate: Estimate,
+}
+
+/// One bit per case.
+#[derive(Debug, Clone)]
+pub(crate) struct Bits(Vec<u64>);
+
+impl Bits {
+    fn new(n: usize) -> Bits {
+        Bits(vec![0; n.div_ceil(64)])
+    }
+    fn get(&self, i: usize) -> bool {
+        self.0[i / 64] >> (i % 64) & 1 == 1
+    }
+    fn set(&mut self, i: usize) {
+        self.0[i / 64] |= 1 << (i % 64);
+    }
+}
+
+/// The journal of an output: `OUT.partial` beside a file; for standard output or a FIFO, a file in the temporary
+/// folder (such a run cannot be resumed).
+fn journal_path(out: &Path, target: &Target, name: &str) -> PathBuf {
+    match target {
+        Target::File(_) => {
+            let mut p = out.as_os_str().to_owned();
+            p.push(".partial");
+            PathBuf::from(p)
+        }
+        _ => std::env::temp_dir().join(format!("rollbem-sweep-{name}-{}.partial", std::process::id())),
+    }
+}
+
+impl Plan {
+    /// Plan a sweep of the spec at `spec_path` into `out` (see the module docs). Bad input — the spec, a grid point,
+    /// a grid over the size limit without [`SweepOptions::allow_large`], `--resume` on an output that cannot be
+    /// resumed or a file to resume from that is not this sweep's — is an error before anything is written; so is an
+    /// output that cannot be written (a folder, a link to nothing).
+    pub fn new(spec_path: &Path, out: &Path, options: &SweepOptions) -> Result<Plan> {
+        let spec = SweepSpec::from_file(spec_path)?;
+        let cases = spec.len();
+        if cases > LARGE_SWEEP_CASES && !options.allow_large {
+            return Err(invalid(
+                spec_path,
+                "grid",
+                format!(
+                    "{cases} cases, more than {LARGE_SWEEP_CASES}, the most a sweep runs without `--allow-large`: \
+                     pass `--allow-large` to run it (`--dry-run --allow-large` prints its estimate of time and \
+                     memory without running it), or split the grid"
+                ),
+            ));
+        }
+        // Per-case messages name the spec by its file name only: the CSV must not depend on where a shard ran.
+        let label = PathBuf::from(spec_path.file_name().unwrap_or(spec_path.as_os_str()));
+        let expansion = spec.expand(spec_path, &label)?;
+        let keys = spec.keys();
+        let target = Target::of(out)?;
+        let journal = journal_path(out, &target, &spec.name);
+        let shard = options.shard;
+        let mine = |i: usize| shard.is_none_or(|s| s.contains(i));
+        let mut done = Bits::new(cases);
+        let mut counts = Counts { cases, mine: (0..cases).filter(|&i| mine(i)).count(), ..Counts::default() };
+        let start = if !options.resume {
+            Start::Fresh
+        } else if !matches!(target, Target::File(_)) {
+            return Err(invalid(
+                out,
+                "--resume",
+                "a sweep written to standard output or a FIFO keeps no journal to resume: give a file (--out)",
+            ));
+        } else {
+            let resumed = Resume { expansion: &expansion, keys: &keys, shard, done: &mut done };
+            let (start, n, redone) = resumed.read(&journal, out)?;
+            counts.done = n;
+            counts.redone = redone;
+            start
+        };
+        let survey = survey(&expansion, |i| mine(i) && !done.get(i), spec.timing_repeats)?;
+        counts.to_run = survey.units.iter().map(Vec::len).sum();
+        counts.models = survey.models;
+        let serial = spec.timing_repeats > 1;
+        let threads = if serial { 1 } else { rayon::current_num_threads().min(survey.units.len()).max(1) };
+        let estimate = Estimate {
+            work_s: survey.work_s,
+            threads,
+            unit_bytes: survey.unit_bytes,
+            plan_bytes: 4.0 * counts.to_run as f64 + cases as f64 / 8.0,
+        };
+        Ok(Plan {
+            spec,
+            expansion,
+            keys,
+            options: *options,
+            out: out.to_path_buf(),
+            journal,
+            start,
+            units: survey.units,
+            counts,
+            estimate,
+        })
+    }
+
+    /// The counts: cases, this shard's, done, to run, models.
+    pub fn counts(&self) -> Counts {
+        self.counts
+    }
+
+    /// The estimate of time and memory.
+    pub fn estimate(&self) -> Estimate {
+        self.estimate
+    }
+
+    /// Where the rows stream while the sweep runs.
+    pub fn journal(&self) -> &Path {
+        &self.journal
+    }
+
+    /// What the sweep will do, in a few lines: the cases, the shard, what is done already, the estimate.
+    pub fn summary(&self) -> String {
+        let c = &self.counts;
+        let mut s = format!("sweep `{}`: {} cases", self.spec.name, c.cases);
+        if let Some(k) = self.options.shard {
+            s += &format!(", shard {k}: {} of them", c.mine);
+        }
+        if self.options.resume {
+            let from = match self.start {
+                Start::Output => self.out.display().to_string(),
+                _ => self.journal.display().to_string(),
+            };
+            s += &format!("; {} already done (in {from})", c.done);
+            if let Some(case) = c.redone {
+                s += &format!(", case {case} run again (the last one written before the stop)");
+            }
+        }
+        let e = &self.estimate;
+        s += &format!(
+            "\n{} to run on {} model{}: estimate {} on {} thread{}, peak memory {} (a rough cost model: README, \
+             Sweeps)",
+            c.to_run,
+            c.models,
+            if c.models == 1 { "" } else { "s" },
+            duration(e.seconds()),
+            e.threads,
+            if e.threads == 1 { "" } else { "s" },
+            bytes(e.peak_bytes()),
+        );
+        s
+    }
+}
+
+/// `3.2 s`, `4.5 min`, `2.1 h`, `3.0 days`.
+fn duration(s: f64) -> String {
+    match s {
+        s if s < 60.0 => format!("{s:.1} s"),
+        s if s < 3600.0 => format!("{:.1} min", s / 60.0),
+        s if s < 86400.0 => format!("{:.1} h", s / 3600.0),
+        s => format!("{:.1} days", s / 86400.0),
+    }
+}
+
+/// `23 MB`, `1.4 GB`.
+fn bytes(b: f64) -> String {
+    if b < 1e9 {
+        format!("{:.0} MB", b / 1e6)
+    } else {
+        format!("{:.1} GB", b / 1e9)
+    }
+}
+
+/// Reading the rows already written, for `--resume`.
+struct Resume<'a> {
+    expansion: &'a Expansion,
+    keys: &'a [String],
+    shard: Option<Shard>,
+    done: &'a mut Bits,
+}
+
+impl Resume<'_> {
+    /// Mark the cases done by the journal (its last case excepted) or, without a journal, by the finished output.
+    /// Returns where to start, the number of cases done and the journal's last case (run again).
+    fn read(self, journal: &Path, out: &Path) -> Result<(Start, usize, Option<usize>)> {
+        if journal.exists() {
+            let mut last: Option<Block> = None;
+            let mut n = 0;
+            let head = header(self.keys);
+            let scanned = journal::scan(journal, 0, true, Some(head.as_slice()), |b, rows| {
+                self.check(journal, b, rows, last.map(|l| l.case))?;
+                if let Some(l) = last.replace(b) {
+                    self.done.set(l.case as usize);
+                    n += 1;
+                }
+                Ok(())
+            })?;
+            let keep = last.map_or(scanned.rows_start, |l| l.start);
+            Ok((Start::Journal(keep), n, last.map(|l| l.case as usize)))
+        } else if out.exists() {
+            let mut n = 0;
+            let head = header(self.keys);
+            let scanned = journal::scan(out, 0, false, Some(head.as_slice()), |b, rows| {
+                self.check(out, b, rows, None)?;
+                self.done.set(b.case as usize);
+                n += 1;
+                Ok(())
+            })?;
+            if scanned.cut {
+                return Err(invalid(out, "--resume", "it ends in a cut line: it is not a finished sweep CSV"));
+            }
+            Ok((Start::Output, n, None))
+        } else {
+            Ok((Start::Fresh, 0, None))
+        }
+    }
+
+    /// A block of rows counts for its case only if the case is this sweep's and shard's, its parameters are the
+    /// case's, and the case has not been seen before (`pending`: the block before, not yet marked).
+    fn check(&self, path: &Path, b: Block, rows: &[super::SweepRow], pending: Option<u32>) -> Result<()> {
+        let case = b.case as usize;
+        let refuse = |why: String| {
+            invalid(
+                path,
+                "--resume",
+                format!("case {case}: {why}: the file was written for another sweep spec, shard or version; remove it or run without --resume"),
+            )
+        };
+        if self.shard.is_some_and(|s| !s.contains(case)) {
+            return Err(refuse(format!("not a case of shard {}", self.shard.expect("checked"))));
+        }
+        if case < self.expansion.len() && (self.done.get(case) || pending == Some(b.case)) {
+            return Err(refuse("its rows appear twice".into()));
+        }
+        self.expansion.check_rows(case, rows).map_err(refuse)
+    }
+}
+
+/// The key of the model a scene is solved on: cases with equal keys share bodies, mesh, zone and counter-body
+/// ([`Model::shares_source`]) and what they need of the model ([`Model::needs`]). (A run checks the sharing again
+/// before solving on a model, so the key only decides which cases are tried together.)
+fn model_key(scene: &Scene) -> String {
+    format!(
+        "{:?}|{:?}|{:?}|{:?}|{:?}",
+        scene.wheel(),
+        scene.body(),
+        scene.zone(),
+        scene.counter_body(),
+        Model::needs(scene)
+    )
+}
+
+/// The rough costs of a case (module docs): its model's build (seconds, bytes) and its solves (seconds, bytes).
+#[derive(Debug, Clone, Copy, Default)]
+struct Costs {
+    build_s: f64,
+    model_bytes: f64,
+    solve_s: f64,
+    solve_bytes: f64,
+}
+
+fn costs(scene: &Scene) -> Costs {
+    let per_element = |e: ElementKind| if e == ElementKind::Quadratic { 3.0 } else { 1.0 };
+    let strips = scene.zone().elements as f64;
+    let half_plane = (1.5e-7 * strips * strips, 32.0 * strips * strips);
+    let (mut build_s, mut model_bytes) = match scene.bem_wheel() {
+        Some((_, element, other)) => {
+            let nodes = (scene.zone().elements + other) as f64 * per_element(element);
+            let k = if element == ElementKind::Quadratic { 8e-7 } else { 2e-7 };
+            let n = 2.0 * nodes;
+            (k * nodes * nodes + 2.5e-10 * n * n * n, 24.0 * n * n)
+        }
+        None => half_plane,
+    };
+    if matches!(scene.counter_body(), CounterBody::HalfPlane { .. }) {
+        build_s += half_plane.0;
+        model_bytes += half_plane.1;
+    }
+    let contact = strips * per_element(scene.element());
+    let m = if Model::needs(scene).0 { 3.0 * contact + 2.0 } else { contact + 2.0 };
+    let set = scene.solvers();
+    let all = crate::solvers::REGISTRY.iter().filter(|e| set.all && e.in_all && !set.names(e.id)).map(|e| e.id);
+    let substeps = match scene.loading() {
+        Loading::Drive(_) => 1.0,
+        Loading::Path(steps) => steps.iter().map(|s| s.substeps as f64).sum(),
+    };
+    let (mut solve_s, mut solve_bytes) = (0.0, 0.0f64);
+    for id in set.named.iter().copied().chain(all) {
+        let (s, b) = solver_cost(id, m);
+        solve_s += substeps * (5e-4 + s);
+        solve_bytes = solve_bytes.max(b);
+    }
+    Costs { build_s, model_bytes, solve_s, solve_bytes }
+}
+
+/// A solver's rough time (s) and memory (bytes) on m complementarity unknowns, beyond a fixed 0.5 ms a run
+/// (module docs).
+fn solver_cost(id: SolverId, m: f64) -> (f64, f64) {
+    match id {
+        SolverId::Lemke | SolverId::LemkeDense => (4e-10 * m * m * m, 24.0 * m * m),
+        SolverId::ActiveSet => (1e-7 * m * m, 8.0 * m * m),
+        SolverId::Pgs => (5e-9 * m * m * m, 24.0 * m * m),
+        SolverId::Clarabel | SolverId::NormtangQp => (2e-9 * m * m * m, 24.0 * m * m),
+    }
+}
+
+/// The cases to run, in units sharing a model, and the estimate's sums.
+struct Survey {
+    units: Vec<Vec<u32>>,
+    models: usize,
+    work_s: f64,
+    unit_bytes: f64,
+}
+
+/// The cases of one model key, in enumeration order.
+struct Group {
+    cases: Vec<u32>,
+    costs: Costs,
+    solve_s: f64,
+    solve_bytes: f64,
+}
+
+/// The validation pass: build and validate every case's scene (all shards'), in blocks validated in parallel,
+/// keeping only the model key of the cases to run (`take`). The first case that does not validate, in enumeration
+/// order, is the error.
+fn survey(expansion: &Expansion, take: impl Fn(usize) -> bool + Sync, repeats: usize) -> Result<Survey> {
+    let n = expansion.len();
+    let mut index: HashMap<String, usize> = HashMap::new();
+    let mut groups: Vec<Group> = Vec::new();
+    let mut repeat_s = 0.0;
+    for start in (0..n).step_by(SURVEY_BLOCK) {
+        let end = (start + SURVEY_BLOCK).min(n);
+        let found: Vec<Result<Option<(String, Costs)>>> = (start..end)
+            .into_par_iter()
+            .map(|i| {
+                let case = expansion.case(i)?;
+                Ok(take(i).then(|| (model_key(&case.scene), costs(&case.scene))))
+            })
+            .collect();
+        for (i, f) in (start..end).zip(found) {
+            let Some((key, c)) = f? else { continue };
+            let g = *index.entry(key).or_insert_with(|| {
+                groups.push(Group { cases: Vec::new(), costs: c, solve_s: 0.0, solve_bytes: 0.0 });
+                groups.len() - 1
+            });
+            let g = &mut groups[g];
+            // A case number fits in 4 bytes: a spec has at most MAX_CASES < 2^32 cases.
+            g.cases.push(i as u32);
+            g.solve_s += c.solve_s;
+            g.solve_bytes = g.solve_bytes.max(c.solve_bytes);
+            if repeats > 1 && c.build_s + c.solve_s < REPEAT_BELOW_S {
+                repeat_s += repeats as f64 * (c.build_s + c.solve_s);
+            }
+        }
+    }
+    let mut survey = Survey { units: Vec::new(), models: 0, work_s: repeat_s, unit_bytes: 0.0 };
+    for g in groups {
+        let units = g.cases.chunks(UNIT_CASES).map(<[u32]>::to_vec).collect::<Vec<_>>();
+        survey.models += units.len();
+        survey.work_s += units.len() as f64 * g.costs.build_s + g.solve_s;
+        survey.unit_bytes = survey.unit_bytes.max(g.costs.model_bytes + g.solve_bytes);
+        survey.units.extend(units);
+    }
+    Ok(survey)
+}
