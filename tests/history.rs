@@ -134,8 +134,9 @@ fn spence_outside_the_goodman_approximation_matches_the_coupled_reference() {
     // Python computation), c/a = stick half-width over contact half-width, to the two resolutions (reference: 2
     // of its elements; rollbem: one element over the contact half-width). Spence's closed form (the Goodman
     // approximation, 0.744) is outside its range here: the computed c/a differs from it by more than 0.04.
-    let s = Scene::from_file(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/reference/scenes/spence-steel-rigid.toml")))
-        .unwrap();
+    let s =
+        Scene::from_file(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/reference/scenes/spence-steel-rigid.toml")))
+            .unwrap();
     let beta = s.dundurs_beta();
     assert!((beta - 0.4 / 1.4).abs() < 1e-12, "β = {beta}");
     let rep = run(&s);
