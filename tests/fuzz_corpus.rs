@@ -102,12 +102,13 @@ fn scene_inputs_are_refused_with_a_message_or_run_on_a_model_without_panicking()
             Ok(scene) => match bounded::run(&scene) {
                 // A regression input is also run as written, its budgets not capped (the Lemke pivot-limit overflow
                 // needs its huge `max_pivots_per_unknown`); they are few and small.
-                Ran::Reported { .. } if p.starts_with(root().join("fuzz/regressions")) => {
+                Ran::Reported { solved, .. } if p.starts_with(root().join("fuzz/regressions")) => {
                     let model = Model::build(&scene).unwrap_or_else(|e| panic!("{}: {e}", p.display()));
                     if let Err(e) = model.solve(&scene) {
                         assert!(has_message(&e), "{}: an error without a message", p.display());
                     }
                     reported += 1;
+                    solved_runs += solved;
                     regressions_uncapped += 1;
                 }
                 Ran::TooLarge => too_large += 1,
