@@ -45,7 +45,8 @@ pub enum Ran {
     },
 }
 
-/// The elements of a scene's mesh (contact zone plus, for the BEM wheel, the rest of the outer boundary).
+/// The elements of a scene's mesh: the contact zone's plus, for the BEM wheel, the rest of the outer boundary's (a
+/// hub circle's, in proportion to its circumference, are not counted).
 pub fn elements(scene: &Scene) -> usize {
     let other = match scene.body() {
         Body::Bem { other_elements, .. } => *other_elements,
