@@ -196,3 +196,25 @@ fn sweep_inputs_read_within_the_case_limit_or_are_refused() {
     eprintln!("{} sweep inputs: {invalid} refused, {expanded} expanded into their cases", all.len());
     assert!(invalid > 0 && expanded > 0, "{} sweep inputs, {invalid} refused, {expanded} expanded", all.len());
 }
+
+/// `fuzz/regressions/lemke-nan-residual-max-load.toml` (found by the `scene` target): a normal load of f64::MAX made
+/// Lemke's complementarity residual NaN, which `Residuals::max` dropped (`f64::max(0, NaN) = 0`), so the run was
+/// reported `solved` with a NaN residual. A NaN residual is now refused like one above the bound.
+#[test]
+fn a_nan_residual_is_not_a_solved_run() {
+    let p = root().join("fuzz/regressions/lemke-nan-residual-max-load.toml");
+    let scene = Scene::from_toml(&text(&p), &p).unwrap();
+    let report = rollbem::pipeline::run_scene(&scene).unwrap();
+    let mut statuses = Vec::new();
+    for run in &report.runs {
+        statuses.push(format!("{} {}", run.solver, run.status));
+        if let Some(res) = run.residuals {
+            assert!(!res.max().is_nan(), "{}: {} with residuals {res:?}", run.solver, run.status);
+        }
+        if run.status == rollbem::status::Status::Solved {
+            let res = run.residuals.unwrap();
+            assert!(res.complementarity.is_finite(), "{}: solved with residuals {res:?}", run.solver);
+        }
+    }
+    eprintln!("{statuses:?}");
+}
