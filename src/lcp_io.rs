@@ -206,17 +206,29 @@ fn read_sparse_block(tok: &mut Tokens, n: usize) -> Result<Vec<Block>> {
         // SBM_write_in_file writes only this 0 for a matrix without blocks: M is zero.
         return Ok(Vec::new());
     }
-    let mut block_count = |name: &str, dim: &str| -> Result<usize> {
-        let nb = tok.integer(&format!("{name} (the number of block {dim})"))?;
-        if nb == 0 || nb > n {
-            return Err(tok.error(format!("{name} is {nb}: expected 1 ≤ {name} ≤ n = {n}")));
-        }
-        Ok(nb)
-    };
-    let nb0 = block_count("blocknumber0", "rows")?;
-    let nb1 = block_count("blocknumber1", "columns")?;
+    let nb0 = block_count(tok, n, "blocknumber0", "rows")?;
+    let nb1 = block_count(tok, n, "blocknumber1", "columns")?;
     let start0 = cumulative_sizes(tok, nb0, n, "blocksize0", "row")?;
     let start1 = cumulative_sizes(tok, nb1, n, "blocksize1", "column")?;
+    let (filled1, filled2) = fill_counts(tok, nbblocks, nb0, nb1)?;
+    let rowptr = row_pointers(tok, filled1, filled2)?;
+    let blockcol = block_columns(tok, filled2, nb1)?;
+    check_no_block_twice(tok, &rowptr, &blockcol, nb1)?;
+    block_values(tok, &rowptr, &blockcol, &start0, &start1)
+}
+
+/// Read `blocknumber0` or `blocknumber1`: the number of block rows or columns, 1 to n.
+fn block_count(tok: &mut Tokens, n: usize, name: &str, dim: &str) -> Result<usize> {
+    let nb = tok.integer(&format!("{name} (the number of block {dim})"))?;
+    if nb == 0 || nb > n {
+        return Err(tok.error(format!("{name} is {nb}: expected 1 ≤ {name} ≤ n = {n}")));
+    }
+    Ok(nb)
+}
+
+/// Read `filled1` (the number of row pointers) and `filled2` (the number of stored blocks, which must be
+/// `nbblocks` and fit in the `nb0 × nb1` block positions).
+fn fill_counts(tok: &mut Tokens, nbblocks: usize, nb0: usize, nb1: usize) -> Result<(usize, usize)> {
     let filled1 = tok.integer("filled1 (the number of row pointers)")?;
     if filled1 < 2 || filled1 > nb0 + 1 {
         return Err(tok.error(format!(
@@ -232,6 +244,11 @@ fn read_sparse_block(tok: &mut Tokens, n: usize) -> Result<Vec<Block>> {
     if filled2 > nb0 * nb1 {
         return Err(tok.error(format!("filled2 is {filled2}: more blocks than the {nb0} × {nb1} block positions of M")));
     }
+    Ok((filled1, filled2))
+}
+
+/// Read the `filled1` compressed-row pointers `index1_data`: starting at 0, never decreasing, ending at `filled2`.
+fn row_pointers(tok: &mut Tokens, filled1: usize, filled2: usize) -> Result<Vec<usize>> {
     let mut rowptr = Vec::with_capacity(filled1);
     for r in 0..filled1 {
         let p = tok.integer(&format!("index1_data[{r}] (row pointer of block row {r})"))?;
@@ -253,6 +270,11 @@ fn read_sparse_block(tok: &mut Tokens, n: usize) -> Result<Vec<Block>> {
             rowptr[filled1 - 1]
         )));
     }
+    Ok(rowptr)
+}
+
+/// Read the block column `index2_data` of each of the `filled2` stored blocks (each below `nb1`).
+fn block_columns(tok: &mut Tokens, filled2: usize, nb1: usize) -> Result<Vec<usize>> {
     let mut blockcol = Vec::with_capacity(tok.room_for(filled2));
     for b in 0..filled2 {
         let c = tok.integer(&format!("index2_data[{b}] (block column of block {b})"))?;
@@ -261,9 +283,14 @@ fn read_sparse_block(tok: &mut Tokens, n: usize) -> Result<Vec<Block>> {
         }
         blockcol.push(c);
     }
-    // The same block twice can only be in the same block row: remember, per block column, the last row using it.
+    Ok(blockcol)
+}
+
+/// Refuse a block stored twice. The same block twice can only be in the same block row: remember, per block
+/// column, the last row using it.
+fn check_no_block_twice(tok: &Tokens, rowptr: &[usize], blockcol: &[usize], nb1: usize) -> Result<()> {
     let mut last_row = vec![usize::MAX; nb1];
-    for r in 0..filled1 - 1 {
+    for r in 0..rowptr.len() - 1 {
         for b in rowptr[r]..rowptr[r + 1] {
             let c = blockcol[b];
             if std::mem::replace(&mut last_row[c], r) == r {
@@ -273,8 +300,20 @@ fn read_sparse_block(tok: &mut Tokens, n: usize) -> Result<Vec<Block>> {
             }
         }
     }
-    let mut blocks = Vec::with_capacity(filled2);
-    for r in 0..filled1 - 1 {
+    Ok(())
+}
+
+/// Read the stored blocks in order, each its number and then its entries, column-major; block r, c spans rows
+/// `start0[r] .. start0[r + 1]` and columns `start1[c] .. start1[c + 1]`.
+fn block_values(
+    tok: &mut Tokens,
+    rowptr: &[usize],
+    blockcol: &[usize],
+    start0: &[usize],
+    start1: &[usize],
+) -> Result<Vec<Block>> {
+    let mut blocks = Vec::with_capacity(blockcol.len());
+    for r in 0..rowptr.len() - 1 {
         for b in rowptr[r]..rowptr[r + 1] {
             let c = blockcol[b];
             let number = tok.integer(&format!("the number of block {b}"))?;

@@ -7,6 +7,8 @@
 //! them). Expanding must return `Ok` with `len()` cases, or `Err`, never panic. Nothing is run.
 #![no_main]
 
+mod toml_mutator;
+
 use libfuzzer_sys::fuzz_target;
 use rollbem::sweep::{SweepSpec, MAX_CASES};
 use std::path::{Path, PathBuf};
@@ -17,6 +19,12 @@ const MAX_FUZZ_CASES: usize = 64;
 fn reference(rel: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join("reference").join(rel)
 }
+
+// A quarter libFuzzer's byte-level mutations, three quarters structure-aware ones that keep the input TOML
+// (`toml_mutator.rs`).
+libfuzzer_sys::fuzz_mutator!(|data: &mut [u8], size: usize, max_size: usize, seed: u32| {
+    toml_mutator::mutate(data, size, max_size, seed, include_str!("../dicts/sweep_spec.dict"))
+});
 
 fuzz_target!(|data: &[u8]| {
     let text = String::from_utf8_lossy(data);

@@ -1,0 +1,148 @@
+//! A valid scene run through the model API with its work bounded, and the checks on what comes back: shared by the
+//! `scene` fuzz target and `tests/fuzz_corpus.rs` (which includes this file), so that a corpus input replayed by
+//! `cargo test` is run exactly as the fuzzer ran it.
+//!
+//! A scene whose mesh has more than [`MAX_RUN_ELEMENTS`] elements (contact + other), or whose load path has more
+//! than [`MAX_SUBSTEPS`] substeps, is not run (it is only parsed and validated). A scene that is run has its
+//! iteration budgets capped (every solver: Lemke 20 pivots per unknown, active set 50 iterations, PGS 2000 sweeps
+//! and 50 outer iterations, NORM-TANG/QP 50 outer iterations, clarabel 100 iterations) and a `[stresses]` grid cut
+//! to at most 4 × 4 points, through [`Scene::edit`], so it is validated again. Then [`Model::build`], and on `Ok`
+//! [`Model::solve`] and [`Model::lcp`]: each returns `Ok` or an `Err` with a message, never panics, and a report's
+//! runs are consistent: a `solved` run has finite residuals, resultants and nodal values; an unsolved one has no
+//! residuals, no resultants and a message.
+
+use rollbem::pipeline::Model;
+use rollbem::scene::{Body, Scene};
+use rollbem::status::Status;
+
+/// Largest mesh run (contact + other elements of the wheel's outer boundary): one execution stays within
+/// milliseconds.
+pub const MAX_RUN_ELEMENTS: usize = 24;
+
+/// Largest number of substeps of a load path run (each is one solve per solver).
+pub const MAX_SUBSTEPS: usize = 16;
+
+/// Largest `[stresses]` grid side run (the grid is cut to this many points along x and along depth).
+pub const MAX_STRESS_SIDE: usize = 4;
+
+/// What happened to a valid scene.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ran {
+    /// Its mesh or load path is beyond the bounds: not run.
+    TooLarge,
+    /// Capping its budgets made it invalid (an `Err` with a message): not run.
+    CapRefused,
+    /// [`Model::build`] returned an `Err` with a message.
+    BuildRefused,
+    /// [`Model::solve`] returned an `Err` with a message.
+    SolveRefused,
+    /// Solved: a report with this many runs, of which `solved` ended `solved`.
+    Reported {
+        /// Runs in the report.
+        runs: usize,
+        /// Runs with status `solved`.
+        solved: usize,
+    },
+}
+
+/// The elements of a scene's mesh: the contact zone's plus, for the BEM wheel, the rest of the outer boundary's (a
+/// hub circle's, in proportion to its circumference, are not counted).
+pub fn elements(scene: &Scene) -> usize {
+    let other = match scene.body() {
+        Body::Bem { other_elements, .. } => *other_elements,
+        Body::HalfPlane { .. } => 0,
+    };
+    scene.zone().elements.saturating_add(other)
+}
+
+/// The scene with its iteration budgets and stress grid capped, or `None` when it is too large to run (`Some(Err)`
+/// when the capped scene does not validate).
+pub fn bounded(scene: &Scene) -> Option<rollbem::Result<Scene>> {
+    let substeps = scene.steps().iter().fold(0usize, |n, s| n.saturating_add(s.substeps));
+    if elements(scene) > MAX_RUN_ELEMENTS || substeps > MAX_SUBSTEPS {
+        return None;
+    }
+    let s = scene.solvers().settings.clone();
+    let cap = |v: usize, max: usize| v.min(max) as i64;
+    Some(scene.edit(|d| {
+        let t = &mut d.solvers;
+        t.set("lemke", "max_pivots_per_unknown", cap(s.lemke.max_pivots_per_unknown, 20));
+        t.set("lemke_dense", "max_pivots_per_unknown", cap(s.lemke_dense.max_pivots_per_unknown, 20));
+        t.set("active_set", "max_iterations", cap(s.active_set.max_iterations, 50));
+        t.set("pgs", "max_sweeps", cap(s.pgs.max_sweeps, 2000));
+        t.set("pgs", "max_outer", cap(s.pgs.max_outer, 50));
+        t.set("normtang_qp", "max_outer", cap(s.normtang_qp.max_outer, 50));
+        t.set("normtang_qp", "qp.max_iter", i64::from(s.normtang_qp.qp.max_iter.min(100)));
+        t.set("clarabel", "max_iter", i64::from(s.clarabel.max_iter.min(100)));
+        if let Some(st) = d.stresses.as_mut() {
+            st.points = st.points.map(|p| p.min(MAX_STRESS_SIDE));
+        }
+    }))
+}
+
+/// An error must say what is wrong.
+fn has_message(e: &rollbem::Error) -> bool {
+    !e.to_string().trim().is_empty()
+}
+
+/// Run a valid scene through the model API within the bounds and check what comes back (panics on a violation,
+/// as the fuzzer needs).
+pub fn run(scene: &Scene) -> Ran {
+    let scene = match bounded(scene) {
+        None => return Ran::TooLarge,
+        Some(Err(e)) => {
+            assert!(has_message(&e), "capping: an error without a message");
+            return Ran::CapRefused;
+        }
+        Some(Ok(s)) => s,
+    };
+    let model = match Model::build(&scene) {
+        Ok(m) => m,
+        Err(e) => {
+            assert!(has_message(&e), "Model::build: an error without a message");
+            return Ran::BuildRefused;
+        }
+    };
+    if let Err(e) = model.lcp(&scene) {
+        assert!(has_message(&e), "Model::lcp: an error without a message");
+    }
+    let report = match model.solve(&scene) {
+        Ok(r) => r,
+        Err(e) => {
+            assert!(has_message(&e), "Model::solve: an error without a message");
+            return Ran::SolveRefused;
+        }
+    };
+    assert!(!report.runs.is_empty(), "a report without runs");
+    let mut solved = 0;
+    for run in &report.runs {
+        if run.status == Status::Solved {
+            solved += 1;
+            let res = run.residuals.unwrap_or_else(|| panic!("{}: solved without residuals", run.solver));
+            let parts = [
+                res.complementarity,
+                res.penetration,
+                res.tension,
+                res.friction.unwrap_or(0.0),
+                res.equilibrium.unwrap_or(0.0),
+            ];
+            assert!(parts.iter().all(|v| v.is_finite()), "{}: solved with residuals {res:?}", run.solver);
+            let rs = run.resultants.unwrap_or_else(|| panic!("{}: solved without resultants", run.solver));
+            assert!(
+                rs.normal.is_finite() && rs.tangential.is_finite() && rs.moment.is_finite(),
+                "{}: solved with resultants {rs:?}",
+                run.solver
+            );
+            assert!(
+                run.nodes.iter().all(|n| n.pressure.is_finite() && n.shear.is_finite() && n.gap.is_finite()),
+                "{}: solved with non-finite nodal values",
+                run.solver
+            );
+        } else {
+            assert!(run.residuals.is_none(), "{} {}: residuals on an unsolved run", run.solver, run.status);
+            assert!(run.resultants.is_none(), "{} {}: resultants on an unsolved run", run.solver, run.status);
+            assert!(!run.explanation().trim().is_empty(), "{} {}: no message", run.solver, run.status);
+        }
+    }
+    Ran::Reported { runs: report.runs.len(), solved }
+}
