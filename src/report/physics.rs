@@ -5,6 +5,7 @@ use super::table::{log_slope, num, Row, Sweep};
 use super::Figs;
 use crate::error::Result;
 use crate::plot::{Chart, Series, Style};
+use crate::scene::BodyModel;
 use crate::theory::{self, Hertz2D};
 use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
@@ -125,6 +126,24 @@ pub fn finite_vs_half_plane(sw: &Sweep, md: &mut String, figs: &mut Figs) -> Res
     Ok(())
 }
 
+/// Free-rolling creepages ξR/(μa) within this of zero are zero: the interpolation between swept creepages of the
+/// reference sweeps (steps of 0.1 μa/R) resolves a crossing to about 1e-3 on a curve through the origin.
+const FREE_ROLLING_ZERO: f64 = 1e-3;
+
+/// What a creep curve's departure from Carter's is: Carter's is the steady-rolling answer for a half-plane with
+/// β = 0, so on the half-plane model it is a check; on the finite wheel a model comparison (the body is not a
+/// half-space); and a curve that does not pass through the origin (free rolling at ξ ≠ 0: normal–tangential
+/// coupling, β ≠ 0) is outside Carter's model whatever the body.
+fn carter_domain(model: Option<BodyModel>, free: Option<f64>) -> &'static str {
+    let coupled = free.is_some_and(|f| f.abs() > FREE_ROLLING_ZERO);
+    match (model, coupled) {
+        (_, true) => "model comparison: coupled (free rolling at ξ ≠ 0; Carter assumes β = 0)",
+        (Some(BodyModel::HalfPlane), false) => "check (Carter's model)",
+        (Some(BodyModel::Bem), false) => "model comparison: finite wheel",
+        (None, false) => "model not recorded",
+    }
+}
+
 /// Creep curves: Q/(μP) against ξR/(μa) per series, with Carter's curve; the largest departure from Carter and
 /// the free-rolling creepage (where Q changes sign) per series.
 pub fn creep_curves(sw: &Sweep, md: &mut String, figs: &mut Figs) -> Result<()> {
@@ -132,6 +151,7 @@ pub fn creep_curves(sw: &Sweep, md: &mut String, figs: &mut Figs) -> Result<()> 
     // The creepage is the curve's abscissa, not a series.
     let varied: Vec<String> = sw.varied(&solved).into_iter().filter(|k| !k.ends_with("creepage")).collect();
     let mut groups: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
+    let mut models: BTreeMap<String, Option<BodyModel>> = BTreeMap::new();
     for r in &solved {
         let (Some(xi), Some(q), Some(p), Some(mu), Some(a), Some(rad)) =
             (r.creepage, r.tangential_load, r.normal_load, r.friction, r.hertz_a, r.radius)
@@ -139,6 +159,7 @@ pub fn creep_curves(sw: &Sweep, md: &mut String, figs: &mut Figs) -> Result<()> 
             continue;
         };
         groups.entry(sw.label(r, &varied)).or_default().push((xi * rad / (mu * a), q / (mu * p)));
+        models.insert(sw.label(r, &varied), r.model);
     }
     let mut chart = Chart::new(format!("{}: creep curves", sw.name), "ξR/(μa)", "Q/(μP)").x_unit("1").y_unit("1");
     let carter = |s: f64| theory::carter_force(&Hertz2D::new(1.0, 2.0 / std::f64::consts::PI), 1.0, 1.0, s);
@@ -148,11 +169,15 @@ pub fn creep_curves(sw: &Sweep, md: &mut String, figs: &mut Figs) -> Result<()> 
         md,
         "Q/(μP) against the normalised creepage ξR/(μa) (a: Hertz at the run's load). Carter's curve is the 2D \
          half-plane answer with β = 0; the free-rolling creepage is where Q changes sign (linear interpolation \
-         between the swept creepages).\n"
+         between the swept creepages). A departure from it is a check on the half-plane model and a model \
+         comparison elsewhere (last column).\n"
     )
     .unwrap();
-    writeln!(md, "| series | creepages | max \\|Q/(μP) − Carter\\| | free-rolling ξR/(μa) |\n|---|---|---|---|")
-        .unwrap();
+    writeln!(
+        md,
+        "| series | creepages | max \\|Q/(μP) − Carter\\| | free-rolling ξR/(μa) | against Carter |\n|---|---|---|---|---|"
+    )
+    .unwrap();
     for (label, mut pts) in groups {
         pts.sort_by(|a, b| a.0.total_cmp(&b.0));
         let dev = pts.iter().map(|(s, q)| (q - carter(*s)).abs()).fold(0.0, f64::max);
@@ -166,11 +191,28 @@ pub fn creep_curves(sw: &Sweep, md: &mut String, figs: &mut Figs) -> Result<()> 
                 None
             }
         });
+        let model = models.get(&label).copied().flatten();
+        let domain = carter_domain(model, free);
         let free = free.map(|v| format!("{v:+.4}")).unwrap_or_else(|| "not crossed".into());
-        writeln!(md, "| {label} | {} | {dev:.2e} | {free} |", pts.len()).unwrap();
+        writeln!(md, "| {label} | {} | {dev:.2e} | {free} | {domain} |", pts.len()).unwrap();
         chart = chart.add(Series::new(label, pts, Style::Markers));
     }
     let file = figs.save(&chart, &format!("{}-creep-curves.svg", sw.stem), format!("{}: creep curves", sw.name))?;
     writeln!(md, "\n![creep curves]({file})\n").unwrap();
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn carter_is_a_check_only_in_its_own_model() {
+        // Expected: Carter's domain (half-plane, β = 0, so a curve through the origin) — REFERENCES.md.
+        assert_eq!(carter_domain(Some(BodyModel::HalfPlane), Some(0.0)), "check (Carter's model)");
+        assert!(carter_domain(Some(BodyModel::Bem), Some(0.0)).starts_with("model comparison: finite wheel"));
+        assert!(carter_domain(Some(BodyModel::Bem), Some(-0.58)).contains("coupled"));
+        assert!(carter_domain(Some(BodyModel::HalfPlane), Some(0.2)).contains("coupled"));
+        assert_eq!(carter_domain(Some(BodyModel::HalfPlane), None), "check (Carter's model)");
+    }
 }
