@@ -296,17 +296,21 @@ const SPENCE_COUPLED_ELEMENTS: usize = 250;
 /// is Goodman's approximation (the shear's effect on the pressure neglected), exact as βμ → 0; where it differs
 /// from the coupled reference by more than the reference's resolution it is outside its range, and the comparison
 /// with it is a model comparison, not a check.
-fn spence_comparison(s: &Scene, beta: f64, last: &SolverRun, units: &Units, md: &mut String) {
+fn spence_comparison(
+    s: &Scene,
+    beta: f64,
+    (closed, coupled, in_range): (f64, theory::CoupledSpence, bool),
+    last: &SolverRun,
+    units: &Units,
+    md: &mut String,
+) {
     let mu = s.friction();
-    let closed = theory::spence_c_over_a(beta.abs() / mu);
-    let coupled = theory::spence_coupled_c_over_a(beta.abs(), mu, SPENCE_COUPLED_ELEMENTS);
     let tol = 2.0 * coupled.resolution;
     let h = s.zone().element_length(s.radius());
     let computed = last.contact.as_ref().zip(stick_edges(&last.nodes)).and_then(|(c, (l, r))| {
         let contact = c.half_width? + 0.5 * h;
         Some((0.5 * (r - l) / contact, contact))
     });
-    let in_range = (closed - coupled.c_over_a).abs() <= tol;
     writeln!(
         md,
         "Spence's closed form, c/a = {closed:.4} for β/μ = {:.3}, is the Goodman approximation (the shear's effect on \
@@ -321,7 +325,7 @@ fn spence_comparison(s: &Scene, beta: f64, last: &SolverRun, units: &Units, md: 
         100.0 * (1.0 - coupled.contact_over_hertz).abs(),
         if coupled.contact_over_hertz <= 1.0 { "narrower" } else { "wider" },
         if in_range {
-            "within its range here (it agrees with the coupled reference to the reference's resolution)"
+            "within its range here (it agrees with the coupled reference to the resolution of the two)"
         } else {
             "outside its range here: the comparison with it is a model comparison, and the coupled reference is the \
              check"
@@ -387,25 +391,46 @@ fn stick_zone(
         }
         what = "Mindlin–Deresiewicz: the current branch's stick zone";
     } else if let Some(beta) = spence_pattern(s) {
-        let k_ratio = theory::spence_c_over_a(beta.abs() / s.friction());
-        for (k, x) in runs {
-            if let Some(f) = x.resultants.filter(|f| f.normal > 0.0) {
-                let a = Hertz2D::from_load(f.normal, s.radius(), s.contact_modulus()).a;
-                theory_pts.push(((k + 1) as f64, k_ratio * a));
-            }
+        let closed = theory::spence_c_over_a(beta.abs() / s.friction());
+        let coupled = theory::spence_coupled_c_over_a(beta.abs(), s.friction(), SPENCE_COUPLED_ELEMENTS);
+        // Within its range for this comparison when its departure from the coupled reference is below what the
+        // comparison resolves: the reference's two elements plus the run's one element over Hertz's a at the end.
+        let a_end = runs
+            .last()
+            .and_then(|(_, x)| x.resultants)
+            .map_or(f64::INFINITY, |f| Hertz2D::from_load(f.normal, s.radius(), s.contact_modulus()).a);
+        let resolved = 2.0 * coupled.resolution + s.zone().element_length(s.radius()) / a_end;
+        let in_range = (closed - coupled.c_over_a).abs() <= resolved;
+        // Self-similar: c(P) = (c/a) · a(P), with the coupled contact half-width for the coupled reference.
+        let line = |ratio: f64| -> Vec<(f64, f64)> {
+            runs.iter()
+                .filter_map(|(k, x)| {
+                    let f = x.resultants.filter(|f| f.normal > 0.0)?;
+                    Some(((k + 1) as f64, ratio * Hertz2D::from_load(f.normal, s.radius(), s.contact_modulus()).a))
+                })
+                .collect()
+        };
+        if in_range {
+            theory_pts = line(closed);
+            what = "Spence (Goodman approximation): c = (c/a)(β/μ) · a(P), self-similar";
+        } else {
+            // The closed form is outside its range: drawn for comparison, the coupled reference is the check.
+            let goodman = line(closed);
+            chart = chart.add(Series::new("Spence closed form (Goodman, outside its range)", goodman, Style::Line));
+            theory_pts = line(coupled.c_over_a * coupled.contact_over_hertz);
+            what = "Coupled numerical reference: c = (c/a) · a_coupled(P), self-similar";
         }
-        what = "Spence (Goodman approximation): c = (c/a)(β/μ) · a(P), self-similar";
         if let Some((_, last)) = runs.last() {
-            spence_comparison(s, beta, last, units, md);
+            spence_comparison(s, beta, (closed, coupled, in_range), last, units, md);
         }
     }
     if !theory_pts.is_empty() {
-        let worst = pts
+        let (worst, at) = pts
             .iter()
-            .filter_map(|(k, c)| theory_pts.iter().find(|t| t.0 == *k).map(|t| (c - t.1).abs()))
-            .fold(0.0, f64::max);
+            .filter_map(|(k, c)| theory_pts.iter().find(|t| t.0 == *k).map(|t| ((c - t.1).abs(), *k)))
+            .fold((0.0, 0.0), |m, d| if d.0 > m.0 { d } else { m });
         let h = s.zone().element_length(s.radius());
-        writeln!(md, "{what}; largest difference along the path {:.2} elements.\n", worst / h).unwrap();
+        writeln!(md, "{what}; largest difference along the path {:.2} elements (substep {at}).\n", worst / h).unwrap();
         chart = chart.add(Series::new(what.split(':').next().unwrap_or(what), theory_pts, Style::Dashed));
     }
     let file = figs.save(&chart, &format!("{name}-stick-zone.svg"), format!("{name}: stick zone along the path"))?;
