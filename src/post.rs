@@ -173,16 +173,21 @@ pub struct Residuals {
 }
 
 impl Residuals {
-    /// Largest of the residuals that apply; NaN if any is NaN (`f64::max` drops a NaN, so a NaN residual would
-    /// otherwise pass every bound as 0: fuzz target `scene`, `fuzz/regressions/lemke-nan-residual-max-load.toml`).
-    pub fn max(&self) -> f64 {
-        let parts = [
+    /// Every residual, those that do not apply as 0: complementarity, penetration, tension, friction, equilibrium.
+    pub fn parts(&self) -> [f64; 5] {
+        [
             self.complementarity,
             self.penetration,
             self.tension,
             self.friction.unwrap_or(0.0),
             self.equilibrium.unwrap_or(0.0),
-        ];
+        ]
+    }
+
+    /// Largest of the residuals that apply; NaN if any is NaN (`f64::max` drops a NaN, so a NaN residual would
+    /// otherwise pass every bound as 0: fuzz target `scene`, `fuzz/regressions/lemke-nan-residual-max-load.toml`).
+    pub fn max(&self) -> f64 {
+        let parts = self.parts();
         if parts.iter().any(|v| v.is_nan()) {
             return f64::NAN;
         }

@@ -142,7 +142,7 @@ fn spence_outside_the_goodman_approximation_matches_the_coupled_reference() {
     let rep = run(&s);
     let l = get(&rep.steps.last().unwrap().runs, "lemke");
     assert_eq!(l.status, Status::Solved, "{}", l.explanation());
-    let h = 18.0 / 300.0;
+    let h = s.zone().element_length(s.document().wheel.radius);
     let contact = l.contact.as_ref().unwrap().half_width.unwrap() + 0.5 * h;
     let c = stick_half_width(l) / contact;
     let reference = theory::spence_coupled_c_over_a(beta, 0.3, 250);

@@ -119,13 +119,7 @@ pub fn run(scene: &Scene) -> Ran {
         if run.status == Status::Solved {
             solved += 1;
             let res = run.residuals.unwrap_or_else(|| panic!("{}: solved without residuals", run.solver));
-            let parts = [
-                res.complementarity,
-                res.penetration,
-                res.tension,
-                res.friction.unwrap_or(0.0),
-                res.equilibrium.unwrap_or(0.0),
-            ];
+            let parts = res.parts();
             assert!(parts.iter().all(|v| v.is_finite()), "{}: solved with residuals {res:?}", run.solver);
             let rs = run.resultants.unwrap_or_else(|| panic!("{}: solved without resultants", run.solver));
             assert!(

@@ -46,12 +46,15 @@ pub struct CoupledSpence {
     pub resolution: f64,
 }
 
+/// `(L_even, L_odd, S_even, S_odd)` of [`kernels`].
+type Kernels = (DMatrix<f64>, DMatrix<f64>, DMatrix<f64>, DMatrix<f64>);
+
 /// The half grid's extent in units of Hertz's a at the final load.
 const EXTENT: f64 = 1.25;
 
 /// Influence matrices on the half grid: `(L_even, L_odd, S_even, S_odd)` (see the module docs), row i the
 /// collocation point, column j element j combined with its mirror image for an even or an odd traction.
-fn kernels(n: usize) -> (DMatrix<f64>, DMatrix<f64>, DMatrix<f64>, DMatrix<f64>) {
+fn kernels(n: usize) -> Kernels {
     let dx = EXTENT / n as f64;
     let anti = |u: f64| if u == 0.0 { 0.0 } else { u * u.abs().ln() - u };
     let ln_int = |x: f64, t0: f64, t1: f64| anti(x - t0) - anti(x - t1);
@@ -85,7 +88,7 @@ struct State {
 
 /// The normal problem at load `load` (of the full contact: twice the half grid's) for the shear `q`: contact set,
 /// pressure and approach by an active set. Returns whether the contact set changed from the one given.
-fn normal(k: &(DMatrix<f64>, DMatrix<f64>, DMatrix<f64>, DMatrix<f64>), beta: f64, load: f64, st: &mut State) -> bool {
+fn normal(k: &Kernels, beta: f64, load: f64, st: &mut State) -> bool {
     let n = st.p.len();
     let dx = EXTENT / n as f64;
     let x = |i: usize| (i as f64 + 0.5) * dx;
@@ -130,12 +133,7 @@ fn normal(k: &(DMatrix<f64>, DMatrix<f64>, DMatrix<f64>, DMatrix<f64>), beta: f6
 
 /// The incremental Coulomb problem at the current pressure: stick nodes keep `g_old`, slip nodes carry ±μp.
 /// Returns whether the stick set changed from the one given.
-fn tangential(
-    k: &(DMatrix<f64>, DMatrix<f64>, DMatrix<f64>, DMatrix<f64>),
-    beta: f64,
-    mu: f64,
-    st: &mut State,
-) -> bool {
+fn tangential(k: &Kernels, beta: f64, mu: f64, st: &mut State) -> bool {
     let n = st.p.len();
     let from_p = &k.2 * &st.p * (-PI * beta / 2.0);
     let start = st.stick.clone();
