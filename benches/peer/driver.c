@@ -3,7 +3,7 @@
  * forked child with a time limit, and report per solver: status, Siconos' info, iterations, Siconos' residual of
  * the answer (lcp_compute_error: ||z - max(0, z - w)||_2 / ||q||_2 with w = M z + q recomputed from z), the
  * median wall time of the solver call alone (clock_gettime around the call; reading the file happens once, in the
- * parent, before any child is forked), and z (ZPREFIX.NAME.z).
+ * parent, before any child is forked), z (ZPREFIX.NAME.z) and w = M z + q (ZPREFIX.NAME.w).
  *
  * Usage: driver FILE ZPREFIX
  *   environment (all optional):
@@ -127,10 +127,10 @@ static double env_double(const char *name, double dflt)
   return (s && *s) ? atof(s) : dflt;
 }
 
-static void write_z(const char *prefix, const char *solver, const double *z, int n)
+static void write_vec(const char *prefix, const char *solver, const char *what, const double *z, int n)
 {
   char path[4096];
-  snprintf(path, sizeof path, "%s.%s.z", prefix, solver);
+  snprintf(path, sizeof path, "%s.%s.%s", prefix, solver, what);
   FILE *f = fopen(path, "w");
   if (!f)
   {
@@ -230,7 +230,10 @@ static void run_child(const struct solver *s, LinearComplementarityProblem *lcp,
   fprintf(out, "%s_runs %d\n", s->name, runs);
   fprintf(out, "%s_time_s %.6e\n", s->name, median(times, runs));
   if (finite)
-    write_z(prefix, s->name, z, n);
+  {
+    write_vec(prefix, s->name, "z", z, n);
+    write_vec(prefix, s->name, "w", w, n); /* w = M z + q, recomputed by lcp_compute_error */
+  }
   fclose(out);
   _exit(0);
 }
