@@ -7,10 +7,10 @@
 #   env SIZES="200 400 800 880 3332"  contact elements of the scene variants (LCP size 3·m + 4)
 #       REPEATS=3                timed runs per solver (the median is reported)
 #       TOL=1e-10                tolerance on Siconos' lcp_compute_error, for every Siconos solver that takes one
-#       TIME_LIMIT=300           seconds per Siconos solver (all its runs) and per rollbem `lcp solve` run
+#       TIME_LIMIT=120           seconds per Siconos solver (all its runs) and per rollbem run
 #       LARGE=5000               LCPs of more unknowns run only the Siconos solvers that reached TOL at a smaller
 #                                size of this run (the others are listed as not run, with where they failed),
-#                                each once, with LARGE_TIME_LIMIT (default 900) seconds
+#                                each once; the time limit there is LARGE_TIME_LIMIT (default 600) seconds
 #       SKIP_AFTER=120           a rollbem solver whose first run takes longer (s) is not repeated
 #       KEEP=DIR                 keep the scenes, LCP files and outputs in DIR (default: a temporary folder)
 #       ROLLBEM=PATH             use this rollbem binary instead of building one
@@ -26,9 +26,9 @@ root=$(cd "$here/../.." && pwd)
 sizes=${SIZES:-"200 400 800 880 3332"}
 repeats=${REPEATS:-3}
 tol=${TOL:-1e-10}
-time_limit=${TIME_LIMIT:-300}
+time_limit=${TIME_LIMIT:-120}
 large=${LARGE:-5000}
-large_time_limit=${LARGE_TIME_LIMIT:-900}
+large_time_limit=${LARGE_TIME_LIMIT:-600}
 skip_after=${SKIP_AFTER:-120}
 base_scene="$root/reference/scenes/cattaneo-decoupled.toml"
 # Siconos links OpenBLAS: one thread, as rollbem (faer without its parallel feature) and Siconos' own loops.
@@ -106,12 +106,12 @@ fmt_e() { awk -v e="$1" 'BEGIN { printf "%.1e", e }'; }
 loadavg() { cut -d' ' -f1-3 /proc/loadavg; }
 
 # `rollbem lcp solve FILE --solver S --json OUT` up to REPEATS times (not repeated after a run over SKIP_AFTER s;
-# each run killed after TIME_LIMIT s); prints "median_solve_time_s runs" or "timeout 0".
+# each run killed after $lim s: TIME_LIMIT, or LARGE_TIME_LIMIT over LARGE unknowns); prints "median_solve_time_s runs" or "timeout 0".
 time_rollbem() {
   local file=$1 solver=$2 json=$3 runs=0 times=() t0 t1
   for ((r = 0; r < repeats; r++)); do
     t0=$(date +%s.%N)
-    if ! timeout "$time_limit" "$rollbem" lcp solve "$file" --solver "$solver" --json "$json.r" --quiet >/dev/null; then
+    if ! timeout "$lim" "$rollbem" lcp solve "$file" --solver "$solver" --json "$json.r" --quiet >/dev/null; then
       [[ -s $json.r ]] || { echo "timeout 0"; return; }
     fi
     t1=$(date +%s.%N)
@@ -147,6 +147,8 @@ for m in $sizes; do
   mc=$(((n - 4) / 3))
   ((3 * mc + 4 == n)) || { echo "$lcp: $n unknowns is not 3 m + 4" >&2; exit 1; }
   ns+=("$n")
+  lim=$time_limit
+  ((n <= large)) || lim=$large_time_limit
   size_load=$(loadavg)
   say "m = $m contact elements: LCP of size $n ($(du -h "$lcp" | cut -f1)), load average $size_load"
 
@@ -156,7 +158,7 @@ for m in $sizes; do
     json="$work/peer-$m.$solver.json"
     read -r ts nruns < <(time_rollbem "$lcp" "$solver" "$json")
     if [[ $ts == timeout ]]; then
-      t[$solver]=n/a; piv[$solver]="?"; st[$solver]="over ${time_limit} s"; runs[$solver]=0
+      t[$solver]=n/a; piv[$solver]="?"; st[$solver]="over ${lim} s"; runs[$solver]=0
       : >"$work/peer-$m.$solver.z"
       : >"$work/peer-$m.$solver.w"
     else
@@ -170,7 +172,7 @@ for m in $sizes; do
     say "  rollbem $solver: ${st[$solver]}, ${piv[$solver]} pivots, ${t[$solver]} s (${runs[$solver]} run(s))"
   done
   for solver in lemke lemke_dense; do
-    ((runs[$solver] == repeats)) || notes+=("$n unknowns: rollbem $solver timed on ${runs[$solver]} run(s) (first run over ${skip_after} s, or over the ${time_limit} s limit).")
+    ((runs[$solver] == repeats)) || notes+=("$n unknowns: rollbem $solver timed on ${runs[$solver]} run(s) (first run over ${skip_after} s, or over the ${lim} s limit).")
   done
 
   # --- rollbem active_set on the scene ----------------------------------------------------------------------------
@@ -179,9 +181,20 @@ for m in $sizes; do
   # compare its nodal tractions with Lemke's run of the same scene.
   say "  rollbem active_set on the scene (${repeats} runs)"
   as_json="$work/peer-$m.active_set.json"
-  "$rollbem" run "$scene" --solver lemke --solver active_set --json "$as_json" --quiet >/dev/null || true
-  as_st=$(jq -r '.runs[] | select(.solver == "active_set") | .status' "$as_json")
-  as_it=$(jq -r '.runs[] | select(.solver == "active_set") | .work.iterations // "?"' "$as_json")
+  as_ts=()
+  for ((r = 0; r < repeats; r++)); do
+    rm -f "$as_json.t"
+    timeout "$lim" "$rollbem" run "$scene" --solver active_set --json "$as_json.t" --quiet >/dev/null || true
+    as_ts+=("$(jq -r '.runs[0].timing_s.solve' "$as_json.t" 2>/dev/null || echo n/a)")
+    if ((r == 0)); then
+      as_st=$(jq -r '.runs[0].status' "$as_json.t" 2>/dev/null || echo "over ${lim} s")
+      as_it=$(jq -r '.runs[0].work.iterations // "?"' "$as_json.t" 2>/dev/null || echo "?")
+    fi
+  done
+  t_as=$(printf '%s\n' "${as_ts[@]}" | median)
+  # Its nodal tractions against Lemke's run of the same scene.
+  rm -f "$as_json"
+  timeout "$lim" "$rollbem" run "$scene" --solver lemke --solver active_set --json "$as_json" --quiet >/dev/null || true
   as_d=$(jq -r '[.runs[] | select(.solver == "lemke") | .nodes[] | .pressure] as $lp
       | [.runs[] | select(.solver == "lemke") | .nodes[] | .shear] as $lq
       | [.runs[] | select(.solver == "active_set") | .nodes[] | .pressure] as $ap
@@ -189,13 +202,7 @@ for m in $sizes; do
       | ([$lp[] | fabs] | max) as $p0
       | [range(0; $lp | length) | ([($lp[.] - $ap[.]), ($lq[.] - $aq[.])] | map(fabs) | max)] | max / $p0' \
     "$as_json" 2>/dev/null || echo n/a)
-  [[ $as_d == n/a ]] || as_d=$(fmt_e "$as_d")
-  as_ts=()
-  for ((r = 0; r < repeats; r++)); do
-    "$rollbem" run "$scene" --solver active_set --json "$as_json.t" --quiet >/dev/null || true
-    as_ts+=("$(jq -r '.runs[0].timing_s.solve' "$as_json.t")")
-  done
-  t_as=$(printf '%s\n' "${as_ts[@]}" | median)
+  [[ -n $as_d && $as_d != n/a ]] && as_d=$(fmt_e "$as_d") || as_d="n/a (Lemke's run of the scene over ${lim} s)"
   say "  rollbem active_set: $as_st, $as_it iterations, $t_as s, max|Δ traction|/p0 vs lemke $as_d"
 
   # --- Siconos ----------------------------------------------------------------------------------------------------
@@ -224,7 +231,8 @@ for m in $sizes; do
       solved)
         ts=$(kv "${s}_time_s" "$kvf")
         d=$(force_diff "$work/peer-$m.lemke.z" "$work/peer-$m.lemke.w" "$work/peer-$m.siconos.$s.z" "$work/peer-$m.siconos.$s.w" "$mc")
-        cell="**$(fmt_s "$ts")** ($(kv "${s}_iterations" "$kvf") it, err $(fmt_e "$(kv "${s}_error" "$kvf")"), Δ $d)"
+        r=$(kv "${s}_runs" "$kvf")
+        cell="**$(fmt_s "$ts")** ($(kv "${s}_iterations" "$kvf") it, err $(fmt_e "$(kv "${s}_error" "$kvf")"), Δ $d$( ((r == repeats)) || echo ", $r run$( ((r == 1)) || echo s)"))"
         ((n > large)) || solved_somewhere[$s]=1
         if [[ -z $best_t ]] || awk -v a="$ts" -v b="$best_t" 'BEGIN { exit !(a < b) }'; then
           best_name=$s best_t=$ts
