@@ -275,9 +275,14 @@ for m in $sizes; do
     ratio=n/a
     sic_best="${best_name:-none} $(fmt_s "${best_t:-n/a}") s"
   fi
+  case $(kv lemke_status "$kvf") in
+    solved | failed) sic_lemke=$(fmt_s "$(kv lemke_time_s "$kvf")") ;;
+    time_limit) sic_lemke="over ${sic_limit} s" ;;
+    *) sic_lemke="not run" ;;
+  esac
   cell() { local c=$1; [[ $2 == solved ]] || c="$c ($2)"; echo "$c"; }
   rollbem_rows+=("| $n | $(cell "${piv[lemke]}" "${st[lemke]}") | $(fmt_s "${t[lemke]}") | $(cell "${piv[lemke_dense]}" "${st[lemke_dense]}") | $(fmt_s "${t[lemke_dense]}") | $(cell "$as_it" "$as_st") | $(fmt_s "$t_as") | $(force_diff "$work/peer-$m.lemke.z" "$work/peer-$m.lemke.w" "$work/peer-$m.lemke_dense.z" "$work/peer-$m.lemke_dense.w" "$mc") / $(rel_diff "$work/peer-$m.lemke.z" "$work/peer-$m.lemke_dense.z") | $as_d | $size_load |")
-  summary_rows+=("| $n | ${rb_name:-none} $(fmt_s "${rb_t:-n/a}") s | $sic_best | $ratio | $(fmt_s "$(kv "lemke_time_s" "$kvf")") |")
+  summary_rows+=("| $n | ${rb_name:-none} $(fmt_s "${rb_t:-n/a}") s | $sic_best | $ratio | $sic_lemke |")
   unset t piv st runs
 done
 
