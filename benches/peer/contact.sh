@@ -92,9 +92,11 @@ contact_commit=$(git -C "$contact_src" rev-parse --short=12 HEAD 2>/dev/null || 
 # be gone. Upstream fixes make an edit a no-op; a construct that changed shape makes the build stop here, loudly.
 port_edit() {
   local file=$1 what=$2 expr=$3
-  if grep -qE "$what" "$file"; then
+  if grep -qE -e "$what" "$file"; then
     sed -i -E "$expr" "$file"
-    if grep -qE "$what" "$file"; then die "gfortran edit of $file did not apply ($what)"; fi
+    if grep -qE -e "$what" "$file"; then die "gfortran edit of $file did not apply ($what)"; fi
+  else
+    say "  ($(basename "$file"): no '$what', edit not needed)"
   fi
 }
 
