@@ -510,6 +510,12 @@ for case_name in $cases; do
     rows+=("| $case_name | $mx | $ncases | $solver | $dfx (case $dfx_at) | ${mid_counts%%|*} | ${mid_counts##*|} | $agree of $nuniq | $tcell | $(printf '%.3g' "$r_cpu") | $(printf '%.3g' "$c_cpu") | $ratio | $(printf '%.1f' "$r_mem") | $(printf '%.1f' "$c_mem") |")
     say "  $solver: max ΔFX/(μFN) $dfx, counts equal at $agree of $nuniq, tractions $tcell, CPU $r_cpu s vs $c_cpu s"
   done
+  # rollbem's solvers against each other (each solves the same discrete problem, to round-off).
+  read -ra sv <<<"$case_solvers"
+  if ((${#sv[@]} > 1)); then
+    d=$(paste -d' ' "$cw/rollbem.q.${sv[0]}" "$cw/rollbem.q.${sv[1]}" | awk '{ d = ($1 - $4) / ($3 * $2); if (d < 0) d = -d; if (d > m) m = d } END { printf "%.1e", m }')
+    notes+=("$case_name: rollbem ${sv[0]} against ${sv[1]}: max |ΔQ|/(μP) over the cases = $d.")
+  fi
   grid_desc=$(awk -v m="$mx" -v x="$(kv xc1 "$p")" -v d="$(kv dx "$p")" 'BEGIN { printf "[%.6g, %.6g]", x - d / 2, x + (m - 0.5) * d }')
   notes+=("$case_name: MX = $mx, XC1 = $(g "$(kv xc1 "$p")"), DX = $(g "$(kv dx "$p")") (elements on $grid_desc), DY = $(g "$(kv dy "$p")"), FN = $(g "$(kv fn1 "$p")") (rollbem: $(awk -v f="$(kv fn1 "$p")" -v d="$(kv dy "$p")" 'BEGIN { printf "%.6g", f / d }') per unit width), EPS = $(g "$(kv eps "$p")"); counts shown at CKSI = $(g "$mid_cksi"); ${fx_note[$case_name]}.")
 done
