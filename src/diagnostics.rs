@@ -25,8 +25,9 @@ pub fn asymmetry(k: &faer::Mat<f64>) -> f64 {
 pub fn diagnose(flex: &Flexibility, info: &SourceInfo, asymmetry: f64) -> Diagnostics {
     let n = flex.n();
     let cond = |k: &faer::Mat<f64>| crate::condition::cond1(k, &k.partial_piv_lu());
-    let flexibility_condition = if n > 0 { cond(&flex.k_nn) } else { 0.0 };
-    let tangential_condition = flex.k_tt.as_ref().filter(|_| n > 0).map(cond);
+    let (flexibility_condition, tangential_condition) = flex
+        .derived
+        .conditions(|| (if n > 0 { cond(&flex.k_nn) } else { 0.0 }, flex.k_tt.as_ref().filter(|_| n > 0).map(cond)));
     let mut warnings = Vec::new();
     if let Some(k) = info.condition.filter(|k| k.is_nan() || *k > tol::BEM_CONDITION_WARN) {
         warnings.push(format!(

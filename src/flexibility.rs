@@ -89,12 +89,104 @@ pub struct Flexibility {
     pub weights: Vec<f64>,
     /// The scales that make it dimensionless.
     pub scales: Scales,
+    /// Factorisations a solver keeps between solves on this flexibility (see [`Memo`]); never part of an answer.
+    pub memo: Memo,
+    /// What is derived from the blocks on first use and kept: FFT products, condition numbers, asymmetry ([`Derived`]).
+    pub derived: Derived,
+}
+
+/// Quantities derived from a flexibility's blocks, computed on first use and kept for every later solve on it (a
+/// model solved for many drives computes each once): the FFT products of K_NN and K_TT ([`crate::toeplitz`]; `None`
+/// for a block not of that form or too small to gain), their condition numbers and K_NN's asymmetry. A clone of the
+/// flexibility computes them again.
+#[derive(Default)]
+pub struct Derived {
+    nn: std::sync::OnceLock<Option<crate::toeplitz::Toeplitz>>,
+    tt: std::sync::OnceLock<Option<crate::toeplitz::Toeplitz>>,
+    /// κ₁(K_NN), κ₁(K_TT).
+    conditions: std::sync::OnceLock<(f64, Option<f64>)>,
+    /// ‖K − Kᵀ‖/‖K‖ of K_NN, as is (0) and with a mode projected out (1).
+    asymmetry: [std::sync::OnceLock<f64>; 2],
+}
+
+impl Derived {
+    /// κ₁(K_NN) and κ₁(K_TT) (when built), computed once by `compute`.
+    pub fn conditions(&self, compute: impl FnOnce() -> (f64, Option<f64>)) -> (f64, Option<f64>) {
+        *self.conditions.get_or_init(compute)
+    }
+
+    /// K_NN's asymmetry, as is (`projected` false) or with the approach mode projected out, computed once by
+    /// `compute`.
+    pub fn asymmetry(&self, projected: bool, compute: impl FnOnce() -> f64) -> f64 {
+        *self.asymmetry[usize::from(projected)].get_or_init(compute)
+    }
+}
+
+impl Clone for Derived {
+    fn clone(&self) -> Derived {
+        Derived::default()
+    }
+}
+
+impl std::fmt::Debug for Derived {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Derived")
+    }
+}
+
+/// Solver state kept with a flexibility between solves on it (a model solved for many drives): factorisations that a
+/// solver may reuse when the matrix is the same, or as a preconditioner for a nearby one. Opaque, one slot, owned by
+/// whichever solver wrote it last; a clone of the flexibility starts empty. Reusing it never changes an answer
+/// beyond round-off: the solver that reads it compares the matrix exactly before a direct reuse, and a
+/// preconditioner only changes how fast an iteration converges.
+#[derive(Default)]
+pub struct Memo(std::sync::Mutex<Option<Box<dyn std::any::Any + Send>>>);
+
+impl Memo {
+    /// Take the state out if it is a `T` (the slot is then empty until [`Memo::put`]).
+    pub fn take<T: 'static>(&self) -> Option<T> {
+        let mut slot = self.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+        match slot.take()?.downcast::<T>() {
+            Ok(v) => Some(*v),
+            Err(other) => {
+                *slot = Some(other);
+                None
+            }
+        }
+    }
+
+    /// Keep a state (replacing what was there).
+    pub fn put<T: Send + 'static>(&self, value: T) {
+        *self.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner) = Some(Box::new(value));
+    }
+}
+
+impl Clone for Memo {
+    fn clone(&self) -> Memo {
+        Memo::default()
+    }
+}
+
+impl std::fmt::Debug for Memo {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Memo")
+    }
 }
 
 impl Flexibility {
     /// Number of contact nodes.
     pub fn n(&self) -> usize {
         self.x.len()
+    }
+
+    /// K_NN as a Toeplitz operator, when it is one of FFT size ([`crate::toeplitz::Toeplitz::detect`]).
+    pub fn toeplitz_nn(&self) -> Option<&crate::toeplitz::Toeplitz> {
+        self.derived.nn.get_or_init(|| crate::toeplitz::Toeplitz::detect(&self.k_nn)).as_ref()
+    }
+
+    /// K_TT as a Toeplitz operator, when it is built and is one of FFT size.
+    pub fn toeplitz_tt(&self) -> Option<&crate::toeplitz::Toeplitz> {
+        self.derived.tt.get_or_init(|| self.k_tt.as_ref().and_then(crate::toeplitz::Toeplitz::detect)).as_ref()
     }
 
     /// Whether the tangential blocks were built.
@@ -136,6 +228,8 @@ impl Flexibility {
             g0: pick(&self.g0),
             weights,
             scales: self.scales,
+            memo: Memo::default(),
+            derived: Derived::default(),
         }
     }
 

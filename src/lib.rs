@@ -86,6 +86,7 @@ pub mod status;
 pub mod stresses;
 pub mod sweep;
 pub mod theory;
+pub mod toeplitz;
 pub mod tolerances;
 pub mod validity;
 

@@ -231,6 +231,9 @@ pub fn contact_vertex_angles(radius: f64, zone: &ContactZone) -> Vec<f64> {
         ZoneExtent::HalfWidth { half_width: w } => {
             (0..=nc).map(|k| -PI / 2.0 + ((-w + 2.0 * w * k as f64 / nc as f64) / radius).asin()).collect()
         }
+        ZoneExtent::Span { x_min, x_max } => {
+            (0..=nc).map(|k| -PI / 2.0 + ((x_min + (x_max - x_min) * k as f64 / nc as f64) / radius).asin()).collect()
+        }
         ZoneExtent::Arc { .. } => {
             let alpha = zone.arc_rad(radius);
             let h0 = alpha / nc as f64;
@@ -253,7 +256,7 @@ impl Mesh {
         // The grading into the rest of the boundary starts from the size of the contact zone's end element.
         let h0 = match spec.zone.extent {
             ZoneExtent::Arc { .. } => alpha / nc as f64,
-            ZoneExtent::HalfWidth { .. } => angles[nc] - angles[nc - 1],
+            ZoneExtent::HalfWidth { .. } | ZoneExtent::Span { .. } => angles[nc] - angles[nc - 1],
         };
         let no = spec.other_elements;
         match support {

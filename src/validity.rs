@@ -127,6 +127,14 @@ fn zone_edge(scene: &Scene, problem: &ContactProblem, ev: &Evaluation) -> Option
              R = {r}: the load is beyond small-strain contact of this wheel",
             a_h / r
         ));
+    } else if let ZoneExtent::Span { x_min, x_max } = m.extent {
+        msg.push_str(&format!(
+            "; widen contact_x to at least [{:.4e}, {:.4e}]{at_least} (now [{x_min:.4e}, {x_max:.4e}]; pressure centre \
+             {centre:.3e}, Hertz's a = {a_h:.3e} at P = {p:.4e}), with contact_elements ≥ {} to keep the element size",
+            x_min.min(-need),
+            x_max.max(need),
+            elements((x_max.max(need) - x_min.min(-need)) / (x_max - x_min))
+        ));
     } else if matches!(m.extent, ZoneExtent::HalfWidth { .. }) || !bem {
         msg.push_str(&format!(
             "; widen it to contact_half_width ≥ {need:.4e}{at_least} (now {w0:.4e}; pressure centre {centre:.3e}, \

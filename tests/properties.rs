@@ -198,6 +198,7 @@ impl SceneParams {
                 element: if self.quadratic { ElementKind::Quadratic } else { ElementKind::Constant },
                 contact_arc_deg: Some(self.contact_arc_deg),
                 contact_half_width: None,
+                contact_x: None,
                 contact_elements: self.contact_elements,
                 other_elements: Some(self.other_elements),
             },

@@ -162,12 +162,14 @@ impl PyModel {
         let model = self.inner.clone();
         let reports = worker::run(py, move |cancel| {
             let mut out = Vec::with_capacity(jobs.len());
+            // Each drive starts from the previous one's solutions (the answers do not depend on it; the work does).
+            let mut warm = rollbem::pipeline::Warm::default();
             for job in jobs {
                 if cancel.raised() {
                     break;
                 }
                 let scene = job.scene(model.scene())?;
-                out.push(model.solve(&scene)?);
+                out.push(model.solve_warm(&scene, &mut warm)?);
             }
             Ok(out)
         })?;

@@ -99,19 +99,44 @@ impl SlipOperator {
         matches!(self.kind, SlipKind::Steady { .. })
     }
 
-    /// D v (a copy of v when D is the identity).
+    /// Row i of D as (its diagonal entry, the upstream node and its entry): every D rollbem builds has at most
+    /// these two entries per row (the identity has none off the diagonal). `None` when D is the identity.
+    fn row(&self, i: usize) -> Option<(f64, Option<(usize, f64)>)> {
+        let d = self.d.as_ref()?;
+        let up = match self.kind {
+            SlipKind::Steady { direction } if direction >= 0 => (i + 1 < d.ncols()).then_some(i + 1),
+            SlipKind::Steady { .. } => i.checked_sub(1),
+            _ => None,
+        };
+        Some((d[(i, i)], up.map(|u| (u, d[(i, u)]))))
+    }
+
+    /// D v (a copy of v when D is the identity); O(n), D being two-diagonal.
     pub fn apply(&self, v: &[f64]) -> Vec<f64> {
         match &self.d {
             None => v.to_vec(),
-            Some(d) => (0..v.len()).map(|i| (0..v.len()).map(|j| d[(i, j)] * v[j]).sum()).collect(),
+            Some(_) => (0..v.len())
+                .map(|i| {
+                    let (dii, up) = self.row(i).expect("D present");
+                    dii * v[i] + up.map_or(0.0, |(u, du)| du * v[u])
+                })
+                .collect(),
         }
     }
 
-    /// D M for a matrix M with n rows (a copy when D is the identity).
+    /// D M for a matrix M with n rows (a copy when D is the identity); O(n²), D being two-diagonal (a dense product
+    /// cost 2n³: 1.2 GFLOP per solve on an 841-node grid).
     pub fn apply_mat(&self, m: &Mat<f64>) -> Mat<f64> {
         match &self.d {
             None => m.clone(),
-            Some(d) => d * m,
+            Some(_) => {
+                let rows: Vec<(f64, Option<(usize, f64)>)> =
+                    (0..m.nrows()).map(|i| self.row(i).expect("D present")).collect();
+                Mat::from_fn(m.nrows(), m.ncols(), |i, j| {
+                    let (dii, up) = rows[i];
+                    dii * m[(i, j)] + up.map_or(0.0, |(u, du)| du * m[(u, j)])
+                })
+            }
         }
     }
 
@@ -148,4 +173,33 @@ pub fn upwind(x: &[f64], direction: i32) -> Mat<f64> {
         }
     }
     d
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The two-diagonal products against the dense product with the same D (an independent computation: faer's
+    /// matrix product), both rolling directions, on a non-uniform grid.
+    #[test]
+    fn sparse_products_match_the_dense_ones() {
+        let x: Vec<f64> = (0..9).map(|i| (i as f64).powf(1.3) * 0.1 - 0.4).collect();
+        let m = Mat::<f64>::from_fn(9, 5, |i, j| ((i * 7 + j * 3) % 11) as f64 - 4.5 + 0.1 * i as f64);
+        let v: Vec<f64> = (0..9).map(|i| (i as f64 * 0.7).sin()).collect();
+        for direction in [1, -1] {
+            let op = SlipOperator::steady(&x, direction);
+            let dense_m = op.d.as_ref().unwrap() * &m;
+            let sparse_m = op.apply_mat(&m);
+            for i in 0..9 {
+                for j in 0..5 {
+                    assert!((dense_m[(i, j)] - sparse_m[(i, j)]).abs() <= 1e-13 * dense_m[(i, j)].abs().max(1.0));
+                }
+            }
+            let dense_v: Vec<f64> =
+                (0..9).map(|i| (0..9).map(|j| op.d.as_ref().unwrap()[(i, j)] * v[j]).sum()).collect();
+            for (a, b) in dense_v.iter().zip(op.apply(&v)) {
+                assert!((a - b).abs() <= 1e-13 * a.abs().max(1.0));
+            }
+        }
+    }
 }

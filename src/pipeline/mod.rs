@@ -158,20 +158,32 @@ impl Model {
     /// The runs' timings carry the model's build time (assembly, condensation) as the cost of their answer, marked
     /// [`Setup::Built`] on the model's first solve and [`Setup::Reused`] after it.
     pub fn solve(&self, scene: &Scene) -> Result<Report> {
+        self.solve_warm(scene, &mut Warm::default())
+    }
+
+    /// [`Model::solve`] from the solutions of a neighbouring drive, and leave this solve's solutions in `warm` for
+    /// the next one: the creep curve's next creepage, the family's next load. Each solver that can starts from the
+    /// solution its own previous run left (the active-set method from its node states, Lemke from its basis,
+    /// NORM-TANG from its forces); a solver with nothing in `warm` starts cold. The answer does not depend on the
+    /// start (each run is certified by the same residuals); the work does. A load path starts every solver from
+    /// its previous substep anyway and neither reads nor writes `warm`.
+    pub fn solve_warm(&self, scene: &Scene, warm: &mut Warm) -> Result<Report> {
         self.accepts(scene)?;
         let setup = match self.solves.fetch_add(1, Ordering::Relaxed) {
             0 => Setup::Built,
             _ => Setup::Reused,
         };
         match scene.loading() {
-            Loading::Drive(drive) => single::solve(scene, *drive, &self.built, setup),
+            Loading::Drive(drive) => single::solve(scene, *drive, &self.built, setup, warm),
             Loading::Path(steps) => path::solve(scene, steps, &self.built, setup),
         }
     }
 
-    /// Solve many scenes sharing the model's bodies and mesh, in order (a creep curve, a family of loads).
+    /// Solve many scenes sharing the model's bodies and mesh, in order (a creep curve, a family of loads), each
+    /// from the previous one's solutions ([`Model::solve_warm`]).
     pub fn solve_all<'a>(&self, scenes: impl IntoIterator<Item = &'a Scene>) -> Result<Vec<Report>> {
-        scenes.into_iter().map(|s| self.solve(s)).collect()
+        let mut warm = Warm::default();
+        scenes.into_iter().map(|s| self.solve_warm(s, &mut warm)).collect()
     }
 
     /// The LCP that Lemke solves for a one-step scene (`rollbem lcp export`); a load path, or a load beyond gross
@@ -185,6 +197,34 @@ impl Model {
                 message: "steps: a load path is a sequence of LCPs, one per substep; export a one-step scene".into(),
             }),
         }
+    }
+}
+
+/// The solutions a solve leaves for the next solve on the same model, one per solver (see [`Model::solve_warm`]).
+/// Dimensionless, in the model's unknowns; only a solve on the model that wrote it reads it.
+#[derive(Debug, Clone, Default)]
+pub struct Warm {
+    solutions: Vec<(crate::solvers::SolverId, crate::formulation::Solution)>,
+}
+
+impl Warm {
+    /// The solution the solver's last run left, if any.
+    pub fn get(&self, solver: crate::solvers::SolverId) -> Option<&crate::formulation::Solution> {
+        self.solutions.iter().find(|(s, _)| *s == solver).map(|(_, sol)| sol)
+    }
+
+    /// Keep a solver's solution (replacing its previous one); a run without a solution clears it, so that a failed
+    /// case does not start the next from a stale state.
+    pub fn set(&mut self, solver: crate::solvers::SolverId, solution: Option<crate::formulation::Solution>) {
+        self.solutions.retain(|(s, _)| *s != solver);
+        if let Some(sol) = solution {
+            self.solutions.push((solver, sol));
+        }
+    }
+
+    /// Forget every solution.
+    pub fn clear(&mut self) {
+        self.solutions.clear();
     }
 }
 

@@ -18,17 +18,26 @@ use crate::source::Built;
 use std::time::Instant;
 
 /// Solve a one-step scene on a built flexibility; `setup` says whether the flexibility was built for this solve.
-pub(super) fn solve(scene: &Scene, drive: Drive, built: &Built, setup: Setup) -> Result<Report> {
+pub(super) fn solve(
+    scene: &Scene,
+    drive: Drive,
+    built: &Built,
+    setup: Setup,
+    warm: &mut super::Warm,
+) -> Result<Report> {
     let flex = &built.flex;
     let tf = Instant::now();
-    let problem = build_problem(scene, flex, drive, slip_operator(scene, flex))?;
+    let mut problem = build_problem(scene, flex, drive, slip_operator(scene, flex))?;
     let formulation_time = tf.elapsed().as_secs_f64();
     let solvers = solvers_for(scene, &problem)?;
     let stresses = crate::stresses::StressEvaluator::new(scene, built)?;
     let mut runs = Vec::new();
     let mut bounds = Vec::new();
     for solver in &solvers {
+        problem.warm = warm.get(solver.id()).cloned();
         let (outcome, solve_time) = solve_timed(solver.as_ref(), &problem);
+        let certified_start = outcome.status == crate::solvers::Termination::Solved;
+        warm.set(solver.id(), outcome.solution.clone().filter(|_| certified_start));
         let formulation = formulation_time + lcp_time(solver.as_ref(), &problem);
         let (check_bound, refuse) = crate::solvers::residual_bounds(solver.as_ref());
         let ctx = RunContext {

@@ -195,8 +195,8 @@ pub fn normal_asymmetry(problem: &ContactProblem, half_plane: bool) -> f64 {
     let load_driven = matches!(problem.drive.normal, Dof::Load(_));
     let approach = problem.flex.mode(crate::flexibility::ModeKind::Approach);
     match (half_plane && load_driven, approach) {
-        (true, Some(m)) => asymmetry(&project_out(k, &m.normal)),
-        _ => asymmetry(k),
+        (true, Some(m)) => problem.flex.derived.asymmetry(true, || asymmetry(&project_out(k, &m.normal))),
+        _ => problem.flex.derived.asymmetry(false, || asymmetry(k)),
     }
 }
 

@@ -100,9 +100,11 @@ pub enum CounterBodyTable {
 }
 
 /// `[mesh]`: the boundary-element mesh of the wheel, or the contact grid of the half-plane. The potential contact
-/// zone is given by exactly one of `contact_arc_deg` (elements uniform in angle on the arc) and
-/// `contact_half_width` (elements uniform in x, so that a grid of N elements of size dx is written directly); both
-/// models put their collocation points at the same x for the same keys.
+/// zone is given by exactly one of `contact_arc_deg` (elements uniform in angle on the arc), `contact_half_width`
+/// (elements uniform in x on −w ≤ x ≤ w, so that a grid of N elements of size dx is written directly) and, on the
+/// half-plane model only, `contact_x = [x_min, x_max]` (elements uniform in x on a span the user places, e.g. a
+/// CONTACT grid that is not centred on x = 0); both models put their collocation points at the same x for the same
+/// keys.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct MeshTable {
@@ -114,6 +116,10 @@ pub struct MeshTable {
     /// Half-width (length unit) of the potential contact zone, 0 < w < R: the zone is −w ≤ x ≤ w.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub contact_half_width: Option<f64>,
+    /// Half-plane model only: the potential contact zone x_min ≤ x ≤ x_max (length unit, −R < x_min < x_max < R),
+    /// elements uniform in x. x is measured from the point of first contact (the profile's lowest point).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub contact_x: Option<[f64; 2]>,
     /// Number of elements on the potential contact zone, ≥ 1.
     pub contact_elements: usize,
     /// BEM only: number of elements on the rest of the outer boundary (graded from the contact size), ≥ 4. The hub

@@ -134,7 +134,8 @@ pub struct ContactZone {
     pub elements: usize,
 }
 
-/// The extent of the potential contact zone, centred on the bottom point.
+/// The extent of the potential contact zone: centred on the bottom point, or (half-plane model) a span placed by the
+/// user.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum ZoneExtent {
     /// An arc of the wheel of this many degrees, in (0, 180): elements uniform in angle.
@@ -147,6 +148,14 @@ pub enum ZoneExtent {
         /// The half-width w.
         half_width: f64,
     },
+    /// x_min ≤ x ≤ x_max (length unit, −R < x_min < x_max < R): elements uniform in x (`contact_x`; the half-plane
+    /// model only).
+    Span {
+        /// Left end of the zone.
+        x_min: f64,
+        /// Right end of the zone.
+        x_max: f64,
+    },
 }
 
 impl ContactZone {
@@ -155,10 +164,12 @@ impl ContactZone {
         ContactZone { extent: ZoneExtent::Arc { degrees }, elements }
     }
 
-    /// The zone's half-width in x on a wheel of radius `radius` (the half chord of an arc).
+    /// The zone's half-width in x on a wheel of radius `radius` (the half chord of an arc; for a span, the larger
+    /// distance of its ends from x = 0).
     pub fn half_width(&self, radius: f64) -> f64 {
         match self.extent {
             ZoneExtent::HalfWidth { half_width } => half_width,
+            ZoneExtent::Span { x_min, x_max } => x_min.abs().max(x_max.abs()),
             ZoneExtent::Arc { degrees } => radius * (0.5 * degrees.to_radians()).sin(),
         }
     }
@@ -168,6 +179,7 @@ impl ContactZone {
         match self.extent {
             ZoneExtent::Arc { degrees } => degrees.to_radians(),
             ZoneExtent::HalfWidth { half_width } => 2.0 * (half_width / radius).asin(),
+            ZoneExtent::Span { x_min, x_max } => (x_max / radius).asin() - (x_min / radius).asin(),
         }
     }
 
@@ -176,6 +188,7 @@ impl ContactZone {
     pub fn element_length(&self, radius: f64) -> f64 {
         match self.extent {
             ZoneExtent::HalfWidth { half_width } => 2.0 * half_width / self.elements as f64,
+            ZoneExtent::Span { x_min, x_max } => (x_max - x_min) / self.elements as f64,
             ZoneExtent::Arc { .. } => radius * self.arc_rad(radius) / self.elements as f64,
         }
     }
@@ -184,6 +197,7 @@ impl ContactZone {
     pub fn scaled(&self, length: f64) -> ContactZone {
         let extent = match self.extent {
             ZoneExtent::HalfWidth { half_width } => ZoneExtent::HalfWidth { half_width: half_width / length },
+            ZoneExtent::Span { x_min, x_max } => ZoneExtent::Span { x_min: x_min / length, x_max: x_max / length },
             arc => arc,
         };
         ContactZone { extent, elements: self.elements }

@@ -79,9 +79,10 @@ pub(super) fn validate(mut document: SceneDocument, path: &Path) -> Result<Scene
 
 /// The contact zone of a mesh table (a validated one has exactly one of the two extents).
 fn zone_of(m: &MeshTable) -> ContactZone {
-    let extent = match (m.contact_half_width, m.contact_arc_deg) {
-        (Some(half_width), _) => ZoneExtent::HalfWidth { half_width },
-        (None, degrees) => ZoneExtent::Arc { degrees: degrees.unwrap_or(0.0) },
+    let extent = match (m.contact_half_width, m.contact_x, m.contact_arc_deg) {
+        (Some(half_width), _, _) => ZoneExtent::HalfWidth { half_width },
+        (None, Some([x_min, x_max]), _) => ZoneExtent::Span { x_min, x_max },
+        (None, None, degrees) => ZoneExtent::Arc { degrees: degrees.unwrap_or(0.0) },
     };
     ContactZone { extent, elements: m.contact_elements }
 }
@@ -294,30 +295,58 @@ impl SceneDocument {
     fn validate_mesh(&self, c: &Checker) -> Result<()> {
         let w = &self.wheel;
         let m = &self.mesh;
-        match (m.contact_arc_deg, m.contact_half_width) {
-            (Some(_), Some(_)) => {
+        let given: Vec<&str> = [
+            ("contact_arc_deg", m.contact_arc_deg.is_some()),
+            ("contact_half_width", m.contact_half_width.is_some()),
+            ("contact_x", m.contact_x.is_some()),
+        ]
+        .iter()
+        .filter(|(_, g)| *g)
+        .map(|(k, _)| *k)
+        .collect();
+        match given.as_slice() {
+            [] => {
                 return Err(c.bad(
-                    "mesh.contact_arc_deg",
-                    "give either `mesh.contact_arc_deg` or `mesh.contact_half_width`, not both".into(),
+                    "mesh",
+                    "give `contact_arc_deg`, `contact_half_width` or `contact_x` (the potential contact zone)".into(),
                 ))
             }
-            (None, None) => {
-                return Err(
-                    c.bad("mesh", "give `contact_arc_deg` or `contact_half_width` (the potential contact zone)".into())
-                )
+            [_] => {}
+            [first, ..] => {
+                return Err(c.bad(
+                    &format!("mesh.{first}"),
+                    format!("give one of `mesh.{}`, not several", given.join("`, `mesh.")),
+                ))
             }
-            (Some(a), None) => {
-                if !a.is_finite() || a <= 0.0 || a >= 180.0 {
-                    return Err(c.bad("mesh.contact_arc_deg", format!("must lie in (0, 180) degrees (got {a})")));
-                }
+        }
+        if let Some(a) = m.contact_arc_deg {
+            if !a.is_finite() || a <= 0.0 || a >= 180.0 {
+                return Err(c.bad("mesh.contact_arc_deg", format!("must lie in (0, 180) degrees (got {a})")));
             }
-            (None, Some(hw)) => {
-                if !hw.is_finite() || hw <= 0.0 || hw >= w.radius {
-                    return Err(c.bad(
-                        "mesh.contact_half_width",
-                        format!("must lie in (0, wheel.radius = {}) (got {hw})", w.radius),
-                    ));
-                }
+        }
+        if let Some(hw) = m.contact_half_width {
+            if !hw.is_finite() || hw <= 0.0 || hw >= w.radius {
+                return Err(c.bad(
+                    "mesh.contact_half_width",
+                    format!("must lie in (0, wheel.radius = {}) (got {hw})", w.radius),
+                ));
+            }
+        }
+        if let Some([x_min, x_max]) = m.contact_x {
+            let r = w.radius;
+            if !(x_min.is_finite() && x_max.is_finite() && -r < x_min && x_min < x_max && x_max < r) {
+                return Err(c.bad(
+                    "mesh.contact_x",
+                    format!("must be [x_min, x_max] with −R < x_min < x_max < R = {r} (got [{x_min}, {x_max}])"),
+                ));
+            }
+            if w.model != BodyModel::HalfPlane {
+                return Err(c.bad(
+                    "mesh.contact_x",
+                    "a zone placed off-centre is for the half-plane model (`wheel.model = \"half_plane\"`); the BEM \
+                     wheel's zone is centred: use `contact_half_width` or `contact_arc_deg`"
+                        .into(),
+                ));
             }
         }
         if m.contact_elements < 1 {

@@ -34,6 +34,7 @@ use faer::linalg::solvers::Solve;
 use faer::Mat;
 use serde::{Deserialize, Serialize};
 use std::collections::HashSet;
+use std::sync::Arc;
 
 /// Settings of the active-set method (`[solvers.active_set]`).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -98,6 +99,10 @@ struct Data<'p> {
     atn: Option<Mat<f64>>,
     /// Slip matrix on h (D K_TT).
     att: Option<Mat<f64>>,
+    /// FFT products for K_NN f (when `knn` is the flexibility's Toeplitz K_NN) and D K_TT h (K_TT Toeplitz; D the
+    /// two-diagonal slip operator), the iteration's products on a uniform half-plane grid ([`crate::toeplitz`]).
+    fast_nn: Option<&'p crate::toeplitz::Toeplitz>,
+    fast_tt: Option<(&'p crate::toeplitz::Toeplitz, &'p crate::formulation::SlipOperator)>,
     /// Gap and slip with f = h = 0 and the load-driven motions 0.
     g_const: Vec<f64>,
     s_const: Vec<f64>,
@@ -129,13 +134,13 @@ impl<'p> Data<'p> {
         let frictional = p.kind == ProblemKind::Frictional && !normal_phase;
         let given = p.given();
         let smu = p.limit_factor();
-        let (knn, g_const) = match &p.normal {
-            Some(np) => (&np.k, np.q0.clone()),
+        let (knn, g_const, fast_nn) = match &p.normal {
+            Some(np) => (&np.k, np.q0.clone(), None),
             None => {
                 let g: Vec<f64> = (0..n)
                     .map(|i| flex.g0[i] + p.dofs.iter().zip(&given).map(|(d, v)| d.gap[i] * v).sum::<f64>())
                     .collect();
-                (&flex.k_nn, g)
+                (&flex.k_nn, g, flex.toeplitz_nn())
             }
         };
         let coupling = p.law.coupling && frictional;
@@ -170,7 +175,8 @@ impl<'p> Data<'p> {
                 }
             })
             .collect();
-        Data { n, mu, frictional, knn, knt, atn, att, g_const, s_const, loads }
+        let fast_tt = if frictional { flex.toeplitz_tt().map(|t| (t, &p.slip)) } else { None };
+        Data { n, mu, frictional, knn, knt, atn, att, fast_nn, fast_tt, g_const, s_const, loads }
     }
 }
 
@@ -276,7 +282,10 @@ fn matvec(k: &Mat<f64>, v: &[f64]) -> Vec<f64> {
 fn kinematics(d: &Data, f: &[f64], h: &[f64], rho: &[f64], constants: bool) -> (Vec<f64>, Vec<f64>) {
     let n = d.n;
     let c = if constants { 1.0 } else { 0.0 };
-    let mut g = matvec(d.knn, f);
+    let mut g = match d.fast_nn {
+        Some(t) => t.apply(f),
+        None => matvec(d.knn, f),
+    };
     if let Some(k) = d.knt {
         g.iter_mut().zip(matvec(k, h)).for_each(|(a, b)| *a += b);
     }
@@ -285,7 +294,10 @@ fn kinematics(d: &Data, f: &[f64], h: &[f64], rho: &[f64], constants: bool) -> (
     }
     let s = match &d.att {
         Some(att) => {
-            let mut s = matvec(att, h);
+            let mut s = match d.fast_tt {
+                Some((t, slip)) => slip.apply(&t.apply(h)),
+                None => matvec(att, h),
+            };
             if let Some(k) = &d.atn {
                 s.iter_mut().zip(matvec(k, f)).for_each(|(a, b)| *a += b);
             }
@@ -306,11 +318,120 @@ struct Reduced {
     sets: Vec<NodeSet>,
     contact: Vec<usize>,
     stick: Vec<usize>,
-    lu: Option<faer::linalg::solvers::PartialPivLu<f64>>,
+    factor: Factor,
+}
+
+/// The factorisation of a reduced system.
+enum Factor {
+    /// Nothing to solve (no contact node, no load-driven motion).
+    Empty,
+    /// The whole block, LU with partial pivoting (with coupling, or a layout that does not split).
+    Whole(faer::linalg::solvers::PartialPivLu<f64>),
+    /// Block lower-triangular (see [`Split`]).
+    Split(Split),
+}
+
+/// Without normal–tangential coupling (K_NT = 0 and D K_TN = 0) the reduced system is block lower-triangular: the
+/// contact gaps and the normal equilibrium rows involve only f_C and the normal load-driven motions (N), while the
+/// sticking slips and the tangential rows involve both (T). Then
+///
+/// ```text
+///   A_NN y_N = b_N,   A_TT y_T = b_T − A_TN y_N
+/// ```
+///
+/// two factorisations of the diagonal blocks instead of one of the whole (n_N³ + n_T³ against (n_N + n_T)³), and
+/// A_NN does not depend on the stick–slip sets: it is factorised once for a contact set and reused across
+/// iterations, and across the drives of a model (a creep curve) when the next A_NN is exactly the same matrix
+/// ([`NormalFactor`]). The split is taken only when A_NT is exactly zero, checked entry by entry.
+struct Split {
+    /// Positions of the N unknowns (and rows) in the reduced layout, then those of T.
+    n_idx: Vec<usize>,
+    t_idx: Vec<usize>,
+    normal: Arc<NormalFactor>,
+    tangential: Option<faer::linalg::solvers::PartialPivLu<f64>>,
+    /// A_TN.
+    lower: Mat<f64>,
+}
+
+/// A normal block A_NN and its factorisation: reused for a later A_NN only when the two are equal entry by entry.
+struct NormalFactor {
+    a: Mat<f64>,
+    lu: faer::linalg::solvers::PartialPivLu<f64>,
+}
+
+impl NormalFactor {
+    /// The factorisation of `a`: `cache`'s when its matrix is exactly `a`, else a new one (which `cache` then keeps).
+    fn of(a: Mat<f64>, cache: &mut Option<Arc<NormalFactor>>) -> Arc<NormalFactor> {
+        if let Some(c) = cache {
+            let same = c.a.nrows() == a.nrows()
+                && c.a.ncols() == a.ncols()
+                && (0..a.ncols()).all(|j| (0..a.nrows()).all(|i| c.a[(i, j)].to_bits() == a[(i, j)].to_bits()));
+            if same {
+                return Arc::clone(c);
+            }
+        }
+        let lu = a.partial_piv_lu();
+        let made = Arc::new(NormalFactor { a, lu });
+        *cache = Some(Arc::clone(&made));
+        made
+    }
+}
+
+/// The N and T positions of a reduced system (module docs of [`Split`]), when the system splits.
+fn split_layout(d: &Data, a: &Mat<f64>, nc: usize, ns: usize) -> Option<(Vec<usize>, Vec<usize>)> {
+    if !d.frictional || d.knt.is_some() || d.atn.is_some() {
+        return None;
+    }
+    let base = nc + ns;
+    let normal_load = |l: usize| d.loads[l].row_t.iter().all(|v| *v == 0.0);
+    let n_idx: Vec<usize> = (0..nc).chain((0..d.loads.len()).filter(|&l| normal_load(l)).map(|l| base + l)).collect();
+    let t_idx: Vec<usize> =
+        (nc..base).chain((0..d.loads.len()).filter(|&l| !normal_load(l)).map(|l| base + l)).collect();
+    let upper_zero = n_idx.iter().all(|&r| t_idx.iter().all(|&c| a[(r, c)] == 0.0));
+    (upper_zero && !n_idx.is_empty()).then_some((n_idx, t_idx))
+}
+
+impl Factor {
+    fn of(a: Mat<f64>, layout: Option<(Vec<usize>, Vec<usize>)>, cache: &mut Option<Arc<NormalFactor>>) -> Factor {
+        if a.nrows() == 0 {
+            return Factor::Empty;
+        }
+        let Some((n_idx, t_idx)) = layout else { return Factor::Whole(a.partial_piv_lu()) };
+        let pick = |rows: &[usize], cols: &[usize]| Mat::from_fn(rows.len(), cols.len(), |i, j| a[(rows[i], cols[j])]);
+        let normal = NormalFactor::of(pick(&n_idx, &n_idx), cache);
+        let tangential = (!t_idx.is_empty()).then(|| pick(&t_idx, &t_idx).partial_piv_lu());
+        let lower = pick(&t_idx, &n_idx);
+        Factor::Split(Split { n_idx, t_idx, normal, tangential, lower })
+    }
+
+    /// Solve with the factorised system (b: m × 1).
+    fn solve(&self, b: &Mat<f64>) -> Mat<f64> {
+        match self {
+            Factor::Empty => Mat::zeros(0, 1),
+            Factor::Whole(lu) => lu.solve(b),
+            Factor::Split(s) => {
+                let bn = Mat::from_fn(s.n_idx.len(), 1, |i, _| b[(s.n_idx[i], 0)]);
+                let yn = s.normal.lu.solve(&bn);
+                let mut y = Mat::<f64>::zeros(b.nrows(), 1);
+                for (k, &i) in s.n_idx.iter().enumerate() {
+                    y[(i, 0)] = yn[(k, 0)];
+                }
+                if let Some(lu) = &s.tangential {
+                    let lyn = &s.lower * &yn;
+                    let bt = Mat::from_fn(s.t_idx.len(), 1, |i, _| b[(s.t_idx[i], 0)] - lyn[(i, 0)]);
+                    let yt = lu.solve(&bt);
+                    for (k, &i) in s.t_idx.iter().enumerate() {
+                        y[(i, 0)] = yt[(k, 0)];
+                    }
+                }
+                y
+            }
+        }
+    }
 }
 
 impl Reduced {
-    fn new(d: &Data, sets: &[NodeSet]) -> Reduced {
+    fn new(d: &Data, sets: &[NodeSet], cache: &mut Option<Arc<NormalFactor>>) -> Reduced {
         let n = d.n;
         let contact: Vec<usize> = (0..n).filter(|&i| sets[i] != NodeSet::Separated).collect();
         let stick: Vec<usize> =
@@ -355,8 +476,9 @@ impl Reduced {
                 a[(nc + r, nc + ns + l)] = ld.slip[i];
             }
         }
-        let lu = (m > 0).then(|| a.partial_piv_lu());
-        Reduced { sets: sets.to_vec(), contact, stick, lu }
+        let layout = split_layout(d, &a, nc, ns);
+        let factor = Factor::of(a, layout, cache);
+        Reduced { sets: sets.to_vec(), contact, stick, factor }
     }
 
     /// Solve the full system of these sets for the right-hand side r (full layout); `None` if singular.
@@ -394,10 +516,7 @@ impl Reduced {
                 (0..n).map(|j| ld.row_n[j] * f[j] + if d.frictional { ld.row_t[j] * h[j] } else { 0.0 }).sum();
             b[(nc + ns + l, 0)] = r[base + l] - known_row;
         }
-        let y = match &self.lu {
-            Some(lu) => lu.solve(&b),
-            None => Mat::zeros(0, 1),
-        };
+        let y = self.factor.solve(&b);
         if !(0..y.nrows()).all(|k| y[(k, 0)].is_finite()) {
             return None;
         }
@@ -513,8 +632,18 @@ const GMRES_TOLERANCE: f64 = 1e-12;
 
 /// The solver of the linear systems of the iteration: a factorisation of some sets' system, reused through GMRES
 /// while the sets differ from it in few nodes.
+///
+/// **Across solves.** On a model solved for many drives (a creep curve), the last factorisation and the normal
+/// block's ([`NormalFactor`]) are kept in the flexibility's [`crate::flexibility::Memo`] and taken up by the next
+/// solve: the normal block directly when it is exactly the same matrix, the last system only as GMRES's
+/// preconditioner (it may belong to another drive: it changes how fast GMRES converges, never the answer), and the
+/// final solve of every solve is a direct one of its own sets.
 struct Linear {
     base: Option<Reduced>,
+    /// Whether `base` is this problem's system for its sets (false for one carried over from another solve).
+    base_exact: bool,
+    /// The last normal block's factorisation.
+    normal: Option<Arc<NormalFactor>>,
     /// Factorisations and GMRES iterations so far.
     factorisations: usize,
     gmres_iterations: usize,
@@ -522,38 +651,68 @@ struct Linear {
     last_direct: bool,
 }
 
+/// What the active-set method keeps in a flexibility's memo between solves ([`Linear`]).
+struct Kept {
+    base: Option<Reduced>,
+    normal: Option<Arc<NormalFactor>>,
+}
+
 impl Linear {
     fn new() -> Linear {
-        Linear { base: None, factorisations: 0, gmres_iterations: 0, last_direct: false }
+        Linear {
+            base: None,
+            base_exact: false,
+            normal: None,
+            factorisations: 0,
+            gmres_iterations: 0,
+            last_direct: false,
+        }
+    }
+
+    /// A solver starting from what the last solve on `flex` kept (for a problem of `n` nodes).
+    fn resume(flex: &crate::flexibility::Flexibility) -> Linear {
+        let mut l = Linear::new();
+        if let Some(k) = flex.memo.take::<Kept>() {
+            l.base = k.base.filter(|b| b.sets.len() == flex.n());
+            l.normal = k.normal;
+        }
+        l
+    }
+
+    /// Leave the factorisations in `flex`'s memo for the next solve.
+    fn keep(self, flex: &crate::flexibility::Flexibility) {
+        flex.memo.put(Kept { base: self.base, normal: self.normal });
     }
 
     /// Solve the system of `sets` (returning the iterate), from the previous full solution `y0` when given; with
-    /// `direct`, by a factorisation of these sets (the final, round-off accurate solve).
-    fn solve(&mut self, d: &Data, sets: &[NodeSet], y0: Option<&[f64]>, direct: bool) -> Option<Iterate> {
+    /// `last`, to round-off (the final solve of the converged sets: a factorisation of these sets, or the one it
+    /// has when it is of these sets).
+    fn solve(&mut self, d: &Data, sets: &[NodeSet], y0: Option<&[f64]>, last: bool) -> Option<Iterate> {
         let full = Full { d, sets: sets.to_vec() };
         let b = full.rhs();
         let changed = self.base.as_ref().map_or(usize::MAX, |r| (0..d.n).filter(|&i| r.sets[i] != sets[i]).count());
         let reuse_limit = (d.n / 100).clamp(8, 40);
+        let exact_hit = changed == 0 && self.base_exact;
         let mut y = None;
-        if let (Some(base), Some(y0), false) = (&self.base, y0, direct || changed > reuse_limit || changed == 0) {
+        if let (Some(base), Some(y0), false) = (&self.base, y0, last || changed > reuse_limit || exact_hit) {
             let e = |v: &[f64]| full.apply(v);
             let prec = |v: &[f64]| base.solve_full(d, v);
-            // GMRES converges in about twice the rank of the change; 1e-12 is ample to decide the sets (the final
-            // solve is direct).
+            // GMRES converges in about twice the rank of the change.
             if let Some((sol, its)) = gmres(&e, &prec, &b, y0, GMRES_TOLERANCE, 4 * changed + 20) {
                 self.gmres_iterations += its;
                 y = Some(sol);
             }
         }
-        self.last_direct = y.is_none() || changed == 0;
+        self.last_direct = y.is_none() || exact_hit || last;
         let y = match y {
             Some(y) => y,
-            None if changed == 0 => self.base.as_ref()?.solve_full(d, &b)?,
+            None if exact_hit => self.base.as_ref()?.solve_full(d, &b)?,
             None => {
-                let red = Reduced::new(d, sets);
+                let red = Reduced::new(d, sets, &mut self.normal);
                 self.factorisations += 1;
                 let sol = red.solve_full(d, &b)?;
                 self.base = Some(red);
+                self.base_exact = true;
                 sol
             }
         };
@@ -616,13 +775,14 @@ fn update(d: &Data, sets: &[NodeSet], it: &Iterate, margin: f64) -> (Vec<NodeSet
 fn iterate(
     d: &Data,
     mut sets: Vec<NodeSet>,
+    start: Option<Vec<f64>>,
     s: &ActiveSetSettings,
     count: &mut usize,
     linear: &mut Linear,
 ) -> Result<Iterate, String> {
     let mut seen: HashSet<Vec<NodeSet>> = HashSet::new();
     let mut max_changes = usize::MAX;
-    let mut previous: Option<Vec<f64>> = None;
+    let mut previous: Option<Vec<f64>> = start.filter(|y| y.len() == Full { d, sets: sets.clone() }.size());
     loop {
         *count += 1;
         if *count > s.max_iterations {
@@ -744,19 +904,31 @@ impl Solver for ActiveSet {
             (None, None) if d.frictional => {
                 let normal = Data::of(p, true);
                 let mut linear = Linear::new();
-                match iterate(&normal, vec![NodeSet::Stick; n], &self.settings, &mut count, &mut linear) {
+                match iterate(&normal, vec![NodeSet::Stick; n], None, &self.settings, &mut count, &mut linear) {
                     Ok(it) => it.f.iter().map(|&f| if f > 0.0 { NodeSet::Stick } else { NodeSet::Separated }).collect(),
                     Err(_) => vec![NodeSet::Stick; n],
                 }
             }
             (None, None) => vec![NodeSet::Stick; n],
         };
-        let mut linear = Linear::new();
-        let result = iterate(&d, start, &self.settings, &mut count, &mut linear);
+        // The warm start's unknowns in the full layout [f; h; ρ], GMRES's first guess.
+        let start_y = p.warm.as_ref().filter(|w| w.f.len() == n && w.rigid.len() == p.dofs.len()).map(|w| {
+            let h = w.h.clone().filter(|h| h.len() == n && d.frictional).unwrap_or_else(|| vec![0.0; n]);
+            let rho = p.dofs.iter().zip(&w.rigid).filter(|(dof, _)| p.is_unknown(dof)).map(|(_, v)| *v);
+            let f = w.f.iter().copied();
+            if d.frictional {
+                f.chain(h).chain(rho).collect::<Vec<f64>>()
+            } else {
+                f.chain(rho).collect()
+            }
+        });
+        let mut linear = Linear::resume(p.flex);
+        let result = iterate(&d, start, start_y, &self.settings, &mut count, &mut linear);
+        let (factorisations, gmres_iterations) = (linear.factorisations, linear.gmres_iterations);
+        linear.keep(p.flex);
         if std::env::var_os("ROLLBEM_DEBUG_AS").is_some() {
             eprintln!(
-                "active set: {count} iterations, {} factorisations, {} GMRES iterations",
-                linear.factorisations, linear.gmres_iterations
+                "active set: {count} iterations, {factorisations} factorisations, {gmres_iterations} GMRES iterations"
             );
         }
         match result {
@@ -781,12 +953,12 @@ impl Solver for ActiveSet {
                     message: format!(
                         "active sets converged in {count} iterations ({} factorisations and {} GMRES iterations on \
                          the full grid)",
-                        linear.factorisations, linear.gmres_iterations
+                        factorisations, gmres_iterations
                     ),
                     work: Work::of(&[
                         ("iterations", count as u64),
-                        ("factorisations", linear.factorisations as u64),
-                        ("gmres", linear.gmres_iterations as u64),
+                        ("factorisations", factorisations as u64),
+                        ("gmres", gmres_iterations as u64),
                     ]),
                     polish_change: None,
                 }

@@ -42,12 +42,12 @@ pub struct Grid {
     pub b: Vec<f64>,
     /// Collocation points (midpoints).
     pub xc: Vec<f64>,
-    /// Uniform spacing and left end (x0, h), when the scene gives `contact_half_width` (the Toeplitz fast path).
+    /// Uniform spacing and left end (x0, h), when the scene gives `contact_half_width` or `contact_x` (the Toeplitz fast path).
     pub uniform: Option<(f64, f64)>,
 }
 
 impl Grid {
-    /// The grid of a scene (lengths / L0): uniform in x with `contact_half_width`, the x-projections of the BEM
+    /// The grid of a scene (lengths / L0): uniform in x with `contact_half_width` or `contact_x`, the x-projections of the BEM
     /// wheel's contact chords with `contact_arc_deg`.
     pub fn of(scene: &Scene) -> Grid {
         let l0 = 2.0 * scene.radius();
@@ -59,6 +59,11 @@ impl Grid {
                 let m = crate::halfplane::uniform_mesh(x0, h, n);
                 Grid { a: m.a, b: m.b, xc: m.xc, uniform: Some((x0, h)) }
             }
+            ZoneExtent::Span { x_min, x_max } => {
+                let (x0, h) = (x_min / l0, (x_max - x_min) / l0 / n as f64);
+                let m = crate::halfplane::uniform_mesh(x0, h, n);
+                Grid { a: m.a, b: m.b, xc: m.xc, uniform: Some((x0, h)) }
+            }
             ZoneExtent::Arc { .. } => {
                 let rho = 0.5;
                 let x: Vec<f64> =
@@ -66,6 +71,15 @@ impl Grid {
                 let xc = x.windows(2).map(|v| 0.5 * (v[0] + v[1])).collect();
                 Grid { a: x[..n].to_vec(), b: x[1..].to_vec(), xc, uniform: None }
             }
+        }
+    }
+
+    /// The strips' widths: the spacing h itself on a uniform grid (so that K = C W⁻¹ stays exactly Toeplitz, as
+    /// [`crate::toeplitz`] needs; b_j − a_j differs from h in the last bits), b_j − a_j otherwise.
+    pub fn widths(&self) -> Vec<f64> {
+        match self.uniform {
+            Some((_, h)) => vec![h; self.xc.len()],
+            None => self.a.iter().zip(&self.b).map(|(a, b)| b - a).collect(),
         }
     }
 
@@ -103,7 +117,7 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
             Profile::Parabola => x * x / (2.0 * rho),
         })
         .collect();
-    let weights: Vec<f64> = grid.a.iter().zip(&grid.b).map(|(a, b)| b - a).collect();
+    let weights = grid.widths();
     let hp = HalfPlane::new(1.0, w.material.poisson_ratio, datum_depth / l0);
     let c = grid.blocks(&hp);
     let all = blocks == Blocks::All;
@@ -122,6 +136,8 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
         g0,
         weights,
         scales: Scales { length: l0, modulus: w.material.youngs_modulus },
+        memo: Default::default(),
+        derived: Default::default(),
     };
     add_counter_body(&mut flex, scene, &grid);
     let assembly = t0.elapsed().as_secs_f64();
@@ -148,7 +164,7 @@ pub fn add_counter_body(flex: &mut Flexibility, scene: &Scene, grid: &Grid) {
     let l0 = flex.scales.length;
     let hp = HalfPlane::new(material.youngs_modulus / flex.scales.modulus, material.poisson_ratio, datum_depth / l0);
     let c = grid.blocks(&hp).into_counter_body();
-    let w: Vec<f64> = grid.a.iter().zip(&grid.b).map(|(a, b)| b - a).collect();
+    let w = grid.widths();
     let add = |k: &mut Mat<f64>, block: &[f64]| {
         let n = w.len();
         for j in 0..n {

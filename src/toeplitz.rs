@@ -1,0 +1,189 @@
+//! Toeplitz matrices (plus a constant per column) and their products by FFT.
+//!
+//! On a uniform grid the half-plane's influence matrices are Toeplitz up to one term: the entry (i, j) is a function
+//! of i − j (a strip's influence depends on the distance to the collocation point) plus the displacement of the datum
+//! point under strip j, which is the same for every row ([`crate::source::half_plane`]: displacements are relative to
+//! a datum at depth D below the contact centre). So K = T + 1 cᵀ, also with an elastic counter-body on the same grid.
+//! A Toeplitz product is a convolution; embedded in a circulant of length L ≥ 2n − 1 it takes two real FFTs and an
+//! inverse (O(n log n)) instead of the dense product's 2n² operations, and 1 (cᵀx) adds O(n). The structure is
+//! detected, not assumed: [`Toeplitz::detect`] fits t and c and checks every entry, so a BEM wheel's flexibility
+//! (not of this form) keeps the dense product.
+//!
+//! **Where it pays** (`benches/physics.rs`, group `toeplitz`, on this project's 2-core machine): the FFT product
+//! overtakes faer's dense column-major product between n = 128 and n = 256; [`FFT_ABOVE`] is where rollbem switches.
+//! The products are exact up to round-off relative to ‖T‖·‖x‖ (about 1e-15 here, tested against the dense product),
+//! not entry by entry: they serve the iterations (GMRES applies, the active sets' gaps and slips); every final answer
+//! is solved by a factorisation and certified by the dense residuals.
+
+use faer::Mat;
+use realfft::num_complex::Complex;
+use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
+use std::sync::Arc;
+
+/// Matrices of at least this many rows use the FFT product (see the module docs for the measurement).
+pub const FFT_ABOVE: usize = 192;
+
+/// How closely a matrix must fit T + 1 cᵀ, relative to its largest entry, for [`Toeplitz::detect`]: the round-off
+/// of the fit's subtractions (the FFT product itself is accurate to about 1e-15 of ‖T‖‖x‖).
+pub const DETECT_TOLERANCE: f64 = 1e-14;
+
+/// A square Toeplitz matrix plus a constant per column, T + 1 cᵀ, ready for FFT products.
+#[derive(Clone)]
+pub struct Toeplitz {
+    n: usize,
+    /// c: the constant added to each column (`None`: zero).
+    column_shift: Option<Vec<f64>>,
+    len: usize,
+    /// FFT of the circulant's first column, divided by `len` (the inverse FFT's scale).
+    spectrum: Vec<Complex<f64>>,
+    forward: Arc<dyn RealToComplex<f64>>,
+    inverse: Arc<dyn ComplexToReal<f64>>,
+}
+
+impl std::fmt::Debug for Toeplitz {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Toeplitz").field("n", &self.n).field("len", &self.len).finish()
+    }
+}
+
+/// The smallest length ≥ `min` of the form 2^a 3^b (fast FFT sizes).
+fn fast_length(min: usize) -> usize {
+    let mut best = min.next_power_of_two();
+    let mut p3 = 1;
+    while p3 < best {
+        let mut v = p3;
+        while v < min {
+            v *= 2;
+        }
+        best = best.min(v);
+        p3 *= 3;
+    }
+    best
+}
+
+impl Toeplitz {
+    /// The Toeplitz matrix with first column `col` (T[k, 0]) and first row `row` (T[0, k]); `col[0]` is the diagonal
+    /// (`row[0]` is ignored). Both of length n ≥ 1.
+    pub fn from_parts(col: &[f64], row: &[f64]) -> Toeplitz {
+        let n = col.len();
+        assert!(n >= 1 && row.len() == n, "Toeplitz::from_parts: column and row of the same length n ≥ 1");
+        let len = fast_length(2 * n);
+        let mut planner = RealFftPlanner::<f64>::new();
+        let forward = planner.plan_fft_forward(len);
+        let inverse = planner.plan_fft_inverse(len);
+        let mut c = vec![0.0; len];
+        c[..n].copy_from_slice(col);
+        for k in 1..n {
+            c[len - k] = row[k];
+        }
+        let mut spectrum = forward.make_output_vec();
+        forward.process(&mut c, &mut spectrum).expect("FFT lengths from the plan");
+        let scale = 1.0 / len as f64;
+        spectrum.iter_mut().for_each(|v| *v *= scale);
+        Toeplitz { n, column_shift: None, len, spectrum, forward, inverse }
+    }
+
+    /// `Some` when `m` is square, has at least [`FFT_ABOVE`] rows and is T + 1 cᵀ (T Toeplitz, c a constant per
+    /// column) to [`DETECT_TOLERANCE`] of its largest entry at every entry; `None` otherwise (the dense product is then
+    /// the faster or the only one). The gauge c₀ = 0: t(k) = m[k, 0] for k ≥ 0, c_j = m[j, j] − m[0, 0],
+    /// t(−j) = m[0, j] − c_j.
+    pub fn detect(m: &Mat<f64>) -> Option<Toeplitz> {
+        let n = m.nrows();
+        if n < FFT_ABOVE || m.ncols() != n {
+            return None;
+        }
+        let c: Vec<f64> = (0..n).map(|j| m[(j, j)] - m[(0, 0)]).collect();
+        let col: Vec<f64> = (0..n).map(|i| m[(i, 0)]).collect();
+        let row: Vec<f64> = (0..n).map(|j| m[(0, j)] - c[j]).collect();
+        let scale = (0..n).map(|j| (0..n).fold(0.0_f64, |a, i| a.max(m[(i, j)].abs()))).fold(0.0_f64, f64::max);
+        let tol = DETECT_TOLERANCE * scale;
+        let fits = (0..n).all(|j| {
+            (0..n).all(|i| {
+                let t = if i >= j { col[i - j] } else { row[j - i] };
+                (m[(i, j)] - (t + c[j])).abs() <= tol
+            })
+        });
+        if !fits || !scale.is_finite() {
+            return None;
+        }
+        let mut op = Toeplitz::from_parts(&col, &row);
+        op.column_shift = c.iter().any(|v| *v != 0.0).then_some(c);
+        Some(op)
+    }
+
+    /// Number of rows (and columns).
+    pub fn n(&self) -> usize {
+        self.n
+    }
+
+    /// T x.
+    pub fn apply(&self, x: &[f64]) -> Vec<f64> {
+        assert_eq!(x.len(), self.n, "Toeplitz::apply: x must have n entries");
+        let mut buf = vec![0.0; self.len];
+        buf[..self.n].copy_from_slice(x);
+        let mut spec = self.forward.make_output_vec();
+        self.forward.process(&mut buf, &mut spec).expect("FFT lengths from the plan");
+        spec.iter_mut().zip(&self.spectrum).for_each(|(a, b)| *a *= b);
+        // The inverse of a real signal's spectrum: the imaginary parts at 0 and len/2 are round-off.
+        spec[0].im = 0.0;
+        if self.len % 2 == 0 {
+            spec[self.len / 2].im = 0.0;
+        }
+        self.inverse.process(&mut spec, &mut buf).expect("FFT lengths from the plan");
+        buf.truncate(self.n);
+        if let Some(c) = &self.column_shift {
+            let cx: f64 = c.iter().zip(x).map(|(a, b)| a * b).sum();
+            buf.iter_mut().for_each(|v| *v += cx);
+        }
+        buf
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The FFT product against the dense product (an independent computation) on a non-symmetric Toeplitz matrix
+    /// with a logarithmic kernel like the half-plane's, at sizes that hit power-of-two and 2^a·3^b lengths.
+    #[test]
+    fn fft_product_matches_the_dense_product() {
+        for n in [1usize, 2, 5, 96, 200, 301] {
+            let t = |k: i64| if k >= 0 { -(1.0 + k as f64).ln() + 0.3 } else { -(1.0 - k as f64).ln() - 0.2 };
+            let m = Mat::<f64>::from_fn(n, n, |i, j| t(i as i64 - j as i64));
+            let col: Vec<f64> = (0..n).map(|i| m[(i, 0)]).collect();
+            let row: Vec<f64> = (0..n).map(|j| m[(0, j)]).collect();
+            let op = Toeplitz::from_parts(&col, &row);
+            let x: Vec<f64> = (0..n).map(|i| (i as f64 * 0.37).sin() + 0.1).collect();
+            let dense: Vec<f64> = (0..n).map(|i| (0..n).map(|j| m[(i, j)] * x[j]).sum()).collect();
+            let scale = dense.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+            for (a, b) in dense.iter().zip(op.apply(&x)) {
+                assert!((a - b).abs() <= 1e-13 * scale, "n = {n}: {a} vs {b}");
+            }
+        }
+    }
+
+    #[test]
+    fn detect_takes_toeplitz_plus_column_constants_of_fft_size_only() {
+        let n = FFT_ABOVE;
+        let m = Mat::<f64>::from_fn(n, n, |i, j| 1.0 / (1.0 + (i as f64 - j as f64).abs()) + (0.3 * j as f64).cos());
+        let op = Toeplitz::detect(&m).expect("T + 1 c^T");
+        let x: Vec<f64> = (0..n).map(|i| (i as f64 * 0.21).cos()).collect();
+        let dense: Vec<f64> = (0..n).map(|i| (0..n).map(|j| m[(i, j)] * x[j]).sum()).collect();
+        let scale = dense.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+        for (a, b) in dense.iter().zip(op.apply(&x)) {
+            assert!((a - b).abs() <= 1e-13 * scale);
+        }
+        let mut bent = m.clone();
+        bent[(7, 3)] += 1e-9;
+        assert!(Toeplitz::detect(&bent).is_none(), "one entry off its diagonal's value");
+        let small = Mat::<f64>::from_fn(n - 1, n - 1, |i, j| 1.0 / (1.0 + (i as f64 - j as f64).abs()));
+        assert!(Toeplitz::detect(&small).is_none(), "below FFT_ABOVE the dense product is used");
+    }
+
+    #[test]
+    fn fast_lengths_are_smooth_and_large_enough() {
+        assert_eq!(fast_length(1682), 1728); // 2^6·3^3, for the 841-element grid
+        assert_eq!(fast_length(222), 243);
+        assert_eq!(fast_length(256), 256);
+    }
+}
