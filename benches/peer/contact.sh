@@ -12,6 +12,9 @@
 #       GRID=exact                 exact: `[mesh] contact_x` on CONTACT's span; centred: `contact_half_width` with
 #                                  CONTACT's element count and size (for a rollbem without contact_x)
 #       CPU=0                      the core every timed run is pinned to (taskset)
+#       CONTACT_IESTIM=            an initial-estimate digit I for the timed CONTACT runs' cases after the first
+#                                  (default: the input's, I = 0, a cold start; rollbem's sweep warm-starts each case
+#                                  from the previous one's solution; 3 asks CONTACT to do the same)
 #       CONTACT_EPS=               a tolerance for CONTACT's results run (default: the input's EPS; e.g. 1e-10 shows
 #                                  how much of a difference is CONTACT's stopping criterion; the timed runs keep
 #                                  the input's)
@@ -246,6 +249,22 @@ results_variant() {
   ' "$1"
 }
 
+# Copy of an input with the I digit (initial estimate) of every case after the first set to $1.
+iestim_variant() {
+  awk -v want="$1" '
+    $2 == "MODULE" && $1 == 3 { ncase++ }
+    $2 ~ /G-I-A-O-W-R$/ && $0 !~ /^[ \t]*%/ && ncase > 1 {
+      n = split($2, L, "-"); d = $1
+      while (length(d) < n) d = "0" d
+      out = ""
+      for (i = 1; i <= n; i++) out = out (L[i] == "I" ? want : substr(d, i, 1))
+      match($0, /[0-9]+/)
+      $0 = substr($0, 1, RSTART - 1) out substr($0, RSTART + RLENGTH)
+    }
+    { print }
+  ' "$2"
+}
+
 # CONTACT's .out: one line per case "K CKSI FN FX FX/(FSTAT FN) NCON NADH DQ".
 parse_out() {
   awk '
@@ -370,7 +389,11 @@ for case_name in $cases; do
   say "$case_name: $mx elements, $ncases cases ($nuniq creepages), EPS $(kv eps "$p")"
 
   # CONTACT: the results run (every case printed and written to a Matlab file; not timed).
-  cp "$inp" "$cw/timed/$case_name.inp"
+  if [[ -n ${CONTACT_IESTIM:-} ]]; then
+    iestim_variant "$CONTACT_IESTIM" "$inp" >"$cw/timed/$case_name.inp"
+  else
+    cp "$inp" "$cw/timed/$case_name.inp"
+  fi
   results_variant "$inp" >"$cw/results/$case_name.inp"
   say "  CONTACT results run (output of every case)"
   (cd "$cw/results" && "$contact_bin" 2 "$case_name" </dev/null >stdout.txt 2>&1) || die "CONTACT failed on $case_name (results run)"
@@ -533,7 +556,8 @@ fi
   echo "Inputs: CONTACT's examples/carter2d.inp and perfc_test/carter2d_100.inp, carter2d_800.inp (steady rolling of two identical half-planes, G = 82 000, ν = 0.28, profile x²/(2·500), μ = 0.3, FN = 35 780 on a strip DY = 200 wide: 178.9 per unit width). rollbem: \`[wheel] model = \"half_plane\"\`, \`profile = \"parabola\"\` (CONTACT's IBASE 1 and 2 both give h = x²/(2R)), E = 2G(1 + ν), \`[counter_body] kind = \"half_plane\"\` of the same material, \`coupling = false\`, \`normal_load = FN/DY\`, \`[rolling] mode = \"steady\"\`, \`direction = +1\` (CHI = 0), creepage = CKSI (the same sign convention: CKSI > 0 is braking, FX < 0 on body 1; rollbem's Q on the wheel likewise). $grid_text"
   [[ -n ${CONTACT_EPS:-} ]] && echo "CONTACT_EPS=$CONTACT_EPS: CONTACT's results (the comparison columns) were computed with EPS = $CONTACT_EPS and MAXGS = MAXIN = 9999; its timed runs with the inputs' own EPS."
   echo "Compared: FX per case (all cases of the input; CONTACT's FX = Σ PX·DX·DY from its Matlab files); contact (adhesion + slip) and stick (adhesion) element counts at every distinct creepage (equal counts: both equal), shown at the middle creepage; nodal tractions p, q at every distinct creepage (rollbem \`run\`), the largest difference over the curve relative to CONTACT's peak pressure. CONTACT's output is from a copy of each input with O = 2 and A = 1 in every case (its printed case 1 equals the timed run's)."
-  echo "Times: CPU (user + sys) and peak RSS of the whole process (GNU time), pinned to core $cpu (taskset), median of $pairs runs alternating rollbem and CONTACT. rollbem: \`rollbem sweep\` of the input's creepages in its order (carter2d_100: its 50 creepages 20 times, one process, one model built once, as CONTACT builds its influence coefficients once), RAYON_NUM_THREADS=1. CONTACT: \`contact_linux64 2 INPUT\` on the unmodified input."
+  [[ -n ${CONTACT_IESTIM:-} ]] && echo "CONTACT_IESTIM=$CONTACT_IESTIM: CONTACT's timed runs start every case after the first with I = $CONTACT_IESTIM (the inputs: I = 0)."
+  echo "Times: CPU (user + sys) and peak RSS of the whole process (GNU time), pinned to core $cpu (taskset), median of $pairs runs alternating rollbem and CONTACT. rollbem: \`rollbem sweep\` of the input's creepages in its order (carter2d_100: its 50 creepages 20 times, one process, one model built once, as CONTACT builds its influence coefficients once; each case warm-started from the previous case's solution), RAYON_NUM_THREADS=1. CONTACT: \`contact_linux64 2 INPUT\` on the input (every case after the first starts from zero tractions, I = 0, unless CONTACT_IESTIM says otherwise)."
   echo "Versions: $rollbem_version; CONTACT $contact_rev, commit $contact_commit, built with $gfortran_version ($contact_build). CONTACT's solvers here: NORM by NormCG, TANG by SteadyGS (T = 3), tolerance EPS as noted per input."
   echo "Machine: $(nproc) cores, shared; load average $load_start at the start, $(loadavg) at the end (other work inflates times, CONTACT's and rollbem's alike)."
   for note in "${notes[@]}"; do echo "Note: $note"; done
