@@ -12,9 +12,9 @@
 #       GRID=exact                 exact: `[mesh] contact_x` on CONTACT's span; centred: `contact_half_width` with
 #                                  CONTACT's element count and size (for a rollbem without contact_x)
 #       CPU=0                      the core every timed run is pinned to (taskset)
-#       CONTACT_IESTIM=            an initial-estimate digit I for the timed CONTACT runs' cases after the first
-#                                  (default: the input's, I = 0, a cold start; rollbem's sweep warm-starts each case
-#                                  from the previous one's solution; 3 asks CONTACT to do the same)
+#       WARM=1                     also time CONTACT warm-started: a copy of the input whose cases after the first
+#                                  have I = 3 (start from the previous case's solution, as rollbem's sweep does;
+#                                  the inputs have I = 0, a cold start); WARM=0 skips it
 #       CONTACT_EPS=               a tolerance for CONTACT's results run (default: the input's EPS; e.g. 1e-10 shows
 #                                  how much of a difference is CONTACT's stopping criterion; the timed runs keep
 #                                  the input's)
@@ -41,6 +41,7 @@ solvers=${SOLVERS:-active_set}
 lemke_cases=${LEMKE_CASES:-"carter2d carter2d_100"}
 grid_mode=${GRID:-exact}
 cpu=${CPU:-0}
+warm=${WARM:-1}
 contact_repo=${CONTACT_REPO:-https://github.com/eve70a/CONTACT}
 export LC_ALL=C
 
@@ -180,6 +181,9 @@ median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] 
 loadavg() { cut -d' ' -f1-3 /proc/loadavg; }
 kv() { awk -v k="$1" '$1 == k { print $2; exit }' "$2"; }
 g() { awk -v v="$1" 'BEGIN { printf "%.6g", v }'; }
+# CPU seconds for the table (GNU time resolves 0.01 s) and the ratio of two.
+cpu_cell() { awk -v t="$1" 'BEGIN { if (t > 0) printf "%.3g", t; else print "< 0.01" }'; }
+cpu_ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (a > 0 && b > 0) printf "%.3g", a / b; else print "n/a (< 0.01 s)" }'; }
 # Run a command pinned to one core under GNU time: "user+sys seconds, peak RSS in MB" appended to TIMES.
 timed() {
   local times=$1 tf="$work/time.tmp" rc=0
@@ -249,20 +253,27 @@ results_variant() {
   ' "$1"
 }
 
-# Copy of an input with the I digit (initial estimate) of every case after the first set to $1.
+# Copy of an input with the I digit (initial estimate) of every case after the first set to $1, and the last case
+# printing its global results (O >= 2), to compare with the cold run's.
 iestim_variant() {
   awk -v want="$1" '
+    FNR == NR { if ($2 == "MODULE" && $1 == 3) last++; next }
     $2 == "MODULE" && $1 == 3 { ncase++ }
     $2 ~ /G-I-A-O-W-R$/ && $0 !~ /^[ \t]*%/ && ncase > 1 {
       n = split($2, L, "-"); d = $1
       while (length(d) < n) d = "0" d
       out = ""
-      for (i = 1; i <= n; i++) out = out (L[i] == "I" ? want : substr(d, i, 1))
+      for (i = 1; i <= n; i++) {
+        c = substr(d, i, 1)
+        if (L[i] == "I") c = want
+        if (L[i] == "O" && ncase == last && c < 2) c = 2
+        out = out c
+      }
       match($0, /[0-9]+/)
       $0 = substr($0, 1, RSTART - 1) out substr($0, RSTART + RLENGTH)
     }
     { print }
-  ' "$2"
+  ' "$2" "$2"
 }
 
 # CONTACT's .out: one line per case "K CKSI FN FX FX/(FSTAT FN) NCON NADH DQ".
@@ -389,10 +400,11 @@ for case_name in $cases; do
   say "$case_name: $mx elements, $ncases cases ($nuniq creepages), EPS $(kv eps "$p")"
 
   # CONTACT: the results run (every case printed and written to a Matlab file; not timed).
-  if [[ -n ${CONTACT_IESTIM:-} ]]; then
-    iestim_variant "$CONTACT_IESTIM" "$inp" >"$cw/timed/$case_name.inp"
-  else
-    cp "$inp" "$cw/timed/$case_name.inp"
+  cp "$inp" "$cw/timed/$case_name.inp"
+  warm_here=$((warm && ncases > 1))
+  if ((warm_here)); then
+    mkdir -p "$cw/warm"
+    iestim_variant 3 "$inp" >"$cw/warm/$case_name.inp"
   fi
   results_variant "$inp" >"$cw/results/$case_name.inp"
   say "  CONTACT results run (output of every case)"
@@ -450,6 +462,10 @@ for case_name in $cases; do
     done
     say "  pair $r/$pairs: CONTACT"
     (cd "$cw/timed" && timed "$cw/time.contact" "$contact_bin" 2 "$case_name") || die "CONTACT failed on $case_name"
+    if ((warm_here)); then
+      say "  pair $r/$pairs: CONTACT warm-started (I = 3)"
+      (cd "$cw/warm" && timed "$cw/time.contact.warm" "$contact_bin" 2 "$case_name") || die "CONTACT failed on $case_name (I = 3)"
+    fi
   done
   # The timed run and the results run compute the same thing: their first case's printed FX agree.
   parse_out "$cw/timed/$case_name.out" | head -n 1 >"$cw/contact.timed.first"
@@ -464,6 +480,15 @@ for case_name in $cases; do
 
   c_cpu=$(awk '{ print $1 }' "$cw/time.contact" | median)
   c_mem=$(awk '{ print $2 }' "$cw/time.contact" | median)
+  if ((warm_here)); then
+    w_cpu=$(awk '{ print $1 }' "$cw/time.contact.warm" | median)
+    # The warm run's answer: its last case's printed FX/(FSTAT FN) against the results run's.
+    wl=$(parse_out "$cw/warm/$case_name.out" | tail -n 1 | awk '{ print $5 }')
+    cl=$(tail -n 1 "$cw/contact.cases" | awk '{ print $5 }')
+    notes+=("$case_name: CONTACT warm-started (I = 3): last case's FX/(FSTAT FN) $wl (cold: $cl).")
+  else
+    w_cpu=$c_cpu
+  fi
   mid=$(((nuniq + 1) / 2))
   mid_cksi=$(sed -n "${mid}p" "$cw/cksi.unique")
   for solver in $case_solvers; do
@@ -529,8 +554,11 @@ for case_name in $cases; do
     fi
     r_cpu=$(awk '{ print $1 }' "$cw/time.rollbem.$solver" | median)
     r_mem=$(awk '{ print $2 }' "$cw/time.rollbem.$solver" | median)
-    ratio=$(awk -v a="$r_cpu" -v b="$c_cpu" 'BEGIN { if (b > 0 && a > 0) printf "%.3g", a / b; else print "n/a (below 0.01 s)" }')
-    rows+=("| $case_name | $mx | $ncases | $solver | $dfx (case $dfx_at) | ${mid_counts%%|*} | ${mid_counts##*|} | $agree of $nuniq | $tcell | $(printf '%.3g' "$r_cpu") | $(printf '%.3g' "$c_cpu") | $ratio | $(printf '%.1f' "$r_mem") | $(printf '%.1f' "$c_mem") |")
+    ratio=$(cpu_ratio "$r_cpu" "$c_cpu")
+    wratio=$(cpu_ratio "$r_cpu" "$w_cpu")
+    wcell="$(cpu_cell "$w_cpu")"
+    ((warm_here)) || { wcell="(1 case)"; wratio="(1 case)"; }
+    rows+=("| $case_name | $mx | $ncases | $solver | $dfx (case $dfx_at) | ${mid_counts%%|*} | ${mid_counts##*|} | $agree of $nuniq | $tcell | $(cpu_cell "$r_cpu") | $(cpu_cell "$c_cpu") | $wcell | $ratio | $wratio | $(printf '%.1f' "$r_mem") | $(printf '%.1f' "$c_mem") |")
     say "  $solver: max ΔFX/(μFN) $dfx, counts equal at $agree of $nuniq, tractions $tcell, CPU $r_cpu s vs $c_cpu s"
   done
   # rollbem's solvers against each other (each solves the same discrete problem, to round-off).
@@ -549,15 +577,14 @@ else
   grid_text="GRID=centred: rollbem's grid has CONTACT's element count and size but is centred on x = 0 (\`contact_half_width = MX·DX/2\`), shifted from CONTACT's unless its span is symmetric; tractions are compared only where the grids coincide."
 fi
 {
-  echo "| input | elements | cases | rollbem solver | max\\|FX_rollbem − FX_CONTACT\\| / (μ FN) | contact elements rollbem / CONTACT | stick elements rollbem / CONTACT | creepages with equal counts | max\\|p_rollbem − p_CONTACT\\| / max p | max\\|q_rollbem − q_CONTACT\\| / max p (worst CKSI) | CPU rollbem [s] | CPU CONTACT [s] | ratio rollbem ÷ CONTACT | peak memory rollbem [MB] | peak memory CONTACT [MB] |"
-  echo "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+  echo "| input | elements | cases | rollbem solver | max\\|FX_rollbem − FX_CONTACT\\| / (μ FN) | contact elements rollbem / CONTACT | stick elements rollbem / CONTACT | creepages with equal counts | max\\|p_rollbem − p_CONTACT\\| / max p | max\\|q_rollbem − q_CONTACT\\| / max p (worst CKSI) | CPU rollbem [s] | CPU CONTACT [s] | CPU CONTACT warm, I = 3 [s] | ratio rollbem ÷ CONTACT | ratio rollbem ÷ CONTACT warm | peak memory rollbem [MB] | peak memory CONTACT [MB] |"
+  echo "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
   printf '%s\n' "${rows[@]}"
   echo
   echo "Inputs: CONTACT's examples/carter2d.inp and perfc_test/carter2d_100.inp, carter2d_800.inp (steady rolling of two identical half-planes, G = 82 000, ν = 0.28, profile x²/(2·500), μ = 0.3, FN = 35 780 on a strip DY = 200 wide: 178.9 per unit width). rollbem: \`[wheel] model = \"half_plane\"\`, \`profile = \"parabola\"\` (CONTACT's IBASE 1 and 2 both give h = x²/(2R)), E = 2G(1 + ν), \`[counter_body] kind = \"half_plane\"\` of the same material, \`coupling = false\`, \`normal_load = FN/DY\`, \`[rolling] mode = \"steady\"\`, \`direction = +1\` (CHI = 0), creepage = CKSI (the same sign convention: CKSI > 0 is braking, FX < 0 on body 1; rollbem's Q on the wheel likewise). $grid_text"
   [[ -n ${CONTACT_EPS:-} ]] && echo "CONTACT_EPS=$CONTACT_EPS: CONTACT's results (the comparison columns) were computed with EPS = $CONTACT_EPS and MAXGS = MAXIN = 9999; its timed runs with the inputs' own EPS."
   echo "Compared: FX per case (all cases of the input; CONTACT's FX = Σ PX·DX·DY from its Matlab files); contact (adhesion + slip) and stick (adhesion) element counts at every distinct creepage (equal counts: both equal), shown at the middle creepage; nodal tractions p, q at every distinct creepage (rollbem \`run\`), the largest difference over the curve relative to CONTACT's peak pressure. CONTACT's output is from a copy of each input with O = 2 and A = 1 in every case (its printed case 1 equals the timed run's)."
-  [[ -n ${CONTACT_IESTIM:-} ]] && echo "CONTACT_IESTIM=$CONTACT_IESTIM: CONTACT's timed runs start every case after the first with I = $CONTACT_IESTIM (the inputs: I = 0)."
-  echo "Times: CPU (user + sys) and peak RSS of the whole process (GNU time), pinned to core $cpu (taskset), median of $pairs runs alternating rollbem and CONTACT. rollbem: \`rollbem sweep\` of the input's creepages in its order (carter2d_100: its 50 creepages 20 times, one process, one model built once, as CONTACT builds its influence coefficients once; each case warm-started from the previous case's solution), RAYON_NUM_THREADS=1. CONTACT: \`contact_linux64 2 INPUT\` on the input (every case after the first starts from zero tractions, I = 0, unless CONTACT_IESTIM says otherwise)."
+  echo "Times: CPU (user + sys) and peak RSS of the whole process (GNU time), pinned to core $cpu (taskset), median of $pairs runs alternating rollbem and CONTACT. rollbem: \`rollbem sweep\` of the input's creepages in its order (carter2d_100: its 50 creepages 20 times, one process, one model built once, as CONTACT builds its influence coefficients once; each case warm-started from the previous case's solution), RAYON_NUM_THREADS=1. CONTACT: \`contact_linux64 2 INPUT\` on the input (every case starts from zero tractions, I = 0) and, warm, on a copy whose cases after the first have I = 3 (start from the previous case's tractions and element division)."
   echo "Versions: $rollbem_version; CONTACT $contact_rev, commit $contact_commit, built with $gfortran_version ($contact_build). CONTACT's solvers here: NORM by NormCG, TANG by SteadyGS (T = 3), tolerance EPS as noted per input."
   echo "Machine: $(nproc) cores, shared; load average $load_start at the start, $(loadavg) at the end (other work inflates times, CONTACT's and rollbem's alike)."
   for note in "${notes[@]}"; do echo "Note: $note"; done
