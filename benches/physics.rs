@@ -12,6 +12,9 @@
 //!   elements, Lemke warm-started from the previous substep's basis, Lemke cold, and PGS (warm-started from the
 //!   previous substep's tractions). Target: under 1 s.
 //!
+//! - `toeplitz/{fft,dense}/n`: one K x with a Toeplitz matrix of n rows, by FFT ([`rollbem::toeplitz`]) and by
+//!   faer's dense product: the crossover sets `toeplitz::FFT_ABOVE`.
+//!
 //! Run one group with e.g. `cargo bench --bench physics -- history --quick`.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
@@ -113,5 +116,25 @@ fn history_group(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, half_plane_group, rolling_group, history_group);
+/// The Toeplitz product by FFT against faer's dense product with the same matrix (a half-plane K_NN on a uniform
+/// grid), n contact nodes: where the FFT starts to win decides `toeplitz::FFT_ABOVE`.
+fn toeplitz_group(c: &mut Criterion) {
+    use rollbem::toeplitz::Toeplitz;
+    faer::set_global_parallelism(faer::Par::Seq);
+    let mut g = c.benchmark_group("toeplitz");
+    for n in [64usize, 128, 192, 256, 512, 841, 1600] {
+        let t = |k: i64| -(1.0 + k.unsigned_abs() as f64).ln() + if k >= 0 { 0.3 } else { -0.2 };
+        let col: Vec<f64> = (0..n).map(|i| t(i as i64)).collect();
+        let row: Vec<f64> = (0..n).map(|j| t(-(j as i64))).collect();
+        let dense = faer::Mat::<f64>::from_fn(n, n, |i, j| t(i as i64 - j as i64));
+        let op = Toeplitz::from_parts(&col, &row);
+        let x = faer::Col::<f64>::from_fn(n, |i| (i as f64 * 0.37).sin());
+        let xs: Vec<f64> = x.iter().copied().collect();
+        g.bench_with_input(BenchmarkId::new("fft", n), &n, |b, _| b.iter(|| black_box(op.apply(&xs))));
+        g.bench_with_input(BenchmarkId::new("dense", n), &n, |b, _| b.iter(|| black_box(&dense * &x)));
+    }
+    g.finish();
+}
+
+criterion_group!(benches, half_plane_group, rolling_group, history_group, toeplitz_group);
 criterion_main!(benches);

@@ -16,6 +16,12 @@
 //!   ≈ 8.1e11 flops), both with faer's parallelism on. Each sample takes seconds: run it on its own
 //!   (`cargo bench --bench pipeline -- scale`).
 //!
+//! - `creep_curve/{warm,cold_case}/n`: CONTACT's 2D Carter problem (two half-planes G = 82 000, ν = 0.28,
+//!   R = 500, μ = 0.3, P = 178.9 per unit length) on n = 111 and 841 elements: `warm` solves the 50-point creep curve
+//!   ξ = 1e-5 … 5e-4 on one model, each case from its neighbour (throughput in cases: criterion prints the time per
+//!   case); `cold_case` builds the model and solves one case (ξ = 2.5e-4) from nothing, what every case cost before
+//!   warm starts.
+//!
 //! Run one group with e.g. `cargo bench --bench pipeline -- assembly --quick`.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
@@ -229,8 +235,47 @@ fn scale(c: &mut Criterion) {
     g.finish();
 }
 
+/// CONTACT's 2D Carter scene on `n` elements (see the module docs), on its grid: the first element centred at
+/// XC1 = −1.05, width DX = 0.02 (111 elements, carter2d_100) or 0.0025 (841, carter2d_800).
+fn carter_contact(n: usize) -> Scene {
+    let dx = if n > 200 { 0.0025 } else { 0.02 };
+    let text = format!(
+        "name = \"carter2d\"\n[wheel]\nradius = 500.0\nyoungs_modulus = 209920.0\npoisson_ratio = 0.28\n\
+         model = \"half_plane\"\n[counter_body]\nkind = \"half_plane\"\nyoungs_modulus = 209920.0\n\
+         poisson_ratio = 0.28\n[mesh]\nelement = \"constant\"\ncontact_x = [{}, {}]\ncontact_elements = {n}\n\
+         [contact]\nfriction = 0.3\ncoupling = false\n[drive]\nnormal_load = 178.9\n[rolling]\nmode = \"steady\"\n\
+         creepage = 1e-5\ndirection = 1\n[solvers]\nuse = [\"active_set\"]\n",
+        -1.05 - 0.5 * dx,
+        -1.05 - 0.5 * dx + dx * n as f64
+    );
+    Scene::from_toml(&text, Path::new("carter2d.toml")).unwrap()
+}
+
+fn creep_curve(c: &mut Criterion) {
+    use rollbem::pipeline::Model;
+    faer::set_global_parallelism(faer::Par::Seq);
+    let mut g = c.benchmark_group("creep_curve");
+    g.sample_size(10);
+    for n in [111usize, 841] {
+        let base = carter_contact(n);
+        let curve: Vec<Scene> = (1..=50).map(|k| base.with_creepage(1e-5 * k as f64).unwrap()).collect();
+        let model = Model::build(&base).unwrap();
+        g.throughput(criterion::Throughput::Elements(50));
+        g.bench_with_input(BenchmarkId::new("warm", n), &n, |b, _| {
+            b.iter(|| black_box(model.solve_all(&curve).unwrap()))
+        });
+        g.throughput(criterion::Throughput::Elements(1));
+        let one = base.with_creepage(2.5e-4).unwrap();
+        g.bench_with_input(BenchmarkId::new("cold_case", n), &n, |b, _| {
+            b.iter(|| black_box(Model::build(&one).unwrap().solve(&one).unwrap()))
+        });
+    }
+    g.finish();
+}
+
 criterion_group!(
     benches,
+    creep_curve,
     end_to_end,
     assembly,
     condensation,

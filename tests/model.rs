@@ -89,3 +89,123 @@ fn an_empty_solver_list_is_bad_input_not_an_empty_answer() {
     let e = run_scene(&base.edit(|d| d.solvers.use_ = vec!["clarabel".into()]).unwrap()).unwrap_err();
     assert!(e.to_string().contains("solvers.use: clarabel does not apply"), "{e}");
 }
+
+/// The largest |Δp|, |Δq| over the nodes of two runs of one problem, relative to the second's peak pressure.
+fn traction_difference(a: &rollbem::results::SolverRun, b: &rollbem::results::SolverRun) -> f64 {
+    let p0 = b.contact.as_ref().unwrap().peak_pressure;
+    assert_eq!(a.nodes.len(), b.nodes.len());
+    a.nodes
+        .iter()
+        .zip(&b.nodes)
+        .fold(0.0_f64, |w, (x, y)| w.max((x.pressure - y.pressure).abs() / p0).max((x.shear - y.shear).abs() / p0))
+}
+
+/// Warm starts (issue 21) change the work, not the answer: on the coupled problem (a steel wheel on a rigid flat,
+/// β ≠ 0: the active set's whole-system path) and on a family of tangential loads (the creepage an unknown), each
+/// case of a warm `solve_all` equals the same scene run alone from a cold start (its own model, its own start) to
+/// 1e-12 of p0, and the warm family needs fewer factorisations in all than the cold runs.
+#[test]
+fn warm_starts_change_the_work_not_the_answers() {
+    let base = carter();
+    let coupled = base.edit(|d| d.contact.coupling = true).unwrap();
+    let coupled_curve: Vec<Scene> = (1..=12).map(|k| coupled.with_creepage(2e-4 * k as f64).unwrap()).collect();
+    let load_family: Vec<Scene> = (1..=12)
+        .map(|k| {
+            base.with_drive(Drive {
+                normal: Dof::Load(20000.0),
+                tangential: Dof::Load(-400.0 * k as f64),
+                rotational: Dof::Displacement(0.0),
+            })
+            .unwrap()
+        })
+        .collect();
+    for (name, family) in [("coupled creep curve", &coupled_curve), ("tangential-load family", &load_family)] {
+        let model = Model::build(&family[0]).unwrap();
+        let warm = model.solve_all(family).unwrap();
+        let (mut warm_work, mut cold_work, mut worst) = (0, 0, 0.0_f64);
+        for (s, r) in family.iter().zip(&warm) {
+            let alone = run_scene(s).unwrap();
+            let (w, c) = (&r.runs[0], &alone.runs[0]);
+            assert_eq!(w.status, Status::Solved, "{name}: {}", w.explanation());
+            assert_eq!(c.status, Status::Solved, "{name}: {}", c.explanation());
+            worst = worst.max(traction_difference(w, c));
+            warm_work += w.work.get("factorisations").unwrap();
+            cold_work += c.work.get("factorisations").unwrap();
+        }
+        assert!(worst <= 1e-12, "{name}: max |Δp|, |Δq| / p0 = {worst:e}");
+        assert!(warm_work < cold_work, "{name}: {warm_work} factorisations warm, {cold_work} cold");
+    }
+}
+
+/// `[mesh] contact_x` places the half-plane grid off-centre (CONTACT's grids). Checked against the centred grid, an
+/// independent construction: a span of whole elements shifted from a centred one puts the same collocation points
+/// under the contact, so the tractions at those points are the same discrete answer (to round-off); and the symmetric
+/// span [−w, w] is exactly `contact_half_width = w`.
+#[test]
+fn an_off_centre_grid_gives_the_centred_grids_answer_at_the_same_points() {
+    let base = carter()
+        .edit(|d| {
+            d.mesh.contact_half_width = Some(10.0);
+            d.mesh.contact_elements = 100;
+        })
+        .unwrap();
+    let centred = run_scene(&base).unwrap();
+    let same = run_scene(
+        &base
+            .edit(|d| {
+                d.mesh.contact_half_width = None;
+                d.mesh.contact_x = Some([-10.0, 10.0]);
+            })
+            .unwrap(),
+    )
+    .unwrap();
+    assert_eq!(traction_difference(&same.runs[0], &centred.runs[0]), 0.0);
+    // Shifted right by 8 elements of 0.2: [−8.4, 11.6]; the contact (a = 7.1) lies inside both.
+    let shifted = run_scene(
+        &base
+            .edit(|d| {
+                d.mesh.contact_half_width = None;
+                d.mesh.contact_x = Some([-8.4, 11.6]);
+            })
+            .unwrap(),
+    )
+    .unwrap();
+    let (c, s) = (&centred.runs[0], &shifted.runs[0]);
+    assert_eq!(s.status, Status::Solved, "{}", s.explanation());
+    let p0 = c.contact.as_ref().unwrap().peak_pressure;
+    let mut compared = 0;
+    for (k, b) in s.nodes.iter().enumerate() {
+        assert!((b.x - (-8.4 + 0.2 * (k as f64 + 0.5))).abs() < 1e-9, "node {k} at x = {}", b.x);
+        if let Some(a) = c.nodes.iter().find(|a| (a.x - b.x).abs() < 1e-9) {
+            assert!((a.pressure - b.pressure).abs() <= 1e-10 * p0, "x = {}: p {} vs {}", b.x, a.pressure, b.pressure);
+            assert!((a.shear - b.shear).abs() <= 1e-10 * p0, "x = {}: q {} vs {}", b.x, a.shear, b.shear);
+            compared += 1;
+        }
+    }
+    assert_eq!(compared, 92);
+}
+
+#[test]
+fn an_off_centre_zone_is_refused_where_it_means_nothing() {
+    let base = carter();
+    let both = base.edit(|d| d.mesh.contact_x = Some([-9.0, 9.0])).unwrap_err().to_string();
+    assert!(both.contains("mesh.contact_half_width") && both.contains("not several"), "{both}");
+    let reversed = base
+        .edit(|d| {
+            d.mesh.contact_half_width = None;
+            d.mesh.contact_x = Some([9.0, -9.0]);
+        })
+        .unwrap_err()
+        .to_string();
+    assert!(reversed.contains("mesh.contact_x") && reversed.contains("x_min < x_max"), "{reversed}");
+    let p = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/scenes/cattaneo-decoupled.toml");
+    let bem = Scene::from_file(&p)
+        .unwrap()
+        .edit(|d| {
+            d.mesh.contact_arc_deg = None;
+            d.mesh.contact_x = Some([-0.05, 0.06]);
+        })
+        .unwrap_err()
+        .to_string();
+    assert!(bem.contains("mesh.contact_x") && bem.contains("half-plane model"), "{bem}");
+}

@@ -292,7 +292,8 @@ impl SceneDocument {
         Ok(())
     }
 
-    fn validate_mesh(&self, c: &Checker) -> Result<()> {
+    /// The candidate zone: exactly one of `contact_arc_deg`, `contact_half_width`, `contact_x`, in range.
+    fn validate_zone(&self, c: &Checker) -> Result<()> {
         let w = &self.wheel;
         let m = &self.mesh;
         let given: Vec<&str> = [
@@ -349,6 +350,13 @@ impl SceneDocument {
                 ));
             }
         }
+        Ok(())
+    }
+
+    fn validate_mesh(&self, c: &Checker) -> Result<()> {
+        let w = &self.wheel;
+        let m = &self.mesh;
+        self.validate_zone(c)?;
         if m.contact_elements < 1 {
             return Err(c.bad("mesh.contact_elements", "must be at least 1".into()));
         }

@@ -922,7 +922,9 @@ impl Solver for ActiveSet {
                 f.chain(rho).collect()
             }
         });
-        let mut linear = Linear::resume(p.flex);
+        // What the last solve on this flexibility kept, only when warm-started (a cold solve's work must not depend
+        // on what ran before it on the model).
+        let mut linear = if p.warm.is_some() { Linear::resume(p.flex) } else { Linear::new() };
         let result = iterate(&d, start, start_y, &self.settings, &mut count, &mut linear);
         let (factorisations, gmres_iterations) = (linear.factorisations, linear.gmres_iterations);
         linear.keep(p.flex);

@@ -69,6 +69,13 @@ pub struct SweepSpec {
     pub timing_repeats: usize,
     /// What the sweep is (`analysis`; default `table`).
     pub analysis: Analysis,
+    /// `warm_start = true`: each case starts from the previous case's solutions on the same model
+    /// ([`crate::pipeline::Model::solve_warm`]), a creep curve's next creepage from the last one's node states and
+    /// factorisation. The answers are certified by the same residuals either way, but the work columns (iterations,
+    /// pivots, factorisations) and the last bits of Lemke's answers then depend on which case came before: a sharded
+    /// or resumed warm sweep is not bit-identical to the uninterrupted one. Default false (every case cold: the rows
+    /// do not depend on the order).
+    pub warm_start: bool,
 }
 
 /// What a sweep is, as its spec says (`analysis = "..."`): what `rollbem report` makes of its rows. The report never
@@ -360,12 +367,14 @@ impl SweepSpec {
         let doc: Table = toml::from_str(text)
             .map_err(|e| Error::Parse { path: path.to_path_buf(), message: e.to_string().trim_end().to_string() })?;
         for key in doc.keys() {
-            if !["name", "description", "base", "grid", "timing_repeats", "analysis"].contains(&key.as_str()) {
+            if !["name", "description", "base", "grid", "timing_repeats", "analysis", "warm_start"]
+                .contains(&key.as_str())
+            {
                 return Err(invalid(
                     path,
                     key,
                     "unknown key in a sweep spec (expected `name`, `description`, `base`, `analysis`, \
-                     `timing_repeats` and `[[grid]]` tables)",
+                     `timing_repeats`, `warm_start` and `[[grid]]` tables)",
                 ));
             }
         }
@@ -451,7 +460,14 @@ impl SweepSpec {
                 return Err(invalid(path, "analysis", format!("must be a string (got {})", other.type_str())))
             }
         };
-        let spec = SweepSpec { name, description, base, grid, grid_base, timing_repeats, analysis };
+        let warm_start = match doc.get("warm_start") {
+            None => false,
+            Some(Value::Boolean(b)) => *b,
+            Some(other) => {
+                return Err(invalid(path, "warm_start", format!("must be true or false (got {})", other.type_str())))
+            }
+        };
+        let spec = SweepSpec { name, description, base, grid, grid_base, timing_repeats, analysis, warm_start };
         spec.check_analysis(path)?;
         Ok(spec)
     }

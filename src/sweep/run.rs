@@ -118,13 +118,13 @@ fn error_rows(case: &Case, err: &Error) -> Vec<SweepRow> {
 /// needs ([`Model::shares_source`], [`Model::needs`]: a frictionless case is never solved on a model built with the
 /// tangential blocks another case needed), built again for a case that does not.
 ///
-/// Each case starts from the previous case's solutions on the same model ([`Model::solve_warm`]): a creep curve's
-/// next creepage from the last one's node states. The rows do not depend on it beyond round-off (each run is
-/// certified by the same residuals); the work columns (iterations, pivots) and times do.
+/// With the spec's `warm_start`, each case starts from the previous case's solutions on the same model
+/// ([`Model::solve_warm`]): a creep curve's next creepage from the last one's node states (see
+/// [`super::SweepSpec::warm_start`] for what then depends on the order).
 #[derive(Default)]
 struct Shared {
     built: Option<(Scene, Result<Model>)>,
-    warm: crate::pipeline::Warm,
+    warm: Option<crate::pipeline::Warm>,
 }
 
 impl Shared {
@@ -134,14 +134,18 @@ impl Shared {
         let fits = |m: &Scene| Model::shares_source(m, s) && Model::needs(m) == Model::needs(s);
         if !self.built.as_ref().is_some_and(|(m, _)| fits(m)) {
             self.built = Some((s.clone(), Model::build(s)));
-            self.warm.clear();
+            if let Some(w) = self.warm.as_mut() {
+                w.clear();
+            }
         }
-        match &self.built.as_ref().expect("built above").1 {
-            Ok(m) => match m.solve_warm(s, &mut self.warm) {
-                Ok(report) => case_rows(case, &report),
-                Err(e) => error_rows(case, &e),
-            },
-            Err(e) => error_rows(case, e),
+        let solved = match (&self.built.as_ref().expect("built above").1, self.warm.as_mut()) {
+            (Ok(m), Some(w)) => m.solve_warm(s, w),
+            (Ok(m), None) => m.solve(s),
+            (Err(e), _) => return error_rows(case, e),
+        };
+        match solved {
+            Ok(report) => case_rows(case, &report),
+            Err(e) => error_rows(case, &e),
         }
     }
 }
@@ -199,7 +203,7 @@ impl Plan {
             self.run_timed(&journal, &bar)?;
         } else {
             self.units.par_iter().try_for_each(|unit| {
-                let mut model = Shared::default();
+                let mut model = Shared { warm: self.spec.warm_start.then(Default::default), ..Default::default() };
                 for &i in unit {
                     append(&journal, &model.rows(&self.expansion.case(i as usize)?))?;
                     bar.inc(1);
@@ -255,7 +259,7 @@ impl Plan {
 
     /// The cases one at a time, timed repeatedly ([`retime`]) in batches of [`TIMING_BATCH`].
     fn run_timed(&self, journal: &Shelf, bar: &ProgressBar) -> Result<()> {
-        let mut model = Shared::default();
+        let mut model = Shared { warm: self.spec.warm_start.then(Default::default), ..Default::default() };
         let mut cases = self.units.iter().flatten().copied().peekable();
         while cases.peek().is_some() {
             let mut batch = Vec::with_capacity(TIMING_BATCH);
