@@ -12,9 +12,10 @@
 #       GRID=exact                 exact: `[mesh] contact_x` on CONTACT's span; centred: `contact_half_width` with
 #                                  CONTACT's element count and size (for a rollbem without contact_x)
 #       CPU=0                      the core every timed run is pinned to (taskset)
-#       WARM=1                     also time CONTACT warm-started: a copy of the input whose cases after the first
-#                                  have I = 3 (start from the previous case's solution, as rollbem's sweep does;
-#                                  the inputs have I = 0, a cold start); WARM=0 skips it
+#       WARM=1                     also time both warm-started: rollbem's sweep with `warm_start = true`, CONTACT
+#                                  on a copy of the input whose cases after the first have I = 3 (each case starts
+#                                  from the previous one's solution); the inputs, and rollbem's sweeps by default,
+#                                  start every case cold (CONTACT: I = 0); WARM=0 skips the warm runs
 #       CONTACT_EPS=               a tolerance for CONTACT's results run (default: the input's EPS; e.g. 1e-10 shows
 #                                  how much of a difference is CONTACT's stopping criterion; the timed runs keep
 #                                  the input's)
@@ -437,6 +438,9 @@ for case_name in $cases; do
       echo "[[grid]]"
       printf '"rolling.creepage" = [%s]\n' "$(paste -sd, "$cw/cksi" | sed 's/,/, /g')"
     } >"$cw/rollbem/sweep-$solver.toml"
+    # The same sweep warm-started (each case from the previous case's solution on the model).
+    sed -e "s/^name = \"contact-$case_name-$solver\"/name = \"contact-$case_name-$solver-warm\"/" \
+      -e 's/^base = /warm_start = true\nbase = /' "$cw/rollbem/sweep-$solver.toml" >"$cw/rollbem/sweep-$solver-warm.toml"
   done
 
   # rollbem's per-creepage runs (nodal tractions and states; not timed): one scene per distinct creepage.
@@ -459,6 +463,11 @@ for case_name in $cases; do
       say "  pair $r/$pairs: rollbem sweep ($solver)"
       RAYON_NUM_THREADS=1 timed "$cw/time.rollbem.$solver" "$rollbem" sweep "$cw/rollbem/sweep-$solver.toml" \
         --out "$cw/rollbem/sweep-$solver.csv" --quiet || notes+=("$case_name: rollbem sweep ($solver) exited with a nonzero code in pair $r.")
+      if ((warm_here)); then
+        say "  pair $r/$pairs: rollbem sweep ($solver, warm_start = true)"
+        RAYON_NUM_THREADS=1 timed "$cw/time.rollbem.$solver.warm" "$rollbem" sweep "$cw/rollbem/sweep-$solver-warm.toml" \
+          --out "$cw/rollbem/sweep-$solver-warm.csv" --quiet || notes+=("$case_name: rollbem warm sweep ($solver) exited with a nonzero code in pair $r.")
+      fi
     done
     say "  pair $r/$pairs: CONTACT"
     (cd "$cw/timed" && timed "$cw/time.contact" "$contact_bin" 2 "$case_name") || die "CONTACT failed on $case_name"
@@ -555,10 +564,20 @@ for case_name in $cases; do
     r_cpu=$(awk '{ print $1 }' "$cw/time.rollbem.$solver" | median)
     r_mem=$(awk '{ print $2 }' "$cw/time.rollbem.$solver" | median)
     ratio=$(cpu_ratio "$r_cpu" "$c_cpu")
-    wratio=$(cpu_ratio "$r_cpu" "$w_cpu")
-    wcell="$(cpu_cell "$w_cpu")"
-    ((warm_here)) || { wcell="(1 case)"; wratio="(1 case)"; }
-    rows+=("| $case_name | $mx | $ncases | $solver | $dfx (case $dfx_at) | ${mid_counts%%|*} | ${mid_counts##*|} | $agree of $nuniq | $tcell | $(cpu_cell "$r_cpu") | $(cpu_cell "$c_cpu") | $wcell | $ratio | $wratio | $(printf '%.1f' "$r_mem") | $(printf '%.1f' "$c_mem") |")
+    if ((warm_here)); then
+      rw_cpu=$(awk '{ print $1 }' "$cw/time.rollbem.$solver.warm" | median)
+      wratio=$(cpu_ratio "$rw_cpu" "$w_cpu")
+      wcells="$(cpu_cell "$rw_cpu") | $(cpu_cell "$w_cpu")"
+      # The warm sweep's answers against the cold sweep's, case by case.
+      dw=$(paste -d' ' <(csv_col tangential_load "$csv") <(csv_col normal_load "$csv") <(csv_col friction "$csv") \
+        <(csv_col tangential_load "$cw/rollbem/sweep-$solver-warm.csv") |
+        awk '{ d = ($1 - $4) / ($3 * $2); if (d < 0) d = -d; if (d > m) m = d } END { printf "%.1e", m }')
+      notes+=("$case_name, $solver: rollbem's warm sweep against its cold one: max |ΔQ|/(μP) over the cases = $dw.")
+    else
+      wratio="(1 case)"
+      wcells="(1 case) | (1 case)"
+    fi
+    rows+=("| $case_name | $mx | $ncases | $solver | $dfx (case $dfx_at) | ${mid_counts%%|*} | ${mid_counts##*|} | $agree of $nuniq | $tcell | $(cpu_cell "$r_cpu") | $(cpu_cell "$c_cpu") | $ratio | $wcells | $wratio | $(printf '%.1f' "$r_mem") | $(printf '%.1f' "$c_mem") |")
     say "  $solver: max ΔFX/(μFN) $dfx, counts equal at $agree of $nuniq, tractions $tcell, CPU $r_cpu s vs $c_cpu s"
   done
   # rollbem's solvers against each other (each solves the same discrete problem, to round-off).
@@ -577,14 +596,14 @@ else
   grid_text="GRID=centred: rollbem's grid has CONTACT's element count and size but is centred on x = 0 (\`contact_half_width = MX·DX/2\`), shifted from CONTACT's unless its span is symmetric; tractions are compared only where the grids coincide."
 fi
 {
-  echo "| input | elements | cases | rollbem solver | max\\|FX_rollbem − FX_CONTACT\\| / (μ FN) | contact elements rollbem / CONTACT | stick elements rollbem / CONTACT | creepages with equal counts | max\\|p_rollbem − p_CONTACT\\| / max p | max\\|q_rollbem − q_CONTACT\\| / max p (worst CKSI) | CPU rollbem [s] | CPU CONTACT [s] | CPU CONTACT warm, I = 3 [s] | ratio rollbem ÷ CONTACT | ratio rollbem ÷ CONTACT warm | peak memory rollbem [MB] | peak memory CONTACT [MB] |"
-  echo "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+  echo "| input | elements | cases | rollbem solver | max\\|FX_rollbem − FX_CONTACT\\| / (μ FN) | contact elements rollbem / CONTACT | stick elements rollbem / CONTACT | creepages with equal counts | max\\|p_rollbem − p_CONTACT\\| / max p | max\\|q_rollbem − q_CONTACT\\| / max p (worst CKSI) | CPU rollbem [s] | CPU CONTACT [s] | ratio rollbem ÷ CONTACT | CPU rollbem warm [s] | CPU CONTACT warm (I = 3) [s] | ratio warm ÷ warm | peak memory rollbem [MB] | peak memory CONTACT [MB] |"
+  echo "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
   printf '%s\n' "${rows[@]}"
   echo
   echo "Inputs: CONTACT's examples/carter2d.inp and perfc_test/carter2d_100.inp, carter2d_800.inp (steady rolling of two identical half-planes, G = 82 000, ν = 0.28, profile x²/(2·500), μ = 0.3, FN = 35 780 on a strip DY = 200 wide: 178.9 per unit width). rollbem: \`[wheel] model = \"half_plane\"\`, \`profile = \"parabola\"\` (CONTACT's IBASE 1 and 2 both give h = x²/(2R)), E = 2G(1 + ν), \`[counter_body] kind = \"half_plane\"\` of the same material, \`coupling = false\`, \`normal_load = FN/DY\`, \`[rolling] mode = \"steady\"\`, \`direction = +1\` (CHI = 0), creepage = CKSI (the same sign convention: CKSI > 0 is braking, FX < 0 on body 1; rollbem's Q on the wheel likewise). $grid_text"
   [[ -n ${CONTACT_EPS:-} ]] && echo "CONTACT_EPS=$CONTACT_EPS: CONTACT's results (the comparison columns) were computed with EPS = $CONTACT_EPS and MAXGS = MAXIN = 9999; its timed runs with the inputs' own EPS."
   echo "Compared: FX per case (all cases of the input; CONTACT's FX = Σ PX·DX·DY from its Matlab files); contact (adhesion + slip) and stick (adhesion) element counts at every distinct creepage (equal counts: both equal), shown at the middle creepage; nodal tractions p, q at every distinct creepage (rollbem \`run\`), the largest difference over the curve relative to CONTACT's peak pressure. CONTACT's output is from a copy of each input with O = 2 and A = 1 in every case (its printed case 1 equals the timed run's)."
-  echo "Times: CPU (user + sys) and peak RSS of the whole process (GNU time), pinned to core $cpu (taskset), median of $pairs runs alternating rollbem and CONTACT. rollbem: \`rollbem sweep\` of the input's creepages in its order (carter2d_100: its 50 creepages 20 times, one process, one model built once, as CONTACT builds its influence coefficients once; each case warm-started from the previous case's solution), RAYON_NUM_THREADS=1. CONTACT: \`contact_linux64 2 INPUT\` on the input (every case starts from zero tractions, I = 0) and, warm, on a copy whose cases after the first have I = 3 (start from the previous case's tractions and element division)."
+  echo "Times: CPU (user + sys) and peak RSS of the whole process (GNU time), pinned to core $cpu (taskset), median of $pairs runs alternating rollbem and CONTACT. rollbem: \`rollbem sweep\` of the input's creepages in its order (carter2d_100: its 50 creepages 20 times, one process, one model built once, as CONTACT builds its influence coefficients once), RAYON_NUM_THREADS=1; cold: every case from scratch (the default), warm: \`warm_start = true\` (each case from the previous case's solution). CONTACT: \`contact_linux64 2 INPUT\` on the input (cold: every case from zero tractions, I = 0) and, warm, on a copy whose cases after the first have I = 3 (start from the previous case's tractions and element division)."
   echo "Versions: $rollbem_version; CONTACT $contact_rev, commit $contact_commit, built with $gfortran_version ($contact_build). CONTACT's solvers here: NORM by NormCG, TANG by SteadyGS (T = 3), tolerance EPS as noted per input."
   echo "Machine: $(nproc) cores, shared; load average $load_start at the start, $(loadavg) at the end (other work inflates times, CONTACT's and rollbem's alike)."
   for note in "${notes[@]}"; do echo "Note: $note"; done
