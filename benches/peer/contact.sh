@@ -596,7 +596,7 @@ else
   grid_text="GRID=centred: rollbem's grid has CONTACT's element count and size but is centred on x = 0 (\`contact_half_width = MX·DX/2\`), shifted from CONTACT's unless its span is symmetric; tractions are compared only where the grids coincide."
 fi
 {
-  echo "| input | elements | cases | rollbem solver | max\\|FX_rollbem − FX_CONTACT\\| / (μ FN) | contact elements rollbem / CONTACT | stick elements rollbem / CONTACT | creepages with equal counts | max\\|p_rollbem − p_CONTACT\\| / max p | max\\|q_rollbem − q_CONTACT\\| / max p (worst CKSI) | CPU rollbem [s] | CPU CONTACT [s] | ratio rollbem ÷ CONTACT | CPU rollbem warm [s] | CPU CONTACT warm (I = 3) [s] | ratio warm ÷ warm | peak memory rollbem [MB] | peak memory CONTACT [MB] |"
+  echo "| input | elements | cases | rollbem solver | max\\|FX_rollbem − FX_CONTACT\\| / (μ FN) | contact elements rollbem / CONTACT | stick elements rollbem / CONTACT | creepages with equal counts | max\\|p_rollbem − p_CONTACT\\| / max p | max\\|q_rollbem − q_CONTACT\\| / max p (worst CKSI) | CPU rollbem [s] | CPU CONTACT [s] | ratio rollbem ÷ CONTACT | CPU rollbem warm [s] | CPU CONTACT warm (I = 3) [s] | ratio warm ÷ warm | peak memory rollbem, cold [MB] | peak memory CONTACT, cold [MB] |"
   echo "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
   printf '%s\n' "${rows[@]}"
   echo
