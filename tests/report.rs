@@ -197,3 +197,22 @@ base = "../scenes/cattaneo-decoupled.toml"
     let against_theory = sweep.find("against the mesh: on the finite wheel it converges to the model error");
     assert!(against_theory.is_some(), "{sweep}");
 }
+
+#[test]
+fn report_includes_the_peer_tables_its_folder_holds() {
+    // benches/peer/contact.sh writes OUT/peer-contact.md (run separately); report includes it, and says nothing
+    // of a peer whose table is absent (no peer-lcp.md here).
+    let tmp = tempfile::tempdir().unwrap();
+    let refs = tmp.path().join("refs");
+    write(&refs.join("scenes/a-scene.toml"), SCENE);
+    std::fs::create_dir_all(refs.join("sweeps")).unwrap();
+    let out = tmp.path().join("out");
+    write(&out.join("peer-contact.md"), "| input | elements |\n|---|---:|\n| carter2d | 55 |\n");
+    let o = report(&refs, &out);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let md = std::fs::read_to_string(out.join("README.md")).unwrap();
+    assert!(md.contains("## Side by side with CONTACT"), "{md}");
+    assert!(md.contains("benches/peer/contact.sh"), "{md}");
+    assert!(md.contains("| carter2d | 55 |"), "{md}");
+    assert!(!md.contains("Side by side with Siconos"), "a Siconos section without its table");
+}
