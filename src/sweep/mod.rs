@@ -355,27 +355,25 @@ fn set_dotted(doc: &mut Table, key: &str, value: Value) -> std::result::Result<(
 
 /// The spec's run options: `timing_repeats`, `analysis`, `warm_start` (each with its default when absent).
 fn run_options(doc: &Table, path: &Path) -> Result<(usize, Analysis, bool)> {
-        let timing_repeats = match doc.get("timing_repeats") {
-            None => 1,
-            Some(Value::Integer(k)) if (1..=20).contains(k) => *k as usize,
-            Some(other) => {
-                return Err(invalid(path, "timing_repeats", format!("must be an integer from 1 to 20 (got {other})")))
-            }
-        };
-        let analysis = match doc.get("analysis") {
-            None => Analysis::Table,
-            Some(Value::String(a)) => Analysis::from_name(a, path)?,
-            Some(other) => {
-                return Err(invalid(path, "analysis", format!("must be a string (got {})", other.type_str())))
-            }
-        };
-        let warm_start = match doc.get("warm_start") {
-            None => false,
-            Some(Value::Boolean(b)) => *b,
-            Some(other) => {
-                return Err(invalid(path, "warm_start", format!("must be true or false (got {})", other.type_str())))
-            }
-        };
+    let timing_repeats = match doc.get("timing_repeats") {
+        None => 1,
+        Some(Value::Integer(k)) if (1..=20).contains(k) => *k as usize,
+        Some(other) => {
+            return Err(invalid(path, "timing_repeats", format!("must be an integer from 1 to 20 (got {other})")))
+        }
+    };
+    let analysis = match doc.get("analysis") {
+        None => Analysis::Table,
+        Some(Value::String(a)) => Analysis::from_name(a, path)?,
+        Some(other) => return Err(invalid(path, "analysis", format!("must be a string (got {})", other.type_str()))),
+    };
+    let warm_start = match doc.get("warm_start") {
+        None => false,
+        Some(Value::Boolean(b)) => *b,
+        Some(other) => {
+            return Err(invalid(path, "warm_start", format!("must be true or false (got {})", other.type_str())))
+        }
+    };
     Ok((timing_repeats, analysis, warm_start))
 }
 
