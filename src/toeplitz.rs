@@ -9,9 +9,14 @@
 //! detected, not assumed: [`Toeplitz::detect`] fits t and c and checks every entry, so a BEM wheel's flexibility
 //! (not of this form) keeps the dense product.
 //!
-//! **Where it pays** (`benches/physics.rs`, group `toeplitz`, on this project's 2-core machine): the FFT product
-//! overtakes faer's dense column-major product between n = 128 and n = 256; [`FFT_ABOVE`] is where rollbem switches.
-//! The products are exact up to round-off relative to ‖T‖·‖x‖ (about 1e-15 here, tested against the dense product),
+//! **Where it pays.** [`FFT_ABOVE`] = 192 is an estimate, not a measurement: the dense product costs 2n² flops bound
+//! by memory, the FFT product about three transforms of length L ≈ 2n plus O(n). It has not been measured on this
+//! machine yet: `cargo bench --bench physics -- toeplitz` times both for n = 64…1600, and its crossover should set
+//! the constant. On the 841-node creep curve the FFT products cut the run's CPU time from 7.9 s to 5.3 s (one
+//! measurement each, on a loaded machine).
+//!
+//! The products are exact up to round-off relative to ‖T‖·‖x‖ (tested against the dense product to 1e-13 of the
+//! product's largest entry),
 //! not entry by entry: they serve the iterations (GMRES applies, the active sets' gaps and slips); every final answer
 //! is solved by a factorisation and certified by the dense residuals.
 
@@ -20,7 +25,7 @@ use realfft::num_complex::Complex;
 use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 use std::sync::Arc;
 
-/// Matrices of at least this many rows use the FFT product (see the module docs for the measurement).
+/// Matrices of at least this many rows use the FFT product (an estimate: see the module docs).
 pub const FFT_ABOVE: usize = 192;
 
 /// How closely a matrix must fit T + 1 cᵀ, relative to its largest entry, for [`Toeplitz::detect`]: the round-off
