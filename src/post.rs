@@ -369,7 +369,12 @@ impl Kinematics {
             Some(h) => (0..n).map(|i| h[i] / flex.weights[i]).collect(),
             None => vec![0.0; n],
         };
-        let matvec = |m: &faer::Mat<f64>, v: &[f64], i: usize| (0..n).map(|j| m[(i, j)] * v[j]).sum::<f64>();
+        // K v by columns (K is column-major: contiguous passes; a row-by-row sum strides through memory).
+        let matvec = |m: &faer::Mat<f64>, v: &[f64]| -> Vec<f64> {
+            let y = m * faer::ColRef::from_slice(v);
+            y.iter().copied().collect()
+        };
+        let add = |a: &mut Vec<f64>, b: Vec<f64>| a.iter_mut().zip(b).for_each(|(x, y)| *x += y);
         let rig = |i: usize, tangential: bool| -> f64 {
             flex.modes
                 .iter()
@@ -379,26 +384,22 @@ impl Kinematics {
                 })
                 .sum()
         };
-        let uy: Vec<f64> = (0..n)
-            .map(|i| {
-                let cross = match (&flex.k_nt, h) {
-                    (Some(nt), Some(h)) if coupling => matvec(nt, h, i),
-                    _ => 0.0,
-                };
-                matvec(&flex.k_nn, f, i) + cross + rig(i, false)
-            })
-            .collect();
-        let ux: Option<Vec<f64>> = match (&flex.k_tn, &flex.k_tt) {
-            (Some(tn), Some(tt)) => Some(
-                (0..n)
-                    .map(|i| {
-                        let cross = if coupling { matvec(tn, f, i) } else { 0.0 };
-                        cross + h.map_or(0.0, |h| matvec(tt, h, i)) + rig(i, true)
-                    })
-                    .collect(),
-            ),
-            _ => None,
-        };
+        let mut uy = matvec(&flex.k_nn, f);
+        if let (Some(nt), Some(h), true) = (&flex.k_nt, h, coupling) {
+            add(&mut uy, matvec(nt, h));
+        }
+        uy.iter_mut().enumerate().for_each(|(i, v)| *v += rig(i, false));
+        let ux: Option<Vec<f64>> = flex.k_tt.as_ref().map(|tt| {
+            let mut u = match h {
+                Some(h) => matvec(tt, h),
+                None => vec![0.0; n],
+            };
+            if let (Some(tn), true) = (&flex.k_tn, coupling) {
+                add(&mut u, matvec(tn, f));
+            }
+            u.iter_mut().enumerate().for_each(|(i, v)| *v += rig(i, true));
+            u
+        });
         let creepage = problem.rigid_value(sol, crate::formulation::DofKind::Creepage);
         let slip: Option<Vec<f64>> = ux.as_ref().map(|u| {
             let mut s = problem.slip.slip(u);

@@ -111,6 +111,29 @@ impl SlipOperator {
         Some((d[(i, i)], up.map(|u| (u, d[(i, u)]))))
     }
 
+    /// The bits of D (its two diagonals and their positions), for telling whether two operators have the same D
+    /// exactly (the identity: one word). O(n).
+    pub fn d_bits(&self) -> Vec<u64> {
+        match &self.d {
+            None => vec![0],
+            Some(d) => (0..d.nrows())
+                .flat_map(|i| {
+                    let (dii, up) = self.row(i).expect("D present");
+                    let (u, du) = up.map_or((u64::MAX, 0.0), |(u, du)| (u as u64, du));
+                    [dii.to_bits(), u, du.to_bits()]
+                })
+                .collect(),
+        }
+    }
+
+    /// Entry (i, j) of D M for a matrix M with n rows (two products: D is two-diagonal).
+    pub fn entry(&self, m: &Mat<f64>, i: usize, j: usize) -> f64 {
+        match self.row(i) {
+            None => m[(i, j)],
+            Some((dii, up)) => dii * m[(i, j)] + up.map_or(0.0, |(u, du)| du * m[(u, j)]),
+        }
+    }
+
     /// D v (a copy of v when D is the identity); O(n), D being two-diagonal.
     pub fn apply(&self, v: &[f64]) -> Vec<f64> {
         match &self.d {

@@ -30,6 +30,8 @@
 use super::lemke::{self, Lemke, LemkeSettings};
 use super::{Entry, Outcome, Solver, SolverId, SolverSettings, Termination, Validate, Work};
 use crate::formulation::{ContactProblem, ProblemKind, Solution};
+
+mod phases;
 use faer::linalg::solvers::Solve;
 use faer::Mat;
 use serde::{Deserialize, Serialize};
@@ -97,8 +99,13 @@ struct Data<'p> {
     knt: Option<&'p Mat<f64>>,
     /// Slip matrix on f (D K_TN with coupling).
     atn: Option<Mat<f64>>,
-    /// Slip matrix on h (D K_TT).
+    /// Slip matrix on h (D K_TT), formed only for the joint iteration ([`Data::with_att`]); the two phases
+    /// ([`phases`]) take its entries from `ktt` and `slip`.
     att: Option<Mat<f64>>,
+    /// K_TT (frictional only).
+    ktt: Option<&'p Mat<f64>>,
+    /// The slip operator D.
+    slip: &'p crate::formulation::SlipOperator,
     /// FFT products for K_NN f (when `knn` is the flexibility's Toeplitz K_NN) and D K_TT h (K_TT Toeplitz; D the
     /// two-diagonal slip operator), the iteration's products on a uniform half-plane grid ([`crate::toeplitz`]).
     fast_nn: Option<&'p crate::toeplitz::Toeplitz>,
@@ -144,8 +151,8 @@ impl<'p> Data<'p> {
             }
         };
         let coupling = p.law.coupling && frictional;
-        let (knt, atn, att, s_const) = if frictional {
-            let att = p.slip.apply_mat(flex.k_tt.as_ref().expect("tangential blocks"));
+        let ktt = if frictional { Some(flex.k_tt.as_ref().expect("tangential blocks")) } else { None };
+        let (knt, atn, s_const) = if frictional {
             let atn = coupling.then(|| p.slip.apply_mat(flex.k_tn.as_ref().expect("K_TN")));
             let knt = if coupling { flex.k_nt.as_ref() } else { None };
             let mut s: Vec<f64> = p.slip.offset.clone().unwrap_or_else(|| vec![0.0; n]);
@@ -156,9 +163,9 @@ impl<'p> Data<'p> {
                     }
                 }
             }
-            (knt, atn, Some(att), s)
+            (knt, atn, s)
         } else {
-            (None, None, None, vec![0.0; n])
+            (None, None, vec![0.0; n])
         };
         let loads = p
             .load_dofs()
@@ -176,11 +183,41 @@ impl<'p> Data<'p> {
             })
             .collect();
         let fast_tt = if frictional { flex.toeplitz_tt().map(|t| (t, &p.slip)) } else { None };
-        Data { n, mu, frictional, knn, knt, atn, att, fast_nn, fast_tt, g_const, s_const, loads }
+        Data {
+            n,
+            mu,
+            frictional,
+            knn,
+            knt,
+            atn,
+            att: None,
+            ktt,
+            slip: &p.slip,
+            fast_nn,
+            fast_tt,
+            g_const,
+            s_const,
+            loads,
+        }
+    }
+
+    /// The same data with D K_TT formed (the joint iteration's reduced systems read it entry by entry).
+    fn with_att(mut self) -> Self {
+        self.att = self.ktt.map(|k| self.slip.apply_mat(k));
+        self
+    }
+
+    /// (D K_TT)[i, j].
+    fn att_entry(&self, i: usize, j: usize) -> f64 {
+        match &self.att {
+            Some(a) => a[(i, j)],
+            None => self.slip.entry(self.ktt.expect("frictional"), i, j),
+        }
     }
 }
 
 /// An iterate: forces, load-driven motions, and the gaps and slips they give at every node.
+#[derive(Clone)]
 struct Iterate {
     f: Vec<f64>,
     h: Vec<f64>,
@@ -280,7 +317,11 @@ fn matvec(k: &Mat<f64>, v: &[f64]) -> Vec<f64> {
 /// g and s of forces and load-driven motions; with `constants` the constant parts are included (the physical gap
 /// and slip), without them the linear map only.
 fn kinematics(d: &Data, f: &[f64], h: &[f64], rho: &[f64], constants: bool) -> (Vec<f64>, Vec<f64>) {
-    let n = d.n;
+    (gaps(d, f, h, rho, constants), slips(d, f, h, rho, constants))
+}
+
+/// The gap part of [`kinematics`].
+fn gaps(d: &Data, f: &[f64], h: &[f64], rho: &[f64], constants: bool) -> Vec<f64> {
     let c = if constants { 1.0 } else { 0.0 };
     let mut g = match d.fast_nn {
         Some(t) => t.apply(f),
@@ -289,26 +330,28 @@ fn kinematics(d: &Data, f: &[f64], h: &[f64], rho: &[f64], constants: bool) -> (
     if let Some(k) = d.knt {
         g.iter_mut().zip(matvec(k, h)).for_each(|(a, b)| *a += b);
     }
-    for i in 0..n {
-        g[i] += c * d.g_const[i] + d.loads.iter().zip(rho).map(|(ld, r)| ld.gap[i] * r).sum::<f64>();
+    for (i, gi) in g.iter_mut().enumerate() {
+        *gi += c * d.g_const[i] + d.loads.iter().zip(rho).map(|(ld, r)| ld.gap[i] * r).sum::<f64>();
     }
-    let s = match &d.att {
-        Some(att) => {
-            let mut s = match d.fast_tt {
-                Some((t, slip)) => slip.apply(&t.apply(h)),
-                None => matvec(att, h),
-            };
-            if let Some(k) = &d.atn {
-                s.iter_mut().zip(matvec(k, f)).for_each(|(a, b)| *a += b);
-            }
-            for i in 0..n {
-                s[i] += c * d.s_const[i] + d.loads.iter().zip(rho).map(|(ld, r)| ld.slip[i] * r).sum::<f64>();
-            }
-            s
-        }
-        None => vec![0.0; n],
+    g
+}
+
+/// The slip part of [`kinematics`] (zeros without friction).
+fn slips(d: &Data, f: &[f64], h: &[f64], rho: &[f64], constants: bool) -> Vec<f64> {
+    let c = if constants { 1.0 } else { 0.0 };
+    let Some(ktt) = d.ktt else { return vec![0.0; d.n] };
+    let mut s = match (d.fast_tt, &d.att) {
+        (Some((t, slip)), _) => slip.apply(&t.apply(h)),
+        (None, Some(att)) => matvec(att, h),
+        (None, None) => d.slip.apply(&matvec(ktt, h)),
     };
-    (g, s)
+    if let Some(k) = &d.atn {
+        s.iter_mut().zip(matvec(k, f)).for_each(|(a, b)| *a += b);
+    }
+    for (i, si) in s.iter_mut().enumerate() {
+        *si += c * d.s_const[i] + d.loads.iter().zip(rho).map(|(ld, r)| ld.slip[i] * r).sum::<f64>();
+    }
+    s
 }
 
 /// The non-trivial block of the full system of some sets, factorised: unknowns f_C (contact nodes), h_S (sticking
@@ -445,9 +488,9 @@ impl Reduced {
             for (r, &i) in contact.iter().enumerate() {
                 a[(r, c)] = d.knn[(i, j)] + d.knt.map_or(0.0, |k| k[(i, j)] * ej);
             }
-            if let Some(att) = &d.att {
+            if d.frictional {
                 for (r, &i) in stick.iter().enumerate() {
-                    a[(nc + r, c)] = d.atn.as_ref().map_or(0.0, |k| k[(i, j)]) + att[(i, j)] * ej;
+                    a[(nc + r, c)] = d.atn.as_ref().map_or(0.0, |k| k[(i, j)]) + d.att_entry(i, j) * ej;
                 }
             }
             for (l, ld) in d.loads.iter().enumerate() {
@@ -460,9 +503,8 @@ impl Reduced {
                     a[(r, nc + c)] = knt[(i, j)];
                 }
             }
-            let att = d.att.as_ref().expect("stick nodes only with friction");
             for (r, &i) in stick.iter().enumerate() {
-                a[(nc + r, nc + c)] = att[(i, j)];
+                a[(nc + r, nc + c)] = d.att_entry(i, j);
             }
             for (l, ld) in d.loads.iter().enumerate() {
                 a[(nc + ns + l, nc + c)] = ld.row_t[j];
@@ -627,6 +669,25 @@ fn gmres(
     (rn <= tol * bnorm).then_some((y, total))
 }
 
+/// One linear step of the iteration: the iterate of given sets.
+trait Step {
+    /// Solve the system of `sets`, from the previous full solution `y0` when given; with `last`, to round-off.
+    /// `None` when the system is singular (or, for a phase, when the sets leave it).
+    fn solve(&mut self, d: &Data, sets: &[NodeSet], y0: Option<&[f64]>, last: bool) -> Option<Iterate>;
+    /// Whether the last solve was direct (round-off accurate).
+    fn last_direct(&self) -> bool;
+}
+
+impl Step for Linear {
+    fn solve(&mut self, d: &Data, sets: &[NodeSet], y0: Option<&[f64]>, last: bool) -> Option<Iterate> {
+        Linear::solve(self, d, sets, y0, last)
+    }
+
+    fn last_direct(&self) -> bool {
+        self.last_direct
+    }
+}
+
 /// GMRES's relative residual when it reuses a factorisation to decide the next sets.
 const GMRES_TOLERANCE: f64 = 1e-12;
 
@@ -778,8 +839,8 @@ fn iterate(
     start: Option<Vec<f64>>,
     s: &ActiveSetSettings,
     count: &mut usize,
-    linear: &mut Linear,
-) -> Result<Iterate, String> {
+    linear: &mut dyn Step,
+) -> Result<(Iterate, Vec<NodeSet>), String> {
     let mut seen: HashSet<Vec<NodeSet>> = HashSet::new();
     let mut max_changes = usize::MAX;
     let mut previous: Option<Vec<f64>> = start.filter(|y| y.len() == Full { d, sets: sets.clone() }.size());
@@ -791,7 +852,7 @@ fn iterate(
         let mut it = linear
             .solve(d, &sets, previous.as_deref(), false)
             .ok_or_else(|| format!("singular active-set system at iteration {count}"))?;
-        if !linear.last_direct && update(d, &sets, &it, s.margin).0 == sets {
+        if !linear.last_direct() && update(d, &sets, &it, s.margin).0 == sets {
             // Converged on an iterative solve: confirm with a direct one (round-off accurate).
             it = linear
                 .solve(d, &sets, None, true)
@@ -805,7 +866,7 @@ fn iterate(
         let (next, violation) = update(d, &sets, &it, s.margin);
         let mut changed: Vec<usize> = (0..d.n).filter(|&i| next[i] != sets[i]).collect();
         if changed.is_empty() {
-            return Ok(it);
+            return Ok((it, sets));
         }
         if !seen.insert(sets.clone()) {
             if max_changes == 1 {
@@ -870,6 +931,55 @@ impl ActiveSet {
     }
 }
 
+/// The sets of a warm start's solution.
+fn warm_sets(d: &Data, w: &Solution) -> Vec<NodeSet> {
+    (0..d.n)
+        .map(|i| {
+            let f = w.f[i];
+            let h = w.h.as_ref().map_or(0.0, |h| h[i]);
+            if f <= 0.0 {
+                NodeSet::Separated
+            } else if !d.frictional || h.abs() < d.mu * f * (1.0 - 1e-9) {
+                NodeSet::Stick
+            } else {
+                NodeSet::Slip(if h > 0.0 { -1 } else { 1 })
+            }
+        })
+        .collect()
+}
+
+/// The warm start's unknowns in the full layout [f; h; ρ], GMRES's first guess.
+fn warm_unknowns(p: &ContactProblem, d: &Data) -> Option<Vec<f64>> {
+    let n = d.n;
+    p.warm.as_ref().filter(|w| w.f.len() == n && w.rigid.len() == p.dofs.len()).map(|w| {
+        let h = w.h.clone().filter(|h| h.len() == n && d.frictional).unwrap_or_else(|| vec![0.0; n]);
+        let rho = p.dofs.iter().zip(&w.rigid).filter(|(dof, _)| p.is_unknown(dof)).map(|(_, v)| *v);
+        let f = w.f.iter().copied();
+        if d.frictional {
+            f.chain(h).chain(rho).collect::<Vec<f64>>()
+        } else {
+            f.chain(rho).collect()
+        }
+    })
+}
+
+impl ActiveSet {
+    /// The cold start of a coupled problem: the normal problem solved first with the shear fixed at zero (every
+    /// node starting in contact), then every contact node sticking.
+    fn normal_start(&self, p: &ContactProblem, d: &Data, count: &mut usize) -> Vec<NodeSet> {
+        let n = d.n;
+        if !d.frictional {
+            return vec![NodeSet::Stick; n];
+        }
+        let normal = Data::of(p, true);
+        let mut linear = Linear::new();
+        match iterate(&normal, vec![NodeSet::Stick; n], None, &self.settings, count, &mut linear) {
+            Ok((it, _)) => it.f.iter().map(|&f| if f > 0.0 { NodeSet::Stick } else { NodeSet::Separated }).collect(),
+            Err(_) => vec![NodeSet::Stick; n],
+        }
+    }
+}
+
 impl Solver for ActiveSet {
     fn id(&self) -> SolverId {
         SolverId::ActiveSet
@@ -881,53 +991,28 @@ impl Solver for ActiveSet {
 
     fn solve(&self, p: &ContactProblem) -> Outcome {
         let d = Data::of(p, false);
-        let n = d.n;
         let mut count = 0;
         // Start: the warm start's sets, or those of the same problem on a coarse grid, or the normal problem first
         // (every node in contact, no shear).
         let coarse = if p.warm.is_none() { self.coarse_start(p, &mut count) } else { None };
-        let start: Vec<NodeSet> = match (&p.warm, coarse) {
-            (_, Some(sets)) => sets,
-            (Some(w), None) => (0..n)
-                .map(|i| {
-                    let f = w.f[i];
-                    let h = w.h.as_ref().map_or(0.0, |h| h[i]);
-                    if f <= 0.0 {
-                        NodeSet::Separated
-                    } else if !d.frictional || h.abs() < d.mu * f * (1.0 - 1e-9) {
-                        NodeSet::Stick
-                    } else {
-                        NodeSet::Slip(if h > 0.0 { -1 } else { 1 })
-                    }
-                })
-                .collect(),
-            (None, None) if d.frictional => {
-                let normal = Data::of(p, true);
-                let mut linear = Linear::new();
-                match iterate(&normal, vec![NodeSet::Stick; n], None, &self.settings, &mut count, &mut linear) {
-                    Ok(it) => it.f.iter().map(|&f| if f > 0.0 { NodeSet::Stick } else { NodeSet::Separated }).collect(),
-                    Err(_) => vec![NodeSet::Stick; n],
-                }
-            }
-            (None, None) => vec![NodeSet::Stick; n],
+        let warm_sets = p.warm.as_ref().filter(|w| w.f.len() == d.n).map(|w| warm_sets(&d, w));
+        let (result, factorisations, gmres_iterations) = if phases::applies(p, &d) {
+            let run = phases::solve(&self.settings, p, &d, coarse.or(warm_sets), &mut count);
+            (run.result, run.factorisations, run.gmres)
+        } else {
+            let start = match (coarse, warm_sets) {
+                (Some(sets), _) | (None, Some(sets)) => sets,
+                (None, None) => self.normal_start(p, &d, &mut count),
+            };
+            // What the last solve on this flexibility kept, only when warm-started (a cold solve's work must not
+            // depend on what ran before it on the model).
+            let d = d.with_att();
+            let mut linear = if p.warm.is_some() { Linear::resume(p.flex) } else { Linear::new() };
+            let result = iterate(&d, start, warm_unknowns(p, &d), &self.settings, &mut count, &mut linear);
+            let (factorisations, gmres_iterations) = (linear.factorisations, linear.gmres_iterations);
+            linear.keep(p.flex);
+            (result.map(|(it, _)| it), factorisations, gmres_iterations)
         };
-        // The warm start's unknowns in the full layout [f; h; ρ], GMRES's first guess.
-        let start_y = p.warm.as_ref().filter(|w| w.f.len() == n && w.rigid.len() == p.dofs.len()).map(|w| {
-            let h = w.h.clone().filter(|h| h.len() == n && d.frictional).unwrap_or_else(|| vec![0.0; n]);
-            let rho = p.dofs.iter().zip(&w.rigid).filter(|(dof, _)| p.is_unknown(dof)).map(|(_, v)| *v);
-            let f = w.f.iter().copied();
-            if d.frictional {
-                f.chain(h).chain(rho).collect::<Vec<f64>>()
-            } else {
-                f.chain(rho).collect()
-            }
-        });
-        // What the last solve on this flexibility kept, only when warm-started (a cold solve's work must not depend
-        // on what ran before it on the model).
-        let mut linear = if p.warm.is_some() { Linear::resume(p.flex) } else { Linear::new() };
-        let result = iterate(&d, start, start_y, &self.settings, &mut count, &mut linear);
-        let (factorisations, gmres_iterations) = (linear.factorisations, linear.gmres_iterations);
-        linear.keep(p.flex);
         if std::env::var_os("ROLLBEM_DEBUG_AS").is_some() {
             eprintln!(
                 "active set: {count} iterations, {factorisations} factorisations, {gmres_iterations} GMRES iterations"

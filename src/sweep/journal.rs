@@ -312,25 +312,57 @@ pub fn write_sorted(files: &[PathBuf], mut blocks: Vec<Block>, header: &Header, 
     let status = header.names.iter().position(|n| n == "status").expect("a parsed header has `status`");
     let werr = write_err(out);
     Target::of(out)?.write(out, |w| {
-        let mut opened: Vec<Option<File>> = files.iter().map(|_| None).collect();
+        // One CSV reader per file (building a reader builds its parser: once per file, not once per block),
+        // moved to each block's offset.
+        let mut opened: Vec<Option<csv::Reader<BufReader<File>>>> = files.iter().map(|_| None).collect();
         let mut cw = csv::Writer::from_writer(w);
         let cerr = |e: csv::Error| Error::Write { path: out.to_path_buf(), source: std::io::Error::other(e) };
         cw.write_record(&header.names).map_err(cerr)?;
         let mut n = Written::default();
-        let mut bytes = Vec::new();
         for b in &blocks {
             let path = &files[b.file as usize];
-            let f = match &mut opened[b.file as usize] {
-                Some(f) => f,
-                slot => slot.insert(File::open(path).map_err(read_err(path))?),
+            let changed =
+                |e: csv::Error| Error::Parse { path: path.clone(), message: format!("changed while it was read: {e}") };
+            let rd = match &mut opened[b.file as usize] {
+                Some(r) => r,
+                slot => {
+                    let f = File::open(path).map_err(read_err(path))?;
+                    slot.insert(
+                        csv::ReaderBuilder::new().has_headers(false).flexible(true).from_reader(BufReader::new(f)),
+                    )
+                }
             };
-            bytes.resize((b.end - b.start) as usize, 0);
-            f.seek(SeekFrom::Start(b.start)).and_then(|_| f.read_exact(&mut bytes)).map_err(read_err(path))?;
-            let mut rd = csv::ReaderBuilder::new().has_headers(false).from_reader(&bytes[..]);
-            let mut records: Vec<csv::StringRecord> = rd
-                .records()
-                .collect::<std::result::Result<_, _>>()
-                .map_err(|e| Error::Parse { path: path.clone(), message: format!("changed while it was read: {e}") })?;
+            let mut at = csv::Position::new();
+            at.set_byte(b.start);
+            rd.seek_raw(SeekFrom::Start(b.start), at).map_err(changed)?;
+            let mut records: Vec<csv::StringRecord> = Vec::new();
+            while rd.position().byte() < b.end {
+                let mut r = csv::StringRecord::new();
+                if !rd.read_record(&mut r).map_err(changed)? {
+                    break;
+                }
+                if r.len() != header.names.len() {
+                    return Err(Error::Parse {
+                        path: path.clone(),
+                        message: format!(
+                            "changed while it was read: a row of {} fields under a header of {}",
+                            r.len(),
+                            header.names.len()
+                        ),
+                    });
+                }
+                records.push(r);
+            }
+            if rd.position().byte() != b.end {
+                return Err(Error::Parse {
+                    path: path.clone(),
+                    message: format!(
+                        "changed while it was read: a block ends at byte {}, not {}",
+                        rd.position().byte(),
+                        b.end
+                    ),
+                });
+            }
             records.sort_by(|x, y| x.get(solver).cmp(&y.get(solver)));
             for r in &records {
                 n.rows += 1;
