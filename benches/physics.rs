@@ -122,7 +122,7 @@ fn toeplitz_group(c: &mut Criterion) {
     use rollbem::toeplitz::Toeplitz;
     faer::set_global_parallelism(faer::Par::Seq);
     let mut g = c.benchmark_group("toeplitz");
-    for n in [64usize, 128, 192, 256, 512, 841, 1600] {
+    for n in [16usize, 32, 48, 64, 96, 128, 192, 256, 512, 841, 1600] {
         let t = |k: i64| -(1.0 + k.unsigned_abs() as f64).ln() + if k >= 0 { 0.3 } else { -0.2 };
         let col: Vec<f64> = (0..n).map(|i| t(i as i64)).collect();
         let row: Vec<f64> = (0..n).map(|j| t(-(j as i64))).collect();

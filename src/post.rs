@@ -299,7 +299,7 @@ pub fn evaluate(problem: &ContactProblem, sol: &Solution, rolling: Option<Rollin
         }
         (Some(RollingPost::Seed { creepage, direction }), Some(ux)) => {
             let d = crate::formulation::slip::upwind(&flex.x, direction);
-            Some((0..n).map(|i| creepage + (0..n).map(|j| d[(i, j)] * ux[j]).sum::<f64>()).collect())
+            Some(d.apply(ux).into_iter().map(|v| creepage + v).collect())
         }
         _ => None,
     };

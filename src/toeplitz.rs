@@ -9,11 +9,18 @@
 //! detected, not assumed: [`Toeplitz::detect`] fits t and c and checks every entry, so a BEM wheel's flexibility
 //! (not of this form) keeps the dense product.
 //!
-//! **Where it pays.** [`FFT_ABOVE`] = 192 is an estimate, not a measurement: the dense product costs 2n² flops bound
-//! by memory, the FFT product about three transforms of length L ≈ 2n plus O(n). It has not been measured on this
-//! machine yet: `cargo bench --bench physics -- toeplitz` times both for n = 64…1600, and its crossover should set
-//! the constant. On the 841-node creep curve the FFT products cut the run's CPU time from 7.9 s to 5.3 s (one
-//! measurement each, on a loaded machine).
+//! **Where it pays.** Everywhere it was measured. `cargo bench --bench physics -- toeplitz` (criterion medians, one
+//! K x, this 2-core machine, 2026-11-27, faer sequential):
+//!
+//! | n | 16 | 32 | 48 | 64 | 96 | 128 | 192 | 256 | 512 | 841 | 1600 |
+//! |---|---|---|---|---|---|---|---|---|---|---|---|
+//! | FFT [µs] | 0.19 | 0.27 | 0.39 | 0.47 | 0.72 | 1.30 | 2.25 | 1.77 | 3.54 | 11.1 | 21.7 |
+//! | dense [µs] | 0.28 | 0.39 | 0.52 | 0.76 | 1.67 | 2.64 | 6.51 | 11.4 | 39.4 | 143 | 1293 |
+//! | dense ÷ FFT | 1.5 | 1.5 | 1.3 | 1.6 | 2.3 | 2.0 | 2.9 | 6.4 | 11 | 13 | 60 |
+//!
+//! There is no crossover above 16 rows: the dense product's fixed cost (faer's dispatch) exceeds three short FFTs even
+//! there. [`FFT_ABOVE`] = 16, the smallest size measured; smaller matrices keep the dense product (not measured).
+//! Transform lengths matter (192 rows, L = 384 = 2⁷·3, is slower than 256, L = 512).
 //!
 //! The products are exact up to round-off relative to ‖T‖·‖x‖ (tested against the dense product to 1e-13 of the
 //! product's largest entry),
@@ -25,8 +32,8 @@ use realfft::num_complex::Complex;
 use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 use std::sync::Arc;
 
-/// Matrices of at least this many rows use the FFT product (an estimate: see the module docs).
-pub const FFT_ABOVE: usize = 192;
+/// Matrices of at least this many rows use the FFT product (the smallest size measured; module docs).
+pub const FFT_ABOVE: usize = 16;
 
 /// How closely a matrix must fit T + 1 cᵀ, relative to its largest entry, for [`Toeplitz::detect`]: the round-off
 /// of the fit's subtractions (the FFT product itself is accurate to about 1e-15 of ‖T‖‖x‖).

@@ -210,6 +210,10 @@ struct Base {
     /// Position in `idx` of each unknown of the index space (`usize::MAX` when absent).
     pos: Vec<usize>,
     lu: PartialPivLu<f64>,
+    /// Columns of A(S₀)⁻¹ C already computed, by unknown (an added unknown's column of A, or a removed unknown's
+    /// unit vector), and the added unknowns' rows of A on S₀: the border of the next set reuses them.
+    w_cols: std::collections::HashMap<usize, Vec<f64>>,
+    r_rows: std::collections::HashMap<usize, Vec<f64>>,
 }
 
 /// The Schur complement of a base for a nearby set (module docs).
@@ -262,58 +266,97 @@ impl Tangential<'_> {
         for (k, &u) in idx.iter().enumerate() {
             pos[u] = k;
         }
-        self.base = Some(Base { idx: idx.to_vec(), pos, lu });
+        self.base = Some(Base {
+            idx: idx.to_vec(),
+            pos,
+            lu,
+            w_cols: std::collections::HashMap::new(),
+            r_rows: std::collections::HashMap::new(),
+        });
         Some(())
     }
 
     /// The bordered system of the base for `idx`, or `None` when there is no base or too many changes.
-    fn border(&self, d: &Data, idx: &[usize]) -> Option<Border> {
-        let base = self.base.as_ref()?;
-        let m0 = base.idx.len();
-        let mut in_new = vec![false; d.n + self.t_loads.len()];
+    fn border(&mut self, d: &Data, idx: &[usize]) -> Option<Border> {
+        let nu = d.n + self.t_loads.len();
+        let m0 = self.base.as_ref()?.idx.len();
+        let mut in_new = vec![false; nu];
         let mut added = Vec::new();
-        let map: Vec<usize> = idx
-            .iter()
-            .map(|&u| {
-                in_new[u] = true;
-                if base.pos[u] != usize::MAX {
-                    base.pos[u]
-                } else {
-                    added.push(u);
-                    usize::MAX - (added.len() - 1)
-                }
-            })
-            .collect();
-        let removed: Vec<usize> = (0..m0).filter(|&k| !in_new[base.idx[k]]).collect();
+        let map: Vec<usize> = {
+            let base = self.base.as_ref()?;
+            idx.iter()
+                .map(|&u| {
+                    in_new[u] = true;
+                    if base.pos[u] != usize::MAX {
+                        base.pos[u]
+                    } else {
+                        added.push(u);
+                        usize::MAX - (added.len() - 1)
+                    }
+                })
+                .collect()
+        };
+        let removed: Vec<usize> = {
+            let base = self.base.as_ref()?;
+            (0..m0).filter(|&k| !in_new[base.idx[k]]).collect()
+        };
         let (na, k) = (added.len(), added.len() + removed.len());
         if k > border_limit(idx.len().max(m0)) {
             return None;
         }
-        let c = Mat::from_fn(m0, k, |i, j| {
-            if j < na {
-                self.entry(d, base.idx[i], added[j])
-            } else if removed[j - na] == i {
-                1.0
-            } else {
-                0.0
+        // The border's unknowns: added ones by their index, removed ones by the index they had in the base.
+        let unknowns: Vec<usize> = {
+            let base = self.base.as_ref()?;
+            added.iter().copied().chain(removed.iter().map(|&q| base.idx[q])).collect()
+        };
+        let missing: Vec<(usize, usize)> = {
+            let base = self.base.as_ref()?;
+            unknowns.iter().enumerate().filter(|(_, u)| !base.w_cols.contains_key(u)).map(|(j, u)| (j, *u)).collect()
+        };
+        if !missing.is_empty() {
+            let base = self.base.as_ref()?;
+            let c = Mat::from_fn(m0, missing.len(), |i, j| {
+                let (jj, u) = missing[j];
+                if jj < na {
+                    self.entry(d, base.idx[i], u)
+                } else if removed[jj - na] == i {
+                    1.0
+                } else {
+                    0.0
+                }
+            });
+            let w = base.lu.solve(&c);
+            let rows: Vec<(usize, Vec<f64>)> = missing
+                .iter()
+                .filter(|(jj, _)| *jj < na)
+                .map(|&(_, u)| (u, (0..m0).map(|q| self.entry(d, u, base.idx[q])).collect()))
+                .collect();
+            let base = self.base.as_mut()?;
+            for (j, &(_, u)) in missing.iter().enumerate() {
+                base.w_cols.insert(u, (0..m0).map(|i| w[(i, j)]).collect());
             }
-        });
-        let w = base.lu.solve(&c);
-        let r = Mat::from_fn(k, m0, |i, j| {
-            if i < na {
-                self.entry(d, added[i], base.idx[j])
-            } else if removed[i - na] == j {
-                1.0
-            } else {
-                0.0
-            }
-        });
+            base.r_rows.extend(rows);
+        }
+        let base = self.base.as_ref()?;
+        let mut w = Mat::<f64>::zeros(m0, k);
+        for (j, u) in unknowns.iter().enumerate() {
+            w.col_mut(j).iter_mut().zip(&base.w_cols[u]).for_each(|(a, b)| *a = *b);
+        }
+        let mut r = Mat::<f64>::zeros(k, m0);
+        for (i, u) in added.iter().enumerate() {
+            r.row_mut(i).iter_mut().zip(&base.r_rows[u]).for_each(|(a, b)| *a = *b);
+        }
+        for (q, &pos) in removed.iter().enumerate() {
+            r[(na + q, pos)] = 1.0;
+        }
         let rw = &r * &w;
-        let s = Mat::from_fn(
-            k,
-            k,
-            |i, j| if i < na && j < na { self.entry(d, added[i], added[j]) } else { 0.0 } - rw[(i, j)],
-        );
+        let s = Mat::from_fn(k, k, |i, j| {
+            if i < na && j < na {
+                self.entry(d, added[i], added[j]) - rw[(i, j)]
+            } else {
+                -rw[(i, j)]
+            }
+        });
         let schur = (k > 0).then(|| s.partial_piv_lu());
         Some(Border { map, removed, w, r, schur })
     }
