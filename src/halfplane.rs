@@ -457,6 +457,32 @@ impl HalfPlane {
         out
     }
 
+    /// One block of [`HalfPlane::influence_blocks_uniform`], row-major, computed alone (the same entries bit for
+    /// bit): `which` is 0 for `cxx`, 1 `cxz`, 2 `czx`, 3 `czz`. A flexibility that needs two of the four blocks then
+    /// never holds the other two.
+    pub fn influence_block_uniform(&self, x0: f64, h: f64, n: usize, which: usize) -> Vec<f64> {
+        assert!(h > 0.0 && h.is_finite(), "element width must be finite and > 0");
+        assert!(which < 4, "a block index is 0..4");
+        let kern = self.kernel();
+        let mesh = uniform_mesh(x0, h, n);
+        let d: Vec<f64> = mesh.a.iter().zip(&mesh.b).map(|(&aj, &bj)| kern.datum(aj, bj)[which]).collect();
+        // The Toeplitz part: cxx and czz share the log term (index 0), cxz index 1, czx index 2.
+        let ti = [0, 1, 2, 0][which];
+        let len = (2 * n).saturating_sub(1);
+        let t: Vec<f64> = (0..len)
+            .map(|m| {
+                let k = (n as f64 - 1.0) - m as f64;
+                kern.toeplitz((k + 0.5) * h, (k - 0.5) * h)[ti]
+            })
+            .collect();
+        let mut out = Vec::with_capacity(n * n);
+        for i in 0..n {
+            let o = n - 1 - i;
+            out.extend(t[o..o + n].iter().zip(d.iter()).map(|(t, d)| t + d));
+        }
+        out
+    }
+
     /// As [`HalfPlane::influence_blocks_uniform`], but refilling `out` in place (its vectors are
     /// cleared and reused, so a repeated assembly allocates nothing and does not page-fault).
     pub fn influence_blocks_uniform_into(&self, x0: f64, h: f64, n: usize, out: &mut InfluenceBlocks) {

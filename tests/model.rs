@@ -209,3 +209,52 @@ fn an_off_centre_zone_is_refused_where_it_means_nothing() {
         .to_string();
     assert!(bem.contains("mesh.contact_x") && bem.contains("half-plane model"), "{bem}");
 }
+
+/// Without coupling the active set solves the normal problem once and then the stick–slip problem with bordered
+/// updates of its factorisation (`src/solvers/active_set/phases.rs`). The peer is Lemke on the same discrete
+/// problem's LCP (an independent method: pivoting, no factorisation reused): on a creep curve (creepage given) and on
+/// a tangential-load family (creepage unknown: a tangential load row in the bordered system), solved warm on one
+/// model, every case agrees with Lemke's to 1e-9 of p0 (Lemke's own accuracy on this problem is about 1e-12).
+#[test]
+fn the_two_phase_active_set_agrees_with_lemke() {
+    let base = carter().edit(|d| d.solvers.use_ = vec!["active_set".into(), "lemke".into()]).unwrap();
+    let curve: Vec<Scene> = (1..=10).map(|k| base.with_creepage(4e-4 * k as f64).unwrap()).collect();
+    let loads: Vec<Scene> = (1..=10)
+        .map(|k| {
+            base.with_drive(Drive {
+                normal: Dof::Load(20000.0),
+                tangential: Dof::Load(550.0 * k as f64),
+                rotational: Dof::Displacement(0.0),
+            })
+            .unwrap()
+        })
+        .collect();
+    for (name, family) in [("creep curve", &curve), ("tangential-load family", &loads)] {
+        let model = Model::build(&family[0]).unwrap();
+        let mut worst = 0.0_f64;
+        for r in model.solve_all(family).unwrap() {
+            let (a, l) = (&r.runs[0], &r.runs[1]);
+            assert_eq!(a.status, Status::Solved, "{name}: {}", a.explanation());
+            assert_eq!(l.status, Status::Solved, "{name}: {}", l.explanation());
+            worst = worst.max(traction_difference(a, l));
+        }
+        assert!(worst <= 1e-9, "{name}: max |Δp|, |Δq| / p0 against Lemke = {worst:e}");
+    }
+}
+
+/// A half-plane model built for an uncoupled scene holds K_NN and K_TT only (two n × n blocks, not four: the memory
+/// the 841-element curve saves), and refuses a coupled scene by naming `contact.coupling`; a coupled model serves
+/// both.
+#[test]
+fn an_uncoupled_model_holds_two_blocks_and_refuses_coupling() {
+    let base = carter();
+    let model = Model::build(&base).unwrap();
+    let flex = &model.built().flex;
+    assert!(flex.k_tt.is_some() && flex.k_nt.is_none() && flex.k_tn.is_none());
+    let coupled = base.edit(|d| d.contact.coupling = true).unwrap();
+    let e = model.solve(&coupled).unwrap_err().to_string();
+    assert!(e.contains("contact.coupling"), "{e}");
+    let both = Model::build(&coupled).unwrap();
+    assert!(both.built().flex.k_nt.is_some());
+    assert_eq!(both.solve(&base).unwrap().runs[0].status, Status::Solved);
+}

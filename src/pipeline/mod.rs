@@ -127,8 +127,12 @@ impl Model {
         if let Some((field, what)) = source_difference(m, scene) {
             return Err(differs(field, what));
         }
-        if stages::blocks_for(scene) == Blocks::All && self.blocks == Blocks::Normal {
+        let needed = stages::blocks_for(scene);
+        if needed > Blocks::Normal && self.blocks == Blocks::Normal {
             return Err(differs("contact.friction", "friction or rolling (the model holds the normal problem only)"));
+        }
+        if needed == Blocks::All && self.blocks < Blocks::All {
+            return Err(differs("contact.coupling", "normal–tangential coupling (the model was built without it)"));
         }
         if scene.stresses().is_some()
             && crate::mesh::MeshSpec::of_scene(scene).is_some()
@@ -148,8 +152,8 @@ impl Model {
     /// What a scene needs of a model beyond its source, ordered: (the tangential blocks, the BEM wheel's boundary
     /// response for stresses). A model built from the scene that needs the most accepts every scene sharing its
     /// source.
-    pub fn needs(scene: &Scene) -> (bool, bool) {
-        (stages::blocks_for(scene) == Blocks::All, scene.stresses().is_some())
+    pub fn needs(scene: &Scene) -> (Blocks, bool) {
+        (stages::blocks_for(scene), scene.stresses().is_some())
     }
 
     /// Solve a scene on this model: its one-step drive or its load path, with its friction, rolling, solvers and

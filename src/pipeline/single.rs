@@ -29,6 +29,10 @@ pub(super) fn solve(
     let tf = Instant::now();
     let mut problem = build_problem(scene, flex, drive, slip_operator(scene, flex))?;
     let formulation_time = tf.elapsed().as_secs_f64();
+    // The flexibility's health figures (computed once per flexibility, with n × n transients) before any solver:
+    // on a clean heap they do not add to the peak memory (see `diagnostics::conditions`).
+    crate::diagnostics::conditions(flex);
+    let asym = normal_asymmetry(&problem, is_half_plane(scene));
     let solvers = solvers_for(scene, &problem)?;
     let stresses = crate::stresses::StressEvaluator::new(scene, built)?;
     let mut runs = Vec::new();
@@ -53,7 +57,6 @@ pub(super) fn solve(
         runs.push(run);
         bounds.push(check_bound);
     }
-    let asym = normal_asymmetry(&problem, is_half_plane(scene));
     Ok(assemble_report(scene, built, asym, runs, &bounds, Vec::new()))
 }
 

@@ -15,12 +15,15 @@ use crate::source::{Blocks, Built};
 use crate::status::{Status, Verdict, VerdictReason};
 use std::time::Instant;
 
-/// Which flexibility blocks the scene needs: the tangential columns only with friction or rolling.
+/// Which flexibility blocks the scene needs: the tangential columns only with friction or rolling, the coupling
+/// blocks only with coupling as well.
 pub fn blocks_for(scene: &Scene) -> Blocks {
-    if scene.friction() > 0.0 || scene.rolling().is_some() {
+    if scene.friction() <= 0.0 && scene.rolling().is_none() {
+        Blocks::Normal
+    } else if scene.law().coupling {
         Blocks::All
     } else {
-        Blocks::Normal
+        Blocks::Uncoupled
     }
 }
 

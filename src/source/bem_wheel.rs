@@ -182,7 +182,7 @@ pub fn assemble_system(model: &Model, blocks: Blocks) -> Result<System> {
     for (c, &i) in mesh.contact_nodes.iter().enumerate() {
         contact_index[i] = Some(c);
     }
-    let store_tx = blocks == Blocks::All;
+    let store_tx = blocks != Blocks::Normal;
     let ncols = if store_tx { 2 * nc } else { nc } + 3;
     let mut a = Mat::<f64>::zeros(2 * nn, 2 * nn);
     let mut rhs = Mat::<f64>::zeros(2 * nn, ncols);
@@ -209,7 +209,7 @@ pub fn solve_system_with_response(model: &Model, sys: &System) -> Result<(Flexib
     let mesh = &model.mesh;
     let nn = mesh.n_nodes();
     let nc = mesh.contact_nodes.len();
-    let store_tx = sys.blocks == Blocks::All;
+    let store_tx = sys.blocks != Blocks::Normal;
     let ncols = sys.rhs.ncols();
     let lu = sys.a.partial_piv_lu();
     let u = lu.U();

@@ -90,6 +90,18 @@ impl Grid {
             None => hp.influence_blocks(&self.a, &self.b, &self.xc),
         }
     }
+
+    /// One block of [`Grid::blocks`] (`which`: 0 cxx, 1 cxz, 2 czx, 3 czz), row-major; on a uniform grid computed
+    /// alone (a non-uniform grid computes all four and keeps one).
+    pub fn block(&self, hp: &HalfPlane, which: usize) -> Vec<f64> {
+        match self.uniform {
+            Some((x0, h)) => hp.influence_block_uniform(x0, h, self.xc.len(), which),
+            None => {
+                let c = hp.influence_blocks(&self.a, &self.b, &self.xc);
+                [c.cxx, c.cxz, c.czx, c.czz].into_iter().nth(which).expect("which < 4")
+            }
+        }
+    }
 }
 
 /// A row-major block per unit traction → K per unit nodal force (column j divided by the strip width w_j).
@@ -119,14 +131,18 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
         .collect();
     let weights = grid.widths();
     let hp = HalfPlane::new(1.0, w.material.poisson_ratio, datum_depth / l0);
-    let c = grid.blocks(&hp);
-    let all = blocks == Blocks::All;
+    let all = blocks != Blocks::Normal;
+    let coupled = blocks == Blocks::All;
     let tangential = |v: f64| all.then(|| vec![v; n]);
+    // One block at a time, only those the scene needs (peak memory: the 841-element creep curve holds two n × n
+    // blocks, not four, and never a second copy of them).
+    let k = |which: usize| per_force(&grid.block(&hp, which), &weights);
+    let (k_nn, k_nt, k_tn, k_tt) = (k(3), coupled.then(|| k(2)), coupled.then(|| k(1)), all.then(|| k(0)));
     let mut flex = Flexibility {
-        k_nn: per_force(&c.czz, &weights),
-        k_nt: all.then(|| per_force(&c.czx, &weights)),
-        k_tn: all.then(|| per_force(&c.cxz, &weights)),
-        k_tt: all.then(|| per_force(&c.cxx, &weights)),
+        k_nn,
+        k_nt,
+        k_tn,
+        k_tt,
         modes: vec![
             RigidMode { kind: ModeKind::Shift, normal: vec![0.0; n], tangential: tangential(1.0) },
             RigidMode { kind: ModeKind::Approach, normal: vec![-1.0; n], tangential: tangential(0.0) },
@@ -163,24 +179,27 @@ pub fn add_counter_body(flex: &mut Flexibility, scene: &Scene, grid: &Grid) {
     let CounterBody::HalfPlane { material, datum_depth } = *scene.counter_body() else { return };
     let l0 = flex.scales.length;
     let hp = HalfPlane::new(material.youngs_modulus / flex.scales.modulus, material.poisson_ratio, datum_depth / l0);
-    let c = grid.blocks(&hp).into_counter_body();
     let w = grid.widths();
-    let add = |k: &mut Mat<f64>, block: &[f64]| {
+    // Each block computed alone and added ([`crate::halfplane::InfluenceBlocks::into_counter_body`]: the counter-body
+    // adds +C'xx, −C'xz, −C'zx, +C'zz); only the blocks the flexibility holds.
+    let add = |k: &mut Mat<f64>, which: usize| {
+        let block = grid.block(&hp, which);
+        let sign = if which == 1 || which == 2 { -1.0 } else { 1.0 };
         let n = w.len();
         for j in 0..n {
             for i in 0..n {
-                k[(i, j)] += block[i * n + j] / w[j];
+                k[(i, j)] += (sign * block[i * n + j]) / w[j];
             }
         }
     };
-    add(&mut flex.k_nn, &c.czz);
+    add(&mut flex.k_nn, 3);
     if let Some(k) = flex.k_nt.as_mut() {
-        add(k, &c.czx);
+        add(k, 2);
     }
     if let Some(k) = flex.k_tn.as_mut() {
-        add(k, &c.cxz);
+        add(k, 1);
     }
     if let Some(k) = flex.k_tt.as_mut() {
-        add(k, &c.cxx);
+        add(k, 0);
     }
 }

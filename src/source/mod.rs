@@ -14,10 +14,15 @@ use crate::flexibility::Flexibility;
 use crate::scene::{ElementKind, Scene};
 
 /// Which blocks of the flexibility to compute.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+/// Ordered: a model with more blocks serves every scene that needs fewer.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Blocks {
     /// Only K_NN and the normal rigid responses: the frictionless problem.
     Normal,
+    /// K_NN, K_TT and both rigid responses: friction or rolling without normal–tangential coupling (the half-plane
+    /// model leaves out K_NT and K_TN, two n × n blocks; a BEM wheel's condensation yields them anyway and keeps
+    /// them).
+    Uncoupled,
     /// K_NN, K_NT, K_TN, K_TT and both rigid responses.
     All,
 }
@@ -77,7 +82,7 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
     let mesh = &model.mesh;
     let (elements, nodes, element) = (mesh.elements.len(), mesh.n_nodes(), mesh.kind);
     let boundary = scene.stresses().is_some().then(|| bem_wheel::BoundaryResponse {
-        tangential: blocks == Blocks::All,
+        tangential: blocks != Blocks::Normal,
         matrix: response,
         model,
     });

@@ -397,7 +397,7 @@ fn costs(scene: &Scene) -> Costs {
         model_bytes += half_plane.1;
     }
     let contact = strips * per_element(scene.element());
-    let m = if Model::needs(scene).0 { 3.0 * contact + 2.0 } else { contact + 2.0 };
+    let m = if Model::needs(scene).0 > crate::source::Blocks::Normal { 3.0 * contact + 2.0 } else { contact + 2.0 };
     let set = scene.solvers();
     let all = crate::solvers::REGISTRY.iter().filter(|e| set.all && e.in_all && !set.names(e.id)).map(|e| e.id);
     let substeps = match scene.loading() {
