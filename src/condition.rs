@@ -3,7 +3,7 @@
 //! `κ₁(A) ≈ ‖A‖₁ · est(‖A⁻¹‖₁)`, a few solves with A and Aᵀ, O(n²) each. The estimate is a lower bound that is
 //! usually within a factor of 3 of the true value.
 
-use faer::linalg::solvers::{PartialPivLu, Solve};
+use crate::lu::LuSolve;
 use faer::Mat;
 
 /// ‖A‖₁ (largest column sum).
@@ -12,7 +12,7 @@ pub fn norm1(a: &Mat<f64>) -> f64 {
 }
 
 /// Estimate ‖A⁻¹‖₁ from A's LU factors.
-pub fn inverse_norm1(lu: &PartialPivLu<f64>, n: usize) -> f64 {
+pub fn inverse_norm1(lu: &impl LuSolve, n: usize) -> f64 {
     if n == 0 {
         return 0.0;
     }
@@ -20,7 +20,7 @@ pub fn inverse_norm1(lu: &PartialPivLu<f64>, n: usize) -> f64 {
     let mut est = 0.0;
     let mut last_j = usize::MAX;
     for _ in 0..5 {
-        let y = lu.solve(&x);
+        let y = lu.solve_mat(&x);
         let ny: f64 = (0..n).map(|i| y[(i, 0)].abs()).sum();
         if !ny.is_finite() {
             return f64::INFINITY;
@@ -30,7 +30,7 @@ pub fn inverse_norm1(lu: &PartialPivLu<f64>, n: usize) -> f64 {
         }
         est = ny;
         let xi = Mat::from_fn(n, 1, |i, _| if y[(i, 0)] >= 0.0 { 1.0 } else { -1.0 });
-        let z = lu.solve_transpose(&xi);
+        let z = lu.solve_transpose_mat(&xi);
         let (mut j, mut zmax) = (0, 0.0_f64);
         for i in 0..n {
             if z[(i, 0)].abs() > zmax {
@@ -50,13 +50,13 @@ pub fn inverse_norm1(lu: &PartialPivLu<f64>, n: usize) -> f64 {
         let s = if i % 2 == 0 { 1.0 } else { -1.0 };
         s * (1.0 + i as f64 / (n.max(2) - 1) as f64)
     });
-    let y = lu.solve(&b);
+    let y = lu.solve_mat(&b);
     let alt = 2.0 * (0..n).map(|i| y[(i, 0)].abs()).sum::<f64>() / (3.0 * n as f64);
     est.max(alt)
 }
 
 /// Estimated κ₁(A) for a matrix and its LU.
-pub fn cond1(a: &Mat<f64>, lu: &PartialPivLu<f64>) -> f64 {
+pub fn cond1(a: &Mat<f64>, lu: &impl LuSolve) -> f64 {
     norm1(a) * inverse_norm1(lu, a.nrows())
 }
 

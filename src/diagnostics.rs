@@ -25,7 +25,7 @@ pub fn asymmetry(k: &faer::Mat<f64>) -> f64 {
 /// clean (after a solve they fragment it: the 841-element curve's peak RSS went from 49 to 67 MB).
 pub fn conditions(flex: &Flexibility) -> (f64, Option<f64>) {
     let n = flex.n();
-    let cond = |k: &faer::Mat<f64>| crate::condition::cond1(k, &k.partial_piv_lu());
+    let cond = |k: &faer::Mat<f64>| crate::condition::cond1(k, &crate::lu::InPlaceLu::new(k.clone()));
     flex.derived
         .conditions(|| (if n > 0 { cond(&flex.k_nn) } else { 0.0 }, flex.k_tt.as_ref().filter(|_| n > 0).map(cond)))
 }

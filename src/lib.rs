@@ -70,6 +70,7 @@ pub mod hertz;
 pub mod io;
 pub mod lcp_io;
 pub mod lcp_residual;
+pub mod lu;
 pub mod material;
 pub mod mesh;
 pub mod pipeline;

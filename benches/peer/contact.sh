@@ -491,12 +491,14 @@ for case_name in $cases; do
   c_mem=$(awk '{ print $2 }' "$cw/time.contact" | median)
   if ((warm_here)); then
     w_cpu=$(awk '{ print $1 }' "$cw/time.contact.warm" | median)
+    w_mem=$(awk '{ print $2 }' "$cw/time.contact.warm" | median)
     # The warm run's answer: its last case's printed FX/(FSTAT FN) against the results run's.
     wl=$(parse_out "$cw/warm/$case_name.out" | tail -n 1 | awk '{ print $5 }')
     cl=$(tail -n 1 "$cw/contact.cases" | awk '{ print $5 }')
     notes+=("$case_name: CONTACT warm-started (I = 3): last case's FX/(FSTAT FN) $wl (cold: $cl).")
   else
     w_cpu=$c_cpu
+    w_mem=$c_mem
   fi
   mid=$(((nuniq + 1) / 2))
   mid_cksi=$(sed -n "${mid}p" "$cw/cksi.unique")
@@ -566,6 +568,8 @@ for case_name in $cases; do
     ratio=$(cpu_ratio "$r_cpu" "$c_cpu")
     if ((warm_here)); then
       rw_cpu=$(awk '{ print $1 }' "$cw/time.rollbem.$solver.warm" | median)
+      rw_mem=$(awk '{ print $2 }' "$cw/time.rollbem.$solver.warm" | median)
+      wmem="$(printf '%.1f' "$rw_mem") | $(printf '%.1f' "$w_mem")"
       wratio=$(cpu_ratio "$rw_cpu" "$w_cpu")
       wcells="$(cpu_cell "$rw_cpu") | $(cpu_cell "$w_cpu")"
       # The warm sweep's answers against the cold sweep's, case by case.
@@ -576,8 +580,9 @@ for case_name in $cases; do
     else
       wratio="(1 case)"
       wcells="(1 case) | (1 case)"
+      wmem="(1 case) | (1 case)"
     fi
-    rows+=("| $case_name | $mx | $ncases | $solver | $dfx (case $dfx_at) | ${mid_counts%%|*} | ${mid_counts##*|} | $agree of $nuniq | $tcell | $(cpu_cell "$r_cpu") | $(cpu_cell "$c_cpu") | $ratio | $wcells | $wratio | $(printf '%.1f' "$r_mem") | $(printf '%.1f' "$c_mem") |")
+    rows+=("| $case_name | $mx | $ncases | $solver | $dfx (case $dfx_at) | ${mid_counts%%|*} | ${mid_counts##*|} | $agree of $nuniq | $tcell | $(cpu_cell "$r_cpu") | $(cpu_cell "$c_cpu") | $ratio | $wcells | $wratio | $(printf '%.1f' "$r_mem") | $(printf '%.1f' "$c_mem") | $wmem |")
     say "  $solver: max ΔFX/(μFN) $dfx, counts equal at $agree of $nuniq, tractions $tcell, CPU $r_cpu s vs $c_cpu s"
   done
   # rollbem's solvers against each other (each solves the same discrete problem, to round-off).
@@ -596,8 +601,8 @@ else
   grid_text="GRID=centred: rollbem's grid has CONTACT's element count and size but is centred on x = 0 (\`contact_half_width = MX·DX/2\`), shifted from CONTACT's unless its span is symmetric; tractions are compared only where the grids coincide."
 fi
 {
-  echo "| input | elements | cases | rollbem solver | max\\|FX_rollbem − FX_CONTACT\\| / (μ FN) | contact elements rollbem / CONTACT | stick elements rollbem / CONTACT | creepages with equal counts | max\\|p_rollbem − p_CONTACT\\| / max p | max\\|q_rollbem − q_CONTACT\\| / max p (worst CKSI) | CPU rollbem [s] | CPU CONTACT [s] | ratio rollbem ÷ CONTACT | CPU rollbem warm [s] | CPU CONTACT warm (I = 3) [s] | ratio warm ÷ warm | peak memory rollbem, cold [MB] | peak memory CONTACT, cold [MB] |"
-  echo "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+  echo "| input | elements | cases | rollbem solver | max\\|FX_rollbem − FX_CONTACT\\| / (μ FN) | contact elements rollbem / CONTACT | stick elements rollbem / CONTACT | creepages with equal counts | max\\|p_rollbem − p_CONTACT\\| / max p | max\\|q_rollbem − q_CONTACT\\| / max p (worst CKSI) | CPU rollbem [s] | CPU CONTACT [s] | ratio rollbem ÷ CONTACT | CPU rollbem warm [s] | CPU CONTACT warm (I = 3) [s] | ratio warm ÷ warm | peak memory rollbem, cold [MB] | peak memory CONTACT, cold [MB] | peak memory rollbem, warm [MB] | peak memory CONTACT, warm (I = 3) [MB] |"
+  echo "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
   printf '%s\n' "${rows[@]}"
   echo
   echo "Inputs: CONTACT's examples/carter2d.inp and perfc_test/carter2d_100.inp, carter2d_800.inp (steady rolling of two identical half-planes, G = 82 000, ν = 0.28, profile x²/(2·500), μ = 0.3, FN = 35 780 on a strip DY = 200 wide: 178.9 per unit width). rollbem: \`[wheel] model = \"half_plane\"\`, \`profile = \"parabola\"\` (CONTACT's IBASE 1 and 2 both give h = x²/(2R)), E = 2G(1 + ν), \`[counter_body] kind = \"half_plane\"\` of the same material, \`coupling = false\`, \`normal_load = FN/DY\`, \`[rolling] mode = \"steady\"\`, \`direction = +1\` (CHI = 0), creepage = CKSI (the same sign convention: CKSI > 0 is braking, FX < 0 on body 1; rollbem's Q on the wheel likewise). $grid_text"

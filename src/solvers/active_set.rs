@@ -26,6 +26,10 @@
 //!
 //! **Start.** From the problem's warm start when it has one; otherwise the normal problem is solved first with the
 //! shear fixed at zero (every node starting in contact), then friction starts with every contact node sticking.
+//!
+//! **Two phases.** Without normal–tangential coupling the normal problem does not depend on the shear: it is solved
+//! once, alone, and the stick–slip problem after it with f fixed, its factorisations updated by bordered solves
+//! ([`phases`]). With coupling the iteration is the joint one above.
 
 use super::lemke::{self, Lemke, LemkeSettings};
 use super::{Entry, Outcome, Solver, SolverId, SolverSettings, Termination, Validate, Work};
@@ -369,7 +373,7 @@ enum Factor {
     /// Nothing to solve (no contact node, no load-driven motion).
     Empty,
     /// The whole block, LU with partial pivoting (with coupling, or a layout that does not split).
-    Whole(faer::linalg::solvers::PartialPivLu<f64>),
+    Whole(crate::lu::InPlaceLu),
     /// Block lower-triangular (see [`Split`]).
     Split(Split),
 }
@@ -439,7 +443,7 @@ impl Factor {
         if a.nrows() == 0 {
             return Factor::Empty;
         }
-        let Some((n_idx, t_idx)) = layout else { return Factor::Whole(a.partial_piv_lu()) };
+        let Some((n_idx, t_idx)) = layout else { return Factor::Whole(crate::lu::InPlaceLu::new(a)) };
         let pick = |rows: &[usize], cols: &[usize]| Mat::from_fn(rows.len(), cols.len(), |i, j| a[(rows[i], cols[j])]);
         let normal = NormalFactor::of(pick(&n_idx, &n_idx), cache);
         let tangential = (!t_idx.is_empty()).then(|| pick(&t_idx, &t_idx).partial_piv_lu());
@@ -769,6 +773,8 @@ impl Linear {
             Some(y) => y,
             None if exact_hit => self.base.as_ref()?.solve_full(d, &b)?,
             None => {
+                // The old factorisation goes before the new one is made (peak memory: two n × n blocks, not three).
+                self.base = None;
                 let red = Reduced::new(d, sets, &mut self.normal);
                 self.factorisations += 1;
                 let sol = red.solve_full(d, &b)?;

@@ -90,6 +90,32 @@ fn bits(parts: &[&[f64]]) -> Vec<u64> {
     out
 }
 
+/// The bits that decide what a solve may take from the last one (module docs, "Across solves"): the normal
+/// phase's matrix-defining data, its whole data (matrix, gap constants, loads, settings), and the tangential
+/// system's matrix-defining data (D and the tangential load rows; K_TT is the flexibility's own).
+fn keys(
+    settings: &ActiveSetSettings,
+    p: &ContactProblem,
+    d: &Data,
+    dn: &Data,
+    tangential_load: &[bool],
+) -> (Vec<u64>, Vec<u64>, Vec<u64>) {
+    let n = d.n;
+    let mut normal_matrix = vec![n as u64];
+    for ld in &dn.loads {
+        normal_matrix.extend(bits(&[&ld.gap, &ld.row_n, &ld.row_t, &ld.slip]));
+    }
+    let loads: Vec<f64> = dn.loads.iter().map(|ld| ld.load).collect();
+    let mut normal_data = bits(&[&dn.g_const, &loads, &[settings.margin, settings.max_iterations as f64]]);
+    normal_data.extend(&normal_matrix);
+    let mut tangential_matrix = vec![n as u64];
+    tangential_matrix.extend(p.slip.d_bits());
+    for (ld, _) in d.loads.iter().zip(tangential_load).filter(|(_, t)| **t) {
+        tangential_matrix.extend(bits(&[&ld.slip, &ld.row_t]));
+    }
+    (normal_matrix, normal_data, tangential_matrix)
+}
+
 /// Solve a problem for which [`applies`] holds from `start` (a warm start's or a coarse grid's sets).
 pub(super) fn solve(
     settings: &ActiveSetSettings,
@@ -101,27 +127,7 @@ pub(super) fn solve(
     let n = d.n;
     let dn = Data::of(p, true);
     let tangential_load: Vec<bool> = p.load_dofs().map(|dof| dof.kind.is_tangential()).collect();
-    let normal_matrix = {
-        let mut k = vec![n as u64];
-        for ld in &dn.loads {
-            k.extend(bits(&[&ld.gap, &ld.row_n, &ld.row_t, &ld.slip]));
-        }
-        k
-    };
-    let normal_data = {
-        let loads: Vec<f64> = dn.loads.iter().map(|ld| ld.load).collect();
-        let mut k = bits(&[&dn.g_const, &loads, &[settings.margin, settings.max_iterations as f64]]);
-        k.extend(&normal_matrix);
-        k
-    };
-    let tangential_matrix = {
-        let mut k = vec![n as u64];
-        k.extend(p.slip.d_bits());
-        for (ld, _) in d.loads.iter().zip(&tangential_load).filter(|(_, t)| **t) {
-            k.extend(bits(&[&ld.slip, &ld.row_t]));
-        }
-        k
-    };
+    let (normal_matrix, normal_data, tangential_matrix) = keys(settings, p, d, &dn, &tangential_load);
     let kept = if p.warm.is_some() { p.flex.memo.take::<Kept>() } else { None };
     let (mut normal_base, mut normal_solution, mut tangential_base) = (None, None, None);
     let mut normal_exact = false;
@@ -209,7 +215,7 @@ struct Base {
     idx: Vec<usize>,
     /// Position in `idx` of each unknown of the index space (`usize::MAX` when absent).
     pos: Vec<usize>,
-    lu: PartialPivLu<f64>,
+    lu: crate::lu::InPlaceLu,
     /// Columns of A(S₀)⁻¹ C already computed, by unknown (an added unknown's column of A, or a removed unknown's
     /// unit vector), and the added unknowns' rows of A on S₀: the border of the next set reuses them.
     w_cols: std::collections::HashMap<usize, Vec<f64>>,
@@ -258,9 +264,11 @@ impl Tangential<'_> {
 
     /// Factorise A(idx) as the new base; `None` when singular.
     fn factorise(&mut self, d: &Data, idx: &[usize]) -> Option<()> {
+        // The old base goes first (peak memory).
+        self.base = None;
         let m = idx.len();
         let a = Mat::from_fn(m, m, |i, j| self.entry(d, idx[i], idx[j]));
-        let lu = a.partial_piv_lu();
+        let lu = crate::lu::InPlaceLu::new(a);
         self.factorisations += 1;
         let mut pos = vec![usize::MAX; d.n + self.t_loads.len()];
         for (k, &u) in idx.iter().enumerate() {
