@@ -29,7 +29,7 @@
 //!
 //! **Two phases.** Without normal–tangential coupling the normal problem does not depend on the shear: it is solved
 //! once, alone, and the stick–slip problem after it with f fixed, its factorisations updated by bordered solves
-//! ([`phases`]). With coupling the iteration is the joint one above.
+//! (`src/solvers/active_set/phases.rs`). With coupling the iteration is the joint one above.
 
 use super::lemke::{self, Lemke, LemkeSettings};
 use super::{Entry, Outcome, Solver, SolverId, SolverSettings, Termination, Validate, Work};
