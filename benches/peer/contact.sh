@@ -19,6 +19,10 @@
 #       CONTACT_EPS=               a tolerance for CONTACT's results run (default: the input's EPS; e.g. 1e-10 shows
 #                                  how much of a difference is CONTACT's stopping criterion; the timed runs keep
 #                                  the input's)
+#       CONTACT_DY_SCALE=          a factor for DY and FN in CONTACT's results run (default: none; e.g. 100 takes
+#                                  CONTACT's strip of width DY towards the plane strain rollbem solves, at the same
+#                                  pressure: how much of a difference is the strip's finite width; the timed runs
+#                                  keep the input's)
 #       KEEP=DIR                   keep the work folder (CONTACT build, inputs, outputs, scenes) in DIR
 #       ROLLBEM=PATH               use this rollbem binary instead of building one
 #       CONTACT_BIN=PATH           use this CONTACT executable instead of building one
@@ -232,7 +236,9 @@ inp_params() {
 # With CONTACT_EPS set, the results run also solves to that tolerance (EPS, and MAXGS = MAXIN = 9999 so that the
 # iterations can get there): how much of a difference is CONTACT's stopping criterion.
 results_variant() {
-  awk -v eps="${CONTACT_EPS:-}" '
+  awk -v eps="${CONTACT_EPS:-}" -v dys="${CONTACT_DY_SCALE:-}" '
+    dys != "" && /MX,MY,XC1,YC1,DX,DY/ && $0 !~ /^[ \t]*%/ { $6 = $6 * dys }
+    dys != "" && /FN, (CKSI|FX)/ && $0 !~ /^[ \t]*%/ { $1 = sprintf("%.10g", $1 * dys) }
     eps != "" && /MAXGS.*EPS/ && $0 !~ /^[ \t]*%/ {
       match($0, /^[ \t]*[^ \t]+[ \t]+[^ \t]+[ \t]+[^ \t]+[ \t]+[^ \t]+[ \t]+[^ \t]+/)
       $0 = sprintf("  9999  9999  %s  %s  %s", $3, $4, eps) substr($0, RSTART + RLENGTH)
@@ -606,6 +612,7 @@ fi
   printf '%s\n' "${rows[@]}"
   echo
   echo "Inputs: CONTACT's examples/carter2d.inp and perfc_test/carter2d_100.inp, carter2d_800.inp (steady rolling of two identical half-planes, G = 82 000, ν = 0.28, profile x²/(2·500), μ = 0.3, FN = 35 780 on a strip DY = 200 wide: 178.9 per unit width). rollbem: \`[wheel] model = \"half_plane\"\`, \`profile = \"parabola\"\` (CONTACT's IBASE 1 and 2 both give h = x²/(2R)), E = 2G(1 + ν), \`[counter_body] kind = \"half_plane\"\` of the same material, \`coupling = false\`, \`normal_load = FN/DY\`, \`[rolling] mode = \"steady\"\`, \`direction = +1\` (CHI = 0), creepage = CKSI (the same sign convention: CKSI > 0 is braking, FX < 0 on body 1; rollbem's Q on the wheel likewise). $grid_text"
+  [[ -n ${CONTACT_DY_SCALE:-} ]] && echo "CONTACT_DY_SCALE=$CONTACT_DY_SCALE: CONTACT's results (the comparison columns) were computed on a strip $CONTACT_DY_SCALE times as wide (DY and FN scaled: the same pressure), nearer the plane strain rollbem solves; its timed runs on the inputs as they are."
   [[ -n ${CONTACT_EPS:-} ]] && echo "CONTACT_EPS=$CONTACT_EPS: CONTACT's results (the comparison columns) were computed with EPS = $CONTACT_EPS and MAXGS = MAXIN = 9999; its timed runs with the inputs' own EPS."
   echo "Compared: FX per case (all cases of the input; CONTACT's FX = Σ PX·DX·DY from its Matlab files); contact (adhesion + slip) and stick (adhesion) element counts at every distinct creepage (equal counts: both equal), shown at the middle creepage; nodal tractions p, q at every distinct creepage (rollbem \`run\`), the largest difference over the curve relative to CONTACT's peak pressure. CONTACT's output is from a copy of each input with O = 2 and A = 1 in every case (its printed case 1 equals the timed run's)."
   echo "Times: CPU (user + sys) and peak RSS of the whole process (GNU time), pinned to core $cpu (taskset), median of $pairs runs alternating rollbem and CONTACT. rollbem: \`rollbem sweep\` of the input's creepages in its order (carter2d_100: its 50 creepages 20 times, one process, one model built once, as CONTACT builds its influence coefficients once), RAYON_NUM_THREADS=1; cold: every case from scratch (the default), warm: \`warm_start = true\` (each case from the previous case's solution). CONTACT: \`contact_linux64 2 INPUT\` on the input (cold: every case from zero tractions, I = 0) and, warm, on a copy whose cases after the first have I = 3 (start from the previous case's tractions and element division)."
