@@ -36,11 +36,9 @@ use super::{Entry, Outcome, Solver, SolverId, SolverSettings, Termination, Valid
 use crate::formulation::{ContactProblem, ProblemKind, Solution};
 
 mod phases;
-use faer::linalg::solvers::Solve;
 use faer::Mat;
 use serde::{Deserialize, Serialize};
 use std::collections::HashSet;
-use std::sync::Arc;
 
 /// Settings of the active-set method (`[solvers.active_set]`).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -113,7 +111,7 @@ struct Data<'p> {
     /// FFT products for K_NN f (when `knn` is the flexibility's Toeplitz K_NN) and D K_TT h (K_TT Toeplitz; D the
     /// two-diagonal slip operator), the iteration's products on a uniform half-plane grid ([`crate::toeplitz`]).
     fast_nn: Option<&'p crate::toeplitz::Toeplitz>,
-    fast_tt: Option<(&'p crate::toeplitz::Toeplitz, &'p crate::formulation::SlipOperator)>,
+    fast_tt: Option<&'p crate::toeplitz::Toeplitz>,
     /// Gap and slip with f = h = 0 and the load-driven motions 0.
     g_const: Vec<f64>,
     s_const: Vec<f64>,
@@ -186,7 +184,7 @@ impl<'p> Data<'p> {
                 }
             })
             .collect();
-        let fast_tt = if frictional { flex.toeplitz_tt().map(|t| (t, &p.slip)) } else { None };
+        let fast_tt = if frictional { flex.toeplitz_tt() } else { None };
         Data {
             n,
             mu,
@@ -345,7 +343,7 @@ fn slips(d: &Data, f: &[f64], h: &[f64], rho: &[f64], constants: bool) -> Vec<f6
     let c = if constants { 1.0 } else { 0.0 };
     let Some(ktt) = d.ktt else { return vec![0.0; d.n] };
     let mut s = match (d.fast_tt, &d.att) {
-        (Some((t, slip)), _) => slip.apply(&t.apply(h)),
+        (Some(t), _) => d.slip.apply(&t.apply(h)),
         (None, Some(att)) => matvec(att, h),
         (None, None) => d.slip.apply(&matvec(ktt, h)),
     };
@@ -372,83 +370,17 @@ struct Reduced {
 enum Factor {
     /// Nothing to solve (no contact node, no load-driven motion).
     Empty,
-    /// The whole block, LU with partial pivoting (with coupling, or a layout that does not split).
+    /// The whole block, LU with partial pivoting.
     Whole(crate::lu::InPlaceLu),
-    /// Block lower-triangular (see [`Split`]).
-    Split(Split),
-}
-
-/// Without normal–tangential coupling (K_NT = 0 and D K_TN = 0) the reduced system is block lower-triangular: the
-/// contact gaps and the normal equilibrium rows involve only f_C and the normal load-driven motions (N), while the
-/// sticking slips and the tangential rows involve both (T). Then
-///
-/// ```text
-///   A_NN y_N = b_N,   A_TT y_T = b_T − A_TN y_N
-/// ```
-///
-/// two factorisations of the diagonal blocks instead of one of the whole (n_N³ + n_T³ against (n_N + n_T)³), and
-/// A_NN does not depend on the stick–slip sets: it is factorised once for a contact set and reused across
-/// iterations, and across the drives of a model (a creep curve) when the next A_NN is exactly the same matrix
-/// ([`NormalFactor`]). The split is taken only when A_NT is exactly zero, checked entry by entry.
-struct Split {
-    /// Positions of the N unknowns (and rows) in the reduced layout, then those of T.
-    n_idx: Vec<usize>,
-    t_idx: Vec<usize>,
-    normal: Arc<NormalFactor>,
-    tangential: Option<faer::linalg::solvers::PartialPivLu<f64>>,
-    /// A_TN.
-    lower: Mat<f64>,
-}
-
-/// A normal block A_NN and its factorisation: reused for a later A_NN only when the two are equal entry by entry.
-struct NormalFactor {
-    a: Mat<f64>,
-    lu: faer::linalg::solvers::PartialPivLu<f64>,
-}
-
-impl NormalFactor {
-    /// The factorisation of `a`: `cache`'s when its matrix is exactly `a`, else a new one (which `cache` then keeps).
-    fn of(a: Mat<f64>, cache: &mut Option<Arc<NormalFactor>>) -> Arc<NormalFactor> {
-        if let Some(c) = cache {
-            let same = c.a.nrows() == a.nrows()
-                && c.a.ncols() == a.ncols()
-                && (0..a.ncols()).all(|j| (0..a.nrows()).all(|i| c.a[(i, j)].to_bits() == a[(i, j)].to_bits()));
-            if same {
-                return Arc::clone(c);
-            }
-        }
-        let lu = a.partial_piv_lu();
-        let made = Arc::new(NormalFactor { a, lu });
-        *cache = Some(Arc::clone(&made));
-        made
-    }
-}
-
-/// The N and T positions of a reduced system (module docs of [`Split`]), when the system splits.
-fn split_layout(d: &Data, a: &Mat<f64>, nc: usize, ns: usize) -> Option<(Vec<usize>, Vec<usize>)> {
-    if !d.frictional || d.knt.is_some() || d.atn.is_some() {
-        return None;
-    }
-    let base = nc + ns;
-    let normal_load = |l: usize| d.loads[l].row_t.iter().all(|v| *v == 0.0);
-    let n_idx: Vec<usize> = (0..nc).chain((0..d.loads.len()).filter(|&l| normal_load(l)).map(|l| base + l)).collect();
-    let t_idx: Vec<usize> =
-        (nc..base).chain((0..d.loads.len()).filter(|&l| !normal_load(l)).map(|l| base + l)).collect();
-    let upper_zero = n_idx.iter().all(|&r| t_idx.iter().all(|&c| a[(r, c)] == 0.0));
-    (upper_zero && !n_idx.is_empty()).then_some((n_idx, t_idx))
 }
 
 impl Factor {
-    fn of(a: Mat<f64>, layout: Option<(Vec<usize>, Vec<usize>)>, cache: &mut Option<Arc<NormalFactor>>) -> Factor {
+    fn of(a: Mat<f64>) -> Factor {
         if a.nrows() == 0 {
-            return Factor::Empty;
+            Factor::Empty
+        } else {
+            Factor::Whole(crate::lu::InPlaceLu::new(a))
         }
-        let Some((n_idx, t_idx)) = layout else { return Factor::Whole(crate::lu::InPlaceLu::new(a)) };
-        let pick = |rows: &[usize], cols: &[usize]| Mat::from_fn(rows.len(), cols.len(), |i, j| a[(rows[i], cols[j])]);
-        let normal = NormalFactor::of(pick(&n_idx, &n_idx), cache);
-        let tangential = (!t_idx.is_empty()).then(|| pick(&t_idx, &t_idx).partial_piv_lu());
-        let lower = pick(&t_idx, &n_idx);
-        Factor::Split(Split { n_idx, t_idx, normal, tangential, lower })
     }
 
     /// Solve with the factorised system (b: m × 1).
@@ -456,29 +388,12 @@ impl Factor {
         match self {
             Factor::Empty => Mat::zeros(0, 1),
             Factor::Whole(lu) => lu.solve(b),
-            Factor::Split(s) => {
-                let bn = Mat::from_fn(s.n_idx.len(), 1, |i, _| b[(s.n_idx[i], 0)]);
-                let yn = s.normal.lu.solve(&bn);
-                let mut y = Mat::<f64>::zeros(b.nrows(), 1);
-                for (k, &i) in s.n_idx.iter().enumerate() {
-                    y[(i, 0)] = yn[(k, 0)];
-                }
-                if let Some(lu) = &s.tangential {
-                    let lyn = &s.lower * &yn;
-                    let bt = Mat::from_fn(s.t_idx.len(), 1, |i, _| b[(s.t_idx[i], 0)] - lyn[(i, 0)]);
-                    let yt = lu.solve(&bt);
-                    for (k, &i) in s.t_idx.iter().enumerate() {
-                        y[(i, 0)] = yt[(k, 0)];
-                    }
-                }
-                y
-            }
         }
     }
 }
 
 impl Reduced {
-    fn new(d: &Data, sets: &[NodeSet], cache: &mut Option<Arc<NormalFactor>>) -> Reduced {
+    fn new(d: &Data, sets: &[NodeSet]) -> Reduced {
         let n = d.n;
         let contact: Vec<usize> = (0..n).filter(|&i| sets[i] != NodeSet::Separated).collect();
         let stick: Vec<usize> =
@@ -522,8 +437,7 @@ impl Reduced {
                 a[(nc + r, nc + ns + l)] = ld.slip[i];
             }
         }
-        let layout = split_layout(d, &a, nc, ns);
-        let factor = Factor::of(a, layout, cache);
+        let factor = Factor::of(a);
         Reduced { sets: sets.to_vec(), contact, stick, factor }
     }
 
@@ -698,17 +612,14 @@ const GMRES_TOLERANCE: f64 = 1e-12;
 /// The solver of the linear systems of the iteration: a factorisation of some sets' system, reused through GMRES
 /// while the sets differ from it in few nodes.
 ///
-/// **Across solves.** On a model solved for many drives (a creep curve), the last factorisation and the normal
-/// block's ([`NormalFactor`]) are kept in the flexibility's [`crate::flexibility::Memo`] and taken up by the next
-/// solve: the normal block directly when it is exactly the same matrix, the last system only as GMRES's
-/// preconditioner (it may belong to another drive: it changes how fast GMRES converges, never the answer), and the
-/// final solve of every solve is a direct one of its own sets.
+/// **Across solves.** On a model solved for many drives (a creep curve), the last factorisation is kept in the
+/// flexibility's [`crate::flexibility::Memo`] and taken up by the next solve only as GMRES's preconditioner (it may
+/// belong to another drive: it changes how fast GMRES converges, never the answer); the final solve of every solve
+/// is a direct one of its own sets.
 struct Linear {
     base: Option<Reduced>,
     /// Whether `base` is this problem's system for its sets (false for one carried over from another solve).
     base_exact: bool,
-    /// The last normal block's factorisation.
-    normal: Option<Arc<NormalFactor>>,
     /// Factorisations and GMRES iterations so far.
     factorisations: usize,
     gmres_iterations: usize,
@@ -719,19 +630,11 @@ struct Linear {
 /// What the active-set method keeps in a flexibility's memo between solves ([`Linear`]).
 struct Kept {
     base: Option<Reduced>,
-    normal: Option<Arc<NormalFactor>>,
 }
 
 impl Linear {
     fn new() -> Linear {
-        Linear {
-            base: None,
-            base_exact: false,
-            normal: None,
-            factorisations: 0,
-            gmres_iterations: 0,
-            last_direct: false,
-        }
+        Linear { base: None, base_exact: false, factorisations: 0, gmres_iterations: 0, last_direct: false }
     }
 
     /// A solver starting from what the last solve on `flex` kept (for a problem of `n` nodes).
@@ -739,14 +642,13 @@ impl Linear {
         let mut l = Linear::new();
         if let Some(k) = flex.memo.take::<Kept>() {
             l.base = k.base.filter(|b| b.sets.len() == flex.n());
-            l.normal = k.normal;
         }
         l
     }
 
     /// Leave the factorisations in `flex`'s memo for the next solve.
     fn keep(self, flex: &crate::flexibility::Flexibility) {
-        flex.memo.put(Kept { base: self.base, normal: self.normal });
+        flex.memo.put(Kept { base: self.base });
     }
 
     /// Solve the system of `sets` (returning the iterate), from the previous full solution `y0` when given; with
@@ -775,7 +677,7 @@ impl Linear {
             None => {
                 // The old factorisation goes before the new one is made (peak memory: two n × n blocks, not three).
                 self.base = None;
-                let red = Reduced::new(d, sets, &mut self.normal);
+                let red = Reduced::new(d, sets);
                 self.factorisations += 1;
                 let sol = red.solve_full(d, &b)?;
                 self.base = Some(red);
@@ -923,35 +825,28 @@ impl ActiveSet {
             (0..n)
                 .map(|i| {
                     let k = ((i + stride / 2) / stride).min(nk - 1);
-                    let (f, h) = (sol.f[k], sol.h.as_ref().map_or(0.0, |h| h[k]));
-                    if f <= 0.0 {
-                        NodeSet::Separated
-                    } else if !frictional || h.abs() < mu * f * (1.0 - 1e-9) {
-                        NodeSet::Stick
-                    } else {
-                        NodeSet::Slip(if h > 0.0 { -1 } else { 1 })
-                    }
+                    node_set(sol.f[k], sol.h.as_ref().map_or(0.0, |h| h[k]), frictional, mu)
                 })
                 .collect(),
         )
     }
 }
 
+/// The set of a node carrying forces (f, h) in a solution (a warm start's, a coarse grid's): separated without
+/// pressure, sticking inside the friction limit (to a relative 1e-9), slipping against h on it.
+fn node_set(f: f64, h: f64, frictional: bool, mu: f64) -> NodeSet {
+    if f <= 0.0 {
+        NodeSet::Separated
+    } else if !frictional || h.abs() < mu * f * (1.0 - 1e-9) {
+        NodeSet::Stick
+    } else {
+        NodeSet::Slip(if h > 0.0 { -1 } else { 1 })
+    }
+}
+
 /// The sets of a warm start's solution.
 fn warm_sets(d: &Data, w: &Solution) -> Vec<NodeSet> {
-    (0..d.n)
-        .map(|i| {
-            let f = w.f[i];
-            let h = w.h.as_ref().map_or(0.0, |h| h[i]);
-            if f <= 0.0 {
-                NodeSet::Separated
-            } else if !d.frictional || h.abs() < d.mu * f * (1.0 - 1e-9) {
-                NodeSet::Stick
-            } else {
-                NodeSet::Slip(if h > 0.0 { -1 } else { 1 })
-            }
-        })
-        .collect()
+    (0..d.n).map(|i| node_set(w.f[i], w.h.as_ref().map_or(0.0, |h| h[i]), d.frictional, d.mu)).collect()
 }
 
 /// The warm start's unknowns in the full layout [f; h; ρ], GMRES's first guess.
@@ -959,7 +854,13 @@ fn warm_unknowns(p: &ContactProblem, d: &Data) -> Option<Vec<f64>> {
     let n = d.n;
     p.warm.as_ref().filter(|w| w.f.len() == n && w.rigid.len() == p.dofs.len()).map(|w| {
         let h = w.h.clone().filter(|h| h.len() == n && d.frictional).unwrap_or_else(|| vec![0.0; n]);
-        let rho = p.dofs.iter().zip(&w.rigid).filter(|(dof, _)| p.is_unknown(dof)).map(|(_, v)| *v);
+        // The data's load-driven DOFs: a normal phase's (`Data::of(p, true)`) leave the tangential one out.
+        let rho = p
+            .dofs
+            .iter()
+            .zip(&w.rigid)
+            .filter(|(dof, _)| p.is_unknown(dof) && (d.frictional || !dof.kind.is_tangential()))
+            .map(|(_, v)| *v);
         let f = w.f.iter().copied();
         if d.frictional {
             f.chain(h).chain(rho).collect::<Vec<f64>>()

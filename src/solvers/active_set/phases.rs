@@ -30,30 +30,29 @@
 //! the tangential load rows are (K_TT is the flexibility's own). A cold solve reads nothing (its work must not depend
 //! on what ran before it).
 
-use super::{gaps, iterate, slip_factor, slips, ActiveSetSettings, Data, Iterate, Linear, NodeSet, Reduced, Step};
-use crate::formulation::{ContactProblem, ProblemKind};
-use faer::linalg::solvers::{PartialPivLu, Solve};
+use super::{
+    gaps, iterate, slip_factor, slips, warm_unknowns, ActiveSetSettings, Data, Iterate, Linear, NodeSet, Reduced, Step,
+};
+use crate::formulation::ContactProblem;
 use faer::Mat;
 
 /// The largest relative residual (max-norm, relative to the right-hand side's) a bordered solve may leave before it
 /// is replaced by a factorisation.
-pub(super) const BORDER_TOLERANCE: f64 = 1e-12;
+const BORDER_TOLERANCE: f64 = 1e-12;
 
 /// How many added and removed unknowns a bordered solve takes before A(S) is factorised afresh: the bordered solve
 /// costs about k solves with the factorisation (2m² each) against (2/3)m³ for a new one.
-pub(super) fn border_limit(m: usize) -> usize {
+fn border_limit(m: usize) -> usize {
     (m / 6).max(16)
 }
 
 /// Whether a problem splits into the two phases (module docs).
+/// (`d.frictional` means a frictional problem's full data, with K_TT; `d.loads` are `p.load_dofs()` in order.)
 pub(super) fn applies(p: &ContactProblem, d: &Data) -> bool {
-    p.kind == ProblemKind::Frictional
+    d.frictional
         && p.normal.is_none()
-        && d.frictional
         && d.knt.is_none()
         && d.atn.is_none()
-        && d.ktt.is_some()
-        && p.load_dofs().count() == d.loads.len()
         && p.load_dofs().zip(&d.loads).all(|(dof, ld)| {
             if dof.kind.is_tangential() {
                 ld.gap.iter().all(|v| *v == 0.0)
@@ -150,10 +149,7 @@ pub(super) fn solve(
                 Some(s) => s.iter().map(|v| if *v == NodeSet::Separated { *v } else { NodeSet::Stick }).collect(),
                 None => vec![NodeSet::Stick; n],
             };
-            let y0 = p.warm.as_ref().filter(|w| w.f.len() == n && w.rigid.len() == p.dofs.len()).map(|w| {
-                let rho = p.dofs.iter().zip(&w.rigid).filter(|(dof, _)| p.is_unknown(dof) && !dof.kind.is_tangential());
-                w.f.iter().copied().chain(rho.map(|(_, v)| *v)).collect::<Vec<f64>>()
-            });
+            let y0 = warm_unknowns(p, &dn);
             let mut linear = Linear::new();
             linear.base = normal_base.take();
             linear.base_exact = normal_exact && linear.base.is_some();
@@ -222,18 +218,25 @@ struct Base {
     r_rows: std::collections::HashMap<usize, Vec<f64>>,
 }
 
+/// Where an unknown of a nearby set sits in its bordered system.
+#[derive(Clone, Copy)]
+enum Slot {
+    /// At this position of the base.
+    Base(usize),
+    /// The j-th added unknown (a border column).
+    Added(usize),
+}
+
 /// The Schur complement of a base for a nearby set (module docs).
 struct Border {
-    /// For each unknown of the new set: its position in the base, or `usize::MAX - j` for the j-th added one.
-    map: Vec<usize>,
-    /// Positions in the base of the removed unknowns.
-    removed: Vec<usize>,
+    /// For each unknown of the new set, where it sits.
+    map: Vec<Slot>,
     /// A(S₀)⁻¹ C (m₀ × k).
     w: Mat<f64>,
     /// The border rows R (k × m₀).
     r: Mat<f64>,
     /// The Schur complement D − R A(S₀)⁻¹ C, factorised (`None` for k = 0).
-    schur: Option<PartialPivLu<f64>>,
+    schur: Option<crate::lu::InPlaceLu>,
 }
 
 /// The tangential phase (module docs): a [`Step`] on the stick–slip sets with f fixed.
@@ -262,8 +265,9 @@ impl Tangential<'_> {
         }
     }
 
-    /// Factorise A(idx) as the new base; `None` when singular.
-    fn factorise(&mut self, d: &Data, idx: &[usize]) -> Option<()> {
+    /// Factorise A(idx) as the new base (a singular A shows as non-finite solutions, which [`Self::solve_sets`]
+    /// refuses).
+    fn factorise(&mut self, d: &Data, idx: &[usize]) {
         // The old base goes first (peak memory).
         self.base = None;
         let m = idx.len();
@@ -281,7 +285,6 @@ impl Tangential<'_> {
             w_cols: std::collections::HashMap::new(),
             r_rows: std::collections::HashMap::new(),
         });
-        Some(())
     }
 
     /// The bordered system of the base for `idx`, or `None` when there is no base or too many changes.
@@ -290,16 +293,16 @@ impl Tangential<'_> {
         let m0 = self.base.as_ref()?.idx.len();
         let mut in_new = vec![false; nu];
         let mut added = Vec::new();
-        let map: Vec<usize> = {
+        let map: Vec<Slot> = {
             let base = self.base.as_ref()?;
             idx.iter()
                 .map(|&u| {
                     in_new[u] = true;
                     if base.pos[u] != usize::MAX {
-                        base.pos[u]
+                        Slot::Base(base.pos[u])
                     } else {
                         added.push(u);
-                        usize::MAX - (added.len() - 1)
+                        Slot::Added(added.len() - 1)
                     }
                 })
                 .collect()
@@ -365,8 +368,8 @@ impl Tangential<'_> {
                 -rw[(i, j)]
             }
         });
-        let schur = (k > 0).then(|| s.partial_piv_lu());
-        Some(Border { map, removed, w, r, schur })
+        let schur = (k > 0).then(|| crate::lu::InPlaceLu::new(s));
+        Some(Border { map, w, r, schur })
     }
 
     /// Solve A(idx) z = b with the base (directly when `border` is `None`).
@@ -378,15 +381,13 @@ impl Tangential<'_> {
             let z = base.lu.solve(&rhs);
             return Some((0..m0).map(|i| z[(i, 0)]).collect());
         };
-        let na = bd.map.iter().filter(|&&v| v > usize::MAX / 2).count();
-        let k = na + bd.removed.len();
+        let k = bd.w.ncols();
         let mut bt = Mat::<f64>::zeros(m0, 1);
         let mut bs = Mat::<f64>::zeros(k, 1);
-        for (j, &v) in bd.map.iter().enumerate() {
-            if v > usize::MAX / 2 {
-                bs[(usize::MAX - v, 0)] = b[j];
-            } else {
-                bt[(v, 0)] = b[j];
+        for (j, &slot) in bd.map.iter().enumerate() {
+            match slot {
+                Slot::Added(a) => bs[(a, 0)] = b[j],
+                Slot::Base(q) => bt[(q, 0)] = b[j],
             }
         }
         let u = base.lu.solve(&bt);
@@ -399,7 +400,15 @@ impl Tangential<'_> {
             None => (u, Mat::zeros(0, 1)),
         };
         debug_assert_eq!(idx.len(), bd.map.len());
-        Some(bd.map.iter().map(|&v| if v > usize::MAX / 2 { ws[(usize::MAX - v, 0)] } else { x0[(v, 0)] }).collect())
+        Some(
+            bd.map
+                .iter()
+                .map(|&slot| match slot {
+                    Slot::Added(a) => ws[(a, 0)],
+                    Slot::Base(q) => x0[(q, 0)],
+                })
+                .collect(),
+        )
     }
 
     /// The residual of the tangential equations at (h, ρ): −s at the sticking nodes, Q − the resultant at the
@@ -428,7 +437,7 @@ impl Tangential<'_> {
         let n = d.n;
         let mut border = self.border(d, idx);
         if border.is_none() {
-            self.factorise(d, idx)?;
+            self.factorise(d, idx);
         }
         let (h0, rho0) = (h.to_vec(), rho.to_vec());
         let (mut r, _) = self.residual(d, idx, h, rho);
@@ -459,7 +468,7 @@ impl Tangential<'_> {
             h.copy_from_slice(&h0);
             rho.copy_from_slice(&rho0);
             (r, _) = self.residual(d, idx, h, rho);
-            self.factorise(d, idx)?;
+            self.factorise(d, idx);
             border = None;
         }
     }
