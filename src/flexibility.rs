@@ -137,8 +137,8 @@ impl std::fmt::Debug for Derived {
 /// Solver state kept with a flexibility between solves on it (a model solved for many drives): factorisations that a
 /// solver may reuse when the matrix is the same, or as a preconditioner for a nearby one. Opaque, one slot, owned by
 /// whichever solver wrote it last; a clone of the flexibility starts empty. Reusing it never changes an answer
-/// beyond round-off: the solver that reads it compares the matrix exactly before a direct reuse, and a
-/// preconditioner only changes how fast an iteration converges.
+/// beyond round-off: the solver that reads it reuses a factorisation directly only when the data defining its
+/// matrix are equal bit for bit, and a preconditioner only changes how fast an iteration converges.
 #[derive(Default)]
 pub struct Memo(std::sync::Mutex<Option<Box<dyn std::any::Any + Send>>>);
 

@@ -198,6 +198,31 @@ pub struct StripMesh {
 
 /// Uniform mesh of `n` strips of width `h` starting at `x0`: `a_j = x0 + j·h`,
 /// `b_j = x0 + (j+1)·h` (so `b_j == a_{j+1}` bitwise), midpoints `x_j = x0 + (j + ½)·h`.
+/// Which Toeplitz sequence of [`HalfPlane::uniform_parts`] each block (cxx, cxz, czx, czz) takes.
+const TOEPLITZ_PART: [usize; 4] = [0, 1, 2, 0];
+
+/// The signs with which a counter-body's blocks (cxx, cxz, czx, czz) add to the wheel's
+/// ([`InfluenceBlocks::into_counter_body`]).
+pub const COUNTER_BODY_SIGN: [f64; 4] = [1.0, -1.0, -1.0, 1.0];
+
+/// A row-major n × n block with entries t[n−1−i+j] + d[j], written into `dst` (overwritten in place when it has the
+/// size already, so a repeated assembly allocates nothing).
+fn fill_toeplitz(dst: &mut Vec<f64>, t: &[f64], d: &[f64], n: usize) {
+    if dst.len() == n * n {
+        for (i, row) in dst.chunks_exact_mut(n.max(1)).enumerate() {
+            let o = n - 1 - i;
+            row.iter_mut().zip(&t[o..o + n]).zip(d.iter()).for_each(|((c, t), d)| *c = t + d);
+        }
+    } else {
+        dst.clear();
+        dst.reserve_exact(n * n);
+        for i in 0..n {
+            let o = n - 1 - i;
+            dst.extend(t[o..o + n].iter().zip(d.iter()).map(|(t, d)| t + d));
+        }
+    }
+}
+
 /// This is exactly the mesh that [`HalfPlane::influence_blocks_uniform`] assumes.
 pub fn uniform_mesh(x0: f64, h: f64, n: usize) -> StripMesh {
     let a = (0..n).map(|j| x0 + j as f64 * h).collect();
@@ -233,8 +258,13 @@ impl InfluenceBlocks {
     /// coupling blocks, giving `(+Cxx, −Cxz, −Czx, +Czz)`, the blocks to ADD to the wheel's so that
     /// the sum maps the wheel's tractions `(q, p)` to (slip, gap change).
     pub fn into_counter_body(mut self) -> Self {
-        self.cxz.iter_mut().for_each(|v| *v = -*v);
-        self.czx.iter_mut().for_each(|v| *v = -*v);
+        for (block, sign) in
+            [&mut self.cxx, &mut self.cxz, &mut self.czx, &mut self.czz].into_iter().zip(COUNTER_BODY_SIGN)
+        {
+            if sign < 0.0 {
+                block.iter_mut().for_each(|v| *v = -*v);
+            }
+        }
         self
     }
 
@@ -461,75 +491,43 @@ impl HalfPlane {
     /// bit): `which` is 0 for `cxx`, 1 `cxz`, 2 `czx`, 3 `czz`. A flexibility that needs two of the four blocks then
     /// never holds the other two.
     pub fn influence_block_uniform(&self, x0: f64, h: f64, n: usize, which: usize) -> Vec<f64> {
-        assert!(h > 0.0 && h.is_finite(), "element width must be finite and > 0");
         assert!(which < 4, "a block index is 0..4");
+        let (d, t) = self.uniform_parts(x0, h, n);
+        let mut out = Vec::new();
+        fill_toeplitz(&mut out, &t[TOEPLITZ_PART[which]], &d[which], n);
+        out
+    }
+
+    /// The datum columns (per block: cxx, cxz, czx, czz) and the three Toeplitz sequences (the log term shared by
+    /// cxx and czz, then cxz's, then czx's) of the uniform mesh's blocks. Offsets are stored reversed:
+    /// index m = (n−1) − (i−j), so row i reads m = n−1−i .. 2n−2−i.
+    fn uniform_parts(&self, x0: f64, h: f64, n: usize) -> ([Vec<f64>; 4], [Vec<f64>; 3]) {
+        assert!(h > 0.0 && h.is_finite(), "element width must be finite and > 0");
         let kern = self.kernel();
         let mesh = uniform_mesh(x0, h, n);
-        let d: Vec<f64> = mesh.a.iter().zip(&mesh.b).map(|(&aj, &bj)| kern.datum(aj, bj)[which]).collect();
-        // The Toeplitz part: cxx and czz share the log term (index 0), cxz index 1, czx index 2.
-        let ti = [0, 1, 2, 0][which];
-        let len = (2 * n).saturating_sub(1);
-        let t: Vec<f64> = (0..len)
-            .map(|m| {
-                let k = (n as f64 - 1.0) - m as f64;
-                kern.toeplitz((k + 0.5) * h, (k - 0.5) * h)[ti]
-            })
-            .collect();
-        let mut out = Vec::with_capacity(n * n);
-        for i in 0..n {
-            let o = n - 1 - i;
-            out.extend(t[o..o + n].iter().zip(d.iter()).map(|(t, d)| t + d));
+        let mut d: [Vec<f64>; 4] = std::array::from_fn(|_| Vec::with_capacity(n));
+        for (&aj, &bj) in mesh.a.iter().zip(&mesh.b) {
+            let v = kern.datum(aj, bj);
+            d.iter_mut().zip(v).for_each(|(col, x)| col.push(x));
         }
-        out
+        let len = (2 * n).saturating_sub(1);
+        let mut t: [Vec<f64>; 3] = std::array::from_fn(|_| Vec::with_capacity(len));
+        for m in 0..len {
+            let k = (n as f64 - 1.0) - m as f64;
+            let v = kern.toeplitz((k + 0.5) * h, (k - 0.5) * h);
+            t.iter_mut().zip(v).for_each(|(seq, x)| seq.push(x));
+        }
+        (d, t)
     }
 
     /// As [`HalfPlane::influence_blocks_uniform`], but refilling `out` in place (its vectors are
     /// cleared and reused, so a repeated assembly allocates nothing and does not page-fault).
     pub fn influence_blocks_uniform_into(&self, x0: f64, h: f64, n: usize, out: &mut InfluenceBlocks) {
-        assert!(h > 0.0 && h.is_finite(), "element width must be finite and > 0");
-        let kern = self.kernel();
-        let mesh = uniform_mesh(x0, h, n);
-        let (mut dxx, mut dxz, mut dzx, mut dzz) =
-            (Vec::with_capacity(n), Vec::with_capacity(n), Vec::with_capacity(n), Vec::with_capacity(n));
-        for (&aj, &bj) in mesh.a.iter().zip(&mesh.b) {
-            let d = kern.datum(aj, bj);
-            dxx.push(d[0]);
-            dxz.push(d[1]);
-            dzx.push(d[2]);
-            dzz.push(d[3]);
-        }
-        // Offsets stored reversed: index m = (n−1) − (i−j), so row i reads m = n−1−i .. 2n−2−i.
-        let len = (2 * n).saturating_sub(1);
-        let (mut tl, mut txz, mut tzx) = (Vec::with_capacity(len), Vec::with_capacity(len), Vec::with_capacity(len));
-        for m in 0..len {
-            let k = (n as f64 - 1.0) - m as f64;
-            let t = kern.toeplitz((k + 0.5) * h, (k - 0.5) * h);
-            tl.push(t[0]);
-            txz.push(t[1]);
-            tzx.push(t[2]);
-        }
+        let (d, t) = self.uniform_parts(x0, h, n);
         out.rows = n;
         out.cols = n;
-        for (dst, t, d) in [
-            (&mut out.cxx, &tl, &dxx),
-            (&mut out.cxz, &txz, &dxz),
-            (&mut out.czx, &tzx, &dzx),
-            (&mut out.czz, &tl, &dzz),
-        ] {
-            if dst.len() == n * n {
-                // reuse: overwrite in place, row by row
-                for (i, row) in dst.chunks_exact_mut(n.max(1)).enumerate() {
-                    let o = n - 1 - i;
-                    row.iter_mut().zip(&t[o..o + n]).zip(d.iter()).for_each(|((c, t), d)| *c = t + d);
-                }
-            } else {
-                dst.clear();
-                dst.reserve_exact(n * n);
-                for i in 0..n {
-                    let o = n - 1 - i;
-                    dst.extend(t[o..o + n].iter().zip(d.iter()).map(|(t, d)| t + d));
-                }
-            }
+        for (which, dst) in [&mut out.cxx, &mut out.cxz, &mut out.czx, &mut out.czz].into_iter().enumerate() {
+            fill_toeplitz(dst, &t[TOEPLITZ_PART[which]], &d[which], n);
         }
     }
 

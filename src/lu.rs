@@ -44,37 +44,28 @@ impl InPlaceLu {
 
     /// A⁻¹ b for b with n rows (any number of columns).
     pub fn solve(&self, b: &Mat<f64>) -> Mat<f64> {
-        let mut x = b.clone();
-        let (n, k) = (self.n(), x.ncols());
-        let par = faer::get_global_parallelism();
-        let perm = PermRef::new_checked(&self.perm, &self.perm_inv, n);
-        let scratch = solve::solve_in_place_scratch::<usize, f64>(n, k, par);
-        solve::solve_in_place(
-            self.lu.as_ref(),
-            self.lu.as_ref(),
-            perm,
-            x.as_mut(),
-            par,
-            MemStack::new(&mut MemBuffer::new(scratch)),
-        );
-        x
+        self.solve_either(b, false)
     }
 
     /// A⁻ᵀ b.
     pub fn solve_transpose(&self, b: &Mat<f64>) -> Mat<f64> {
+        self.solve_either(b, true)
+    }
+
+    /// A⁻¹ b or A⁻ᵀ b: faer's in-place solves with L and U read from the one array.
+    fn solve_either(&self, b: &Mat<f64>, transpose: bool) -> Mat<f64> {
         let mut x = b.clone();
         let (n, k) = (self.n(), x.ncols());
         let par = faer::get_global_parallelism();
         let perm = PermRef::new_checked(&self.perm, &self.perm_inv, n);
-        let scratch = solve::solve_transpose_in_place_scratch::<usize, f64>(n, k, par);
-        solve::solve_transpose_in_place(
-            self.lu.as_ref(),
-            self.lu.as_ref(),
-            perm,
-            x.as_mut(),
-            par,
-            MemStack::new(&mut MemBuffer::new(scratch)),
-        );
+        let lu = self.lu.as_ref();
+        if transpose {
+            let scratch = solve::solve_transpose_in_place_scratch::<usize, f64>(n, k, par);
+            solve::solve_transpose_in_place(lu, lu, perm, x.as_mut(), par, MemStack::new(&mut MemBuffer::new(scratch)));
+        } else {
+            let scratch = solve::solve_in_place_scratch::<usize, f64>(n, k, par);
+            solve::solve_in_place(lu, lu, perm, x.as_mut(), par, MemStack::new(&mut MemBuffer::new(scratch)));
+        }
         x
     }
 }

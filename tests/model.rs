@@ -150,26 +150,19 @@ fn an_off_centre_grid_gives_the_centred_grids_answer_at_the_same_points() {
         })
         .unwrap();
     let centred = run_scene(&base).unwrap();
-    let same = run_scene(
-        &base
+    let on_span = |x: [f64; 2]| {
+        let s = base
             .edit(|d| {
                 d.mesh.contact_half_width = None;
-                d.mesh.contact_x = Some([-10.0, 10.0]);
+                d.mesh.contact_x = Some(x);
             })
-            .unwrap(),
-    )
-    .unwrap();
+            .unwrap();
+        run_scene(&s).unwrap()
+    };
+    let same = on_span([-10.0, 10.0]);
     assert_eq!(traction_difference(&same.runs[0], &centred.runs[0]), 0.0);
     // Shifted right by 8 elements of 0.2: [−8.4, 11.6]; the contact (a = 7.1) lies inside both.
-    let shifted = run_scene(
-        &base
-            .edit(|d| {
-                d.mesh.contact_half_width = None;
-                d.mesh.contact_x = Some([-8.4, 11.6]);
-            })
-            .unwrap(),
-    )
-    .unwrap();
+    let shifted = on_span([-8.4, 11.6]);
     let (c, s) = (&centred.runs[0], &shifted.runs[0]);
     assert_eq!(s.status, Status::Solved, "{}", s.explanation());
     let p0 = c.contact.as_ref().unwrap().peak_pressure;

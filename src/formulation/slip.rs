@@ -86,6 +86,11 @@ impl TwoDiagonal {
     pub fn apply(&self, v: &[f64]) -> Vec<f64> {
         (0..self.n()).map(|i| self.diag[i] * v[i] + self.off[i].map_or(0.0, |(u, du)| du * v[u])).collect()
     }
+
+    /// Entry (i, j) of D M for a matrix M with n rows (two products).
+    pub fn entry(&self, m: &Mat<f64>, i: usize, j: usize) -> f64 {
+        self.diag[i] * m[(i, j)] + self.off[i].map_or(0.0, |(u, du)| du * m[(u, j)])
+    }
 }
 
 /// The slip operator s = D u_T + c (see the module docs).
@@ -133,13 +138,6 @@ impl SlipOperator {
         matches!(self.kind, SlipKind::Steady { .. })
     }
 
-    /// Row i of D as (its diagonal entry, the upstream node and its entry): every D rollbem builds has at most
-    /// these two entries per row (the identity has none off the diagonal). `None` when D is the identity.
-    fn row(&self, i: usize) -> Option<(f64, Option<(usize, f64)>)> {
-        let d = self.d.as_ref()?;
-        Some((d.diag[i], d.off[i]))
-    }
-
     /// The bits of D (its two diagonals and their positions), for telling whether two operators have the same D
     /// exactly (the identity: one word). O(n).
     pub fn d_bits(&self) -> Vec<u64> {
@@ -147,9 +145,8 @@ impl SlipOperator {
             None => vec![0],
             Some(d) => (0..d.n())
                 .flat_map(|i| {
-                    let (dii, up) = self.row(i).expect("D present");
-                    let (u, du) = up.map_or((u64::MAX, 0.0), |(u, du)| (u as u64, du));
-                    [dii.to_bits(), u, du.to_bits()]
+                    let (u, du) = d.off[i].map_or((u64::MAX, 0.0), |(u, du)| (u as u64, du));
+                    [d.diag[i].to_bits(), u, du.to_bits()]
                 })
                 .collect(),
         }
@@ -157,9 +154,9 @@ impl SlipOperator {
 
     /// Entry (i, j) of D M for a matrix M with n rows (two products: D is two-diagonal).
     pub fn entry(&self, m: &Mat<f64>, i: usize, j: usize) -> f64 {
-        match self.row(i) {
+        match &self.d {
             None => m[(i, j)],
-            Some((dii, up)) => dii * m[(i, j)] + up.map_or(0.0, |(u, du)| du * m[(u, j)]),
+            Some(d) => d.entry(m, i, j),
         }
     }
 
@@ -167,12 +164,7 @@ impl SlipOperator {
     pub fn apply(&self, v: &[f64]) -> Vec<f64> {
         match &self.d {
             None => v.to_vec(),
-            Some(_) => (0..v.len())
-                .map(|i| {
-                    let (dii, up) = self.row(i).expect("D present");
-                    dii * v[i] + up.map_or(0.0, |(u, du)| du * v[u])
-                })
-                .collect(),
+            Some(d) => d.apply(v),
         }
     }
 
@@ -181,14 +173,7 @@ impl SlipOperator {
     pub fn apply_mat(&self, m: &Mat<f64>) -> Mat<f64> {
         match &self.d {
             None => m.clone(),
-            Some(_) => {
-                let rows: Vec<(f64, Option<(usize, f64)>)> =
-                    (0..m.nrows()).map(|i| self.row(i).expect("D present")).collect();
-                Mat::from_fn(m.nrows(), m.ncols(), |i, j| {
-                    let (dii, up) = rows[i];
-                    dii * m[(i, j)] + up.map_or(0.0, |(u, du)| du * m[(u, j)])
-                })
-            }
+            Some(d) => Mat::from_fn(m.nrows(), m.ncols(), |i, j| d.entry(m, i, j)),
         }
     }
 

@@ -82,25 +82,29 @@ impl Grid {
             None => self.a.iter().zip(&self.b).map(|(a, b)| b - a).collect(),
         }
     }
+}
 
-    /// Influence blocks of a half-plane on this grid (the Toeplitz fast path on a uniform grid).
-    pub fn blocks(&self, hp: &HalfPlane) -> InfluenceBlocks {
-        match self.uniform {
-            Some((x0, h)) => hp.influence_blocks_uniform(x0, h, self.xc.len()),
-            None => hp.influence_blocks(&self.a, &self.b, &self.xc),
-        }
+/// The influence blocks of a half-plane on a grid, handed out one at a time (`which`: 0 cxx, 1 cxz, 2 czx, 3 czz,
+/// row-major): on a uniform grid each is computed alone when asked for (a flexibility that needs two never holds
+/// the other two); on another grid all four are computed on the first request, once.
+struct BlockSource<'g> {
+    grid: &'g Grid,
+    hp: HalfPlane,
+    all: Option<InfluenceBlocks>,
+}
+
+impl<'g> BlockSource<'g> {
+    fn new(grid: &'g Grid, hp: HalfPlane) -> Self {
+        BlockSource { grid, hp, all: None }
     }
 
-    /// One block of [`Grid::blocks`] (`which`: 0 cxx, 1 cxz, 2 czx, 3 czz), row-major; on a uniform grid computed
-    /// alone (a non-uniform grid computes all four and keeps one).
-    pub fn block(&self, hp: &HalfPlane, which: usize) -> Vec<f64> {
-        match self.uniform {
-            Some((x0, h)) => hp.influence_block_uniform(x0, h, self.xc.len(), which),
-            None => {
-                let c = hp.influence_blocks(&self.a, &self.b, &self.xc);
-                [c.cxx, c.cxz, c.czx, c.czz].into_iter().nth(which).expect("which < 4")
-            }
+    fn take(&mut self, which: usize) -> Vec<f64> {
+        let g = self.grid;
+        if let Some((x0, h)) = g.uniform {
+            return self.hp.influence_block_uniform(x0, h, g.xc.len(), which);
         }
+        let c = self.all.get_or_insert_with(|| self.hp.influence_blocks(&g.a, &g.b, &g.xc));
+        std::mem::take([&mut c.cxx, &mut c.cxz, &mut c.czx, &mut c.czz][which])
     }
 }
 
@@ -136,7 +140,8 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
     let tangential = |v: f64| all.then(|| vec![v; n]);
     // One block at a time, only those the scene needs (peak memory: the 841-element creep curve holds two n × n
     // blocks, not four, and never a second copy of them).
-    let k = |which: usize| per_force(&grid.block(&hp, which), &weights);
+    let mut source = BlockSource::new(&grid, hp);
+    let mut k = |which: usize| per_force(&source.take(which), &weights);
     let (k_nn, k_nt, k_tn, k_tt) = (k(3), coupled.then(|| k(2)), coupled.then(|| k(1)), all.then(|| k(0)));
     let mut flex = Flexibility {
         k_nn,
@@ -180,11 +185,12 @@ pub fn add_counter_body(flex: &mut Flexibility, scene: &Scene, grid: &Grid) {
     let l0 = flex.scales.length;
     let hp = HalfPlane::new(material.youngs_modulus / flex.scales.modulus, material.poisson_ratio, datum_depth / l0);
     let w = grid.widths();
-    // Each block computed alone and added ([`crate::halfplane::InfluenceBlocks::into_counter_body`]: the counter-body
-    // adds +C'xx, −C'xz, −C'zx, +C'zz); only the blocks the flexibility holds.
-    let add = |k: &mut Mat<f64>, which: usize| {
-        let block = grid.block(&hp, which);
-        let sign = if which == 1 || which == 2 { -1.0 } else { 1.0 };
+    // Only the blocks the flexibility holds, one at a time, with the counter-body's signs
+    // ([`crate::halfplane::InfluenceBlocks::into_counter_body`]).
+    let mut source = BlockSource::new(grid, hp);
+    let mut add = |k: &mut Mat<f64>, which: usize| {
+        let block = source.take(which);
+        let sign = crate::halfplane::COUNTER_BODY_SIGN[which];
         let n = w.len();
         for j in 0..n {
             for i in 0..n {
