@@ -217,6 +217,15 @@ pub fn make_checks(
     for (r, &bound) in runs.iter().zip(bounds) {
         out.extend(run_checks(scene, element, element_length, r, bound, hertz));
     }
+    if let Some(w) = scene.strip_width() {
+        out.push(not_applicable(
+            "plane-strain theories (Hertz, Cattaneo–Mindlin, Carter)".into(),
+            format!(
+                "not compared: the contact is a strip of half-spaces {w} wide (`mesh.strip_width`), CONTACT's 2D \
+                 model, not the plane strain of the theories"
+            ),
+        ));
+    }
     if crate::references::cattaneo_applies(scene) {
         out.extend(cattaneo_checks(scene, runs, model));
     }

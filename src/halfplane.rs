@@ -126,6 +126,36 @@
 //! 32 MB (fast path ≈ 1.0–1.1× the plain write). The general path (two logarithms per entry)
 //! takes ≈ 45–65 ms.
 //!
+//! ## Strip of half-spaces (CONTACT's 2D model)
+//!
+//! CONTACT (Vollebregt) poses a 2D case as ONE row of rectangular elements `dx × w` on two elastic half-SPACES
+//! (its `MY = 1`, `DY = w`), with the displacements at the elements' centres (Boussinesq–Cerruti over rectangles,
+//! Love's closed forms). [`HalfPlane::strip`] poses the same: the tractions are uniform across the strip, the loads
+//! are per unit of its width, and `u(x)` is the displacement at `(x, 0)` on its centre line. From Johnson's point
+//! loads on a half-space (*Contact Mechanics* §3.2, eqs. 3.19, 3.86–3.87; `G = E/(2(1+ν))`, `K = 1/(2πG)`, `z`
+//! into the body, `ρ² = X² + Y²`, `X = x − s`):
+//!
+//! ```text
+//! pressure P: u_z = (1−ν) K P / ρ,                 u_x = −(1−2ν) K P X / (2ρ²)
+//! shear Q:    u_x = K Q [ (1−ν)/ρ + ν X²/ρ³ ],     u_z = +(1−2ν) K Q X / (2ρ²)
+//! ```
+//!
+//! Integrated over `s ∈ [a, b]` (`X ∈ [t_b, t_a]`) and `Y ∈ [−h, h]`, `h = w/2`:
+//!
+//! ```text
+//! C_zz = (1−ν) K I1,   C_xx = K [ (1−ν) I1 + ν I2 ],   C_zx = −C_xz = (1−2ν) K I3 / 2
+//! I1 = ∬ 1/ρ    = 2 [ t_a asinh(h/|t_a|) − t_b asinh(h/|t_b|) + h (asinh(t_a/h) − asinh(t_b/h)) ]
+//! I2 = ∬ X²/ρ³  = 2 h (asinh(t_a/h) − asinh(t_b/h))
+//! I3 = ∬ X/ρ²   = 2 [ h ln(ρ_a/ρ_b) + |t_a| atan(h/|t_a|) − |t_b| atan(h/|t_b|) ],   ρ_k² = t_k² + h²
+//! ```
+//!
+//! (antiderivatives `X ln(Y+ρ) + Y ln(X+ρ)`, `Y ln(X+ρ)` and `Y ln ρ + X atan(Y/X)`; `ln(X + ρ) = asinh(X/h) + ln h`
+//! at `Y = h`, and the `ln h` cancels between the ends). These are CONTACT's `elascf_pcwcns` coefficients (its
+//! `A^wz`, `A^ux`, `A^uz`), derived here from the point loads. They depend on `(x − a, x − b)` only: the blocks are
+//! Toeplitz on a uniform grid with no datum part. As `h → ∞` they tend to the plane-strain coefficients plus a
+//! constant per element (`I1 → −2L + const`, `I2 → const`, `I3 → π S`): only the constant, which a load or a
+//! rigid motion absorbs, and terms of order `(x/h)²` differ (tested). `C_xx ≠ C_zz` in the strip, by those terms.
+//!
 //! ## Counter-body: the flat as a mirrored half-plane
 //!
 //! The wheel is modelled as the half-plane above the contact line, its own `z` pointing UP into
@@ -183,6 +213,8 @@ pub struct HalfPlane {
     e: f64,
     nu: f64,
     datum_depth: f64,
+    /// The strip's width across the rolling direction ([`HalfPlane::strip`]); `None` in plane strain.
+    strip_width: Option<f64>,
 }
 
 /// A mesh of contiguous surface strips with their collocation points.
@@ -195,11 +227,6 @@ pub struct StripMesh {
     /// Collocation points `x_i`.
     pub xc: Vec<f64>,
 }
-
-/// Uniform mesh of `n` strips of width `h` starting at `x0`: `a_j = x0 + j·h`,
-/// `b_j = x0 + (j+1)·h` (so `b_j == a_{j+1}` bitwise), midpoints `x_j = x0 + (j + ½)·h`.
-/// Which Toeplitz sequence of [`HalfPlane::uniform_parts`] each block (cxx, cxz, czx, czz) takes.
-const TOEPLITZ_PART: [usize; 4] = [0, 1, 2, 0];
 
 /// The signs with which a counter-body's blocks (cxx, cxz, czx, czz) add to the wheel's
 /// ([`InfluenceBlocks::into_counter_body`]).
@@ -223,6 +250,8 @@ fn fill_toeplitz(dst: &mut Vec<f64>, t: &[f64], d: &[f64], n: usize) {
     }
 }
 
+/// Uniform mesh of `n` strips of width `h` starting at `x0`: `a_j = x0 + j·h`,
+/// `b_j = x0 + (j+1)·h` (so `b_j == a_{j+1}` bitwise), midpoints `x_j = x0 + (j + ½)·h`.
 /// This is exactly the mesh that [`HalfPlane::influence_blocks_uniform`] assumes.
 pub fn uniform_mesh(x0: f64, h: f64, n: usize) -> StripMesh {
     let a = (0..n).map(|j| x0 + j as f64 * h).collect();
@@ -326,18 +355,59 @@ struct Kernel {
     c_log: f64,
     /// `(1−2ν)(π/2)K`: coefficient of `S` in `C_zx` (and minus it in `C_xz`).
     c_sgn: f64,
+    /// Half the strip's width, `h = w/2` ([`HalfPlane::strip`]); `None` in plane strain.
+    strip_half: Option<f64>,
+}
+
+/// `X·asinh(h/|X|)` with the limit `0` at `X = 0`.
+fn x_asinh(x: f64, h: f64) -> f64 {
+    if x == 0.0 {
+        0.0
+    } else {
+        x * (h / x.abs()).asinh()
+    }
+}
+
+/// `|X|·atan(h/|X|)` with the limit `0` at `X = 0`.
+fn x_atan(x: f64, h: f64) -> f64 {
+    if x == 0.0 {
+        0.0
+    } else {
+        x.abs() * (h / x.abs()).atan()
+    }
 }
 
 impl Kernel {
-    /// Position-dependent (Toeplitz) parts `[T_xx = T_zz, T_xz, T_zx]` for `ta = x − a`, `tb = x − b`.
-    fn toeplitz(&self, ta: f64, tb: f64) -> [f64; 3] {
+    /// Position-dependent (Toeplitz) parts `[T_xx, T_xz, T_zx, T_zz]` for `ta = x − a`, `tb = x − b`.
+    fn toeplitz(&self, ta: f64, tb: f64) -> [f64; 4] {
+        if let Some(h) = self.strip_half {
+            return self.strip(ta, tb, h);
+        }
         let tl = self.c_log * log_term(ta, tb, self.d);
         let ts = self.c_sgn * (ta.abs() - tb.abs());
-        [tl, -ts, ts]
+        [tl, -ts, ts, tl]
     }
 
-    /// Datum parts `[d_xx, d_xz, d_zx, d_zz]` of strip `[a, b]` (depend on the strip only).
+    /// The strip's coefficients (module docs, "Strip of half-spaces"): the rectangle integrals `I1 = ∬ 1/r`,
+    /// `I2 = ∬ X²/r³` and `I3 = ∬ X/r²` over `X ∈ [tb, ta]`, `Y ∈ [−h, h]`, in closed form, written with `asinh`
+    /// so that the large `ln h` common to every entry never enters (the far-field differences stay accurate).
+    fn strip(&self, ta: f64, tb: f64, h: f64) -> [f64; 4] {
+        let (k, nu) = (self.k, self.nu);
+        let da = (ta / h).asinh() - (tb / h).asinh();
+        let i1 = 2.0 * (x_asinh(ta, h) - x_asinh(tb, h) + h * da);
+        let i2 = 2.0 * h * da;
+        // h ln(r_a/r_b) = (h/2) ln(1 + (ta² − tb²)/(tb² + h²)).
+        let i3 = 2.0 * (0.5 * h * ((ta - tb) * (ta + tb) / (tb * tb + h * h)).ln_1p() + x_atan(ta, h) - x_atan(tb, h));
+        let c = 0.5 * (1.0 - 2.0 * nu) * k * i3;
+        [k * ((1.0 - nu) * i1 + nu * i2), -c, c, (1.0 - nu) * k * i1]
+    }
+
+    /// Datum parts `[d_xx, d_xz, d_zx, d_zz]` of strip `[a, b]` (depend on the strip only; none for a strip of
+    /// half-spaces, whose displacements vanish far away).
     fn datum(&self, a: f64, b: f64) -> [f64; 4] {
+        if self.strip_half.is_some() {
+            return [0.0; 4];
+        }
         let (d, nu, k) = (self.d, self.nu, self.k);
         let w = b - a;
         let dh = 0.5 * (b * (b / d).powi(2).ln_1p() - a * (a / d).powi(2).ln_1p());
@@ -357,8 +427,8 @@ impl Kernel {
 /// The four coefficients `[Cxx, Cxz, Czx, Czz]` from their Toeplitz and datum parts. Both the
 /// general and the uniform path use exactly this arithmetic.
 #[inline]
-fn combine(t: &[f64; 3], d: &[f64; 4]) -> [f64; 4] {
-    [t[0] + d[0], t[1] + d[1], t[2] + d[2], t[0] + d[3]]
+fn combine(t: &[f64; 4], d: &[f64; 4]) -> [f64; 4] {
+    [t[0] + d[0], t[1] + d[1], t[2] + d[2], t[3] + d[3]]
 }
 
 impl HalfPlane {
@@ -369,7 +439,21 @@ impl HalfPlane {
         assert!(e > 0.0, "Young's modulus must be > 0 (may be +inf for a rigid body), got {e}");
         assert!((0.0..=0.5).contains(&nu), "Poisson ratio must lie in [0, 0.5], got {nu}");
         assert!(datum_depth > 0.0 && datum_depth.is_finite(), "datum depth must be finite and > 0, got {datum_depth}");
-        Self { e, nu, datum_depth }
+        Self { e, nu, datum_depth, strip_width: None }
+    }
+
+    /// The same material as a strip of `width` (`> 0`, finite, the unit of all coordinates) across the rolling
+    /// direction on an elastic half-SPACE: CONTACT's model of a 2D case (one row of rectangular elements, length ×
+    /// `width`, displacements at the strip's centre line; module docs, "Strip of half-spaces"). Its surface
+    /// displacements are absolute (they vanish far away), so the datum plays no part. Panics on an invalid width.
+    pub fn strip(self, width: f64) -> Self {
+        assert!(width > 0.0 && width.is_finite(), "strip width must be finite and > 0, got {width}");
+        Self { strip_width: Some(width), ..self }
+    }
+
+    /// The strip's width ([`HalfPlane::strip`]), `None` in plane strain.
+    pub fn strip_width(&self) -> Option<f64> {
+        self.strip_width
     }
 
     /// Young's modulus `E`.
@@ -411,13 +495,15 @@ impl HalfPlane {
             d: self.datum_depth,
             c_log: -2.0 * (1.0 - self.nu) * k,
             c_sgn: (1.0 - 2.0 * self.nu) * FRAC_PI_2 * k,
+            strip_half: self.strip_width.map(|w| 0.5 * w),
         }
     }
 
     /// Displacement at `(x, z)` (`z ≥ 0`, `(x, z) ≠ (s, 0)`) due to a normal line load `p`
     /// (force per unit thickness, pushing into the body, `+z`) and a tangential line load `q`
     /// (along `+x`) applied at the surface point `s`; relative to the datum `(0, D)`, so it
-    /// vanishes exactly at `(0, D)`. Formulas in the module docs.
+    /// vanishes exactly at `(0, D)`. Formulas in the module docs. Plane strain always: a strip's width
+    /// ([`HalfPlane::strip`]) plays no part here.
     pub fn line_load_displacement(&self, s: f64, p: f64, q: f64, x: f64, z: f64) -> Displacement {
         let d = self.datum_depth;
         let k = (1.0 + self.nu) / (PI * self.e);
@@ -439,7 +525,8 @@ impl HalfPlane {
     /// Surface displacement at the surface point `x` due to uniform pressure `p` and shear `q`
     /// on the strip `[x1, x2]` (`x1 < x2`), relative to the datum `(0, D)`. Closed form, finite
     /// and continuous everywhere including the strip's centre and edges. Equal (bitwise) to the
-    /// corresponding influence-block entries times the tractions.
+    /// corresponding influence-block entries times the tractions. On a strip ([`HalfPlane::strip`]): the rectangle
+    /// `[x1, x2] × [−w/2, w/2]` of half-spaces, at `(x, 0)`, absolute.
     pub fn strip_surface_displacement(&self, x1: f64, x2: f64, p: f64, q: f64, x: f64) -> Displacement {
         debug_assert!(x1 <= x2, "strip ends out of order");
         let kern = self.kernel();
@@ -494,14 +581,13 @@ impl HalfPlane {
         assert!(which < 4, "a block index is 0..4");
         let (d, t) = self.uniform_parts(x0, h, n);
         let mut out = Vec::new();
-        fill_toeplitz(&mut out, &t[TOEPLITZ_PART[which]], &d[which], n);
+        fill_toeplitz(&mut out, &t[which], &d[which], n);
         out
     }
 
-    /// The datum columns (per block: cxx, cxz, czx, czz) and the three Toeplitz sequences (the log term shared by
-    /// cxx and czz, then cxz's, then czx's) of the uniform mesh's blocks. Offsets are stored reversed:
-    /// index m = (n−1) − (i−j), so row i reads m = n−1−i .. 2n−2−i.
-    fn uniform_parts(&self, x0: f64, h: f64, n: usize) -> ([Vec<f64>; 4], [Vec<f64>; 3]) {
+    /// The datum columns and the Toeplitz sequences (per block: cxx, cxz, czx, czz) of the uniform mesh's blocks.
+    /// Offsets are stored reversed: index m = (n−1) − (i−j), so row i reads m = n−1−i .. 2n−2−i.
+    fn uniform_parts(&self, x0: f64, h: f64, n: usize) -> ([Vec<f64>; 4], [Vec<f64>; 4]) {
         assert!(h > 0.0 && h.is_finite(), "element width must be finite and > 0");
         let kern = self.kernel();
         let mesh = uniform_mesh(x0, h, n);
@@ -511,7 +597,7 @@ impl HalfPlane {
             d.iter_mut().zip(v).for_each(|(col, x)| col.push(x));
         }
         let len = (2 * n).saturating_sub(1);
-        let mut t: [Vec<f64>; 3] = std::array::from_fn(|_| Vec::with_capacity(len));
+        let mut t: [Vec<f64>; 4] = std::array::from_fn(|_| Vec::with_capacity(len));
         for m in 0..len {
             let k = (n as f64 - 1.0) - m as f64;
             let v = kern.toeplitz((k + 0.5) * h, (k - 0.5) * h);
@@ -527,7 +613,7 @@ impl HalfPlane {
         out.rows = n;
         out.cols = n;
         for (which, dst) in [&mut out.cxx, &mut out.cxz, &mut out.czx, &mut out.czz].into_iter().enumerate() {
-            fill_toeplitz(dst, &t[TOEPLITZ_PART[which]], &d[which], n);
+            fill_toeplitz(dst, &t[which], &d[which], n);
         }
     }
 
@@ -718,6 +804,107 @@ mod tests {
 
     fn max_abs(v: &[f64]) -> f64 {
         v.iter().fold(0.0, |m, x| m.max(x.abs()))
+    }
+
+    /// A strip of half-spaces ([`HalfPlane::strip`]) against a double quadrature of Johnson's point loads on a
+    /// half-space (*Contact Mechanics* eqs. 3.19, 3.86–3.87, written out here, nothing shared with the closed forms)
+    /// over the rectangle `[x1, x2] × [−w/2, w/2]`; points inside, on the edges and outside, narrow and wide strips.
+    #[test]
+    fn strip_of_half_spaces_matches_quadrature_of_point_loads() {
+        let gl = Gl::new(20);
+        let (e, nu) = (3.0e3, 0.28);
+        let g = e / (2.0 * (1.0 + nu));
+        let k = 1.0 / (2.0 * PI * g);
+        // Point-load surface displacements at (X, Y) from the load: [u_x(P), u_z(P), u_x(Q), u_z(Q)].
+        let point = |x: f64, y: f64| {
+            let r2 = x * x + y * y;
+            let r = r2.sqrt();
+            [
+                -(1.0 - 2.0 * nu) * k * x / (2.0 * r2),
+                (1.0 - nu) * k / r,
+                k * ((1.0 - nu) / r + nu * x * x / (r2 * r)),
+                (1.0 - 2.0 * nu) * k * x / (2.0 * r2),
+            ]
+        };
+        let mut worst = 0.0_f64;
+        // (x1, x2, width)
+        for &(x1, x2, width) in &[(-0.4, 0.6, 0.5), (-0.02, 0.02, 200.0), (0.3, 1.3, 3.0)] {
+            let hp = HalfPlane::new(e, nu, 1.0).strip(width);
+            let hw = 0.5 * width;
+            for t in [0.5, 0.3, 0.0, 1.0, -0.5, 3.0, -20.0] {
+                let x = x1 + t * (x2 - x1);
+                for (p, q, cx, cz) in [(1.0, 0.0, 0, 1), (0.0, 1.0, 2, 3)] {
+                    let u = hp.strip_surface_displacement(x1, x2, p, q, x);
+                    for (comp, closed) in [(cx, u.ux), (cz, u.uz)] {
+                        // ∫ over Y (even in Y: twice the half), then over s, splitting at the observation point.
+                        let inner = |s: f64| {
+                            let xx = x - s;
+                            let f = |y: f64| point(xx, y)[comp];
+                            2.0 * gl.integrate(&f, 0.0, hw, &[xx.abs().min(hw)])
+                        };
+                        let num = gl.integrate(&inner, x1, x2, &[x]);
+                        let scale = k * (x2 - x1);
+                        let err = (closed - num).abs() / scale;
+                        assert!(
+                            err < 1e-9,
+                            "x1 {x1} x2 {x2} w {width} x {x} comp {comp}: {closed} vs {num} ({err:.1e})"
+                        );
+                        worst = worst.max(err);
+                    }
+                }
+            }
+        }
+        eprintln!("strip vs point-load quadrature: worst {worst:.1e} of K·(x2 − x1)");
+    }
+
+    /// As the strip widens, its coefficients tend to plane strain's (the closed forms checked against the line
+    /// loads below) up to a constant per element, which a load or a rigid motion absorbs: the differences between
+    /// rows of one column converge, the direct blocks as 1/w², the coupling blocks as 1/w. Grid: carter2d's.
+    #[test]
+    fn a_wide_strip_tends_to_plane_strain() {
+        let (x0, h, n) = (-1.05, 0.04, 55);
+        // Largest row difference of (strip − plane strain) over the direct blocks (xx, zz) and the coupling
+        // blocks (xz, zx), in units of K·h.
+        let deviation = |nu: f64, width: f64| {
+            let plane = HalfPlane::new(1.0, nu, 3.0).influence_blocks_uniform(x0, h, n);
+            let strip = HalfPlane::new(1.0, nu, 3.0).strip(width).influence_blocks_uniform(x0, h, n);
+            let k = (1.0 + nu) / PI;
+            let worst = |a: &[f64], b: &[f64]| {
+                let mut m = 0.0_f64;
+                for j in 0..n {
+                    for i in 1..n {
+                        m = m.max(((a[i * n + j] - a[j]) - (b[i * n + j] - b[j])).abs() / (k * h));
+                    }
+                }
+                m
+            };
+            let direct = worst(&plane.cxx, &strip.cxx).max(worst(&plane.czz, &strip.czz));
+            let coupling = worst(&plane.cxz, &strip.cxz).max(worst(&plane.czx, &strip.czx));
+            (direct, coupling)
+        };
+        for nu in [0.0, 0.28, 0.5] {
+            let (d1, c1) = deviation(nu, 2.0e2);
+            let (d2, c2) = deviation(nu, 2.0e3);
+            eprintln!("nu {nu}: direct {d1:.2e} -> {d2:.2e}, coupling {c1:.2e} -> {c2:.2e}");
+            // O((x/h)²) for the direct blocks, O(x/h) for the coupling ones (the `h ln(ρ_a/ρ_b)` and
+            // `|t| atan(h/|t|)` terms of I3 leave −(t_a² − t_b²)/(2h)): both vanish as the strip widens.
+            assert!(d1 < 5e-4 && d2 < d1 / 90.0, "nu {nu}: direct blocks {d1:.1e} -> {d2:.1e}");
+            assert!(c1 < 5e-2 && (c2 < c1 / 9.0 || c1 == 0.0), "nu {nu}: coupling blocks {c1:.1e} -> {c2:.1e}");
+        }
+    }
+
+    /// The centre of a uniformly loaded rectangle, half-sides a and b (Love; Timoshenko & Goodier §138):
+    /// u_z = 4(1−ν²) p/(πE) · [a asinh(b/a) + b asinh(a/b)]; for a square the textbook's 2.24 (1−ν²) p a / E.
+    #[test]
+    fn a_strip_elements_centre_is_loves() {
+        let (e, nu, a, b): (f64, f64, f64, f64) = (2.0, 0.3, 0.02, 100.0);
+        let love = 4.0 * (1.0 - nu * nu) / (PI * e) * (a * (b / a).asinh() + b * (a / b).asinh());
+        let u = HalfPlane::new(e, nu, 1.0).strip(2.0 * b).strip_surface_displacement(-a, a, 1.0, 0.0, 0.0);
+        assert!((u.uz - love).abs() <= 1e-14 * love, "{} vs {love}", u.uz);
+        assert_eq!(u.ux, 0.0);
+        let square = HalfPlane::new(e, nu, 1.0).strip(2.0 * a).strip_surface_displacement(-a, a, 1.0, 0.0, 0.0);
+        let textbook = 2.24 * (1.0 - nu * nu) * a / e;
+        assert!((square.uz - textbook).abs() < 0.005 * textbook, "{} vs {textbook}", square.uz);
     }
 
     /// Strip closed forms vs quadrature of the line-load solution over the strip

@@ -83,13 +83,17 @@ pub enum Domain {
     /// stick zone by a fixed length that no mesh refinement removes. Compared with the theory as a model
     /// comparison, with the model error computed on the half-plane counterpart ([`half_space_counterpart`]).
     FiniteBody,
-    /// β ≠ 0 with the coupling on: the theory's decoupled problem is not this one; no comparison.
+    /// β ≠ 0 with the coupling on, or a strip of half-spaces (`[mesh] strip_width`, not the theory's plane
+    /// strain): the theory's problem is not this one; no comparison.
     Outside,
 }
 
 /// The domain of the decoupled half-space theories for a scene ([`Domain`]).
 pub fn decoupled_domain(scene: &Scene) -> Domain {
     let decoupled = !scene.law().coupling || scene.dundurs_beta().abs() < 1e-12;
+    if scene.strip_width().is_some() {
+        return Domain::Outside;
+    }
     match (decoupled, scene.model()) {
         (false, _) => Domain::Outside,
         (true, BodyModel::HalfPlane) => Domain::Holds,
@@ -156,9 +160,9 @@ fn carter_solution(scene: &Scene, run: &SolverRun) -> Option<(f64, f64, f64, f64
     Some((c_over_a, q_over, xi, d, h))
 }
 
-/// Hertz at the run's load P, when the scene is frictionless and the run solved with P > 0.
+/// Hertz at the run's load P, when the scene is frictionless, in plane strain, and the run solved with P > 0.
 pub fn hertz_for(scene: &Scene, run: &SolverRun) -> Option<Hertz> {
-    if scene.friction() > 0.0 {
+    if scene.friction() > 0.0 || scene.strip_width().is_some() {
         return None;
     }
     let p = run.resultants?.normal;

@@ -201,6 +201,7 @@ impl SceneParams {
                 contact_x: None,
                 contact_elements: self.contact_elements,
                 other_elements: Some(self.other_elements),
+                strip_width: None,
             },
             counter_body: CounterBodyTable::Rigid,
             steps: Vec::new(),

@@ -11,6 +11,9 @@
 #       LEMKE_CASES="carter2d carter2d_100"          inputs on which rollbem's lemke is timed as well
 #       GRID=exact                 exact: `[mesh] contact_x` on CONTACT's span; centred: `contact_half_width` with
 #                                  CONTACT's element count and size (for a rollbem without contact_x)
+#       SECTION=strip              strip: rollbem poses CONTACT's model of a 2D case, a strip DY wide on half-spaces
+#                                  (`[mesh] strip_width = DY`, the same discrete problem); plane_strain: rollbem's
+#                                  plane strain (a model difference of order (a/DY)² in the tractions)
 #       CPU=0                      the core every timed run is pinned to (taskset)
 #       WARM=1                     also time both warm-started: rollbem's sweep with `warm_start = true`, CONTACT
 #                                  on a copy of the input whose cases after the first have I = 3 (each case starts
@@ -45,6 +48,7 @@ cases=${CASES:-"carter2d carter2d_100 carter2d_800"}
 solvers=${SOLVERS:-active_set}
 lemke_cases=${LEMKE_CASES:-"carter2d carter2d_100"}
 grid_mode=${GRID:-exact}
+section=${SECTION:-strip}
 cpu=${CPU:-0}
 warm=${WARM:-1}
 contact_repo=${CONTACT_REPO:-https://github.com/eve70a/CONTACT}
@@ -56,6 +60,7 @@ die() {
   exit 1
 }
 [[ $grid_mode == exact || $grid_mode == centred ]] || die "GRID must be exact or centred"
+[[ $section == strip || $section == plane_strain ]] || die "SECTION must be strip or plane_strain"
 
 # 1. Tools from Debian's packages: gfortran and make for CONTACT, reference LAPACK/BLAS (CONTACT's B-spline
 #    profile code calls dgbsv/dpbsv, which MKL provided; the 2D Carter cases never call them), GNU time, taskset,
@@ -319,7 +324,7 @@ inp_path() {
 
 # rollbem's scene for one input (and solver): CONTACT's grid, profile, materials, load per unit width.
 write_scene() {
-  local p=$1 name=$2 solver=$3 cksi=$4 out=$5 mesh
+  local p=$1 name=$2 solver=$3 cksi=$4 out=$5 mesh strip=""
   local mx xc1 dx dy r e1 e2 nu1 nu2 mu fn dir
   mx=$(kv mx "$p")
   xc1=$(kv xc1 "$p")
@@ -341,6 +346,8 @@ write_scene() {
   else
     mesh=$(awk -v m="$mx" -v d="$dx" 'BEGIN { printf "contact_half_width = %.17g", m * d / 2 }')
   fi
+  # CONTACT's strip (scaled as its results run's, CONTACT_DY_SCALE): the load per unit width stays FN/DY.
+  [[ $section == strip ]] && strip=$(awk -v d="$dy" -v s="${CONTACT_DY_SCALE:-1}" 'BEGIN { printf "strip_width = %.17g", d * s }')
   cat >"$out" <<EOF
 name = "$name"
 description = "CONTACT's $case_name.inp on rollbem's half-planes: $mx elements of $dx mm from x = $xc1 (centre of the first), load FN/DY per unit width"
@@ -362,6 +369,7 @@ poisson_ratio = $nu2
 element = "constant"
 $mesh
 contact_elements = $mx
+$strip
 
 [contact]
 friction = $mu
@@ -612,7 +620,12 @@ fi
   printf '%s\n' "${rows[@]}"
   echo
   echo "Inputs: CONTACT's examples/carter2d.inp and perfc_test/carter2d_100.inp, carter2d_800.inp (steady rolling of two identical half-planes, G = 82 000, ν = 0.28, profile x²/(2·500), μ = 0.3, FN = 35 780 on a strip DY = 200 wide: 178.9 per unit width). rollbem: \`[wheel] model = \"half_plane\"\`, \`profile = \"parabola\"\` (CONTACT's IBASE 1 and 2 both give h = x²/(2R)), E = 2G(1 + ν), \`[counter_body] kind = \"half_plane\"\` of the same material, \`coupling = false\`, \`normal_load = FN/DY\`, \`[rolling] mode = \"steady\"\`, \`direction = +1\` (CHI = 0), creepage = CKSI (the same sign convention: CKSI > 0 is braking, FX < 0 on body 1; rollbem's Q on the wheel likewise). $grid_text"
-  [[ -n ${CONTACT_DY_SCALE:-} ]] && echo "CONTACT_DY_SCALE=$CONTACT_DY_SCALE: CONTACT's results (the comparison columns) were computed on a strip $CONTACT_DY_SCALE times as wide (DY and FN scaled: the same pressure), nearer the plane strain rollbem solves; its timed runs on the inputs as they are."
+  if [[ $section == strip ]]; then
+    echo "Model: both programs solve the same discrete problem, CONTACT's model of a 2D case: one row of elements DX × DY on two elastic half-spaces, displacements at the strip's centre line (rollbem \`[mesh] strip_width = DY\`)."
+  else
+    echo "Model: SECTION=plane_strain: rollbem in plane strain against CONTACT's strip DY wide, a model difference of order (a/DY)² in the tractions."
+  fi
+  [[ -n ${CONTACT_DY_SCALE:-} ]] && echo "CONTACT_DY_SCALE=$CONTACT_DY_SCALE: CONTACT's results (the comparison columns) were computed on a strip $CONTACT_DY_SCALE times as wide (DY and FN scaled: the same pressure)$([[ $section == strip ]] && echo ", and rollbem's strip likewise"); its timed runs on the inputs as they are."
   [[ -n ${CONTACT_EPS:-} ]] && echo "CONTACT_EPS=$CONTACT_EPS: CONTACT's results (the comparison columns) were computed with EPS = $CONTACT_EPS and MAXGS = MAXIN = 9999; its timed runs with the inputs' own EPS."
   echo "Compared: FX per case (all cases of the input; CONTACT's FX = Σ PX·DX·DY from its Matlab files); contact (adhesion + slip) and stick (adhesion) element counts at every distinct creepage (equal counts: both equal), shown at the middle creepage; nodal tractions p, q at every distinct creepage (rollbem \`run\`), the largest difference over the curve relative to CONTACT's peak pressure. CONTACT's output is from a copy of each input with O = 2 and A = 1 in every case (its printed case 1 equals the timed run's)."
   echo "Times: CPU (user + sys) and peak RSS of the whole process (GNU time), pinned to core $cpu (taskset), median of $pairs runs alternating rollbem and CONTACT. rollbem: \`rollbem sweep\` of the input's creepages in its order (carter2d_100: its 50 creepages 20 times, one process, one model built once, as CONTACT builds its influence coefficients once), RAYON_NUM_THREADS=1; cold: every case from scratch (the default), warm: \`warm_start = true\` (each case from the previous case's solution). CONTACT: \`contact_linux64 2 INPUT\` on the input (cold: every case from zero tractions, I = 0) and, warm, on a copy whose cases after the first have I = 3 (start from the previous case's tractions and element division)."

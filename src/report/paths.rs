@@ -22,11 +22,12 @@ fn runs_of<'a>(r: &'a Report, solver: &str) -> Vec<(usize, &'a SolverRun)> {
 }
 
 /// The Mindlin–Deresiewicz pattern: step 0 loads P alone, then every step holds P and takes Q to +Q*, −Q*, +Q*, …
-/// (|Q*| ≤ μP), on the half-plane model with β = 0 — against a rigid flat, or against an elastic half-plane of a
-/// β = 0 pair (steel on steel). Returns (P, Q*).
+/// (|Q*| ≤ μP), on the half-plane model in plane strain with β = 0 — against a rigid flat, or against an elastic
+/// half-plane of a β = 0 pair (steel on steel). Returns (P, Q*).
 pub fn md_pattern(s: &Scene) -> Option<(f64, f64)> {
     let p = s.document().steps.first()?.normal_load?;
-    if s.model() != BodyModel::HalfPlane || s.rolling().is_some() || !beta_zero(s, p) || s.document().steps.len() < 3 {
+    let plane_strain_half_plane = s.model() == BodyModel::HalfPlane && s.strip_width().is_none();
+    if !plane_strain_half_plane || s.rolling().is_some() || !beta_zero(s, p) || s.document().steps.len() < 3 {
         return None;
     }
     if s.document().steps[0].tangential_load.unwrap_or(0.0) != 0.0 || s.document().steps[0].tangential_shift.is_some() {

@@ -122,6 +122,14 @@ pub struct MeshTable {
     pub contact_x: Option<[f64; 2]>,
     /// Number of elements on the potential contact zone, ≥ 1.
     pub contact_elements: usize,
+    /// Half-plane model only: the contact as a strip of this width (length unit, positive) across the rolling
+    /// direction on two elastic half-SPACES, one row of rectangular elements (element length × strip_width), the
+    /// displacements at the strip's centre line: CONTACT's model of its 2D cases (its `MY = 1`, `DY`), so that a
+    /// CONTACT input is posed exactly. Without it (the default) the bodies are in plane strain. Loads stay per unit
+    /// of width (a CONTACT force FN is FN/DY here). The displacements of a strip vanish far away, so there is no
+    /// datum (`datum_depth` is refused with it), and its interior fields are 3D (`[stresses]` is refused).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub strip_width: Option<f64>,
     /// BEM only: number of elements on the rest of the outer boundary (graded from the contact size), ≥ 4. The hub
     /// circle gets elements in proportion to its circumference.
     #[serde(default, skip_serializing_if = "Option::is_none")]

@@ -104,6 +104,9 @@ pub enum Body {
         datum_depth: f64,
         /// The initial gap profile.
         profile: Profile,
+        /// `Some(w)`: the contact is a strip of width w (length unit) on two half-spaces, CONTACT's 2D model
+        /// (`[mesh] strip_width`, [`crate::halfplane::HalfPlane::strip`]); `None`: plane strain.
+        strip_width: Option<f64>,
     },
 }
 
@@ -679,6 +682,15 @@ impl Scene {
     /// How the wheel is modelled.
     pub fn body(&self) -> &Body {
         &self.body
+    }
+
+    /// The width of the strip of half-spaces the contact is posed on (`[mesh] strip_width`, CONTACT's 2D model;
+    /// length unit), `None` in plane strain.
+    pub fn strip_width(&self) -> Option<f64> {
+        match self.body {
+            Body::HalfPlane { strip_width, .. } => strip_width,
+            Body::Bem { .. } => None,
+        }
     }
 
     /// The wheel's model.

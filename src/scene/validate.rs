@@ -30,6 +30,7 @@ pub(super) fn validate(mut document: SceneDocument, path: &Path) -> Result<Scene
         (BodyModel::HalfPlane, _, _) => Body::HalfPlane {
             datum_depth: w.datum_depth.unwrap_or(w.radius),
             profile: w.profile.unwrap_or(Profile::Circle),
+            strip_width: d.mesh.strip_width,
         },
         _ => unreachable!("validate() requires a BEM wheel's support and other_elements"),
     };
@@ -353,6 +354,29 @@ impl SceneDocument {
         Ok(())
     }
 
+    /// `[mesh] strip_width` (half-plane model): positive and finite; no datum and no interior stresses with it.
+    fn validate_strip(&self, c: &Checker) -> Result<()> {
+        let Some(width) = self.mesh.strip_width else { return Ok(()) };
+        c.positive("mesh.strip_width", width)?;
+        let no_datum = "means nothing on a strip of half-spaces (`mesh.strip_width`): its displacements vanish far \
+                        away, there is no datum: remove it";
+        if self.wheel.datum_depth.is_some() {
+            return Err(c.bad("wheel.datum_depth", no_datum.into()));
+        }
+        if let CounterBodyTable::HalfPlane { datum_depth: Some(_), .. } = self.counter_body {
+            return Err(c.bad("counter_body.datum_depth", no_datum.into()));
+        }
+        if self.stresses.is_some() {
+            return Err(c.bad(
+                "stresses",
+                "rollbem's subsurface stresses are plane strain; under a strip of half-spaces (`mesh.strip_width`) \
+                 the field is 3D: remove `[stresses]` or `strip_width`"
+                    .into(),
+            ));
+        }
+        Ok(())
+    }
+
     fn validate_mesh(&self, c: &Checker) -> Result<()> {
         let w = &self.wheel;
         let m = &self.mesh;
@@ -372,6 +396,7 @@ impl SceneDocument {
                         .into(),
                 ));
             }
+            self.validate_strip(c)?;
             if m.contact_elements > MAX_HALF_PLANE_ELEMENTS {
                 return Err(c.bad(
                     "mesh.contact_elements",
@@ -383,6 +408,14 @@ impl SceneDocument {
                 ));
             }
             return Ok(());
+        }
+        if m.strip_width.is_some() {
+            return Err(c.bad(
+                "mesh.strip_width",
+                "a strip of half-spaces is a model of the half-plane wheel (`wheel.model = \"half_plane\"`); the BEM \
+                 wheel is in plane strain"
+                    .into(),
+            ));
         }
         let Some(other) = m.other_elements else {
             return Err(c.bad("mesh.other_elements", "missing: the BEM wheel's mesh needs it (≥ 4)".into()));

@@ -24,6 +24,10 @@
 //! `K_TN −= C′_xz` ([`crate::halfplane::InfluenceBlocks::into_counter_body`]). For two identical materials the
 //! coupling blocks cancel exactly (Dundurs' β = 0).
 //!
+//! **Strip of half-spaces** (`[mesh] strip_width`): both bodies' coefficients are then those of a strip of that
+//! width on half-spaces, CONTACT's model of its 2D cases ([`crate::halfplane`], "Strip of half-spaces"). They are
+//! absolute displacements, so the datum plays no part: a shift and an approach are those of points far away.
+//!
 //! Units: dimensionless as every flexibility ([`crate::flexibility`]): lengths / L0 (L0 = 2R), stresses / E.
 
 use super::{Blocks, Built, SourceInfo, SourceTiming};
@@ -118,7 +122,7 @@ fn per_force(block: &[f64], w: &[f64]) -> Mat<f64> {
 pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
     let t0 = std::time::Instant::now();
     let w = scene.wheel();
-    let Body::HalfPlane { datum_depth, profile } = *scene.body() else {
+    let Body::HalfPlane { datum_depth, profile, .. } = *scene.body() else {
         unreachable!("half_plane::build is called for the half-plane model only")
     };
     let l0 = 2.0 * w.radius;
@@ -134,7 +138,7 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
         })
         .collect();
     let weights = grid.widths();
-    let hp = HalfPlane::new(1.0, w.material.poisson_ratio, datum_depth / l0);
+    let hp = in_strip(HalfPlane::new(1.0, w.material.poisson_ratio, datum_depth / l0), scene, l0);
     let all = blocks != Blocks::Normal;
     let coupled = blocks == Blocks::All;
     let tangential = |v: f64| all.then(|| vec![v; n]);
@@ -178,12 +182,21 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
     })
 }
 
+/// A half-plane as the scene poses it: in plane strain, or on the strip of `[mesh] strip_width` (lengths / `l0`).
+fn in_strip(hp: HalfPlane, scene: &Scene, l0: f64) -> HalfPlane {
+    match *scene.body() {
+        Body::HalfPlane { strip_width: Some(w), .. } => hp.strip(w / l0),
+        _ => hp,
+    }
+}
+
 /// Add the elastic counter-body's flexibility (if the scene has one) on the grid of strips carrying the contact
 /// nodes' forces (see the module docs). A rigid counter-body adds nothing.
 pub fn add_counter_body(flex: &mut Flexibility, scene: &Scene, grid: &Grid) {
     let CounterBody::HalfPlane { material, datum_depth } = *scene.counter_body() else { return };
     let l0 = flex.scales.length;
     let hp = HalfPlane::new(material.youngs_modulus / flex.scales.modulus, material.poisson_ratio, datum_depth / l0);
+    let hp = in_strip(hp, scene, l0);
     let w = grid.widths();
     // Only the blocks the flexibility holds, one at a time, with the counter-body's signs
     // ([`crate::halfplane::InfluenceBlocks::into_counter_body`]).
