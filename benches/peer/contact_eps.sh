@@ -8,6 +8,7 @@
 #             with carter2d among CASES): its CONTACT build, CONTACT's results input of carter2d and rollbem's scene
 #   env EPS_LADDER="1e-5 1e-6 1e-7 1e-8 1e-9 1e-10"   the tolerances; MAXGS = MAXIN = 9999 (CONTACT's largest)
 #       ROLLBEM=PATH   the rollbem binary (default: target/release/rollbem)
+#       CONTACT_BIN=PATH   CONTACT's executable (default: the one KEEP_DIR's run built)
 #       PYTHON=python3 with mpmath (pip install mpmath)
 set -euo pipefail
 [[ $# -ge 1 && $# -le 2 ]] || { echo "usage: $0 KEEP_DIR [TABLE.md]" >&2; exit 2; }
@@ -18,7 +19,7 @@ root=$(cd "$here/../.." && pwd)
 rollbem=${ROLLBEM:-$root/target/release/rollbem}
 python=${PYTHON:-python3}
 ladder=${EPS_LADDER:-"1e-5 1e-6 1e-7 1e-8 1e-9 1e-10"}
-contact=$keep/contact-build/bin/contact_linux64
+contact=${CONTACT_BIN:-$keep/contact-build/bin/contact_linux64}
 inp=$keep/carter2d/results/carter2d.inp
 scene=$keep/carter2d/rollbem/run-1.toml
 for f in "$contact" "$inp" "$scene" "$rollbem"; do [[ -e $f ]] || { echo "missing $f" >&2; exit 1; }; done
@@ -34,23 +35,34 @@ jq -r '.runs[0].nodes[] | "\(.pressure) \(.shear)"' "$work/rollbem.json" >"$work
 jq -r '.p[]' "$work/reference.json" >"$work/reference.p"
 
 {
-  echo "| CONTACT EPS | NormCG iterations (ItCG) | max\\|p_CONTACT − p_exact\\| / max p | elements 6–46 only | max\\|p_rollbem − p_exact\\| / max p | max\\|q_CONTACT − q_rollbem\\| / max p | \\|FX_CONTACT − FX_rollbem\\| / (μ FN) |"
+  echo "| CONTACT EPS | NormCG iterations per call | max\\|p_CONTACT − p_exact\\| / max p | elements 6–46 only | max\\|p_rollbem − p_exact\\| / max p | max\\|q_CONTACT − q_rollbem\\| / max p | \\|FX_CONTACT − FX_rollbem\\| / (μ FN) |"
   echo "|---|---:|---:|---:|---:|---:|---:|"
   for eps in $ladder; do
     d=$work/eps$eps
     mkdir -p "$d"
+    # EPS and MAXGS = MAXIN = 9999; the flow digit W at least 5, so that every NormCG call prints its iterations.
     awk -v eps="$eps" '/MAXGS.*EPS/ && $0 !~ /^[ \t]*%/ {
         match($0, /^[ \t]*[^ \t]+[ \t]+[^ \t]+[ \t]+[^ \t]+[ \t]+[^ \t]+[ \t]+[^ \t]+/)
         $0 = sprintf("  9999  9999  %s  %s  %s", $3, $4, eps) substr($0, RSTART + RLENGTH) }
+      $2 ~ /W-R$/ && $0 !~ /^[ \t]*%/ {
+        n = split($2, L, "-"); d = $1
+        while (length(d) < n) d = "0" d
+        out = ""
+        for (i = 1; i <= n; i++) { c = substr(d, i, 1); if (L[i] == "W" && c < 5) c = 5; out = out c }
+        match($0, /[0-9]+/)
+        $0 = substr($0, 1, RSTART - 1) out substr($0, RSTART + RLENGTH)
+      }
       { print }' "$inp" >"$d/carter2d.inp"
     (cd "$d" && "$contact" 2 carter2d.inp >stdout.txt 2>&1) || { echo "CONTACT failed at EPS $eps" >&2; exit 1; }
-    itcg=$(awk '/ItCG=/ { v = $NF } END { print v }' "$d/carter2d.out")
+    # Iterations per NormCG call (one call per change of NORM's element division), as printed at W >= 5.
+    itcg=$(awk '/NormCG: *[0-9]+ iterations/ { sub(/.*NormCG: */, ""); split($0, a, " "); s = s (s == "" ? "" : " + ") a[1] }
+      END { print s }' "$d/carter2d.out")
     # CONTACT's Matlab file: per element I, IGS, ..., PN (column 5), PX (column 6).
     awk '/^% +I +IGS/ { body = 1; next } body == 1 && NF >= 6 && $1 ~ /^[0-9]+$/ { print $1, $5, $6 }' \
       "$d/carter2d.0001.mat" >"$d/contact.pq"
     row=$(awk -v dx=0.04 -v mu=0.3 -v fn=178.9 '
       FILENAME == ARGV[1] { pe[FNR] = $1; if ($1 > pm) pm = $1; next }
-      FILENAME == ARGV[2] { pr[FNR] = $1; qr[FNR] = ($2 < 0 ? -$2 : $2); fr += $2; next }
+      FILENAME == ARGV[2] { pr[FNR] = $1; qr[FNR] = ($2 < 0 ? -$2 : $2); fr += $2 * dx; next }
       { pc[$1] = $2; qc[$1] = $3; fc += $3 }
       END {
         for (i = 1; i <= 55; i++) {
@@ -60,12 +72,13 @@ jq -r '.p[]' "$work/reference.json" >"$work/reference.p"
           c = qc[i] - qr[i]; if (c < 0) c = -c; if (c > m4) m4 = c
         }
         if (fr < 0) fr = -fr
-        f = fc * dx - fr; if (f < 0) f = -f
+        fc *= dx; if (fc < 0) fc = -fc
+        f = fc - fr; if (f < 0) f = -f
         printf "%.2e | %.2e | %.1e | %.2e | %.1e", m1 / pm, m2 / pm, m3 / pm, m4 / pm, f / (mu * fn)
       }' "$work/reference.p" "$work/rollbem.pq" "$d/contact.pq")
     echo "| $eps | $itcg | $row |"
   done
   echo
-  echo "Input: CONTACT's examples/carter2d.inp (55 elements, DY = 200, CKSI = −0.00024), its results variant from $keep, with EPS as listed and MAXGS = MAXIN = 9999 (CONTACT refuses more). p_exact: benches/peer/strip_reference.py, the normal problem in 40-digit arithmetic. rollbem: \`rollbem run\` of the same scene, \`[mesh] strip_width = 200\`, solver active_set. CONTACT prints 6 significant digits: 4.4e-6 of max p is its print resolution at the peak. FX_CONTACT = Σ PX·DX from its Matlab file (also 6 digits)."
+  echo "Input: CONTACT's examples/carter2d.inp (55 elements, DY = 200, CKSI = −0.00024), its results variant from $keep, with EPS as listed, MAXGS = MAXIN = 9999 (CONTACT refuses more: each NormCG call stops there) and the flow digit W = 5 (NormCG's iterations printed per call). p_exact: benches/peer/strip_reference.py, the normal problem in 40-digit arithmetic. rollbem: \`rollbem run\` of the same scene, \`[mesh] strip_width = 200\`, solver active_set. CONTACT prints 6 significant digits: 4.4e-6 of max p is its print resolution at the peak. FX_CONTACT = Σ PX·DX from its Matlab file (also 6 digits)."
   echo "Versions: $("$rollbem" --version); CONTACT $(awk '/Revision/ { for (i = 1; i <= NF; i++) if ($i == "$Revision:") print $(i + 1); exit }' "$work/eps${ladder%% *}/carter2d.out")."
 } >"$table_out"
