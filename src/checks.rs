@@ -221,8 +221,9 @@ pub fn make_checks(
         out.push(not_applicable(
             "plane-strain theories (Hertz, Cattaneo–Mindlin, Carter)".into(),
             format!(
-                "not compared: the contact is a strip of half-spaces {w} wide (`mesh.strip_width`), CONTACT's 2D \
-                 model, not the plane strain of the theories"
+                "not compared: the contact is a strip of half-spaces {} wide (`mesh.strip_width`), CONTACT's 2D \
+                 model, not the plane strain of the theories",
+                if (1e-3..1e6).contains(&w) { format!("{w}") } else { format!("{w:e}") }
             ),
         ));
     }

@@ -166,6 +166,7 @@ fn a_strip_is_refused_where_it_means_nothing() {
     };
     bad(&|t| *t = t.replace("strip_width = 200", "strip_width = -1"), "mesh.strip_width", "> 0");
     bad(&|t| *t = t.replace("strip_width = 200", "strip_width = nan"), "mesh.strip_width", "> 0");
+    bad(&|t| *t = t.replace("strip_width = 200", "strip_width = 1e-320"), "mesh.strip_width", "floating-point range");
     bad(
         &|t| *t = t.replace("profile = \"parabola\"", "profile = \"parabola\"\ndatum_depth = 5"),
         "wheel.datum_depth",

@@ -358,6 +358,15 @@ impl SceneDocument {
     fn validate_strip(&self, c: &Checker) -> Result<()> {
         let Some(width) = self.mesh.strip_width else { return Ok(()) };
         c.positive("mesh.strip_width", width)?;
+        if !(width / (2.0 * self.wheel.radius)).is_normal() {
+            return Err(c.bad(
+                "mesh.strip_width",
+                format!(
+                    "{width:e} against the wheel's diameter is below the floating-point range (rollbem divides \
+                         every length by it)"
+                ),
+            ));
+        }
         let no_datum = "means nothing on a strip of half-spaces (`mesh.strip_width`): its displacements vanish far \
                         away, there is no datum: remove it";
         if self.wheel.datum_depth.is_some() {
