@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import _thread
+import signal
 import subprocess
 import sys
 import textwrap
@@ -46,12 +47,17 @@ def test_ctrl_c_stops_a_list_of_drives_before_the_next_drive() -> None:
     drives = [{"creepage": 1e-5 * (k + 1)} for k in range(400)]
     timer = threading.Timer(0.3, _thread.interrupt_main)  # what Ctrl-C does: SIGINT's flag for the main thread
     raised_at = None
+    # A runner started in the background (nohup, `&`) hands pytest SIGINT ignored, and interrupt_main then does
+    # nothing: Python's own handler for the duration of the test.
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
     timer.start()
     try:
         model.solve_all(drives)
     except KeyboardInterrupt:
         raised_at = time.perf_counter()
-    timer.join()
+    finally:
+        timer.join()
+        signal.signal(signal.SIGINT, previous)
     assert raised_at is not None, "the solves ended before the interrupt: make the list longer"
     # The worker stops before its next drive: the model's count of solves stops growing at once.
     done = model.solves
@@ -61,7 +67,8 @@ def test_ctrl_c_stops_a_list_of_drives_before_the_next_drive() -> None:
 
 LONG_SOLVE = textwrap.dedent(
     """
-    import sys, time, rollbem
+    import signal, sys, time, rollbem
+    signal.signal(signal.SIGINT, signal.default_int_handler)  # even when the runner was started with SIGINT ignored
     s = rollbem.Scene.from_file(sys.argv[1]).edit({"mesh.contact_elements": 1500, "solvers.use": ["lemke"]})
     m = rollbem.Model(s)
     print("built", flush=True)
