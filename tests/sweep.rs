@@ -175,6 +175,7 @@ fn expected_header() -> Vec<&'static str> {
         "cm_shear_err",
         "cm_shear_l2_err",
         "model",
+        "strip_width",
         "radius",
         "contact_modulus",
         "friction",

@@ -29,9 +29,17 @@ export LC_ALL=C
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-"$python" "$here/strip_reference.py" >"$work/reference.json"
+# The scene's numbers (the script's reference and the comparison use them, not carter2d's as printed).
+key() { awk -F' *= *' -v k="$1" '$1 == k { print $2; exit }' "$scene"; }
+dy=$(key strip_width)
+mu=$(key friction)
+fn=$(key normal_load)
+nel=$(key contact_elements)
+dx=$(key contact_x | tr -d '[],' | awk -v n="$nel" '{ printf "%.17g", ($2 - $1) / n }')
+"$python" "$here/strip_reference.py" "$dy" >"$work/reference.json"
 "$rollbem" run "$scene" --json "$work/rollbem.json" >/dev/null
 jq -r '.runs[0].nodes[] | "\(.pressure) \(.shear)"' "$work/rollbem.json" >"$work/rollbem.pq"
+[[ $(wc -l <"$work/rollbem.pq") -eq 55 ]] || { echo "the scene is not carter2d's 55 elements" >&2; exit 1; }
 jq -r '.p[]' "$work/reference.json" >"$work/reference.p"
 
 {
@@ -60,9 +68,11 @@ jq -r '.p[]' "$work/reference.json" >"$work/reference.p"
     # CONTACT's Matlab file: per element I, IGS, ..., PN (column 5), PX (column 6).
     awk '/^% +I +IGS/ { body = 1; next } body == 1 && NF >= 6 && $1 ~ /^[0-9]+$/ { print $1, $5, $6 }' \
       "$d/carter2d.0001.mat" >"$d/contact.pq"
-    row=$(awk -v dx=0.04 -v mu=0.3 -v fn=178.9 '
+    # Signed shear and force: CONTACT's PX and rollbem's q are both the traction on body 1, the wheel (README,
+    # "Signs"), so a sign error shows.
+    row=$(awk -v dx="$dx" -v mu="$mu" -v fn="$fn" '
       FILENAME == ARGV[1] { pe[FNR] = $1; if ($1 > pm) pm = $1; next }
-      FILENAME == ARGV[2] { pr[FNR] = $1; qr[FNR] = ($2 < 0 ? -$2 : $2); fr += $2 * dx; next }
+      FILENAME == ARGV[2] { pr[FNR] = $1; qr[FNR] = $2; fr += $2 * dx; next }
       { pc[$1] = $2; qc[$1] = $3; fc += $3 }
       END {
         for (i = 1; i <= 55; i++) {
@@ -71,14 +81,12 @@ jq -r '.p[]' "$work/reference.json" >"$work/reference.p"
           b = pr[i] - pe[i]; if (b < 0) b = -b; if (b > m3) m3 = b
           c = qc[i] - qr[i]; if (c < 0) c = -c; if (c > m4) m4 = c
         }
-        if (fr < 0) fr = -fr
-        fc *= dx; if (fc < 0) fc = -fc
-        f = fc - fr; if (f < 0) f = -f
+        f = fc * dx - fr; if (f < 0) f = -f
         printf "%.2e | %.2e | %.1e | %.2e | %.1e", m1 / pm, m2 / pm, m3 / pm, m4 / pm, f / (mu * fn)
       }' "$work/reference.p" "$work/rollbem.pq" "$d/contact.pq")
     echo "| $eps | $itcg | $row |"
   done
   echo
-  echo "Input: CONTACT's examples/carter2d.inp (55 elements, DY = 200, CKSI = −0.00024), its results variant from $keep, with EPS as listed, MAXGS = MAXIN = 9999 (CONTACT refuses more: each NormCG call stops there) and the flow digit W = 5 (NormCG's iterations printed per call). p_exact: benches/peer/strip_reference.py, the normal problem in 40-digit arithmetic. rollbem: \`rollbem run\` of the same scene, \`[mesh] strip_width = 200\`, solver active_set. CONTACT prints 6 significant digits: 4.4e-6 of max p is its print resolution at the peak. FX_CONTACT = Σ PX·DX from its Matlab file (also 6 digits)."
+  echo "Input: CONTACT's examples/carter2d.inp (55 elements, DY = $dy, CKSI = −0.00024), its results variant from $keep, with EPS as listed, MAXGS = MAXIN = 9999 (CONTACT refuses more: each NormCG call stops there) and the flow digit W = 5 (NormCG's iterations printed per call). p_exact: benches/peer/strip_reference.py, the normal problem in 40-digit arithmetic. rollbem: \`rollbem run\` of the same scene, \`[mesh] strip_width = $dy\`, solver active_set. CONTACT prints 6 significant digits: 4.4e-6 of max p is its print resolution at the peak. FX_CONTACT = Σ PX·DX from its Matlab file (also 6 digits)."
   echo "Versions: $("$rollbem" --version); CONTACT $(awk '/Revision/ { for (i = 1; i <= NF; i++) if ($i == "$Revision:") print $(i + 1); exit }' "$work/eps${ladder%% *}/carter2d.out")."
 } >"$table_out"

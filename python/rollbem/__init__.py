@@ -11,7 +11,8 @@ document, with each solver's :class:`Run` and its node results as NumPy arrays::
     q = [r.run().tangential_load for r in reports]                 # floats
     x, p = reports[0].run().x, reports[0].run().pressure           # NumPy arrays
 
-Conventions (the crate docs, "Conventions"): per unit thickness, plane strain; x horizontal, y up, the wheel centre
+Conventions (the crate docs, "Conventions"): per unit thickness, plane strain (or, with ``[mesh] strip_width``, a
+strip of half-spaces of that width, CONTACT's 2D model); x horizontal, y up, the wheel centre
 at the origin, the flat at y = -R. Tractions act on the wheel: pressure p = t_y >= 0, shear q = t_x (+x). The
 support moves rigidly by an approach d_N (``normal_approach``, towards the flat, positive compresses), a shift d_T
 (``tangential_shift``, +x) and a rotation phi (``rotation``, counter-clockwise, radians); a load is the resultant the

@@ -115,6 +115,10 @@ class Scene:
     def model(self) -> str:
         """``"bem"`` (the finite wheel) or ``"half_plane"``."""
     @property
+    def strip_width(self) -> float | None:
+        """The width of the strip of half-spaces the contact is posed on (``[mesh] strip_width``, CONTACT's 2D model;
+        length unit), or None in plane strain."""
+    @property
     def element(self) -> str:
         """``"constant"`` or ``"quadratic"``."""
     @property

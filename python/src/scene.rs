@@ -225,6 +225,13 @@ impl PyScene {
         self.inner.model().name()
     }
 
+    /// The width of the strip of half-spaces the contact is posed on (`[mesh] strip_width`, CONTACT's 2D model;
+    /// length unit), or `None` in plane strain.
+    #[getter]
+    fn strip_width(&self) -> Option<f64> {
+        self.inner.strip_width()
+    }
+
     /// The element family: `"constant"` or `"quadratic"`.
     #[getter]
     fn element(&self) -> &'static str {

@@ -33,6 +33,8 @@ def test_scene_from_text_file_dict_and_keywords_are_one_scene() -> None:
     assert a.origin == path and c.origin == Path("<scene>")
     assert (a.name, a.model, a.element, a.rolling, a.units) == ("half-plane-hertz", "half_plane", "constant", None, "N, mm, MPa")
     assert a.radius == 460.0 and a.friction == 0.0
+    # A strip of half-spaces (CONTACT's 2D model) is a mesh key; plane strain without it.
+    assert a.strip_width is None and a.edit({"mesh.strip_width": 200.0}).strip_width == 200.0
     # E* of a rigid flat: E/(1 - nu^2).
     assert a.contact_modulus == pytest.approx(210000.0 / (1 - 0.09), rel=1e-15)
     # Keywords override the mapping's top-level tables.

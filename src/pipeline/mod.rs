@@ -236,6 +236,8 @@ impl Warm {
 fn source_difference(a: &Scene, b: &Scene) -> Option<(&'static str, &'static str)> {
     if a.wheel() != b.wheel() {
         Some(("wheel", "the wheel's radius or material"))
+    } else if a.strip_width() != b.strip_width() {
+        Some(("mesh.strip_width", "the strip of half-spaces (or plane strain)"))
     } else if a.body() != b.body() {
         Some(("wheel.model", "the wheel's model, support or mesh"))
     } else if a.zone() != b.zone() {

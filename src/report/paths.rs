@@ -54,7 +54,9 @@ fn md_branch(r: &Report, k: usize, q_star: f64) -> TangentialPath {
 /// Spence's pattern: a coupled half-plane (β ≠ 0) on a rigid flat, one or more steps raising the normal load
 /// monotonically from rest with no tangential drive. Returns β.
 fn spence_pattern(s: &Scene) -> Option<f64> {
-    let single = s.model() == BodyModel::HalfPlane && matches!(s.counter_body(), CounterBody::Rigid);
+    let single = s.model() == BodyModel::HalfPlane
+        && s.strip_width().is_none()
+        && matches!(s.counter_body(), CounterBody::Rigid);
     let p_end = s.document().steps.last()?.normal_load?;
     let monotone =
         s.document().steps.windows(2).all(|w| w[0].normal_load.unwrap_or(0.0) <= w[1].normal_load.unwrap_or(0.0));

@@ -134,9 +134,10 @@ const FREE_ROLLING_ZERO: f64 = 1e-3;
 /// β = 0, so on the half-plane model it is a check; on the finite wheel a model comparison (the body is not a
 /// half-space); and a curve that does not pass through the origin (free rolling at ξ ≠ 0: normal–tangential
 /// coupling, β ≠ 0) is outside Carter's model whatever the body.
-fn carter_domain(model: Option<BodyModel>, free: Option<f64>) -> &'static str {
+fn carter_domain(model: Option<BodyModel>, strip: bool, free: Option<f64>) -> &'static str {
     let coupled = free.is_some_and(|f| f.abs() > FREE_ROLLING_ZERO);
     match (model, coupled) {
+        _ if strip => "model comparison: a strip of half-spaces (`mesh.strip_width`), not plane strain",
         (_, true) => "model comparison: coupled (free rolling at ξ ≠ 0; Carter assumes β = 0)",
         (Some(BodyModel::HalfPlane), false) => "check (Carter's model)",
         (Some(BodyModel::Bem), false) => "model comparison: finite wheel",
@@ -151,7 +152,7 @@ pub fn creep_curves(sw: &Sweep, md: &mut String, figs: &mut Figs) -> Result<()> 
     // The creepage is the curve's abscissa, not a series.
     let varied: Vec<String> = sw.varied(&solved).into_iter().filter(|k| !k.ends_with("creepage")).collect();
     let mut groups: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
-    let mut models: BTreeMap<String, Option<BodyModel>> = BTreeMap::new();
+    let mut models: BTreeMap<String, (Option<BodyModel>, bool)> = BTreeMap::new();
     for r in &solved {
         let (Some(xi), Some(q), Some(p), Some(mu), Some(a), Some(rad)) =
             (r.creepage, r.tangential_load, r.normal_load, r.friction, r.hertz_a, r.radius)
@@ -159,7 +160,7 @@ pub fn creep_curves(sw: &Sweep, md: &mut String, figs: &mut Figs) -> Result<()> 
             continue;
         };
         groups.entry(sw.label(r, &varied)).or_default().push((xi * rad / (mu * a), q / (mu * p)));
-        models.insert(sw.label(r, &varied), r.model);
+        models.insert(sw.label(r, &varied), (r.model, r.strip_width.is_some()));
     }
     let mut chart = Chart::new(format!("{}: creep curves", sw.name), "ξR/(μa)", "Q/(μP)").x_unit("1").y_unit("1");
     let carter = |s: f64| theory::carter_force(&Hertz2D::new(1.0, 2.0 / std::f64::consts::PI), 1.0, 1.0, s);
@@ -191,8 +192,8 @@ pub fn creep_curves(sw: &Sweep, md: &mut String, figs: &mut Figs) -> Result<()> 
                 None
             }
         });
-        let model = models.get(&label).copied().flatten();
-        let domain = carter_domain(model, free);
+        let (model, strip) = models.get(&label).copied().unwrap_or((None, false));
+        let domain = carter_domain(model, strip, free);
         let free = free.map(|v| format!("{v:+.4}")).unwrap_or_else(|| "not crossed".into());
         writeln!(md, "| {label} | {} | {dev:.2e} | {free} | {domain} |", pts.len()).unwrap();
         chart = chart.add(Series::new(label, pts, Style::Markers));
@@ -209,10 +210,12 @@ mod tests {
     #[test]
     fn carter_is_a_check_only_in_its_own_model() {
         // Expected: Carter's domain (half-plane, β = 0, so a curve through the origin) — REFERENCES.md.
-        assert_eq!(carter_domain(Some(BodyModel::HalfPlane), Some(0.0)), "check (Carter's model)");
-        assert!(carter_domain(Some(BodyModel::Bem), Some(0.0)).starts_with("model comparison: finite wheel"));
-        assert!(carter_domain(Some(BodyModel::Bem), Some(-0.58)).contains("coupled"));
-        assert!(carter_domain(Some(BodyModel::HalfPlane), Some(0.2)).contains("coupled"));
-        assert_eq!(carter_domain(Some(BodyModel::HalfPlane), None), "check (Carter's model)");
+        assert_eq!(carter_domain(Some(BodyModel::HalfPlane), false, Some(0.0)), "check (Carter's model)");
+        assert!(carter_domain(Some(BodyModel::Bem), false, Some(0.0)).starts_with("model comparison: finite wheel"));
+        assert!(carter_domain(Some(BodyModel::Bem), false, Some(-0.58)).contains("coupled"));
+        assert!(carter_domain(Some(BodyModel::HalfPlane), false, Some(0.2)).contains("coupled"));
+        assert_eq!(carter_domain(Some(BodyModel::HalfPlane), false, None), "check (Carter's model)");
+        // A strip of half-spaces is not Carter's plane strain (src/halfplane.rs, "Strip of half-spaces").
+        assert!(carter_domain(Some(BodyModel::HalfPlane), true, Some(0.0)).contains("strip"));
     }
 }

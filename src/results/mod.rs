@@ -241,8 +241,8 @@ pub struct Diagnostics {
 /// Analytic references that apply to the scene.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct References {
-    /// Hertz at the run's load (frictionless scenes), from the first solved run's P when displacement-driven, with
-    /// the pair's contact modulus E*.
+    /// Hertz at the run's load (frictionless scenes in plane strain: none on a strip of half-spaces), from the first
+    /// solved run's P when displacement-driven, with the pair's contact modulus E*.
     pub hertz: Option<Hertz>,
     /// Dundurs' β of the pair (wheel against counter-body; a rigid flat has G → ∞): the normal–tangential coupling
     /// of two half-planes vanishes with it.

@@ -358,12 +358,14 @@ impl SceneDocument {
     fn validate_strip(&self, c: &Checker) -> Result<()> {
         let Some(width) = self.mesh.strip_width else { return Ok(()) };
         c.positive("mesh.strip_width", width)?;
-        if !(width / (2.0 * self.wheel.radius)).is_normal() {
+        let dx = zone_of(&self.mesh).element_length(self.wheel.radius);
+        let ratio = width / dx;
+        if !(1e-8..=1e12).contains(&ratio) || !(width / (2.0 * self.wheel.radius)).is_normal() {
             return Err(c.bad(
                 "mesh.strip_width",
                 format!(
-                    "{width:e} against the wheel's diameter is below the floating-point range (rollbem divides \
-                         every length by it)"
+                    "{width:e} is {ratio:.1e} element lengths ({dx:e}); rollbem takes 1e-8 to 1e12 of them (wider is \
+                     plane strain to round-off: leave strip_width out)"
                 ),
             ));
         }

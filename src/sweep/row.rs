@@ -82,6 +82,8 @@ pub struct SweepRow {
     pub metrics: Metrics,
     /// The wheel's model.
     pub model: Option<BodyModel>,
+    /// The width of the strip of half-spaces (`[mesh] strip_width`, CONTACT's 2D model); empty in plane strain.
+    pub strip_width: Option<f64>,
     /// Wheel radius R.
     pub radius: Option<f64>,
     /// Contact modulus E* of the pair.
@@ -150,6 +152,7 @@ impl SweepRow {
             peak_pressure_fit: None,
             metrics: Metrics::default(),
             model: None,
+            strip_width: None,
             radius: None,
             contact_modulus: None,
             friction: None,
@@ -479,6 +482,7 @@ static COLUMNS: &[Column] = &[
             Ok(())
         },
     },
+    num_col!("strip_width", strip_width),
     num_col!("radius", radius),
     num_col!("contact_modulus", contact_modulus),
     num_col!("friction", friction),

@@ -57,6 +57,7 @@ fn run_row(case: &Case, contact_nodes: usize, r: &SolverRun) -> SweepRow {
     row.peak_pressure_fit = r.contact.as_ref().and_then(|c| c.fit_peak_pressure);
     row.metrics = metrics(scene, r);
     row.model = Some(scene.model());
+    row.strip_width = scene.strip_width();
     row.radius = Some(scene.radius());
     row.contact_modulus = Some(scene.contact_modulus());
     row.friction = Some(scene.friction());
