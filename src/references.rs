@@ -160,9 +160,15 @@ fn carter_solution(scene: &Scene, run: &SolverRun) -> Option<(f64, f64, f64, f64
     Some((c_over_a, q_over, xi, d, h))
 }
 
-/// Hertz at the run's load P, when the scene is frictionless, in plane strain, and the run solved with P > 0.
+/// Whether Hertz is compared with a scene: frictionless, and in plane strain (not on a strip of half-spaces,
+/// `[mesh] strip_width`).
+pub fn hertz_applies(scene: &Scene) -> bool {
+    scene.friction() == 0.0 && scene.strip_width().is_none()
+}
+
+/// Hertz at the run's load P, when [`hertz_applies`] and the run solved with P > 0.
 pub fn hertz_for(scene: &Scene, run: &SolverRun) -> Option<Hertz> {
-    if scene.friction() > 0.0 || scene.strip_width().is_some() {
+    if !hertz_applies(scene) {
         return None;
     }
     let p = run.resultants?.normal;

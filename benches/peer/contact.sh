@@ -241,28 +241,7 @@ inp_params() {
 # With CONTACT_EPS set, the results run also solves to that tolerance (EPS, and MAXGS = MAXIN = 9999 so that the
 # iterations can get there): how much of a difference is CONTACT's stopping criterion.
 results_variant() {
-  awk -v eps="${CONTACT_EPS:-}" -v dys="${CONTACT_DY_SCALE:-}" '
-    dys != "" && /MX,MY,XC1,YC1,DX,DY/ && $0 !~ /^[ \t]*%/ { $6 = $6 * dys }
-    dys != "" && /FN, (CKSI|FX)/ && $0 !~ /^[ \t]*%/ { $1 = sprintf("%.10g", $1 * dys) }
-    eps != "" && /MAXGS.*EPS/ && $0 !~ /^[ \t]*%/ {
-      match($0, /^[ \t]*[^ \t]+[ \t]+[^ \t]+[ \t]+[^ \t]+[ \t]+[^ \t]+[ \t]+[^ \t]+/)
-      $0 = sprintf("  9999  9999  %s  %s  %s", $3, $4, eps) substr($0, RSTART + RLENGTH)
-    }
-    $2 ~ /G-I-A-O-W-R$/ && $0 !~ /^[ \t]*%/ {
-      n = split($2, L, "-"); d = $1
-      while (length(d) < n) d = "0" d
-      for (i = 1; i <= n; i++) {
-        c = substr(d, i, 1)
-        if (L[i] == "O" && c < 2) c = 2
-        if (L[i] == "A") c = 1
-        out = out c
-      }
-      match($0, /[0-9]+/)
-      $0 = substr($0, 1, RSTART - 1) out substr($0, RSTART + RLENGTH)
-      out = ""
-    }
-    { print }
-  ' "$1"
+  awk -v eps="${CONTACT_EPS:-}" -v dys="${CONTACT_DY_SCALE:-}" -v digits="O>2 A=1" -f "$here/contact_inp.awk" "$1"
 }
 
 # Copy of an input with the I digit (initial estimate) of every case after the first set to $1, and the last case

@@ -49,18 +49,7 @@ jq -r '.p[]' "$work/reference.json" >"$work/reference.p"
     d=$work/eps$eps
     mkdir -p "$d"
     # EPS and MAXGS = MAXIN = 9999; the flow digit W at least 5, so that every NormCG call prints its iterations.
-    awk -v eps="$eps" '/MAXGS.*EPS/ && $0 !~ /^[ \t]*%/ {
-        match($0, /^[ \t]*[^ \t]+[ \t]+[^ \t]+[ \t]+[^ \t]+[ \t]+[^ \t]+[ \t]+[^ \t]+/)
-        $0 = sprintf("  9999  9999  %s  %s  %s", $3, $4, eps) substr($0, RSTART + RLENGTH) }
-      $2 ~ /W-R$/ && $0 !~ /^[ \t]*%/ {
-        n = split($2, L, "-"); d = $1
-        while (length(d) < n) d = "0" d
-        out = ""
-        for (i = 1; i <= n; i++) { c = substr(d, i, 1); if (L[i] == "W" && c < 5) c = 5; out = out c }
-        match($0, /[0-9]+/)
-        $0 = substr($0, 1, RSTART - 1) out substr($0, RSTART + RLENGTH)
-      }
-      { print }' "$inp" >"$d/carter2d.inp"
+    awk -v eps="$eps" -v digits="W>5" -f "$here/contact_inp.awk" "$inp" >"$d/carter2d.inp"
     (cd "$d" && "$contact" 2 carter2d.inp >stdout.txt 2>&1) || { echo "CONTACT failed at EPS $eps" >&2; exit 1; }
     # Iterations per NormCG call (one call per change of NORM's element division), as printed at W >= 5.
     itcg=$(awk '/NormCG: *[0-9]+ iterations/ { sub(/.*NormCG: */, ""); split($0, a, " "); s = s (s == "" ? "" : " + ") a[1] }

@@ -229,9 +229,7 @@ pub fn assemble_report(
     steps: Vec<crate::results::StepResult>,
 ) -> Report {
     let flex = &built.flex;
-    // Hertz is plane strain: no reference on a strip of half-spaces (`[mesh] strip_width`).
-    let plane_strain = scene.strip_width().is_none();
-    let hertz = if scene.friction() > 0.0 || !plane_strain { None } else { reference_hertz(scene, &runs) };
+    let hertz = if crate::references::hertz_applies(scene) { reference_hertz(scene, &runs) } else { None };
     let (element, length) = (built.info.element, built.info.contact_element_length);
     // A finite wheel compared with a half-space theory: the same loads on the half-plane counterpart give the model
     // error beside the comparison (`checks::ModelReference`).

@@ -21,13 +21,17 @@ fn runs_of<'a>(r: &'a Report, solver: &str) -> Vec<(usize, &'a SolverRun)> {
     r.steps.iter().enumerate().filter_map(|(k, st)| Some((k, st.runs.iter().find(|x| x.solver == solver)?))).collect()
 }
 
+/// The half-plane model in plane strain (not on a strip of half-spaces): the model of the 2D path theories.
+fn plane_strain_half_plane(s: &Scene) -> bool {
+    s.model() == BodyModel::HalfPlane && s.strip_width().is_none()
+}
+
 /// The Mindlin–Deresiewicz pattern: step 0 loads P alone, then every step holds P and takes Q to +Q*, −Q*, +Q*, …
 /// (|Q*| ≤ μP), on the half-plane model in plane strain with β = 0 — against a rigid flat, or against an elastic
 /// half-plane of a β = 0 pair (steel on steel). Returns (P, Q*).
 pub fn md_pattern(s: &Scene) -> Option<(f64, f64)> {
     let p = s.document().steps.first()?.normal_load?;
-    let plane_strain_half_plane = s.model() == BodyModel::HalfPlane && s.strip_width().is_none();
-    if !plane_strain_half_plane || s.rolling().is_some() || !beta_zero(s, p) || s.document().steps.len() < 3 {
+    if !plane_strain_half_plane(s) || s.rolling().is_some() || !beta_zero(s, p) || s.document().steps.len() < 3 {
         return None;
     }
     if s.document().steps[0].tangential_load.unwrap_or(0.0) != 0.0 || s.document().steps[0].tangential_shift.is_some() {
@@ -54,9 +58,7 @@ fn md_branch(r: &Report, k: usize, q_star: f64) -> TangentialPath {
 /// Spence's pattern: a coupled half-plane (β ≠ 0) on a rigid flat, one or more steps raising the normal load
 /// monotonically from rest with no tangential drive. Returns β.
 fn spence_pattern(s: &Scene) -> Option<f64> {
-    let single = s.model() == BodyModel::HalfPlane
-        && s.strip_width().is_none()
-        && matches!(s.counter_body(), CounterBody::Rigid);
+    let single = plane_strain_half_plane(s) && matches!(s.counter_body(), CounterBody::Rigid);
     let p_end = s.document().steps.last()?.normal_load?;
     let monotone =
         s.document().steps.windows(2).all(|w| w[0].normal_load.unwrap_or(0.0) <= w[1].normal_load.unwrap_or(0.0));
