@@ -432,6 +432,7 @@ fn circle_mesh(n: usize, kind: ElementKind, radius: f64, start: f64) -> Mesh {
                     weight: len,
                     element: e,
                     bc: Bc::Free,
+                    gap: 0.5 * (a[1] + b[1]) + radius,
                 });
                 m.elements.push(Element {
                     shape: Shape::Straight { a, b },
@@ -450,6 +451,7 @@ fn circle_mesh(n: usize, kind: ElementKind, radius: f64, start: f64) -> Mesh {
                         weight: w[j],
                         element: e,
                         bc: Bc::Free,
+                        gap: arc.position(xi)[1] + radius,
                     });
                 }
                 m.elements.push(Element { shape: Shape::Arc(arc), bc: Bc::Free, first_node: first, n_nodes: 3 });

@@ -54,6 +54,13 @@ use std::path::{Path, PathBuf};
 /// then need about 2 GiB.
 pub const MAX_NODES: usize = 8000;
 
+/// Smallest mean angle (radians) a BEM wheel's contact element may subtend. The wheel's polar angles near the
+/// contact point, −π/2, are resolved to 2.2e-16 rad; below 1e-10 rad per element the elements' extents carry fewer
+/// than six significant digits and the assembled system is not the wheel's (measured: constant elements then end
+/// `numerical_error` at 5.8e-11 rad, quadratic ones already at 2.3e-9 rad; a subnormal contact arc tripped the quadratic
+/// integrator's own consistency assertion, found by the `scene` fuzz target). Tested in `tests/mesh_precision.rs`.
+pub const MIN_CONTACT_ELEMENT_ANGLE: f64 = 1e-10;
+
 /// Largest number of contact elements of a half-plane scene: the four dense influence blocks (4n² doubles) and the
 /// frictional LCP ((3n)² doubles) then need about 3.5 GiB.
 pub const MAX_HALF_PLANE_ELEMENTS: usize = 6000;

@@ -5,7 +5,7 @@ use super::document::{CounterBodyTable, DriveTable, MeshTable, SceneDocument};
 use super::{
     safe_name, Body, BodyModel, ContactZone, CounterBody, ElementKind, Loading, Material, PathStep, Profile, Rolling,
     RollingMode, Scene, StressQuantity, Support, Wheel, ZoneExtent, MAX_HALF_PLANE_ELEMENTS, MAX_NODES,
-    MAX_STRESS_POINTS,
+    MAX_STRESS_POINTS, MIN_CONTACT_ELEMENT_ANGLE,
 };
 use crate::error::{Error, Result};
 use crate::formulation::{ContactLaw, Dof};
@@ -432,6 +432,19 @@ impl SceneDocument {
             return Err(c.bad("mesh.other_elements", "missing: the BEM wheel's mesh needs it (≥ 4)".into()));
         };
         let arc = zone_of(m).arc_rad(w.radius).to_degrees();
+        let per_element = zone_of(m).arc_rad(w.radius) / m.contact_elements as f64;
+        if !(per_element >= MIN_CONTACT_ELEMENT_ANGLE) {
+            let key = if m.contact_arc_deg.is_some() { "mesh.contact_arc_deg" } else { "mesh.contact_half_width" };
+            return Err(c.bad(
+                key,
+                format!(
+                    "the {} contact elements subtend {per_element:.1e} rad each; the wheel's angles are resolved to \
+                     2.2e-16 rad, and below {MIN_CONTACT_ELEMENT_ANGLE:.0e} rad per element its geometry is not \
+                     represented in double precision: widen the zone or use fewer contact_elements",
+                    m.contact_elements
+                ),
+            ));
+        }
         if let Some(Support::TopArc { angle_deg }) = w.support {
             if arc + angle_deg >= 300.0 {
                 return Err(c.bad(
