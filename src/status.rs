@@ -54,8 +54,8 @@ impl From<Termination> for Status {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum VerdictReason {
-    /// The solver claimed a solution whose solver-independent residual is above the refusal bound
-    /// (→ `numerical_error`).
+    /// The solver claimed a solution whose solver-independent residual is above the refusal bound, or cannot be
+    /// evaluated because the solution has a non-finite value (→ `numerical_error`).
     ResidualTooLarge,
     /// The answer's contact reaches the edge of the candidate zone (→ `contact_at_zone_edge`).
     ZoneEdge,

@@ -24,6 +24,7 @@ use rollbem::lcp_io;
 use rollbem::pipeline::Model;
 use rollbem::scene::Scene;
 use rollbem::solvers::lemke::{self, dense::solve_dense, LemkeSettings};
+use rollbem::solvers::SolverId;
 use rollbem::sweep::{SweepSpec, MAX_CASES};
 use std::path::{Path, PathBuf};
 
@@ -217,4 +218,24 @@ fn a_nan_residual_is_not_a_solved_run() {
         }
     }
     eprintln!("{statuses:?}");
+}
+
+/// The `scene` target's second finding of 2026-11-27: a hub wheel of modulus 2.2e-308 (the smallest normal double)
+/// under a load of 7. The compliance overflows; clarabel returned NaN pressures and an infinite d_N, every residual
+/// computed from them came out 0, and the run was reported `solved`. Now a solution with a non-finite value is
+/// `numerical_error` naming it, whatever its residuals (`post::Evaluation::first_non_finite`).
+#[test]
+fn a_solution_with_non_finite_values_is_not_a_solved_run() {
+    let p = root().join("fuzz/regressions/clarabel-nan-pressure-subnormal-modulus.toml");
+    let scene = Scene::from_toml(&text(&p), &p).unwrap();
+    let report = rollbem::pipeline::run_scene(&scene).unwrap();
+    let clarabel = report.runs.iter().find(|r| r.solver == SolverId::Clarabel).expect("a clarabel run");
+    assert_eq!(clarabel.status, rollbem::status::Status::NumericalError, "{}", clarabel.explanation());
+    assert!(clarabel.explanation().contains("cannot be evaluated"), "{}", clarabel.explanation());
+    for run in &report.runs {
+        if run.status == rollbem::status::Status::Solved {
+            let finite = run.nodes.iter().all(|n| n.pressure.is_finite() && n.shear.is_finite() && n.gap.is_finite());
+            assert!(finite, "{}: solved with non-finite nodal values", run.solver);
+        }
+    }
 }

@@ -296,7 +296,16 @@ pub fn evaluate_outcome(ctx: &RunContext, outcome: Outcome) -> (SolverRun, Optio
     let mut verdict = None;
     if let Some(ev) = &ev {
         let worst = ev.residuals.max();
-        if worst.is_nan() || worst > ctx.refuse {
+        if let Some(what) = ev.first_non_finite() {
+            status = Status::NumericalError;
+            verdict = Some(Verdict {
+                reason: VerdictReason::ResidualTooLarge,
+                message: format!(
+                    "the solver reported success but {what}: its residuals cannot be evaluated (the scene's numbers \
+                     may be outside double precision, e.g. loads or lengths extreme against the moduli)"
+                ),
+            });
+        } else if worst.is_nan() || worst > ctx.refuse {
             status = Status::NumericalError;
             verdict = Some(Verdict {
                 reason: VerdictReason::ResidualTooLarge,
