@@ -433,7 +433,7 @@ impl SceneDocument {
         };
         let arc = zone_of(m).arc_rad(w.radius).to_degrees();
         let per_element = zone_of(m).arc_rad(w.radius) / m.contact_elements as f64;
-        if !(per_element >= MIN_CONTACT_ELEMENT_ANGLE) {
+        if per_element.is_nan() || per_element < MIN_CONTACT_ELEMENT_ANGLE {
             let key = if m.contact_arc_deg.is_some() { "mesh.contact_arc_deg" } else { "mesh.contact_half_width" };
             return Err(c.bad(
                 key,
