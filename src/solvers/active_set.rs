@@ -556,6 +556,12 @@ fn gmres(
             hm.push(col);
             total += 1;
             k += 1;
+            // A NaN or an infinity in the Krylov basis (an operator that overflows) is a failure, not a breakdown:
+            // neither `hk1 > 0` nor `hk1 == 0` holds for NaN, and the next step indexed a basis vector that was
+            // never pushed (found by the `scene` fuzz target).
+            if !(hk1.is_finite() && gvec[k].is_finite()) {
+                return None;
+            }
             let converged = gvec[k].abs() <= tol * bnorm;
             if !converged && hk1 > 0.0 {
                 v.push(w.iter().map(|x| x / hk1).collect());
@@ -967,5 +973,33 @@ impl Solver for ActiveSet {
                 out
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::gmres;
+
+    /// A well-posed system is solved (expected: the exact solution of a diagonal system, x_i = b_i / d_i).
+    #[test]
+    fn gmres_solves_a_diagonal_system() {
+        let d = [1.0, 2.0, 4.0, 8.0];
+        let e = |x: &[f64]| x.iter().zip(&d).map(|(x, d)| x * d).collect::<Vec<_>>();
+        let b = [1.0, 1.0, 1.0, 1.0];
+        let (y, _) = gmres(&e, &|x| Some(x.to_vec()), &b, &[0.0; 4], 1e-14, 50).expect("converges");
+        for (y, d) in y.iter().zip(&d) {
+            assert!((y - 1.0 / d).abs() <= 1e-13, "{y} against {}", 1.0 / d);
+        }
+    }
+
+    /// An operator that returns NaN (one that overflowed) makes GMRES fail with `None`; it indexed a Krylov vector
+    /// that was never built and panicked before (the `scene` fuzz target's reproducer
+    /// fuzz/regressions/active-set-gmres-nan.toml, replayed end to end by tests/fuzz_corpus.rs).
+    #[test]
+    fn gmres_fails_cleanly_on_a_nan_operator() {
+        let e = |x: &[f64]| x.iter().map(|_| f64::NAN).collect::<Vec<_>>();
+        assert!(gmres(&e, &|x| Some(x.to_vec()), &[1.0, 2.0], &[0.0, 0.0], 1e-12, 10).is_none());
+        let overflow = |x: &[f64]| x.iter().map(|v| v * f64::MAX * 4.0).collect::<Vec<_>>();
+        assert!(gmres(&overflow, &|x| Some(x.to_vec()), &[1.0, 2.0], &[1.0, 1.0], 1e-12, 10).is_none());
     }
 }
