@@ -239,3 +239,55 @@ fn a_solution_with_non_finite_values_is_not_a_solved_run() {
         }
     }
 }
+
+/// The `scene` target's fourth finding of 2026-11-27 (bug 9 in FUZZING.md): a half-plane wheel of radius f64::MAX.
+/// The models compute in units of the diameter 2R, which overflowed to ∞; the default datum depth R then scaled to
+/// 0 and `HalfPlane::new` panicked on it. Two more inputs reach the same kind of panic through a ratio that is 0 or
+/// ∞ in the kernels: a datum depth, a hub radius or a counter-body modulus too far from the wheel's. Each is now
+/// refused when the scene is read, naming the key; a ratio just inside the range of normal doubles is still read.
+/// Expected outcome from the kernels' documented domain (`HalfPlane::new`: E > 0, 0 < D < ∞).
+#[test]
+fn lengths_and_moduli_the_kernels_cannot_represent_are_refused() {
+    let p = root().join("fuzz/regressions/halfplane-radius-overflows-diameter.toml");
+    let refused_field = |text: &str| match Scene::from_toml(text, Path::new("x.toml")) {
+        Err(rollbem::Error::Invalid { field, message, .. }) => {
+            assert!(message.contains("double"), "{field}: {message}");
+            Some(field)
+        }
+        Err(e) => panic!("refused, but not as an invalid field: {e}"),
+        Ok(_) => None,
+    };
+    assert_eq!(refused_field(&text(&p)).as_deref(), Some("wheel.radius"));
+    // A half-plane wheel with an elastic counter-body (a reference scene), edited key by key.
+    let base = text(&root().join("reference/scenes/steel-on-steel-cattaneo.toml"));
+    assert_eq!(refused_field(&base), None);
+    let counter = |modulus: &str| {
+        let (head, tail) = base.split_once("[counter_body]").unwrap();
+        format!("{head}[counter_body]{}", tail.replacen("youngs_modulus = 210000.0", modulus, 1))
+    };
+    let wheel = |from: &str, to: &str| base.replacen(from, to, 1);
+    let cases = [
+        // E_cb / E_w = 1e-305 / 2.1e5 is subnormal (< 2.2e-308); 1e-300 / 2.1e5 is normal.
+        (counter("youngs_modulus = 1e-305"), Some("counter_body.youngs_modulus")),
+        (counter("youngs_modulus = 1e-300"), None),
+        // D / 2R with R = 460: 1e-310 is subnormal already, 1e306 / 920 is finite, 1e308 / 920 is not.
+        (wheel("profile = \"parabola\"", "profile = \"parabola\"\ndatum_depth = 1e-310"), Some("wheel.datum_depth")),
+        (wheel("profile = \"parabola\"", "profile = \"parabola\"\ndatum_depth = 1e306"), None),
+        (
+            wheel("kind = \"half_plane\"", "kind = \"half_plane\"\ndatum_depth = 1e-307"),
+            Some("counter_body.datum_depth"),
+        ),
+        (wheel("kind = \"half_plane\"", "kind = \"half_plane\"\ndatum_depth = 1e-300"), None),
+        // 2R = 2 × 8.9e307 is finite; 2 × 9e307 is not (the zone is shrunk to stay inside the wheel).
+        (wheel("radius = 460.0", "radius = 9e307"), Some("wheel.radius")),
+        (wheel("radius = 460.0", "radius = 8.9e307"), None),
+    ];
+    for (i, (text, expected)) in cases.iter().enumerate() {
+        assert_eq!(refused_field(text).as_deref(), *expected, "case {i}");
+    }
+    // A hub-supported BEM wheel: hub radius / 2R = 1e-310 / 920 is subnormal.
+    let hub = text(&root().join("reference/scenes/hertz-hub-fine.toml"));
+    assert_eq!(refused_field(&hub), None);
+    let tiny_hub = hub.replacen("radius = 100.0", "radius = 1e-310", 1);
+    assert_eq!(refused_field(&tiny_hub).as_deref(), Some("wheel.support.radius"));
+}

@@ -122,6 +122,23 @@ impl Checker<'_> {
         )
     }
 
+    /// A length `v` (already checked finite and > 0) that the models divide by the wheel's diameter `2R` (their
+    /// length unit): the ratio must be a finite, normal double, or the kernels would see 0 or ∞ for it.
+    fn scaled_length(&self, field: &str, v: f64, radius: f64) -> Result<()> {
+        let ratio = v / (2.0 * radius);
+        if !ratio.is_normal() {
+            return Err(self.bad(
+                field,
+                format!(
+                    "{v:e} is {ratio:.1e} wheel diameters (2 × wheel.radius = {:e}); rollbem computes in units of \
+                     the diameter, and this ratio is not a normal double (it would be 0 or ∞ in the kernels)",
+                    2.0 * radius
+                ),
+            ));
+        }
+        Ok(())
+    }
+
     fn finite(&self, field: &str, v: f64) -> Result<()> {
         if !v.is_finite() {
             return Err(self.bad(field, format!("must be a finite number (got {v})")));
@@ -166,6 +183,17 @@ impl SceneDocument {
     fn validate_wheel(&self, c: &Checker) -> Result<()> {
         let w = &self.wheel;
         c.positive("wheel.radius", w.radius)?;
+        if !(2.0 * w.radius).is_finite() {
+            return Err(c.bad(
+                "wheel.radius",
+                format!(
+                    "{:e} is too large: rollbem computes in units of the wheel's diameter 2R, which must be a finite \
+                     double (R ≤ {:.1e})",
+                    w.radius,
+                    f64::MAX / 2.0
+                ),
+            ));
+        }
         c.positive("wheel.youngs_modulus", w.youngs_modulus)?;
         c.poisson("wheel.poisson_ratio", w.poisson_ratio)?;
         let nu = w.poisson_ratio;
@@ -178,6 +206,7 @@ impl SceneDocument {
             (BodyModel::HalfPlane, None) => {
                 if let Some(d) = w.datum_depth {
                     c.positive("wheel.datum_depth", d)?;
+                    c.scaled_length("wheel.datum_depth", d, w.radius)?;
                 }
                 return Ok(());
             }
@@ -194,6 +223,7 @@ impl SceneDocument {
         match support {
             Support::Hub { radius } => {
                 c.positive("wheel.support.radius", radius)?;
+                c.scaled_length("wheel.support.radius", radius, w.radius)?;
                 if nu == 0.5 {
                     return Err(c.bad(
                         "wheel.poisson_ratio",
@@ -280,6 +310,17 @@ impl SceneDocument {
             c.poisson("counter_body.poisson_ratio", poisson_ratio)?;
             if let Some(d) = datum_depth {
                 c.positive("counter_body.datum_depth", d)?;
+                c.scaled_length("counter_body.datum_depth", d, self.wheel.radius)?;
+            }
+            let ratio = youngs_modulus / self.wheel.youngs_modulus;
+            if !ratio.is_normal() {
+                return Err(c.bad(
+                    "counter_body.youngs_modulus",
+                    format!(
+                        "{youngs_modulus:e} is {ratio:.1e} × wheel.youngs_modulus; rollbem computes in units of the \
+                         wheel's modulus, and this ratio is not a normal double (it would be 0 or ∞ in the kernels)"
+                    ),
+                ));
             }
             if self.mesh.element == ElementKind::Quadratic {
                 return Err(c.bad(
