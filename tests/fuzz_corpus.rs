@@ -242,9 +242,10 @@ fn a_solution_with_non_finite_values_is_not_a_solved_run() {
 
 /// The `scene` target's fourth finding of 2026-11-27 (bug 9 in FUZZING.md): a half-plane wheel of radius f64::MAX.
 /// The models compute in units of the diameter 2R, which overflowed to ∞; the default datum depth R then scaled to
-/// 0 and `HalfPlane::new` panicked on it. Two more inputs reach the same kind of panic through a ratio that is 0 or
-/// ∞ in the kernels: a datum depth, a hub radius or a counter-body modulus too far from the wheel's. Each is now
-/// refused when the scene is read, naming the key; a ratio just inside the range of normal doubles is still read.
+/// 0 and `HalfPlane::new` panicked on it. Other inputs reach the same kind of panic through a ratio that is 0 or ∞
+/// in the kernels: a datum depth, a hub radius, a half-plane element width or a counter-body modulus too far from
+/// the wheel's. Each is now refused when the scene is read, naming the key; a ratio just inside the range of normal
+/// doubles is still read.
 /// Expected outcome from the kernels' documented domain (`HalfPlane::new`: E > 0, 0 < D < ∞).
 #[test]
 fn lengths_and_moduli_the_kernels_cannot_represent_are_refused() {
@@ -278,13 +279,26 @@ fn lengths_and_moduli_the_kernels_cannot_represent_are_refused() {
             Some("counter_body.datum_depth"),
         ),
         (wheel("kind = \"half_plane\"", "kind = \"half_plane\"\ndatum_depth = 1e-300"), None),
-        // 2R = 2 × 8.9e307 is finite; 2 × 9e307 is not (the zone is shrunk to stay inside the wheel).
+        // 2R = 2 × 8.9e307 is finite; 2 × 9e307 is not (the zone is widened with it: 12 / 1.8e308 is subnormal).
         (wheel("radius = 460.0", "radius = 9e307"), Some("wheel.radius")),
-        (wheel("radius = 460.0", "radius = 8.9e307"), None),
+        (
+            wheel("radius = 460.0", "radius = 8.9e307").replacen(
+                "contact_half_width = 12.0",
+                "contact_half_width = 1e306",
+                1,
+            ),
+            None,
+        ),
     ];
     for (i, (text, expected)) in cases.iter().enumerate() {
         assert_eq!(refused_field(text).as_deref(), *expected, "case {i}");
     }
+    // Half-plane elements 2 × 1e-320 / 100 wide are 0 in units of 2R (the kernel asserted a width > 0); 2 × 1e-300
+    // / 100 are a normal 2.2e-305 diameters (such a zone is then too small for the load: contact at its edge).
+    let half_width = |hw: &str| base.replacen("contact_half_width = 12.0", hw, 1);
+    assert_eq!(refused_field(&half_width("contact_half_width = 1e-320")).as_deref(), Some("mesh.contact_half_width"));
+    assert_eq!(refused_field(&half_width("contact_half_width = 1e-300")), None);
+    assert_eq!(refused_field(&half_width("contact_x = [1e-303, 2e-303]")).as_deref(), Some("mesh.contact_x"));
     // A hub-supported BEM wheel: hub radius / 2R = 1e-310 / 920 is subnormal.
     let hub = text(&root().join("reference/scenes/hertz-hub-fine.toml"));
     assert_eq!(refused_field(&hub), None);

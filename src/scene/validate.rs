@@ -448,6 +448,25 @@ impl SceneDocument {
                         .into(),
                 ));
             }
+            // The grid is built in units of the diameter: each element's width must stay a normal double there.
+            let dx = zone_of(m).element_length(w.radius);
+            if !(dx / (2.0 * w.radius)).is_normal() {
+                let key = match (m.contact_x, m.contact_half_width) {
+                    (Some(_), _) => "mesh.contact_x",
+                    (None, Some(_)) => "mesh.contact_half_width",
+                    (None, None) => "mesh.contact_arc_deg",
+                };
+                return Err(c.bad(
+                    key,
+                    format!(
+                        "the {} contact elements are {dx:e} wide each, {:.1e} wheel diameters; rollbem computes in \
+                         units of the diameter, and this ratio is not a normal double (it would be 0 in the kernels): \
+                         widen the zone or use fewer contact_elements",
+                        m.contact_elements,
+                        dx / (2.0 * w.radius)
+                    ),
+                ));
+            }
             self.validate_strip(c)?;
             if m.contact_elements > MAX_HALF_PLANE_ELEMENTS {
                 return Err(c.bad(
