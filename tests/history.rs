@@ -538,3 +538,44 @@ fn md_loop_of_a_steel_on_steel_pair() {
     // compliance is twice the single body's, its discretisation error alike.
     assert!(worst < 5e-3, "largest distance from the theory's loop: {worst:e} of the half-span");
 }
+
+/// A path that switches the normal DOF from load to displacement control between steps (found by the `scene` fuzz
+/// target, bug 11 in FUZZING.md): the active-set solver reused the previous step's factorisation, which had one more
+/// unknown (the load-driven approach), as its preconditioner, and panicked on the size mismatch. Now a factorisation
+/// of another layout is not reused. Reference: Lemke on the same path (a peer solver), and for the last step the
+/// one-step scene with the same approach; the approach is that of a one-step run at 15 kN/mm.
+#[test]
+fn a_path_switching_from_load_to_approach_control_is_solved() {
+    for (mu, coupling) in [(0.0, false), (0.3, true)] {
+        let solvers = r#"["lemke", "active_set"]"#;
+        let reference_scene = path_scene(0.3, mu, coupling, 60, "[drive]\nnormal_load = 15000.0", solvers);
+        let reference = run(&reference_scene);
+        let d = get(&reference.runs, "lemke").rigid_body.unwrap().normal;
+        let q = if mu > 0.0 { "tangential_load = 1000.0" } else { "" };
+        let body = format!(
+            "[[steps]]\nnormal_load = 20000.0\n{q}\n[[steps]]\nnormal_load = 10000.0\n{q}\n\
+             [[steps]]\nnormal_approach = {d}\n{q}"
+        );
+        let path = run(&path_scene(0.3, mu, coupling, 60, &body, solvers));
+        assert_eq!(path.steps.len(), 3);
+        let one = run(&path_scene(0.3, mu, coupling, 60, &format!("[drive]\nnormal_approach = {d}"), solvers));
+        let p0 = hertz(&reference_scene, get(&reference.runs, "lemke")).p0;
+        for (k, step) in path.steps.iter().enumerate() {
+            let (l, a) = (get(&step.runs, "lemke"), get(&step.runs, "active_set"));
+            assert_eq!((l.status, a.status), (Status::Solved, Status::Solved), "μ = {mu}, step {k}");
+            for (u, v) in l.nodes.iter().zip(&a.nodes) {
+                assert!((u.pressure - v.pressure).abs() < 1e-8 * p0, "μ = {mu}, step {k}, x = {}", u.x);
+                assert!((u.shear - v.shear).abs() < 1e-8 * p0, "μ = {mu}, step {k}, x = {}", u.x);
+            }
+        }
+        // The last step's normal load is that of the one-step approach-driven scene (normal problem only when
+        // frictionless; with friction the tangential history changes the shear, not the resultant beyond β's
+        // coupling, so only the frictionless case is compared node by node).
+        if mu == 0.0 {
+            let (x, y) = (get(&path.steps[2].runs, "lemke"), get(&one.runs, "lemke"));
+            for (u, v) in x.nodes.iter().zip(&y.nodes) {
+                assert!((u.pressure - v.pressure).abs() < 1e-10 * p0, "x = {}: {} vs {}", u.x, u.pressure, v.pressure);
+            }
+        }
+    }
+}

@@ -363,6 +363,9 @@ struct Reduced {
     sets: Vec<NodeSet>,
     contact: Vec<usize>,
     stick: Vec<usize>,
+    /// The layout it was built for: the number of load-driven DOFs and whether the problem is frictional.
+    loads: usize,
+    frictional: bool,
     factor: Factor,
 }
 
@@ -438,11 +441,21 @@ impl Reduced {
             }
         }
         let factor = Factor::of(a);
-        Reduced { sets: sets.to_vec(), contact, stick, factor }
+        Reduced { sets: sets.to_vec(), contact, stick, loads: nl, frictional: d.frictional, factor }
+    }
+
+    /// Whether this factorisation has the layout of `d`'s full system (nodes, load-driven DOFs, friction). One
+    /// kept from an earlier solve on the same flexibility may not: a load path can switch a DOF from load to
+    /// displacement control between steps, and its preconditioner would then have the wrong size.
+    fn fits(&self, d: &Data) -> bool {
+        self.sets.len() == d.n && self.loads == d.loads.len() && self.frictional == d.frictional
     }
 
     /// Solve the full system of these sets for the right-hand side r (full layout); `None` if singular.
     fn solve_full(&self, d: &Data, r: &[f64]) -> Option<Vec<f64>> {
+        if !self.fits(d) {
+            return None;
+        }
         let n = d.n;
         let full = Full { d, sets: self.sets.clone() };
         let nfull = full.size();
@@ -661,6 +674,9 @@ impl Linear {
     /// `last`, to round-off (the final solve of the converged sets: a factorisation of these sets, or the one it
     /// has when it is of these sets).
     fn solve(&mut self, d: &Data, sets: &[NodeSet], y0: Option<&[f64]>, last: bool) -> Option<Iterate> {
+        if self.base.as_ref().is_some_and(|base| !base.fits(d)) {
+            self.base = None;
+        }
         let full = Full { d, sets: sets.to_vec() };
         let b = full.rhs();
         let changed = self.base.as_ref().map_or(usize::MAX, |r| (0..d.n).filter(|&i| r.sets[i] != sets[i]).count());

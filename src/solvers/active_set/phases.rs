@@ -132,7 +132,7 @@ pub(super) fn solve(
     let mut normal_exact = false;
     if let Some(k) = kept {
         normal_exact = k.normal_matrix == normal_matrix;
-        normal_base = k.normal_base.filter(|b| b.sets.len() == n);
+        normal_base = k.normal_base.filter(|b| b.fits(&dn));
         if normal_exact && k.normal_data == normal_data {
             normal_solution = k.normal_solution;
         }
