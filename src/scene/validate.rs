@@ -429,6 +429,55 @@ impl SceneDocument {
         Ok(())
     }
 
+    /// `[mesh]` of the half-plane model (after the zone and the element count): constant elements, each a normal
+    /// double wide in units of 2R, the strip, and the size bound.
+    fn validate_half_plane_mesh(&self, c: &Checker) -> Result<()> {
+        let w = &self.wheel;
+        let m = &self.mesh;
+        if m.other_elements.is_some() {
+            return Err(c.meaningless("mesh.other_elements"));
+        }
+        if m.element != ElementKind::Constant {
+            return Err(c.bad(
+                "mesh.element",
+                "the half-plane has closed-form influence coefficients for uniform-traction (constant) elements \
+                 only"
+                    .into(),
+            ));
+        }
+        // The grid is built in units of the diameter: each element's width must stay a normal double there.
+        let dx = zone_of(m).element_length(w.radius);
+        if !(dx / (2.0 * w.radius)).is_normal() {
+            let key = match (m.contact_x, m.contact_half_width) {
+                (Some(_), _) => "mesh.contact_x",
+                (None, Some(_)) => "mesh.contact_half_width",
+                (None, None) => "mesh.contact_arc_deg",
+            };
+            return Err(c.bad(
+                key,
+                format!(
+                    "the {} contact elements are {dx:e} wide each, {:.1e} wheel diameters; rollbem computes in \
+                     units of the diameter, and this ratio is not a normal double (it would be 0 in the kernels): \
+                     widen the zone or use fewer contact_elements",
+                    m.contact_elements,
+                    dx / (2.0 * w.radius)
+                ),
+            ));
+        }
+        self.validate_strip(c)?;
+        if m.contact_elements > MAX_HALF_PLANE_ELEMENTS {
+            return Err(c.bad(
+                "mesh.contact_elements",
+                format!(
+                    "{} elements: the dense influence blocks and the frictional LCP would not fit in memory; \
+                     rollbem allows at most {MAX_HALF_PLANE_ELEMENTS} on the half-plane",
+                    m.contact_elements
+                ),
+            ));
+        }
+        Ok(())
+    }
+
     fn validate_mesh(&self, c: &Checker) -> Result<()> {
         let w = &self.wheel;
         let m = &self.mesh;
@@ -437,48 +486,7 @@ impl SceneDocument {
             return Err(c.bad("mesh.contact_elements", "must be at least 1".into()));
         }
         if w.model == BodyModel::HalfPlane {
-            if m.other_elements.is_some() {
-                return Err(c.meaningless("mesh.other_elements"));
-            }
-            if m.element != ElementKind::Constant {
-                return Err(c.bad(
-                    "mesh.element",
-                    "the half-plane has closed-form influence coefficients for uniform-traction (constant) elements \
-                     only"
-                        .into(),
-                ));
-            }
-            // The grid is built in units of the diameter: each element's width must stay a normal double there.
-            let dx = zone_of(m).element_length(w.radius);
-            if !(dx / (2.0 * w.radius)).is_normal() {
-                let key = match (m.contact_x, m.contact_half_width) {
-                    (Some(_), _) => "mesh.contact_x",
-                    (None, Some(_)) => "mesh.contact_half_width",
-                    (None, None) => "mesh.contact_arc_deg",
-                };
-                return Err(c.bad(
-                    key,
-                    format!(
-                        "the {} contact elements are {dx:e} wide each, {:.1e} wheel diameters; rollbem computes in \
-                         units of the diameter, and this ratio is not a normal double (it would be 0 in the kernels): \
-                         widen the zone or use fewer contact_elements",
-                        m.contact_elements,
-                        dx / (2.0 * w.radius)
-                    ),
-                ));
-            }
-            self.validate_strip(c)?;
-            if m.contact_elements > MAX_HALF_PLANE_ELEMENTS {
-                return Err(c.bad(
-                    "mesh.contact_elements",
-                    format!(
-                        "{} elements: the dense influence blocks and the frictional LCP would not fit in memory; \
-                         rollbem allows at most {MAX_HALF_PLANE_ELEMENTS} on the half-plane",
-                        m.contact_elements
-                    ),
-                ));
-            }
-            return Ok(());
+            return self.validate_half_plane_mesh(c);
         }
         if m.strip_width.is_some() {
             return Err(c.bad(
