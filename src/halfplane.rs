@@ -498,6 +498,41 @@ impl HalfPlane {
         self.material().plane_strain_modulus()
     }
 
+    /// Whether the normal–tangential cross influence of this half-plane (body 1) pressed on `counter` (body 2;
+    /// `None`: a rigid counter-body) cancels, so that the pair's cross blocks `C_xz − C'_xz` and `C_zx − C'_zx`
+    /// vanish identically and need not be built ([`InfluenceBlocks::into_counter_body`]).
+    ///
+    /// From the closed forms in the module docs, with `K = (1+ν)/(πE)`: in plane strain the cross coefficients are
+    /// `(1−2ν)K` times a function of the grid and `D`, plus the datum terms `(1−ν)K·D lnR` and `νK·D lnR` (`lnR` a
+    /// function of `D`); they cancel for every grid exactly when both bodies have the same datum depth and the same
+    /// `(1−2ν)K`, `(1−ν)K` and `νK`, i.e. the same material (a rigid counter-body, `K = 0`, never cancels a datum
+    /// term). On a strip of half-spaces the only cross coefficient is `(1−2ν)K·I3/2`, so they cancel when
+    /// `(1−2ν₁)K₁ = (1−2ν₂)K₂`: Dundurs' β = 0 (a rigid counter-body: ν₁ = 0.5). Factors are compared to 4 ulps
+    /// of the larger: what is then dropped is round-off of the blocks, not physics.
+    pub fn cross_influence_cancels(&self, counter: Option<&HalfPlane>) -> bool {
+        fn factors(h: Option<&HalfPlane>) -> [f64; 3] {
+            match h {
+                Some(h) if h.e.is_finite() => {
+                    let k = (1.0 + h.nu) / (PI * h.e);
+                    [(1.0 - 2.0 * h.nu) * k, (1.0 - h.nu) * k, h.nu * k]
+                }
+                _ => [0.0; 3],
+            }
+        }
+        let same = |a: f64, b: f64| (a - b).abs() <= 4.0 * f64::EPSILON * a.abs().max(b.abs());
+        let (f1, f2) = (factors(Some(self)), factors(counter));
+        if counter.is_some_and(|c| c.strip_width != self.strip_width) {
+            return false;
+        }
+        match self.strip_width {
+            Some(_) => same(f1[0], f2[0]),
+            None => {
+                let datum_same = counter.is_some_and(|c| c.datum_depth == self.datum_depth);
+                datum_same && f1.iter().zip(&f2).all(|(a, b)| same(*a, *b))
+            }
+        }
+    }
+
     fn kernel(&self) -> Kernel {
         let k = (1.0 + self.nu) / (PI * self.e);
         Kernel {
@@ -1457,5 +1492,57 @@ mod tests {
             fast_reuse.0, fast_reuse.1
         );
         println!("N={n}: general path (fresh) min {:.2} / median {:.2} ms", general.0, general.1);
+    }
+    /// The pair's cross blocks (the wheel's plus the counter-body's, [`pair_blocks`]) against
+    /// [`HalfPlane::cross_influence_cancels`]: where it says they cancel, they are round-off of the direct blocks
+    /// (an independent computation: the blocks themselves, on a non-uniform grid); where it says not, they are not.
+    #[test]
+    fn cross_influence_cancels_exactly_when_the_pair_blocks_vanish() {
+        let m = StripMesh { a: vec![-0.31, -0.2, -0.05, 0.07, 0.2], b: vec![-0.2, -0.05, 0.07, 0.2, 0.29], xc: vec![] };
+        let xc: Vec<f64> = m.a.iter().zip(&m.b).map(|(a, b)| 0.5 * (a + b)).collect();
+        let rigid = HalfPlane::new(f64::INFINITY, 0.3, 0.5);
+        let cases: Vec<(&str, HalfPlane, HalfPlane)> = vec![
+            ("same material and datum", HalfPlane::new(1.0, 0.28, 0.5), HalfPlane::new(1.0, 0.28, 0.5)),
+            ("same material, other datum", HalfPlane::new(1.0, 0.28, 0.5), HalfPlane::new(1.0, 0.28, 0.7)),
+            ("other material", HalfPlane::new(1.0, 0.28, 0.5), HalfPlane::new(0.4, 0.35, 0.5)),
+            ("nu = 0.5 on rigid, plane strain", HalfPlane::new(1.0, 0.5, 0.5), rigid),
+            (
+                "strip, same material",
+                HalfPlane::new(1.0, 0.28, 0.5).strip(0.3),
+                HalfPlane::new(1.0, 0.28, 0.9).strip(0.3),
+            ),
+            // Dundurs' β = 0 with another material ([`beta_zero_partner`]).
+            (
+                "strip, beta = 0, other material",
+                HalfPlane::new(1.0, 0.2, 0.5).strip(0.3),
+                beta_zero_partner().strip(0.3),
+            ),
+            (
+                "strip, other material",
+                HalfPlane::new(1.0, 0.28, 0.5).strip(0.3),
+                HalfPlane::new(0.4, 0.35, 0.5).strip(0.3),
+            ),
+            ("strip, nu = 0.5 on rigid", HalfPlane::new(1.0, 0.5, 0.5).strip(0.3), rigid.strip(0.3)),
+            ("strip, nu = 0.3 on rigid", HalfPlane::new(1.0, 0.3, 0.5).strip(0.3), rigid.strip(0.3)),
+        ];
+        let expect = [true, false, false, false, true, true, false, true, false];
+        for ((name, wheel, flat), want) in cases.iter().zip(expect) {
+            let pair = pair_blocks(wheel, flat, &m.a, &m.b, &xc);
+            let direct = pair.czz.iter().map(|v| v.abs()).fold(0.0, f64::max);
+            let cross = pair.cxz.iter().chain(&pair.czx).map(|v| v.abs()).fold(0.0, f64::max);
+            let counter = flat.youngs_modulus().is_finite().then_some(flat);
+            assert_eq!(wheel.cross_influence_cancels(counter), want, "{name}");
+            if want {
+                assert!(cross <= 1e-14 * direct, "{name}: cross {cross:e} vs direct {direct:e}");
+            } else {
+                assert!(cross > 1e-6 * direct, "{name}: cross {cross:e} vs direct {direct:e}");
+            }
+        }
+    }
+
+    /// A material of ν = 0.35 whose (1−2ν)(1+ν)/E equals that of (E = 1, ν = 0.2): Dundurs' β = 0 with another
+    /// material (0.6·1.2 = 0.72 = 0.3·1.35/E → E = 0.5625).
+    fn beta_zero_partner() -> HalfPlane {
+        HalfPlane::new(0.5625, 0.35, 0.5)
     }
 }

@@ -5,22 +5,33 @@
 use crate::checks::{make_checks, ModelReference};
 use crate::diagnostics::{asymmetry, diagnose};
 use crate::error::{Error, Result};
-use crate::formulation::{ContactProblem, Drive, DriveIssue, ProblemKind, SlipOperator};
+use crate::formulation::{ContactLaw, ContactProblem, Drive, DriveIssue, ProblemKind, SlipOperator};
 use crate::hertz::Hertz;
 use crate::post::{evaluate, Evaluation, RollingPost};
-use crate::results::{MeshInfo, ProblemClass, References, Report, SolverRun, Timing};
+use crate::results::{EffectNote, MeshInfo, ProblemClass, References, Report, SolverRun, Timing};
 use crate::scene::{BodyModel, CounterBody, Dof, Rolling, Scene};
 use crate::solvers::{Outcome, Solver, SolverId, Termination, Work, REGISTRY};
 use crate::source::{Blocks, Built};
 use crate::status::{Status, Verdict, VerdictReason};
 use std::time::Instant;
 
+/// The contact law the pipeline simulates: the scene's ([`Scene::law`]), without normal–tangential coupling where the
+/// pair's cross flexibilities vanish identically ([`crate::source::half_plane::cross_blocks_vanish`]: two half-planes
+/// of one material and datum depth, or a strip pair with Dundurs' β = 0). The coupled path would then build two more
+/// n × n blocks and iterate the normal and tangential problems jointly for the same answer; the uncoupled path solves
+/// the normal problem once and the stick–slip problem at fixed pressure. The run's `effect_notes` say so.
+pub fn simulated_law(scene: &Scene) -> ContactLaw {
+    let mut law = scene.law();
+    law.coupling = law.coupling && !crate::source::half_plane::cross_blocks_vanish(scene);
+    law
+}
+
 /// Which flexibility blocks the scene needs: the tangential columns only with friction or rolling, the coupling
-/// blocks only with coupling as well.
+/// blocks only when coupling is simulated as well ([`simulated_law`]).
 pub fn blocks_for(scene: &Scene) -> Blocks {
     if scene.friction() <= 0.0 && scene.rolling().is_none() {
         Blocks::Normal
-    } else if scene.law().coupling {
+    } else if simulated_law(scene).coupling {
         Blocks::All
     } else {
         Blocks::Uncoupled
@@ -52,7 +63,7 @@ pub fn build_problem<'a>(
     drive: Drive,
     slip: SlipOperator,
 ) -> Result<ContactProblem<'a>> {
-    ContactProblem::new(flex, scene.law(), drive, slip)
+    ContactProblem::new(flex, simulated_law(scene), drive, slip)
         .map_err(|DriveIssue::TangentialLoadWithoutFriction(_)| drive_error(scene))
 }
 
@@ -118,28 +129,57 @@ pub fn residual_bounds(scene: &Scene, solver: SolverId) -> (f64, f64) {
     crate::solvers::residual_bounds(solver.build(&scene.solvers().settings).as_ref())
 }
 
-/// The effects a scene simulates.
-pub fn effects(scene: &Scene) -> Vec<String> {
-    let mut effects = vec!["normal".to_string()];
-    if scene.friction() > 0.0 {
-        effects.push("friction".into());
-        if scene.law().coupling {
-            effects.push("coupling".into());
+/// The effects a scene simulates (names, in a fixed order: `normal`, `friction`, `coupling`, `rolling`,
+/// `counter_body`, `history`, `stresses`) and, for each effect beyond the normal problem, whether it is simulated and
+/// why ([`EffectNote`]): what the scene asks for and what the physics needs.
+pub fn effects(scene: &Scene) -> (Vec<String>, Vec<EffectNote>) {
+    let mut notes = Vec::new();
+    let mut note = |effect: &str, asked: bool, simulated: bool, why: String| {
+        notes.push(EffectNote { effect: effect.into(), asked, simulated, why });
+    };
+    let mu = scene.friction();
+    note(
+        "friction",
+        mu > 0.0,
+        mu > 0.0,
+        if mu > 0.0 {
+            format!("Coulomb friction, μ = {mu}")
+        } else {
+            "frictionless (μ = 0): the normal problem only, no tangential flexibility built".into()
+        },
+    );
+    let blocks = blocks_for(scene);
+    let asked = scene.law().coupling;
+    let why = match (blocks, asked) {
+        (Blocks::Normal, _) => "no tangential problem (frictionless, no rolling)".to_string(),
+        (Blocks::All, _) => {
+            format!("normal–tangential cross flexibilities kept (Dundurs β = {:.6})", scene.dundurs_beta())
         }
-    }
-    if scene.rolling().is_some() {
-        effects.push("rolling".into());
-    }
-    if *scene.counter_body() != CounterBody::Rigid {
-        effects.push("counter_body".into());
-    }
-    if !scene.steps().is_empty() {
-        effects.push("history".into());
-    }
-    if scene.stresses().is_some() {
-        effects.push("stresses".into());
-    }
-    effects
+        (_, false) => "`[contact] coupling = false`: the cross flexibilities are dropped".into(),
+        (_, true) => format!(
+            "the pair's cross flexibilities vanish identically ({}): the uncoupled path gives the same answer, \
+             without building them",
+            if scene.strip_width().is_some() {
+                "a strip pair with Dundurs β = 0"
+            } else {
+                "two half-planes of one material and datum depth, Dundurs β = 0"
+            }
+        ),
+    };
+    note("coupling", asked && blocks != Blocks::Normal, blocks == Blocks::All, why);
+    let rolling = scene.rolling().map(|r| format!("{:?} rolling", r.mode()).to_lowercase());
+    note("rolling", rolling.is_some(), rolling.is_some(), rolling.unwrap_or_else(|| "static (no `[rolling]`)".into()));
+    let elastic = *scene.counter_body() != CounterBody::Rigid;
+    let what = if elastic { "an elastic half-plane counter-body" } else { "a rigid flat" };
+    note("counter_body", elastic, elastic, what.into());
+    let steps = scene.steps().len();
+    let what = if steps > 0 { format!("a load path of {steps} steps") } else { "one step from rest".into() };
+    note("history", steps > 0, steps > 0, what);
+    let stress = scene.stresses().map(|s| format!("subsurface stresses on {} points", s.n_points()));
+    note("stresses", stress.is_some(), stress.is_some(), stress.unwrap_or_else(|| "no `[stresses]` table".into()));
+    let mut names = vec!["normal".to_string()];
+    names.extend(notes.iter().filter(|n| n.simulated).map(|n| n.effect.clone()));
+    (names, notes)
 }
 
 /// Evaluate a solved run's subsurface stresses when the scene asks for them (`[stresses]`).
@@ -240,10 +280,12 @@ pub fn assemble_report(
         .map(|s| ModelReference { scene: s, run: counterpart_report.as_ref().and_then(|r| r.runs.first()) });
     let checks = make_checks(scene, element, length, &runs, bounds, hertz.as_ref(), model.as_ref());
     let warnings = crate::checks::run_warnings(scene, element, length, &runs);
+    let (effects, effect_notes) = effects(scene);
     Report {
         schema: crate::results::SCHEMA_VERSION,
         scene: scene.clone(),
-        effects: effects(scene),
+        effects,
+        effect_notes,
         mesh: MeshInfo {
             model: scene.model(),
             elements: built.info.elements,

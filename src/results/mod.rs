@@ -298,6 +298,19 @@ pub struct Check {
     pub note: Option<String>,
 }
 
+/// Whether an effect is simulated, and why ([`Report::effect_notes`]).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct EffectNote {
+    /// The effect: `friction`, `coupling`, `rolling`, `counter_body`, `history` or `stresses`.
+    pub effect: String,
+    /// Whether the scene asks for it (a key it sets, or a default it leaves, e.g. `coupling = true`).
+    pub asked: bool,
+    /// Whether the run simulates it (builds and solves what it needs).
+    pub simulated: bool,
+    /// Why: what the scene says and what the physics needs.
+    pub why: String,
+}
+
 /// The JSON document of one scene run (`DESIGN.md`, "Result files").
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Report {
@@ -307,6 +320,10 @@ pub struct Report {
     pub scene: Scene,
     /// Effects simulated.
     pub effects: Vec<String>,
+    /// Each effect beyond the normal problem: asked for or not, simulated or not, and why (e.g. coupling asked for
+    /// but not simulated because the pair's cross flexibilities vanish). Empty in documents written before it.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub effect_notes: Vec<EffectNote>,
     /// Mesh facts.
     pub mesh: MeshInfo,
     /// Numerical health.

@@ -55,6 +55,9 @@ fn header(out: &mut String, r: &Report) {
         r.mesh.system_size.map(|n| format!(", BEM system {n}×{n}")).unwrap_or_default(),
         r.effects.join(", ")
     );
+    for n in r.effect_notes.iter().filter(|n| n.asked && !n.simulated) {
+        w!(out, "effects: {} not simulated: {}", n.effect, n.why);
+    }
     let d = &r.diagnostics;
     w!(
         out,

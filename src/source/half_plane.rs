@@ -122,7 +122,7 @@ fn per_force(block: &[f64], w: &[f64]) -> Mat<f64> {
 pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
     let t0 = std::time::Instant::now();
     let w = scene.wheel();
-    let Body::HalfPlane { datum_depth, profile, .. } = *scene.body() else {
+    let Body::HalfPlane { profile, .. } = *scene.body() else {
         unreachable!("half_plane::build is called for the half-plane model only")
     };
     let l0 = 2.0 * w.radius;
@@ -138,7 +138,7 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
         })
         .collect();
     let weights = grid.widths();
-    let hp = in_strip(HalfPlane::new(1.0, w.material.poisson_ratio, datum_depth / l0), scene, l0);
+    let hp = wheel_half_plane(scene).expect("a half-plane wheel");
     let all = blocks != Blocks::Normal;
     let coupled = blocks == Blocks::All;
     let tangential = |v: f64| all.then(|| vec![v; n]);
@@ -182,6 +182,29 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
     })
 }
 
+/// The wheel as a half-plane, dimensionless (E = 1, lengths / 2R), when the scene models it so.
+fn wheel_half_plane(scene: &Scene) -> Option<HalfPlane> {
+    let Body::HalfPlane { datum_depth, .. } = *scene.body() else { return None };
+    let l0 = 2.0 * scene.radius();
+    Some(in_strip(HalfPlane::new(1.0, scene.wheel().material.poisson_ratio, datum_depth / l0), scene, l0))
+}
+
+/// The elastic counter-body as a half-plane in the wheel's units (E / E_wheel, lengths / 2R), if there is one.
+fn counter_half_plane(scene: &Scene) -> Option<HalfPlane> {
+    let CounterBody::HalfPlane { material, datum_depth } = *scene.counter_body() else { return None };
+    let (l0, e) = (2.0 * scene.radius(), scene.wheel().material.youngs_modulus);
+    Some(in_strip(HalfPlane::new(material.youngs_modulus / e, material.poisson_ratio, datum_depth / l0), scene, l0))
+}
+
+/// Whether the scene's normal–tangential cross flexibilities K_NT, K_TN vanish identically, whatever the loads:
+/// a half-plane wheel whose cross influence cancels against the counter-body's
+/// ([`HalfPlane::cross_influence_cancels`]: the same material and datum depth in plane strain, Dundurs' β = 0 on a
+/// strip). A BEM wheel never qualifies: a finite wheel keeps a coupling of order a/R (curvature, bending) even at
+/// ν = 0.5. The half-planes are the ones [`build`] and [`add_counter_body`] use.
+pub fn cross_blocks_vanish(scene: &Scene) -> bool {
+    wheel_half_plane(scene).is_some_and(|w| w.cross_influence_cancels(counter_half_plane(scene).as_ref()))
+}
+
 /// A half-plane as the scene poses it: in plane strain, or on the strip of `[mesh] strip_width` (lengths / `l0`).
 fn in_strip(hp: HalfPlane, scene: &Scene, l0: f64) -> HalfPlane {
     match *scene.body() {
@@ -193,10 +216,7 @@ fn in_strip(hp: HalfPlane, scene: &Scene, l0: f64) -> HalfPlane {
 /// Add the elastic counter-body's flexibility (if the scene has one) on the grid of strips carrying the contact
 /// nodes' forces (see the module docs). A rigid counter-body adds nothing.
 pub fn add_counter_body(flex: &mut Flexibility, scene: &Scene, grid: &Grid) {
-    let CounterBody::HalfPlane { material, datum_depth } = *scene.counter_body() else { return };
-    let l0 = flex.scales.length;
-    let hp = HalfPlane::new(material.youngs_modulus / flex.scales.modulus, material.poisson_ratio, datum_depth / l0);
-    let hp = in_strip(hp, scene, l0);
+    let Some(hp) = counter_half_plane(scene) else { return };
     let w = grid.widths();
     // Only the blocks the flexibility holds, one at a time, with the counter-body's signs
     // ([`crate::halfplane::InfluenceBlocks::into_counter_body`]).
