@@ -194,7 +194,7 @@ fn formulation_and_normtang(c: &mut Criterion) {
         g.bench_with_input(BenchmarkId::new("frictional_lcp", n), &prob, |b, p| {
             b.iter(|| black_box(frictional_lcp(p, &signs)))
         });
-        let split = rollbem::solvers::normtang::Split::from_problem(&prob);
+        let split = rollbem::solvers::normtang::Split::from_problem(&prob, None);
         let pgs = rollbem::solvers::normtang::Inner::Pgs(Default::default());
         let qp = rollbem::solvers::normtang::Inner::Qp(Default::default());
         g.bench_with_input(BenchmarkId::new("pgs", n), &split, |b, sp| {

@@ -64,16 +64,22 @@ pub enum Error {
         /// Diagnosis.
         message: String,
     },
+    /// The caller cancelled the work ([`crate::cancel::Cancel`]): Ctrl-C in the CLI, `KeyboardInterrupt` in Python.
+    /// Nothing was produced.
+    #[error("interrupted: the run was cancelled before it finished; nothing was produced")]
+    Cancelled,
 }
 
 impl Error {
     /// Process exit code for this error: 2 for bad input (the user's to fix), 3 for an output that could not be
-    /// written or produced, 4 for numerical failure of the BEM system.
+    /// written or produced, 4 for numerical failure of the BEM system, 130 for a run cancelled by the user (Ctrl-C:
+    /// the shell's 128 + SIGINT).
     pub fn exit_code(&self) -> i32 {
         match self {
             Error::Io { .. } | Error::Parse { .. } | Error::Invalid { .. } | Error::Unsupported { .. } => 2,
             Error::Write { .. } | Error::Output { .. } => 3,
             Error::Numerical { .. } => 4,
+            Error::Cancelled => 130,
         }
     }
 }

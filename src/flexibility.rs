@@ -89,8 +89,8 @@ pub struct Flexibility {
     pub weights: Vec<f64>,
     /// The scales that make it dimensionless.
     pub scales: Scales,
-    /// Factorisations a solver keeps between solves on this flexibility (see [`Memo`]); never part of an answer.
-    pub memo: Memo,
+    /// This flexibility's identity ([`FlexId`]): a solver's state from a solve on it is used only on it.
+    pub id: FlexId,
     /// What is derived from the blocks on first use and kept: FFT products, condition numbers, asymmetry ([`Derived`]).
     pub derived: Derived,
 }
@@ -134,42 +134,36 @@ impl std::fmt::Debug for Derived {
     }
 }
 
-/// Solver state kept with a flexibility between solves on it (a model solved for many drives): factorisations that a
-/// solver may reuse when the matrix is the same, or as a preconditioner for a nearby one. Opaque, one slot, owned by
-/// whichever solver wrote it last; a clone of the flexibility starts empty. Reusing it never changes an answer
-/// beyond round-off: the solver that reads it reuses a factorisation directly only when the data defining its
-/// matrix are equal bit for bit, and a preconditioner only changes how fast an iteration converges.
-#[derive(Default)]
-pub struct Memo(std::sync::Mutex<Option<Box<dyn std::any::Any + Send>>>);
+/// The identity of a flexibility: unique in the process, taken when the flexibility is built (a clone, a coarse grid
+/// or a deserialised copy gets a new one). A solver's state (a warm start, a kept factorisation:
+/// [`crate::solvers::SolverState`]) records the identity of the flexibility it was computed on and is used only on
+/// that one: a state from another model is dropped, never trusted.
+#[derive(Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct FlexId(u64);
 
-impl Memo {
-    /// Take the state out if it is a `T` (the slot is then empty until [`Memo::put`]).
-    pub fn take<T: 'static>(&self) -> Option<T> {
-        let mut slot = self.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-        match slot.take()?.downcast::<T>() {
-            Ok(v) => Some(*v),
-            Err(other) => {
-                *slot = Some(other);
-                None
-            }
-        }
+impl FlexId {
+    /// A new identity, never handed out before in this process.
+    pub fn new() -> FlexId {
+        static NEXT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
+        FlexId(NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed))
     }
 
-    /// Keep a state (replacing what was there).
-    pub fn put<T: Send + 'static>(&self, value: T) {
-        *self.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner) = Some(Box::new(value));
+    /// The number (for messages and layouts).
+    pub fn get(&self) -> u64 {
+        self.0
     }
 }
 
-impl Clone for Memo {
-    fn clone(&self) -> Memo {
-        Memo::default()
+impl Default for FlexId {
+    fn default() -> FlexId {
+        FlexId::new()
     }
 }
 
-impl std::fmt::Debug for Memo {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("Memo")
+/// A clone is another flexibility: it gets a new identity.
+impl Clone for FlexId {
+    fn clone(&self) -> FlexId {
+        FlexId::new()
     }
 }
 
@@ -228,7 +222,7 @@ impl Flexibility {
             g0: pick(&self.g0),
             weights,
             scales: self.scales,
-            memo: Memo::default(),
+            id: FlexId::new(),
             derived: Derived::default(),
         }
     }

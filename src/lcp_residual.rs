@@ -110,14 +110,14 @@ pub fn solve_timed(lcp: &Lcp, solver: &dyn LcpSolver) -> LcpSolve {
 
 /// Solve `lcp` with a registered solver of bare LCPs by name; `Err` says which names solve LCP files.
 pub fn solve_named(lcp: &Lcp, name: &str) -> Result<LcpSolve, String> {
-    let lcp_solvers: Vec<crate::solvers::SolverId> = crate::solvers::SolverId::ALL
+    let lcp_solvers: Vec<Box<dyn crate::solvers::Solver>> = crate::solvers::registry()
         .into_iter()
-        .filter(|id| id.build(&Default::default()).lcp_solver().is_some())
+        .filter_map(|e| e.id.build(&Default::default()))
+        .filter(|s| s.lcp_solver().is_some())
         .collect();
-    let names: Vec<&str> = lcp_solvers.iter().map(|id| id.name()).collect();
+    let names: Vec<&str> = lcp_solvers.iter().map(|s| s.name()).collect();
     let bad = || format!("`{name}` does not solve LCP files (expected one of: {})", names.join(", "));
-    let id = crate::solvers::SolverId::from_name(name).filter(|id| lcp_solvers.contains(id)).ok_or_else(bad)?;
-    let solver = id.build(&Default::default());
+    let solver = lcp_solvers.iter().find(|s| s.name() == name).ok_or_else(bad)?;
     let lcp_solver = solver.lcp_solver().ok_or_else(bad)?;
     Ok(solve_timed(lcp, lcp_solver))
 }

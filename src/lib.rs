@@ -58,7 +58,9 @@
 
 pub mod admissible;
 pub mod bem;
+pub mod cancel;
 pub mod checks;
+pub mod cli;
 pub mod condition;
 pub mod diagnostics;
 pub mod error;

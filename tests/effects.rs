@@ -9,7 +9,7 @@
 use rollbem::formulation::ContactProblem;
 use rollbem::pipeline::{stages, Model};
 use rollbem::scene::Scene;
-use rollbem::solvers::{SolverId, SolverSettings, Termination};
+use rollbem::solvers::Termination;
 use rollbem::source::{self, Blocks};
 use rollbem::status::Status;
 use std::path::Path;
@@ -52,7 +52,7 @@ fn coupled_path_q(scene: &Scene) -> f64 {
     let mut law = scene.law();
     law.coupling = true;
     let problem = ContactProblem::new(flex, law, *scene.drive().unwrap(), stages::slip_operator(scene, flex)).unwrap();
-    let out = SolverId::ActiveSet.build(&SolverSettings::default()).solve(&problem);
+    let out = rollbem::solvers::build("active_set").unwrap().solve(&problem);
     assert_eq!(out.status, Termination::Solved, "{}", out.message);
     let ev = rollbem::post::evaluate(&problem, out.solution.as_ref().unwrap(), stages::rolling_post(scene));
     ev.resultants.tangential

@@ -5,7 +5,7 @@
 
 use rollbem::pipeline::run_scene;
 use rollbem::scene::Scene;
-use rollbem::solvers::{Status, REGISTRY};
+use rollbem::solvers::{registry, Status};
 use std::path::Path;
 use std::process::Command;
 
@@ -38,8 +38,8 @@ fn all_does_not_run_the_reference_engine_and_names_come_from_the_registry() {
     let r = run_scene(&s).unwrap();
     assert!(r.runs.iter().all(|x| x.solver != "lemke_dense"));
     // Every registered solver builds with its defaults and reports its own name.
-    for e in REGISTRY {
-        assert_eq!((e.build)(&Default::default()).name(), e.name);
+    for e in registry() {
+        assert_eq!((e.build)((e.defaults)().as_ref()).name(), e.name());
     }
     // An unknown solver is refused at parse time, naming the key and the registry's names.
     let text = std::fs::read_to_string(&p).unwrap().replace("use = [\"all\"]", "use = [\"lemkee\"]");

@@ -62,18 +62,25 @@ pub fn bounded(scene: &Scene) -> Option<rollbem::Result<Scene>> {
     if elements(scene) > MAX_RUN_ELEMENTS || substeps > MAX_SUBSTEPS {
         return None;
     }
-    let s = scene.solvers().settings.clone();
-    let cap = |v: usize, max: usize| v.min(max) as i64;
+    // Every solver's settings as parsed, defaults filled in; a count as written there (or its cap when absent).
+    let tables = scene.solvers().settings.tables();
+    let value = |solver: &str, key: &str, max: i64| {
+        let mut v = tables.get(solver);
+        for k in key.split('.') {
+            v = v.and_then(|t| t.get(k));
+        }
+        v.and_then(toml::Value::as_integer).unwrap_or(max).min(max)
+    };
     Some(scene.edit(|d| {
         let t = &mut d.solvers;
-        t.set("lemke", "max_pivots_per_unknown", cap(s.lemke.max_pivots_per_unknown, 20));
-        t.set("lemke_dense", "max_pivots_per_unknown", cap(s.lemke_dense.max_pivots_per_unknown, 20));
-        t.set("active_set", "max_iterations", cap(s.active_set.max_iterations, 50));
-        t.set("pgs", "max_sweeps", cap(s.pgs.max_sweeps, 2000));
-        t.set("pgs", "max_outer", cap(s.pgs.max_outer, 50));
-        t.set("normtang_qp", "max_outer", cap(s.normtang_qp.max_outer, 50));
-        t.set("normtang_qp", "qp.max_iter", i64::from(s.normtang_qp.qp.max_iter.min(100)));
-        t.set("clarabel", "max_iter", i64::from(s.clarabel.max_iter.min(100)));
+        t.set("lemke", "max_pivots_per_unknown", value("lemke", "max_pivots_per_unknown", 20));
+        t.set("lemke_dense", "max_pivots_per_unknown", value("lemke_dense", "max_pivots_per_unknown", 20));
+        t.set("active_set", "max_iterations", value("active_set", "max_iterations", 50));
+        t.set("pgs", "max_sweeps", value("pgs", "max_sweeps", 2000));
+        t.set("pgs", "max_outer", value("pgs", "max_outer", 50));
+        t.set("normtang_qp", "max_outer", value("normtang_qp", "max_outer", 50));
+        t.set("normtang_qp", "qp.max_iter", value("normtang_qp", "qp.max_iter", 100));
+        t.set("clarabel", "max_iter", value("clarabel", "max_iter", 100));
         if let Some(st) = d.stresses.as_mut() {
             st.points = st.points.map(|p| p.min(MAX_STRESS_SIDE));
         }

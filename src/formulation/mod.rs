@@ -120,8 +120,6 @@ pub struct ContactProblem<'a> {
     /// The LCP with the default slack signs, built on first use ([`ContactProblem::lcp`]): a solver that works on the
     /// physical unknowns never pays for it (the frictional LCP costs several n³ and (3n)² memory).
     lcp_cache: std::sync::OnceLock<LcpBuild>,
-    /// A nearby solution (the previous step's, on a load path), which an iterative solver may start from.
-    pub warm: Option<Solution>,
 }
 
 /// The LCP of a problem, built once.
@@ -146,9 +144,6 @@ pub struct Solution {
     pub rigid: Vec<f64>,
     /// False when the tangential rigid motion is indeterminate (at the sliding limit).
     pub tangential_known: bool,
-    /// For a solution from Lemke: which LCP unknowns were positive (its basis), the warm start of the next step
-    /// of a load path. `None` from other solvers.
-    pub support: Option<Vec<bool>>,
 }
 
 impl<'a> ContactProblem<'a> {
@@ -187,17 +182,8 @@ impl<'a> ContactProblem<'a> {
             }
         };
         let dofs = drive::rigid_dofs(flex, &drive, &slip);
-        let mut p = ContactProblem {
-            flex,
-            law,
-            drive,
-            kind,
-            dofs,
-            slip,
-            normal: None,
-            lcp_cache: std::sync::OnceLock::new(),
-            warm: None,
-        };
+        let mut p =
+            ContactProblem { flex, law, drive, kind, dofs, slip, normal: None, lcp_cache: std::sync::OnceLock::new() };
         if p.normal_only() {
             p.normal = Some(lcp::normal_problem(&p));
         }
@@ -317,7 +303,7 @@ impl<'a> ContactProblem<'a> {
             _ => None,
         };
         let tangential_known = !matches!(self.kind, ProblemKind::SlidingLimit { .. });
-        Solution { f, h, rigid, tangential_known, support: None }
+        Solution { f, h, rigid, tangential_known }
     }
 
     /// The value of a DOF in a solution (0 when the problem has no DOF of that kind).

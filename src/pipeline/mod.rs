@@ -59,6 +59,7 @@ pub mod path;
 pub mod single;
 pub mod stages;
 
+use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 use crate::formulation::Lcp;
 use crate::results::{Report, Setup};
@@ -86,6 +87,7 @@ impl Model {
     /// # Errors
     /// [`Error::Numerical`] when the BEM system is singular or not finite (a degenerate mesh or support).
     pub fn build(scene: &Scene) -> Result<Model> {
+        scene.runnable()?;
         let blocks = stages::blocks_for(scene);
         let built = source::build(scene, blocks)?;
         Ok(Model { scene: scene.clone(), built, blocks, solves: AtomicUsize::new(0) })
@@ -115,6 +117,7 @@ impl Model {
     /// tangential blocks when it needs them, the boundary response when it asks for a BEM wheel's stresses. `Err`
     /// names the part of the scene that differs.
     pub fn accepts(&self, scene: &Scene) -> Result<()> {
+        scene.runnable()?;
         let m = &self.scene;
         let differs = |field: &str, what: &str| Error::Invalid {
             path: scene.origin().to_path_buf(),
@@ -166,20 +169,33 @@ impl Model {
     }
 
     /// [`Model::solve`] from the solutions of a neighbouring drive, and leave this solve's solutions in `warm` for
-    /// the next one: the creep curve's next creepage, the family's next load. Each solver that can starts from the
-    /// solution its own previous run left (the active-set method from its node states, Lemke from its basis,
-    /// NORM-TANG from its forces); a solver with nothing in `warm` starts cold. The answer does not depend on the
-    /// start (each run is certified by the same residuals); the work does. A load path starts every solver from
-    /// its previous substep anyway and neither reads nor writes `warm`.
+    /// the next one: the creep curve's next creepage, the family's next load. Each solver that can starts from what
+    /// its own previous run left (the active-set method from its node states and factorisations, Lemke from its
+    /// basis, NORM-TANG from its forces); a solver with nothing in `warm` starts cold. The answer does not depend on
+    /// the start (each run is certified by the same residuals); the work does. `warm` belongs to one model: a `Warm`
+    /// written by another model is cleared before the solve, never trusted. A load path starts every solver from its
+    /// previous substep anyway and neither reads nor writes `warm`.
     pub fn solve_warm(&self, scene: &Scene, warm: &mut Warm) -> Result<Report> {
+        self.solve_with(scene, warm, &Cancel::never())
+    }
+
+    /// [`Model::solve_warm`], stopped by `cancel`: a load path before its next substep, every solver at its next
+    /// iteration.
+    ///
+    /// # Errors
+    /// As [`Model::solve`], and [`Error::Cancelled`] when `cancel` was raised before the solve finished (nothing is
+    /// returned of it; `warm` keeps what the runs before the cancellation left).
+    pub fn solve_with(&self, scene: &Scene, warm: &mut Warm, cancel: &Cancel) -> Result<Report> {
         self.accepts(scene)?;
+        cancel.check()?;
+        warm.adopt(self.built.flex.id.get());
         let setup = match self.solves.fetch_add(1, Ordering::Relaxed) {
             0 => Setup::Built,
             _ => Setup::Reused,
         };
         match scene.loading() {
-            Loading::Drive(drive) => single::solve(scene, *drive, &self.built, setup, warm),
-            Loading::Path(steps) => path::solve(scene, steps, &self.built, setup),
+            Loading::Drive(drive) => single::solve(scene, *drive, &self.built, setup, warm, cancel),
+            Loading::Path(steps) => path::solve(scene, steps, &self.built, setup, cancel),
         }
     }
 
@@ -204,31 +220,80 @@ impl Model {
     }
 }
 
-/// The solutions a solve leaves for the next solve on the same model, one per solver (see [`Model::solve_warm`]).
-/// Dimensionless, in the model's unknowns; only a solve on the model that wrote it reads it.
-#[derive(Debug, Clone, Default)]
+/// What a solve leaves for the next solve on the same model, per solver: its certified solution (dimensionless, in
+/// the model's unknowns) and its own state ([`crate::solvers::SolverState`]: Lemke's basis, the active-set method's
+/// factorisations), see [`Model::solve_warm`]. It records the model it belongs to (the identity of the model's
+/// flexibility): a solve on another model clears it first. Each solver's state is handed back only to that solver
+/// on a problem of the same layout; a solution only when it has the problem's shape.
+#[derive(Debug, Default)]
 pub struct Warm {
-    solutions: Vec<(crate::solvers::SolverId, crate::formulation::Solution)>,
+    model: Option<u64>,
+    entries: Vec<WarmEntry>,
+}
+
+/// One solver's part of a [`Warm`].
+#[derive(Debug)]
+struct WarmEntry {
+    solver: crate::solvers::SolverId,
+    solution: Option<crate::formulation::Solution>,
+    state: Option<crate::solvers::SolverState>,
 }
 
 impl Warm {
     /// The solution the solver's last run left, if any.
     pub fn get(&self, solver: crate::solvers::SolverId) -> Option<&crate::formulation::Solution> {
-        self.solutions.iter().find(|(s, _)| *s == solver).map(|(_, sol)| sol)
+        self.entries.iter().find(|e| e.solver == solver).and_then(|e| e.solution.as_ref())
     }
 
-    /// Keep a solver's solution (replacing its previous one); a run without a solution clears it, so that a failed
-    /// case does not start the next from a stale state.
-    pub fn set(&mut self, solver: crate::solvers::SolverId, solution: Option<crate::formulation::Solution>) {
-        self.solutions.retain(|(s, _)| *s != solver);
-        if let Some(sol) = solution {
-            self.solutions.push((solver, sol));
+    /// Whether it holds anything for `solver` (a solution or a state).
+    pub fn holds(&self, solver: crate::solvers::SolverId) -> bool {
+        self.entries.iter().any(|e| e.solver == solver && (e.solution.is_some() || e.state.is_some()))
+    }
+
+    /// The identity of the model it belongs to (`None` before its first solve).
+    pub fn model(&self) -> Option<u64> {
+        self.model
+    }
+
+    /// Belong to the model whose flexibility has identity `model`: a `Warm` of another model is cleared (not
+    /// trusted). Returns whether it was cleared.
+    pub fn adopt(&mut self, model: u64) -> bool {
+        let other = self.model.is_some_and(|m| m != model);
+        if other {
+            self.entries.clear();
+        }
+        self.model = Some(model);
+        other
+    }
+
+    /// The start of `solver`'s next run: its solution (cloned) and its state (taken: a run consumes it), with the
+    /// caller's cancellation token.
+    pub fn start(&mut self, solver: crate::solvers::SolverId, cancel: &Cancel) -> crate::solvers::Start {
+        let entry = self.entries.iter_mut().find(|e| e.solver == solver);
+        crate::solvers::Start {
+            solution: entry.as_ref().and_then(|e| e.solution.clone()),
+            state: entry.and_then(|e| e.state.take()),
+            cancel: cancel.clone(),
         }
     }
 
-    /// Forget every solution.
+    /// Keep a solver's run (replacing its previous one): its solution when certified, and its state; a run without
+    /// a certified solution clears the solution, so that a failed case does not start the next from a stale one.
+    pub fn set(
+        &mut self,
+        solver: crate::solvers::SolverId,
+        solution: Option<crate::formulation::Solution>,
+        state: Option<crate::solvers::SolverState>,
+    ) {
+        self.entries.retain(|e| e.solver != solver);
+        if solution.is_some() || state.is_some() {
+            self.entries.push(WarmEntry { solver, solution, state });
+        }
+    }
+
+    /// Forget every solution and state.
     pub fn clear(&mut self) {
-        self.solutions.clear();
+        self.entries.clear();
     }
 }
 

@@ -12,7 +12,11 @@
 //! **Memory.** Each solver walks the whole path with its own state: the total tangential displacement u_T of the
 //! contact nodes (rigid motion included) at the previous step's end. A step's slip is s = u_T − u_T,prev; stick ⇔
 //! s = 0 and |h| ≤ μf, slip ⇔ h = −μf sgn(s). Separation and re-contact are allowed (the gap condition has no
-//! memory). An iterative solver starts from the previous step's solution ([`crate::formulation::ContactProblem::warm`]).
+//! memory). Each solver starts a substep from the previous substep's solution and its own state
+//! ([`crate::solvers::Start`]: Lemke from its basis, the active-set method from its sets and factorisations).
+//!
+//! **Cancellation.** The walk checks the caller's token ([`crate::cancel::Cancel`]) before every substep and every
+//! solver checks it at its iterations: a cancelled path returns [`crate::Error::Cancelled`] at once.
 //!
 //! **Rolling** (`roll = d` > 0, `[rolling] mode = "transient"`): during the step the contact moves over the body by
 //! d; node i then holds the material that was at x_i + dir·d at the previous step's end (linear interpolation
@@ -34,7 +38,7 @@ use crate::formulation::{ContactProblem, Dof, Drive, SlipOperator, Solution};
 use crate::post::RollingPost;
 use crate::results::{Report, Setup, SolverRun, StepEnergy, StepResult, Timing};
 use crate::scene::{PathStep, Rolling, Scene};
-use crate::solvers::{Solver, Status};
+use crate::solvers::{Solver, Start, Status};
 use crate::source::Built;
 use std::time::Instant;
 
@@ -124,7 +128,13 @@ fn offset(x: &[f64], u_prev: &[f64], roll: f64, creepage: f64, direction: i32) -
 
 /// Walk a load path with every requested solver, on a built flexibility; `setup` says whether the flexibility was
 /// built for this walk.
-pub(super) fn solve(scene: &Scene, steps: &[PathStep], built: &Built, setup: Setup) -> Result<Report> {
+pub(super) fn solve(
+    scene: &Scene,
+    steps: &[PathStep],
+    built: &Built,
+    setup: Setup,
+    cancel: &crate::cancel::Cancel,
+) -> Result<Report> {
     let flex = &built.flex;
     let n = flex.n();
     let l0 = flex.scales.length;
@@ -138,9 +148,7 @@ pub(super) fn solve(scene: &Scene, steps: &[PathStep], built: &Built, setup: Set
     // from the step's start `start`.
     let problem_at = |sub: &Substep, st: &PathState, start: &PathState| -> Result<ContactProblem<'_>> {
         let slip = SlipOperator::increment(offset(&flex.x, &st.u_t, sub.roll / l0, creepage, direction));
-        let mut p = build_problem(scene, flex, drive_at(sub, start), slip)?;
-        p.warm = st.solution.clone();
-        Ok(p)
+        build_problem(scene, flex, drive_at(sub, start), slip)
     };
     let first = problem_at(&subs[0], &rest, &rest)?;
     let solvers = solvers_for(scene, &first)?;
@@ -162,7 +170,7 @@ pub(super) fn solve(scene: &Scene, steps: &[PathStep], built: &Built, setup: Set
     let mut bounds = Vec::new();
     let stresses = crate::stresses::StressEvaluator::new(scene, built)?;
     for solver in &solvers {
-        let ctx = PathContext { source_time: &built.timing, setup, scene, stresses: stresses.as_ref() };
+        let ctx = PathContext { source_time: &built.timing, setup, scene, stresses: stresses.as_ref(), cancel };
         let (last, bound) = walk(solver.as_ref(), &subs, &rest, &problem_at, &ctx, &mut steps)?;
         finals.push(last);
         bounds.push(bound);
@@ -178,6 +186,8 @@ struct PathContext<'s> {
     scene: &'s Scene,
     /// The stress evaluation, when the scene asks for it (at the end of each step).
     stresses: Option<&'s crate::stresses::StressEvaluator<'s>>,
+    /// The caller's cancellation token.
+    cancel: &'s crate::cancel::Cancel,
 }
 
 /// One solver along the whole path; returns its last run and its residual check bound.
@@ -195,7 +205,10 @@ fn walk<'a>(
     // The state at the start of the current step: its substeps interpolate from there.
     let mut step_start = rest.clone();
     let mut last = None;
+    // The solver's own state after the last substep (its warm start for the next one).
+    let mut own = None;
     for (k, sub) in subs.iter().enumerate() {
+        ctx.cancel.check()?;
         if sub.substep == 1 {
             step_start = state.clone();
         }
@@ -203,7 +216,10 @@ fn walk<'a>(
         let problem = problem_at(sub, &state, &step_start)?;
         let formulation = tf.elapsed().as_secs_f64();
         steps[k].drive = problem.drive;
-        let (outcome, solve) = solve_timed(solver, &problem);
+        let start = Start { solution: state.solution.clone(), state: own.take(), cancel: ctx.cancel.clone() };
+        let (mut outcome, solve) = solve_timed(solver, &problem, start);
+        ctx.cancel.check()?;
+        own = outcome.state.take();
         let formulation = formulation + lcp_time(solver, &problem);
         // The flexibility's setup is counted once, on the path's first substep.
         let timing = if k == 0 {

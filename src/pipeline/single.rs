@@ -24,10 +24,11 @@ pub(super) fn solve(
     built: &Built,
     setup: Setup,
     warm: &mut super::Warm,
+    cancel: &crate::cancel::Cancel,
 ) -> Result<Report> {
     let flex = &built.flex;
     let tf = Instant::now();
-    let mut problem = build_problem(scene, flex, drive, slip_operator(scene, flex))?;
+    let problem = build_problem(scene, flex, drive, slip_operator(scene, flex))?;
     let formulation_time = tf.elapsed().as_secs_f64();
     // The flexibility's health figures (computed once per flexibility, with n × n transients) before any solver:
     // on a clean heap they do not add to the peak memory (see `diagnostics::conditions`).
@@ -38,10 +39,11 @@ pub(super) fn solve(
     let mut runs = Vec::new();
     let mut bounds = Vec::new();
     for solver in &solvers {
-        problem.warm = warm.get(solver.id()).cloned();
-        let (outcome, solve_time) = solve_timed(solver.as_ref(), &problem);
+        let start = warm.start(solver.id(), cancel);
+        let (mut outcome, solve_time) = solve_timed(solver.as_ref(), &problem, start);
+        cancel.check()?;
         let certified_start = outcome.status == crate::solvers::Termination::Solved;
-        warm.set(solver.id(), outcome.solution.clone().filter(|_| certified_start));
+        warm.set(solver.id(), outcome.solution.clone().filter(|_| certified_start), outcome.state.take());
         let formulation = formulation_time + lcp_time(solver.as_ref(), &problem);
         let (check_bound, refuse) = crate::solvers::residual_bounds(solver.as_ref());
         let ctx = RunContext {
@@ -66,9 +68,15 @@ pub(super) fn solve(
 pub(super) fn lcp(scene: &Scene, drive: Drive, built: &Built) -> Result<Lcp> {
     let problem = build_problem(scene, &built.flex, drive, slip_operator(scene, &built.flex))?;
     let lemke = crate::solvers::lemke::Lemke {
-        id: crate::solvers::SolverId::Lemke,
-        settings: scene.solvers().settings.lemke,
-        engine: crate::solvers::lemke::solve,
+        id: crate::solvers::lemke::ID,
+        settings: scene
+            .solvers()
+            .settings
+            .get(crate::solvers::lemke::ID)
+            .and_then(crate::solvers::settings_of::<crate::solvers::lemke::LemkeSettings>)
+            .copied()
+            .unwrap_or_default(),
+        engine: crate::solvers::lemke::solve_cancellable,
     };
     match (&problem.kind, lemke.solved_lcp(&problem)) {
         (_, Some(lcp)) => Ok(lcp),

@@ -10,7 +10,7 @@ use crate::hertz::Hertz;
 use crate::post::{evaluate, Evaluation, RollingPost};
 use crate::results::{EffectNote, MeshInfo, ProblemClass, References, Report, SolverRun, Timing};
 use crate::scene::{BodyModel, CounterBody, Dof, Rolling, Scene};
-use crate::solvers::{Outcome, Solver, SolverId, Termination, Work, REGISTRY};
+use crate::solvers::{Outcome, Solver, SolverId, Start, Termination, Work};
 use crate::source::{Blocks, Built};
 use crate::status::{Status, Verdict, VerdictReason};
 use std::time::Instant;
@@ -97,18 +97,18 @@ pub fn drive_error(scene: &Scene) -> Error {
 pub fn solvers_for(scene: &Scene, problem: &ContactProblem) -> Result<Vec<Box<dyn Solver>>> {
     let set = scene.solvers();
     let mut out = Vec::new();
-    for e in REGISTRY {
+    for e in crate::solvers::registry() {
         let named = set.names(e.id);
         if !(named || set.all && e.in_all) {
             continue;
         }
-        let solver = e.id.build(&set.settings);
+        let Some(solver) = e.id.build(&set.settings) else { continue };
         match solver.applies(problem) {
             Ok(()) => out.push(solver),
             Err(why) if named => {
                 return Err(Error::Unsupported {
                     path: scene.origin().to_path_buf(),
-                    message: format!("solvers.use: {} does not apply to this scene: {why}", e.name),
+                    message: format!("solvers.use: {} does not apply to this scene: {why}", e.name()),
                 })
             }
             Err(_) => {}
@@ -126,7 +126,10 @@ pub fn solvers_for(scene: &Scene, problem: &ContactProblem) -> Result<Vec<Box<dy
 /// (check bound, refusal bound) of a scene's solver, with the scene's settings
 /// ([`crate::solvers::residual_bounds`]).
 pub fn residual_bounds(scene: &Scene, solver: SolverId) -> (f64, f64) {
-    crate::solvers::residual_bounds(solver.build(&scene.solvers().settings).as_ref())
+    match solver.build(&scene.solvers().settings) {
+        Some(s) => crate::solvers::residual_bounds(s.as_ref()),
+        None => (crate::tolerances::RESIDUAL_DIRECT, crate::tolerances::RESIDUAL_REFUSE),
+    }
 }
 
 /// The effects a scene simulates (names, in a fixed order: `normal`, `friction`, `coupling`, `rolling`,
@@ -200,9 +203,9 @@ pub fn lcp_time(solver: &dyn Solver, problem: &ContactProblem) -> f64 {
     }
 }
 
-/// Solve a problem with a solver, timed (the solve only: the LCP a solver uses is built before the clock starts);
-/// a problem beyond gross sliding is `infeasible` without a solve.
-pub fn solve_timed(solver: &dyn Solver, problem: &ContactProblem) -> (Outcome, f64) {
+/// Solve a problem with a solver from a start, timed (the solve only: the LCP a solver uses is built before the clock
+/// starts); a problem beyond gross sliding is `infeasible` without a solve.
+pub fn solve_timed(solver: &dyn Solver, problem: &ContactProblem, start: Start) -> (Outcome, f64) {
     if solver.uses_lcp() && !matches!(problem.kind, ProblemKind::GrossSliding { .. }) {
         let _stage = crate::progress::stage(|| format!("building the LCP ({} unknowns)", problem.lcp_size()));
         problem.lcp();
@@ -210,14 +213,10 @@ pub fn solve_timed(solver: &dyn Solver, problem: &ContactProblem) -> (Outcome, f
     let _stage = crate::progress::stage(|| format!("{}: solving ({} unknowns)", solver.name(), problem.lcp_size()));
     let t0 = Instant::now();
     let outcome = match &problem.kind {
-        ProblemKind::GrossSliding { message } => Outcome {
-            solution: None,
-            status: Termination::Infeasible,
-            message: message.clone(),
-            work: Work::default(),
-            polish_change: None,
-        },
-        _ => solver.solve(problem),
+        ProblemKind::GrossSliding { message } => {
+            Outcome::failed(Termination::Infeasible, message.clone(), Work::default())
+        }
+        _ => solver.solve_from(problem, start),
     };
     (outcome, t0.elapsed().as_secs_f64())
 }
@@ -329,7 +328,7 @@ pub struct RunContext<'a, 'p> {
 /// `status`, with a [`Verdict`] when it is not simply the termination.
 pub fn evaluate_outcome(ctx: &RunContext, outcome: Outcome) -> (SolverRun, Option<Evaluation>) {
     let RunContext { scene, problem, solver, .. } = *ctx;
-    let Outcome { solution, status: termination, message, work, polish_change } = outcome;
+    let Outcome { solution, status: termination, message, work, figures, state: _ } = outcome;
     let ev = match (&solution, termination) {
         (Some(sol), Termination::Solved) => Some(evaluate(problem, sol, ctx.rolling)),
         _ => None,
@@ -394,7 +393,7 @@ pub fn evaluate_outcome(ctx: &RunContext, outcome: Outcome) -> (SolverRun, Optio
         contact: ev.as_ref().map(|e| e.contact.clone()),
         rolling: ev.as_ref().and_then(|e| e.rolling),
         nodes: ev.as_ref().map(|e| e.nodes.clone()).unwrap_or(flagged_nodes),
-        polish_change,
+        figures,
         history: None,
         stresses: None,
         counter_body_stresses: None,

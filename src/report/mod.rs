@@ -301,7 +301,7 @@ fn reference_scenes(opts: &ReportOptions, scenes: Vec<(PathBuf, Scene)>) -> Resu
                 run.residuals.map(|x| format!("{:e}", x.max())).unwrap_or_default(),
                 d.map(|v| format!("{v:e}")).unwrap_or_default(),
                 mism.map(|m| m.to_string()).unwrap_or_default(),
-                run.polish_change.map(|v| format!("{v:e}")).unwrap_or_default(),
+                run.figures.get("polish_change").map(|v| format!("{v:e}")).unwrap_or_default(),
                 r.diagnostics.flexibility_asymmetry,
                 run.timing_s.solve,
                 run.timing_s.total
@@ -318,7 +318,7 @@ fn reference_scenes(opts: &ReportOptions, scenes: Vec<(PathBuf, Scene)>) -> Resu
                 fmt_e(run.residuals.map(|x| x.max())),
                 fmt_e(d),
                 mism.map(|m| m.to_string()).unwrap_or_else(|| "–".into()),
-                fmt_e(run.polish_change),
+                fmt_e(run.figures.get("polish_change")),
                 run.timing_s.solve
             )
             .unwrap();

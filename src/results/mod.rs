@@ -15,7 +15,11 @@ pub mod render;
 
 /// The version of the result document's layout ([`Report::schema`]): raised when a key changes meaning or is
 /// removed (keys are only ever added within a version).
-pub const SCHEMA_VERSION: u32 = 2;
+pub const SCHEMA_VERSION: u32 = 3;
+
+/// The oldest schema [`Report::read`] still reads (schema 2 had clarabel's `polish_change` as a key of each run, which
+/// schema 3 keeps among the run's `figures`; it is moved there when read).
+pub const OLDEST_READABLE_SCHEMA: u32 = 2;
 
 /// Whether a run's flexibility was built for it or reused from an earlier solve on the same model
 /// ([`crate::pipeline::Model`]).
@@ -135,10 +139,11 @@ pub struct SolverRun {
     /// discrete answer that was judged, kept as the evidence for the verdict; such a run has no resultants, contact
     /// summary or residuals).
     pub nodes: Vec<NodeResult>,
-    /// For clarabel: max |p − p_unpolished| / p_max, the effect of solving the symmetrised QP before the
-    /// active-set polish with the nonsymmetric flexibility.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub polish_change: Option<f64>,
+    /// The solver's own figures of the run, by name ([`crate::solvers::Figures`]); clarabel's `polish_change` is
+    /// max |p − p_unpolished| / p_max, the effect of solving the symmetrised QP before the active-set polish with the
+    /// nonsymmetric flexibility. Empty for most solvers.
+    #[serde(default, skip_serializing_if = "crate::solvers::Figures::is_empty")]
+    pub figures: crate::solvers::Figures,
     /// A step of a load path: the frictional energy dissipated in the step and since the start.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub history: Option<StepEnergy>,
@@ -316,7 +321,10 @@ pub struct EffectNote {
 pub struct Report {
     /// The layout version of this document ([`SCHEMA_VERSION`]).
     pub schema: u32,
-    /// The scene as parsed, with defaults filled in.
+    /// The scene as parsed, with defaults filled in. Read back ([`Report::read`]) it is the scene as recorded
+    /// ([`Scene::from_record`]): keys this version does not know are dropped, and a scene this version's checks
+    /// refuse (or one with dropped keys) is kept as written and marked not runnable ([`Scene::runnable`]).
+    #[serde(deserialize_with = "recorded_scene")]
     pub scene: Scene,
     /// Effects simulated.
     pub effects: Vec<String>,
@@ -344,9 +352,10 @@ pub struct Report {
 }
 
 impl Report {
-    /// Read a result document (`rollbem run --json`): JSON of this layout ([`SCHEMA_VERSION`]), its scene valid. A
-    /// document of another schema (or of none: written before the schema was recorded) is refused with a message
-    /// saying so, never read wrongly.
+    /// Read a result document (`rollbem run --json`) of this layout ([`SCHEMA_VERSION`]) or an older one this version
+    /// still reads ([`OLDEST_READABLE_SCHEMA`]). Keys it does not know are ignored (a schema only ever adds keys); the
+    /// embedded scene is read as recorded ([`Scene::from_record`]). A document of a newer schema, or of none (written
+    /// before the schema was recorded), is refused with a message saying so, never read wrongly.
     pub fn read(path: &std::path::Path) -> crate::Result<Report> {
         let text =
             std::fs::read_to_string(path).map_err(|source| crate::Error::Io { path: path.to_path_buf(), source })?;
@@ -356,21 +365,26 @@ impl Report {
     /// Parse a result document's text (`path` names it in messages); see [`Report::read`].
     pub fn from_json(text: &str, path: &std::path::Path) -> crate::Result<Report> {
         let bad = |message: String| crate::Error::Parse { path: path.to_path_buf(), message };
-        let value: serde_json::Value = serde_json::from_str(text).map_err(|e| bad(format!("not JSON: {e}")))?;
+        let mut value: serde_json::Value = serde_json::from_str(text).map_err(|e| bad(format!("not JSON: {e}")))?;
         if value.get("runs").is_none() {
             return Err(bad("not a rollbem result document: no `runs` array".into()));
         }
         match value.get("schema").and_then(serde_json::Value::as_u64) {
-            Some(v) if v == u64::from(SCHEMA_VERSION) => {}
+            Some(v) if (u64::from(OLDEST_READABLE_SCHEMA)..=u64::from(SCHEMA_VERSION)).contains(&v) => {
+                if v < 3 {
+                    migrate_polish_change(&mut value);
+                }
+            }
             Some(v) => {
                 return Err(bad(format!(
-                    "result document of schema {v}; this rollbem reads schema {SCHEMA_VERSION}: rerun the scene"
+                    "result document of schema {v}; this rollbem reads schemas {OLDEST_READABLE_SCHEMA} to \
+                     {SCHEMA_VERSION}: read it with the rollbem that wrote it, or rerun the scene"
                 )))
             }
             None => {
                 return Err(bad(format!(
                     "result document without a schema version (written by an older rollbem); this rollbem reads \
-                     schema {SCHEMA_VERSION}: rerun the scene"
+                     schemas {OLDEST_READABLE_SCHEMA} to {SCHEMA_VERSION}: rerun the scene"
                 )))
             }
         }
@@ -408,4 +422,79 @@ impl Report {
         }
         out
     }
+}
+
+/// Schema 2 → 3: each run's `polish_change` key becomes its `figures.polish_change`.
+fn migrate_polish_change(value: &mut serde_json::Value) {
+    let mut move_it = |run: &mut serde_json::Value| {
+        let Some(obj) = run.as_object_mut() else { return };
+        if let Some(v) = obj.remove("polish_change") {
+            let figures = obj.entry("figures").or_insert_with(|| serde_json::json!({}));
+            if let Some(f) = figures.as_object_mut() {
+                f.insert("polish_change".into(), v);
+            }
+        }
+    };
+    if let Some(runs) = value.get_mut("runs").and_then(|r| r.as_array_mut()) {
+        runs.iter_mut().for_each(&mut move_it);
+    }
+    if let Some(steps) = value.get_mut("steps").and_then(|s| s.as_array_mut()) {
+        for step in steps {
+            if let Some(runs) = step.get_mut("runs").and_then(|r| r.as_array_mut()) {
+                runs.iter_mut().for_each(&mut move_it);
+            }
+        }
+    }
+}
+
+/// The scene of a result document, as recorded ([`Scene::from_record`]): keys this version does not know are dropped
+/// (their dotted paths then mark the scene not runnable, since what they asked for is not simulated here).
+fn recorded_scene<'de, D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Scene, D::Error> {
+    use serde::de::Error as _;
+    let mut value = serde_json::Value::deserialize(d)?;
+    let mut dropped = Vec::new();
+    let document = loop {
+        match serde_path_to_error::deserialize::<_, crate::scene::document::SceneDocument>(value.clone()) {
+            Ok(doc) => break doc,
+            Err(e) => {
+                let message = e.inner().to_string();
+                let Some(field) = message.strip_prefix("unknown field `").and_then(|m| m.split('`').next()) else {
+                    return Err(D::Error::custom(format!("scene: {}: {message}", e.path())));
+                };
+                let mut segments: Vec<String> = e.path().iter().map(|s| s.to_string()).collect();
+                // The path may end with the unknown key itself.
+                if segments.last().is_some_and(|l| l == field) {
+                    segments.pop();
+                }
+                if dropped.len() >= 100 || !remove_key(&mut value, &segments, field) {
+                    return Err(D::Error::custom(format!("scene: {}: {message}", e.path())));
+                }
+                let mut at = segments.clone();
+                at.push(field.to_string());
+                dropped.push(at.join(".").replace(".[", "["));
+            }
+        }
+    };
+    let mut scene = Scene::from_record(document, &Scene::code_path()).map_err(D::Error::custom)?;
+    if !dropped.is_empty() {
+        scene.mark_recorded(format!("keys this version does not know were ignored: {}", dropped.join(", ")));
+    }
+    Ok(scene)
+}
+
+/// Remove `field` from the object at `path` (serde_path_to_error's segments: keys, and `[i]` for sequence indices)
+/// inside `value`; whether it was there.
+fn remove_key(value: &mut serde_json::Value, path: &[String], field: &str) -> bool {
+    let mut at = value;
+    for seg in path {
+        let next = match seg.strip_prefix('[').and_then(|s| s.strip_suffix(']')).and_then(|i| i.parse::<usize>().ok()) {
+            Some(i) => at.get_mut(i),
+            None => at.get_mut(seg.as_str()),
+        };
+        match next {
+            Some(v) => at = v,
+            None => return false,
+        }
+    }
+    at.as_object_mut().is_some_and(|o| o.remove(field).is_some())
 }

@@ -360,9 +360,9 @@ impl Serialize for SolversTable {
         let mut m = s.serialize_map(Some(1 + self.settings.len()))?;
         m.serialize_entry("use", &self.use_)?;
         // Registry order first (as reported), then anything else.
-        for e in crate::solvers::REGISTRY {
-            if let Some(v) = self.settings.get(e.name) {
-                m.serialize_entry(e.name, v)?;
+        for e in crate::solvers::registry() {
+            if let Some(v) = self.settings.get(e.name()) {
+                m.serialize_entry(e.name(), v)?;
             }
         }
         for (k, v) in self.settings.iter().filter(|(k, _)| crate::solvers::entry(k).is_none()) {

@@ -61,6 +61,18 @@ pub const MAX_NODES: usize = 8000;
 /// integrator's own consistency assertion, found by the `scene` fuzz target). Tested in `tests/mesh_precision.rs`.
 pub const MIN_CONTACT_ELEMENT_ANGLE: f64 = 1e-10;
 
+/// Most substeps a load path may have in all (`[[steps]]` substeps summed): each is a solve per solver and a row of
+/// the result. The same order as a sweep's guard (100 000 cases without `--allow-large`), ten times over: a substep
+/// is cheaper than a case (no model to build).
+pub const MAX_PATH_SUBSTEPS: usize = 1_000_000;
+
+/// The largest memory a load path's result may need (bytes): it keeps every substep's run with its node values.
+pub const MAX_PATH_RESULT_BYTES: u64 = 4 << 30;
+
+/// Memory per contact node of one substep's run in a load path's result (bytes): a node's eleven values and state
+/// (`results::NodeResult`, 96 bytes) with the run's vector overhead, rounded up.
+pub const PATH_BYTES_PER_NODE: usize = 128;
+
 /// Largest number of contact elements of a half-plane scene: the four dense influence blocks (4n² doubles) and the
 /// frictional LCP ((3n)² doubles) then need about 3.5 GiB.
 pub const MAX_HALF_PLANE_ELEMENTS: usize = 6000;
@@ -81,6 +93,10 @@ pub struct Scene {
     loading: Loading,
     rolling: Option<Rolling>,
     solvers: SolverSet,
+    /// For a scene read back from a result document that this version's checks refuse
+    /// ([`Scene::from_record`]): why. Such a scene describes what was run; it cannot be run again
+    /// ([`Scene::runnable`]).
+    recorded: Option<String>,
 }
 
 /// The wheel's size and material.
@@ -416,7 +432,7 @@ pub struct Expect {
     #[serde(default = "default_status")]
     pub status: Status,
     /// Per-solver expected statuses overriding `status` (e.g. `{ pgs = "not_converged" }` where the NORM-TANG
-    /// split is known not to converge); keys are registry names ([`crate::solvers::REGISTRY`]).
+    /// split is known not to converge); keys are registry names ([`crate::solvers::registry`]).
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub solver_status: BTreeMap<SolverId, Status>,
     /// Relative tolerance on Hertz's a and p0 (default: 1.5 % constant, 1 % quadratic elements).
@@ -649,6 +665,49 @@ impl Scene {
     pub fn relabel(mut self, origin: impl Into<PathBuf>) -> Scene {
         self.origin = origin.into();
         self
+    }
+
+    /// A scene as recorded in a result document: validated as [`Scene::from_document`] does when it passes this
+    /// version's checks; otherwise (a document written before a check was tightened) built without them, keeping
+    /// what the document says was run, and marked: [`Scene::runnable`] then says why it cannot be run again. Keys
+    /// this version does not know are the caller's to drop ([`crate::results::Report::read`] does).
+    ///
+    /// # Errors
+    /// When even the typed parts cannot be built (a BEM wheel without a support, unknown solver settings).
+    pub fn from_record(document: SceneDocument, path: &Path) -> Result<Scene> {
+        match validate::validate(document.clone(), path) {
+            Ok(scene) => Ok(scene),
+            Err(refusal) => {
+                let mut scene = validate::build(document, path)?;
+                scene.recorded = Some(refusal.to_string());
+                Ok(scene)
+            }
+        }
+    }
+
+    /// Mark a scene read back from a result document as not runnable, saying why (keys it had that this version
+    /// ignores); the reasons accumulate.
+    pub(crate) fn mark_recorded(&mut self, why: String) {
+        self.recorded = Some(match self.recorded.take() {
+            Some(before) => format!("{before}; {why}"),
+            None => why,
+        });
+    }
+
+    /// `Err` naming why, for a scene read back from a result document that this version's checks refuse
+    /// ([`Scene::from_record`]); `Ok` for every scene made by validation.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] with the check that refused it.
+    pub fn runnable(&self) -> Result<()> {
+        match &self.recorded {
+            None => Ok(()),
+            Some(why) => Err(Error::Invalid {
+                path: self.origin.clone(),
+                field: "scene".into(),
+                message: format!("recorded in a result document, refused by this version's checks: {why}"),
+            }),
+        }
     }
 
     /// Where the scene came from: its file, or `<scene>` for one built in code.

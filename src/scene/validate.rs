@@ -5,15 +5,21 @@ use super::document::{CounterBodyTable, DriveTable, MeshTable, SceneDocument};
 use super::{
     safe_name, Body, BodyModel, ContactZone, CounterBody, ElementKind, Loading, Material, PathStep, Profile, Rolling,
     RollingMode, Scene, StressQuantity, Support, Wheel, ZoneExtent, MAX_HALF_PLANE_ELEMENTS, MAX_NODES,
-    MAX_STRESS_POINTS, MIN_CONTACT_ELEMENT_ANGLE,
+    MAX_PATH_RESULT_BYTES, MAX_PATH_SUBSTEPS, MAX_STRESS_POINTS, MIN_CONTACT_ELEMENT_ANGLE, PATH_BYTES_PER_NODE,
 };
 use crate::error::{Error, Result};
 use crate::formulation::{ContactLaw, Dof};
 use std::path::Path;
 
 /// Validate a document and build the typed scene.
-pub(super) fn validate(mut document: SceneDocument, path: &Path) -> Result<Scene> {
+pub(super) fn validate(document: SceneDocument, path: &Path) -> Result<Scene> {
     document.validate(path)?;
+    build(document, path)
+}
+
+/// Build the typed scene of a document without its range checks (a scene recorded in a result document by a version
+/// whose checks it passed: [`Scene::from_record`]); only what the typed parts need is required.
+pub(super) fn build(mut document: SceneDocument, path: &Path) -> Result<Scene> {
     let solvers = document.solvers.typed().map_err(|e| e.into_error(path))?;
     // The scene as parsed: every solver's settings with the defaults filled in.
     document.solvers.settings = solvers.settings.tables();
@@ -32,7 +38,20 @@ pub(super) fn validate(mut document: SceneDocument, path: &Path) -> Result<Scene
             profile: w.profile.unwrap_or(Profile::Circle),
             strip_width: d.mesh.strip_width,
         },
-        _ => unreachable!("validate() requires a BEM wheel's support and other_elements"),
+        (BodyModel::Bem, None, _) => {
+            return Err(Error::Invalid {
+                path: path.to_path_buf(),
+                field: "wheel.support".into(),
+                message: "a BEM wheel needs a support".into(),
+            })
+        }
+        (BodyModel::Bem, _, None) => {
+            return Err(Error::Invalid {
+                path: path.to_path_buf(),
+                field: "mesh.other_elements".into(),
+                message: "a BEM wheel needs other_elements".into(),
+            })
+        }
     };
     let counter_body = match d.counter_body {
         CounterBodyTable::Rigid => CounterBody::Rigid,
@@ -75,6 +94,7 @@ pub(super) fn validate(mut document: SceneDocument, path: &Path) -> Result<Scene
         rolling,
         solvers,
         document,
+        recorded: None,
     })
 }
 
@@ -600,6 +620,7 @@ impl SceneDocument {
             if st.substeps == Some(0) {
                 return Err(c.bad(&format!("{prefix}.substeps"), "must be at least 1".into()));
             }
+            self.check_path_size(c, k)?;
             if let Some(r) = st.roll {
                 if !r.is_finite() || r < 0.0 {
                     return Err(c.bad(&format!("{prefix}.roll"), format!("must be a finite length ≥ 0 (got {r})")));
@@ -622,6 +643,42 @@ impl SceneDocument {
             )),
             _ => Ok(()),
         }
+    }
+
+    /// The size guard of a load path, checked at each step `k` on the substeps so far (so the message names the step
+    /// where the path grows too large): a path's result holds every substep's run, so its memory is estimated as
+    /// substeps × solvers × contact nodes × [`PATH_BYTES_PER_NODE`] and refused above [`MAX_PATH_RESULT_BYTES`], and
+    /// more than [`MAX_PATH_SUBSTEPS`] substeps are refused whatever the mesh — before anything is allocated.
+    fn check_path_size(&self, c: &Checker, k: usize) -> Result<()> {
+        let substeps = self.steps[..=k].iter().fold(0u128, |n, st| n + st.substeps.unwrap_or(1) as u128);
+        let nodes =
+            self.mesh.contact_elements as u128 * if self.mesh.element == ElementKind::Quadratic { 3 } else { 1 };
+        let all = self.solvers.use_.iter().any(|u| u == "all");
+        let solvers = if all { crate::solvers::registry().len() } else { self.solvers.use_.len().max(1) } as u128;
+        let bytes = substeps * solvers * nodes * PATH_BYTES_PER_NODE as u128;
+        let key = format!("steps[{k}].substeps");
+        if substeps > MAX_PATH_SUBSTEPS as u128 {
+            return Err(c.bad(
+                &key,
+                format!(
+                    "the path has {substeps} substeps by this step; at most {MAX_PATH_SUBSTEPS} are allowed (each is a \
+                     solve per solver and a row of the result)"
+                ),
+            ));
+        }
+        if bytes > MAX_PATH_RESULT_BYTES as u128 {
+            return Err(c.bad(
+                &key,
+                format!(
+                    "the path's result would hold about {:.1} GiB ({substeps} substeps × {solvers} solver(s) × {nodes} \
+                     contact nodes, every substep's run kept); at most {:.0} GiB: use fewer substeps, solvers or \
+                     elements",
+                    bytes as f64 / (1u64 << 30) as f64,
+                    MAX_PATH_RESULT_BYTES as f64 / (1u64 << 30) as f64
+                ),
+            ));
+        }
+        Ok(())
     }
 
     fn validate_drive(&self, c: &Checker) -> Result<()> {

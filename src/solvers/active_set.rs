@@ -32,7 +32,8 @@
 //! (`src/solvers/active_set/phases.rs`). With coupling the iteration is the joint one above.
 
 use super::lemke::{self, Lemke, LemkeSettings};
-use super::{Entry, Outcome, Solver, SolverId, SolverSettings, Termination, Validate, Work};
+use super::{settings_of, Entry, Figures, Outcome, Solver, SolverId, SolverState, Start, Termination, Validate, Work};
+use crate::cancel::Cancel;
 use crate::formulation::{ContactProblem, ProblemKind, Solution};
 
 mod phases;
@@ -70,16 +71,28 @@ pub struct ActiveSet {
     pub settings: ActiveSetSettings,
 }
 
+/// The active-set method's identity.
+pub const ID: SolverId = SolverId::new("active_set");
+
 /// Registry entry.
-pub const ENTRY: Entry = Entry {
-    id: SolverId::ActiveSet,
-    name: "active_set",
-    summary: "primal–dual active-set (semi-smooth Newton) on the physical unknowns, warm-started, Lemke as fallback; \
-              every scene",
-    in_all: true,
-    counters: &["iterations", "factorisations", "gmres", "pivots"],
-    build: |s: &SolverSettings| Box::new(ActiveSet { settings: s.active_set }),
-};
+pub const ENTRY: Entry = Entry::new::<ActiveSetSettings>(
+    "active_set",
+    "primal–dual active-set (semi-smooth Newton) on the physical unknowns, warm-started, Lemke as fallback; \
+     every scene",
+    true,
+    &["iterations", "factorisations", "gmres", "pivots"],
+    |s| Box::new(ActiveSet { settings: settings_of::<ActiveSetSettings>(s).copied().unwrap_or_default() }),
+    // O(m²) per iteration with the FFT products and bordered solves, a few factorisations of the active block.
+    |m| (1e-7 * m * m, 8.0 * m * m),
+);
+
+/// What the active-set method keeps between runs on one layout ([`SolverState`]): the joint iteration's last
+/// factorisation (a preconditioner for GMRES), or the two phases' factorisations and normal solution, each reused
+/// only when the data defining it are equal bit for bit ([`phases`], "Across solves").
+enum ActiveSetState {
+    Joint(Kept),
+    Phases(Box<phases::Kept>),
+}
 
 /// The state of a node.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -632,9 +645,9 @@ const GMRES_TOLERANCE: f64 = 1e-12;
 /// while the sets differ from it in few nodes.
 ///
 /// **Across solves.** On a model solved for many drives (a creep curve), the last factorisation is kept in the
-/// flexibility's [`crate::flexibility::Memo`] and taken up by the next solve only as GMRES's preconditioner (it may
-/// belong to another drive: it changes how fast GMRES converges, never the answer); the final solve of every solve
-/// is a direct one of its own sets.
+/// solver's state ([`SolverState`], owned by the caller's warm start) and taken up by the next solve only as GMRES's
+/// preconditioner (it may belong to another drive: it changes how fast GMRES converges, never the answer); the final
+/// solve of every solve is a direct one of its own sets.
 struct Linear {
     base: Option<Reduced>,
     /// Whether `base` is this problem's system for its sets (false for one carried over from another solve).
@@ -646,7 +659,7 @@ struct Linear {
     last_direct: bool,
 }
 
-/// What the active-set method keeps in a flexibility's memo between solves ([`Linear`]).
+/// What the joint iteration keeps between solves ([`Linear`]): its last factorisation.
 struct Kept {
     base: Option<Reduced>,
 }
@@ -656,18 +669,16 @@ impl Linear {
         Linear { base: None, base_exact: false, factorisations: 0, gmres_iterations: 0, last_direct: false }
     }
 
-    /// A solver starting from what the last solve on `flex` kept (for a problem of `n` nodes).
-    fn resume(flex: &crate::flexibility::Flexibility) -> Linear {
+    /// A solver starting from what the last solve on the same layout kept (for a problem of `n` nodes).
+    fn resume(kept: Kept, n: usize) -> Linear {
         let mut l = Linear::new();
-        if let Some(k) = flex.memo.take::<Kept>() {
-            l.base = k.base.filter(|b| b.sets.len() == flex.n());
-        }
+        l.base = kept.base.filter(|b| b.sets.len() == n);
         l
     }
 
-    /// Leave the factorisations in `flex`'s memo for the next solve.
-    fn keep(self, flex: &crate::flexibility::Flexibility) {
-        flex.memo.put(Kept { base: self.base });
+    /// What to keep for the next solve.
+    fn keep(self) -> Kept {
+        Kept { base: self.base }
     }
 
     /// Solve the system of `sets` (returning the iterate), from the previous full solution `y0` when given; with
@@ -763,11 +774,20 @@ fn update(d: &Data, sets: &[NodeSet], it: &Iterate, margin: f64) -> (Vec<NodeSet
 /// Iterate from `sets` until no node changes set; `Err` with the reason (cycle, limit, singular system). All the
 /// violated nodes change set at once (the semi-smooth Newton step); when the sets cycle, only the worst half of them
 /// do, then the worst quarter, down to one at a time (a damped step), before giving up.
+/// What the iteration is run with: the settings and the caller's cancellation token.
+struct Control<'a> {
+    settings: &'a ActiveSetSettings,
+    cancel: &'a Cancel,
+}
+
+/// The message of an iteration stopped by the caller's cancellation token.
+const CANCELLED: &str = "cancelled";
+
 fn iterate(
     d: &Data,
     mut sets: Vec<NodeSet>,
     start: Option<Vec<f64>>,
-    s: &ActiveSetSettings,
+    s: &Control,
     count: &mut usize,
     linear: &mut dyn Step,
 ) -> Result<(Iterate, Vec<NodeSet>), String> {
@@ -776,13 +796,16 @@ fn iterate(
     let mut previous: Option<Vec<f64>> = start.filter(|y| y.len() == Full { d, sets: sets.clone() }.size());
     loop {
         *count += 1;
-        if *count > s.max_iterations {
-            return Err(format!("no convergence in {} iterations", s.max_iterations));
+        if *count > s.settings.max_iterations {
+            return Err(format!("no convergence in {} iterations", s.settings.max_iterations));
+        }
+        if s.cancel.is_cancelled() {
+            return Err(format!("{CANCELLED} at iteration {count}"));
         }
         let mut it = linear
             .solve(d, &sets, previous.as_deref(), false)
             .ok_or_else(|| format!("singular active-set system at iteration {count}"))?;
-        if !linear.last_direct() && update(d, &sets, &it, s.margin).0 == sets {
+        if !linear.last_direct() && update(d, &sets, &it, s.settings.margin).0 == sets {
             // Converged on an iterative solve: confirm with a direct one (round-off accurate).
             it = linear
                 .solve(d, &sets, None, true)
@@ -793,7 +816,7 @@ fn iterate(
         } else {
             it.f.iter().chain(&it.rho).copied().collect()
         });
-        let (next, violation) = update(d, &sets, &it, s.margin);
+        let (next, violation) = update(d, &sets, &it, s.settings.margin);
         let mut changed: Vec<usize> = (0..d.n).filter(|&i| next[i] != sets[i]).collect();
         if changed.is_empty() {
             return Ok((it, sets));
@@ -828,7 +851,7 @@ const COARSE_STRIDE: usize = 4;
 impl ActiveSet {
     /// The sets of the problem solved on every k-th node (module docs), carried to the nearest fine nodes; `None`
     /// when the problem is small or the coarse solve fails.
-    fn coarse_start(&self, p: &ContactProblem, count: &mut usize) -> Option<Vec<NodeSet>> {
+    fn coarse_start(&self, p: &ContactProblem, count: &mut usize, cancel: &Cancel) -> Option<Vec<NodeSet>> {
         let n = p.n();
         if n <= COARSE_ABOVE || matches!(p.kind, ProblemKind::GrossSliding { .. }) {
             return None;
@@ -837,7 +860,7 @@ impl ActiveSet {
         let flex = p.flex.coarse(stride);
         let slip = p.slip.coarse(stride, &flex.x);
         let cp = ContactProblem::new(&flex, p.law, p.drive, slip).ok()?;
-        let out = self.solve(&cp);
+        let out = self.solve_from(&cp, Start::cancellable(cancel.clone()));
         *count += out.work.get("iterations").unwrap_or(0) as usize;
         let sol = out.solution.filter(|_| out.status == Termination::Solved && out.work.get("pivots").is_none())?;
         let mu = p.law.friction;
@@ -871,10 +894,11 @@ fn warm_sets(d: &Data, w: &Solution) -> Vec<NodeSet> {
     (0..d.n).map(|i| node_set(w.f[i], w.h.as_ref().map_or(0.0, |h| h[i]), d.frictional, d.mu)).collect()
 }
 
-/// The warm start's unknowns in the full layout [f; h; ρ], GMRES's first guess.
-fn warm_unknowns(p: &ContactProblem, d: &Data) -> Option<Vec<f64>> {
+/// The warm start's unknowns in the full layout [f; h; ρ], GMRES's first guess (`warm` has the problem's shape:
+/// [`Start::solution_for`]).
+fn warm_unknowns(p: &ContactProblem, d: &Data, warm: Option<&Solution>) -> Option<Vec<f64>> {
     let n = d.n;
-    p.warm.as_ref().filter(|w| w.f.len() == n && w.rigid.len() == p.dofs.len()).map(|w| {
+    warm.filter(|w| w.f.len() == n && w.rigid.len() == p.dofs.len()).map(|w| {
         let h = w.h.clone().filter(|h| h.len() == n && d.frictional).unwrap_or_else(|| vec![0.0; n]);
         // The data's load-driven DOFs: a normal phase's (`Data::of(p, true)`) leave the tangential one out.
         let rho = p
@@ -895,14 +919,14 @@ fn warm_unknowns(p: &ContactProblem, d: &Data) -> Option<Vec<f64>> {
 impl ActiveSet {
     /// The cold start of a coupled problem: the normal problem solved first with the shear fixed at zero (every
     /// node starting in contact), then every contact node sticking.
-    fn normal_start(&self, p: &ContactProblem, d: &Data, count: &mut usize) -> Vec<NodeSet> {
+    fn normal_start(&self, p: &ContactProblem, d: &Data, count: &mut usize, ctl: &Control) -> Vec<NodeSet> {
         let n = d.n;
         if !d.frictional {
             return vec![NodeSet::Stick; n];
         }
         let normal = Data::of(p, true);
         let mut linear = Linear::new();
-        match iterate(&normal, vec![NodeSet::Stick; n], None, &self.settings, count, &mut linear) {
+        match iterate(&normal, vec![NodeSet::Stick; n], None, ctl, count, &mut linear) {
             Ok((it, _)) => it.f.iter().map(|&f| if f > 0.0 { NodeSet::Stick } else { NodeSet::Separated }).collect(),
             Err(_) => vec![NodeSet::Stick; n],
         }
@@ -911,42 +935,56 @@ impl ActiveSet {
 
 impl Solver for ActiveSet {
     fn id(&self) -> SolverId {
-        SolverId::ActiveSet
+        ID
     }
 
     fn applies(&self, _problem: &ContactProblem) -> Result<(), String> {
         Ok(())
     }
 
-    fn solve(&self, p: &ContactProblem) -> Outcome {
+    fn solve_from(&self, p: &ContactProblem, mut start: Start) -> Outcome {
         let d = Data::of(p, false);
         let mut count = 0;
+        let state = start.take_state::<ActiveSetState>(ID, p);
+        let warm = start.solution_for(p);
+        let ctl = Control { settings: &self.settings, cancel: &start.cancel };
         // Start: the warm start's sets, or those of the same problem on a coarse grid, or the normal problem first
         // (every node in contact, no shear).
-        let coarse = if p.warm.is_none() { self.coarse_start(p, &mut count) } else { None };
-        let warm_sets = p.warm.as_ref().filter(|w| w.f.len() == d.n).map(|w| warm_sets(&d, w));
-        let (result, factorisations, gmres_iterations) = if phases::applies(p, &d) {
-            let run = phases::solve(&self.settings, p, &d, coarse.or(warm_sets), &mut count);
-            (run.result, run.factorisations, run.gmres)
-        } else {
-            let start = match (coarse, warm_sets) {
-                (Some(sets), _) | (None, Some(sets)) => sets,
-                (None, None) => self.normal_start(p, &d, &mut count),
+        let coarse = if warm.is_none() { self.coarse_start(p, &mut count, ctl.cancel) } else { None };
+        let warm_sets = warm.map(|w| warm_sets(&d, w));
+        let (result, factorisations, gmres_iterations, kept) = if phases::applies(p, &d) {
+            let kept = match state {
+                Some(ActiveSetState::Phases(k)) => Some(*k),
+                _ => None,
             };
-            // What the last solve on this flexibility kept, only when warm-started (a cold solve's work must not
-            // depend on what ran before it on the model).
+            let (run, kept) = phases::solve(&ctl, p, &d, coarse.or(warm_sets), warm, kept, &mut count);
+            (run.result, run.factorisations, run.gmres, ActiveSetState::Phases(Box::new(kept)))
+        } else {
+            let start_sets = match (coarse, warm_sets) {
+                (Some(sets), _) | (None, Some(sets)) => sets,
+                (None, None) => self.normal_start(p, &d, &mut count, &ctl),
+            };
+            // What the last run on this layout kept (the caller's warm start; a cold solve has none, so its work
+            // does not depend on what ran before it on the model).
             let d = d.with_att();
-            let mut linear = if p.warm.is_some() { Linear::resume(p.flex) } else { Linear::new() };
-            let result = iterate(&d, start, warm_unknowns(p, &d), &self.settings, &mut count, &mut linear);
+            let mut linear = match state {
+                Some(ActiveSetState::Joint(k)) => Linear::resume(k, d.n),
+                _ => Linear::new(),
+            };
+            let result = iterate(&d, start_sets, warm_unknowns(p, &d, warm), &ctl, &mut count, &mut linear);
             let (factorisations, gmres_iterations) = (linear.factorisations, linear.gmres_iterations);
-            linear.keep(p.flex);
-            (result.map(|(it, _)| it), factorisations, gmres_iterations)
+            (result.map(|(it, _)| it), factorisations, gmres_iterations, ActiveSetState::Joint(linear.keep()))
         };
         if std::env::var_os("ROLLBEM_DEBUG_AS").is_some() {
             eprintln!(
                 "active set: {count} iterations, {factorisations} factorisations, {gmres_iterations} GMRES iterations"
             );
         }
+        let work = |extra: &[(&str, u64)]| {
+            let mut w = vec![("iterations", count as u64)];
+            w.extend_from_slice(extra);
+            Work::of(&w)
+        };
         match result {
             Ok(it) => {
                 let mut rigid = p.given();
@@ -964,28 +1002,31 @@ impl Solver for ActiveSet {
                 };
                 let tangential_known = !matches!(p.kind, ProblemKind::SlidingLimit { .. });
                 Outcome {
-                    solution: Some(Solution { f: it.f, h, rigid, tangential_known, support: None }),
+                    solution: Some(Solution { f: it.f, h, rigid, tangential_known }),
                     status: Termination::Solved,
                     message: format!(
                         "active sets converged in {count} iterations ({} factorisations and {} GMRES iterations on \
                          the full grid)",
                         factorisations, gmres_iterations
                     ),
-                    work: Work::of(&[
-                        ("iterations", count as u64),
-                        ("factorisations", factorisations as u64),
-                        ("gmres", gmres_iterations as u64),
-                    ]),
-                    polish_change: None,
+                    work: work(&[("factorisations", factorisations as u64), ("gmres", gmres_iterations as u64)]),
+                    figures: Figures::default(),
+                    state: Some(SolverState::new(ID, p, kept)),
                 }
+            }
+            Err(why) if start.cancel.is_cancelled() => {
+                Outcome::failed(Termination::NotConverged, format!("active set: {why}"), work(&[]))
             }
             Err(why) => {
                 // Fall back to Lemke on the problem's LCP.
-                let lemke = Lemke { id: SolverId::Lemke, settings: LemkeSettings::default(), engine: lemke::solve };
-                let mut out = lemke.solve(p);
+                let lemke =
+                    Lemke { id: lemke::ID, settings: LemkeSettings::default(), engine: lemke::solve_cancellable };
+                let mut out = lemke.solve_from(p, Start::cancellable(start.cancel.clone()));
                 out.message = format!("active set: {why}; fell back to Lemke: {}", out.message);
                 let pivots = out.work.get("pivots").unwrap_or(0);
-                out.work = Work::of(&[("iterations", count as u64), ("pivots", pivots)]);
+                out.work = work(&[("pivots", pivots)]);
+                // Lemke's state is not the active set's: the next run starts without one.
+                out.state = None;
                 out
             }
         }

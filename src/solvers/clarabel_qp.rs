@@ -172,6 +172,19 @@ impl QpOutcome {
 /// [`QpOutcome::status`] (with zero forces when nothing could be computed). `n = 0` gives
 /// `Solved` with empty vectors unless a nonzero load is prescribed (`Infeasible`).
 pub fn solve_frictionless(k: &[f64], n: usize, c: &[f64], load: Option<(&[f64], f64)>, s: &QpSettings) -> QpOutcome {
+    solve_frictionless_cancellable(k, n, c, load, s, &crate::cancel::Cancel::never())
+}
+
+/// [`solve_frictionless`], stopping at the interior-point iteration after `cancel` is raised (clarabel's
+/// termination callback; the status is then a numerical error naming the callback).
+pub fn solve_frictionless_cancellable(
+    k: &[f64],
+    n: usize,
+    c: &[f64],
+    load: Option<(&[f64], f64)>,
+    s: &QpSettings,
+    cancel: &crate::cancel::Cancel,
+) -> QpOutcome {
     if let Err(out) = validate_input(k, n, c, load, s) {
         return out;
     }
@@ -204,6 +217,8 @@ pub fn solve_frictionless(k: &[f64], n: usize, c: &[f64], load: Option<(&[f64], 
     let run = catch_unwind(AssertUnwindSafe(|| {
         let mut solver =
             DefaultSolver::new(&p_mat, &q, &a_mat, &b, &cones, settings).map_err(|e| format!("clarabel setup: {e}"))?;
+        let cancel = cancel.clone();
+        solver.set_termination_callback(move |_| cancel.is_cancelled());
         solver.solve();
         let sol = &solver.solution;
         Ok::<_, String>((sol.x.clone(), sol.z.clone(), sol.status, sol.iterations))

@@ -1,14 +1,26 @@
-//! Contact solvers behind one small trait ([`Solver`]), chosen by name in one registry ([`REGISTRY`]): the only
+//! Contact solvers behind one small trait ([`Solver`]), chosen by name in one registry ([`registry`]): the only
 //! place solver names are listed. Scenes (`[solvers] use`, `[solvers.NAME]` settings tables), `--solver`,
 //! `rollbem lcp solve`, sweeps and reports all read it.
 //!
-//! A solver consumes a [`ContactProblem`] (plain data) and returns one [`Outcome`]: the solution in the problem's
-//! one solution shape, a [`Status`], a message and its work as named counters. Non-convergence, ray termination
-//! and infeasibility are statuses, never panics; a bad setting is an input error ([`SettingsError`]) raised when the
-//! solver is built, before anything runs. Each back end's own status maps to [`Status`] in one place (its file).
+//! A solver consumes a [`ContactProblem`] (plain data) and a [`Start`] (a nearby solution, its own state from its
+//! previous run on the same flexibility and problem layout, and a cancellation token), and returns one [`Outcome`]:
+//! the solution in the problem's one solution shape, a [`Termination`], a message, its work as named counters, its
+//! own figures as named values, and the state it leaves for its next run. Non-convergence, ray termination and
+//! infeasibility are terminations, never panics; a bad setting is an input error ([`SettingsError`]) raised when the
+//! scene is read, before anything runs. Each back end's own status maps to [`Termination`] in one place (its file).
 //!
-//! Adding a solver: one file with its settings (serde, `validate`), its [`Solver`] impl and an [`Entry`], plus one
-//! line in [`REGISTRY`].
+//! **Adding a solver** is one file and one registry line: the file holds its settings (serde, [`Validate`]), its
+//! [`Solver`] impl, its state type if it keeps one, and an [`Entry`] (`Entry::new::<Settings>(...)`); the line adds
+//! the entry to [`BUILT_IN`]. A program that uses rollbem as a library can also plug in a solver of its own at run
+//! time ([`register`]); `tests/solver_plugin.rs` does that with a solver written in `tests/` and runs it through the
+//! model, the sweep and the command line.
+//!
+//! **State between solves** ([`SolverState`]): a solver may leave what it wants to start its next run from (Lemke
+//! its basis, the active-set method its factorisations, NORM-TANG its forces), typed by the solver and stamped with
+//! the flexibility ([`crate::flexibility::FlexId`]) and the problem's layout ([`Layout`]); it is handed back only to
+//! the same solver on a problem of the same layout on the same flexibility, so a state from another model or
+//! another drive layout is dropped, never trusted. The caller owns it ([`crate::pipeline::Warm`]): nothing is
+//! cached in the flexibility, and concurrent solves on one model share nothing mutable.
 
 pub mod active_set;
 pub mod clarabel;
@@ -20,69 +32,105 @@ pub mod normtang;
 pub use crate::formulation::Lcp;
 pub use crate::status::{Status, Termination};
 
-use crate::formulation::{ContactProblem, Solution};
+use crate::cancel::Cancel;
+use crate::formulation::{ContactProblem, DofKind, Solution};
 use crate::tolerances as tol;
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
+use std::any::Any;
 use std::collections::BTreeMap;
+use std::sync::Arc;
 
-/// The registry: every solver rollbem has, in the order runs are reported (the order of [`SolverId`]).
-pub static REGISTRY: &[Entry] = &[
-    lemke::ENTRY,
-    active_set::ENTRY,
-    clarabel::ENTRY,
-    normtang::PGS_ENTRY,
-    normtang::NORMTANG_QP_ENTRY,
-    lemke::dense::ENTRY,
+/// The solvers built into rollbem, in the order runs are reported.
+pub static BUILT_IN: &[&Entry] = &[
+    &lemke::ENTRY,
+    &active_set::ENTRY,
+    &clarabel::ENTRY,
+    &normtang::PGS_ENTRY,
+    &normtang::NORMTANG_QP_ENTRY,
+    &lemke::dense::ENTRY,
 ];
 
-/// A solver's identity, as written in scene files (`[solvers] use`), on the command line and in results.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SolverId {
-    /// Lemke's method, block-revised engine.
-    Lemke,
-    /// Primal–dual active set on the physical unknowns.
-    ActiveSet,
-    /// clarabel on the frictionless QP.
-    Clarabel,
-    /// NORM-TANG with projected Gauss–Seidel sweeps.
-    Pgs,
-    /// NORM-TANG with clarabel QPs.
-    NormtangQp,
-    /// Lemke's method, dense reference engine.
-    LemkeDense,
+/// Solvers registered at run time ([`register`]), after the built-in ones.
+static REGISTERED: std::sync::RwLock<Vec<&'static Entry>> = std::sync::RwLock::new(Vec::new());
+
+/// Every solver: the built-in ones ([`BUILT_IN`]), then those registered at run time ([`register`]), in the order
+/// runs are reported.
+pub fn registry() -> Vec<&'static Entry> {
+    let extra = REGISTERED.read().unwrap_or_else(std::sync::PoisonError::into_inner);
+    BUILT_IN.iter().copied().chain(extra.iter().copied()).collect()
 }
 
-impl SolverId {
-    /// Every solver, in registry order.
-    pub const ALL: [SolverId; 6] = [
-        SolverId::Lemke,
-        SolverId::ActiveSet,
-        SolverId::Clarabel,
-        SolverId::Pgs,
-        SolverId::NormtangQp,
-        SolverId::LemkeDense,
-    ];
+/// Plug a solver of one's own into this process's registry: scenes can then name it in `[solvers] use` and
+/// `[solvers.NAME]`, and the model, sweeps, reports and (for a program that runs [`crate::cli`]) the command line run
+/// it like a built-in one. `Err` when its name is taken or is not a valid scene key (lowercase letters, digits, `_`).
+pub fn register(entry: &'static Entry) -> Result<(), String> {
+    let name = entry.id.name();
+    let valid = !name.is_empty()
+        && name != "all"
+        && name.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
+    if !valid {
+        return Err(format!("solver name `{name}`: lowercase letters, digits and `_`, not `all`"));
+    }
+    let mut extra = REGISTERED.write().unwrap_or_else(std::sync::PoisonError::into_inner);
+    if BUILT_IN.iter().chain(extra.iter()).any(|e| e.id.name() == name) {
+        return Err(format!("a solver named `{name}` is registered already"));
+    }
+    extra.push(entry);
+    Ok(())
+}
 
-    /// Its registry entry.
-    pub fn entry(self) -> &'static Entry {
-        REGISTRY.iter().find(|e| e.id == self).expect("every SolverId has a registry entry")
+/// A solver's identity: its registry name, as written in scene files (`[solvers] use`), on the command line and in
+/// results. Ordered as the registry reports runs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct SolverId(&'static str);
+
+impl SolverId {
+    /// The identity of a solver named `name` (for its [`Entry`]; use [`SolverId::from_name`] to look one up).
+    pub const fn new(name: &'static str) -> SolverId {
+        SolverId(name)
+    }
+
+    /// Its registry entry, if it is registered.
+    pub fn entry(self) -> Option<&'static Entry> {
+        registry().into_iter().find(|e| e.id == self)
     }
 
     /// Its name.
     pub fn name(self) -> &'static str {
-        self.entry().name
+        self.0
     }
 
-    /// The solver of a name, if there is one.
+    /// The registered solver of a name, if there is one.
     pub fn from_name(name: &str) -> Option<SolverId> {
-        REGISTRY.iter().find(|e| e.name == name).map(|e| e.id)
+        registry().into_iter().find(|e| e.id.0 == name).map(|e| e.id)
     }
 
-    /// Build the solver with the given settings (validated settings cannot fail to build).
-    pub fn build(self, settings: &SolverSettings) -> Box<dyn Solver> {
-        (self.entry().build)(settings)
+    /// Its place in the registry (unregistered identities last).
+    fn rank(self) -> usize {
+        registry().iter().position(|e| e.id == self).unwrap_or(usize::MAX)
+    }
+
+    /// Build the solver with the given settings (validated settings of every registered solver; a solver with no
+    /// table there gets its defaults). `None` for an unregistered identity.
+    pub fn build(self, settings: &SolverSettings) -> Option<Box<dyn Solver>> {
+        let entry = self.entry()?;
+        Some(match settings.get(self) {
+            Some(s) => (entry.build)(s),
+            None => (entry.build)((entry.defaults)().as_ref()),
+        })
+    }
+}
+
+impl PartialOrd for SolverId {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for SolverId {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        self.rank().cmp(&other.rank()).then_with(|| self.0.cmp(other.0))
     }
 }
 
@@ -104,94 +152,311 @@ impl PartialEq<&str> for SolverId {
     }
 }
 
-/// Builds a solver from the (validated) settings of every solver.
-pub type Builder = fn(&SolverSettings) -> Box<dyn Solver>;
+impl Serialize for SolverId {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.0)
+    }
+}
 
-/// One registered solver.
+impl<'de> Deserialize<'de> for SolverId {
+    /// A registered solver's name (an unknown name is an error listing the registered ones).
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<SolverId, D::Error> {
+        let name = String::deserialize(d)?;
+        SolverId::from_name(&name)
+            .ok_or_else(|| serde::de::Error::custom(format!("unknown solver `{name}` (solvers are: {})", names())))
+    }
+}
+
+/// Builds a solver from its own (validated) settings, as the registry hands them out.
+pub type Builder = fn(&dyn Settings) -> Box<dyn Solver>;
+
+/// Parses and validates a solver's settings table (its name for the messages; `None`: the defaults).
+pub type Parser = fn(&str, Option<&toml::Value>) -> Result<Arc<dyn Settings>, SettingsError>;
+
+/// One registered solver: everything the rest of rollbem knows of it.
 pub struct Entry {
-    /// Its identity.
+    /// Its identity (its name).
     pub id: SolverId,
-    /// Name in scene files, on the command line and in results.
-    pub name: &'static str,
     /// One line: what it is and what it applies to.
     pub summary: &'static str,
     /// Whether `use = ["all"]` runs it (a slower reference engine is run by name only).
     pub in_all: bool,
     /// The work counters it reports, in display order (the sweep CSV's work columns are their union).
     pub counters: &'static [&'static str],
+    /// Parse and validate its settings table (`None`: the defaults); errors name `solvers.NAME.KEY`.
+    pub parse: Parser,
+    /// Its default settings.
+    pub defaults: fn() -> Arc<dyn Settings>,
     /// Build the solver from its settings.
     pub build: Builder,
+    /// Its rough cost on m complementarity unknowns: (seconds, bytes), for a sweep's estimate
+    /// ([`crate::sweep`]'s plan; a rough model, meant to tell minutes from days).
+    pub cost: fn(f64) -> (f64, f64),
+    /// Scene-level facts that rule it out, known when a scene is read (no problem built): `Err` says why.
+    pub scene_applies: fn(&SceneFacts) -> Result<(), String>,
 }
 
-/// The settings of every solver (`[solvers.NAME]` tables), typed, with documented defaults. Built and validated
-/// when a scene is read ([`SolverSettings::from_tables`]) — no solver is built for that — so that a bad value is an
-/// input error naming its key before anything runs.
-#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct SolverSettings {
-    /// `[solvers.lemke]`.
-    pub lemke: lemke::LemkeSettings,
-    /// `[solvers.active_set]`.
-    pub active_set: active_set::ActiveSetSettings,
-    /// `[solvers.clarabel]`.
-    pub clarabel: clarabel_qp::QpSettings,
-    /// `[solvers.pgs]`.
-    pub pgs: normtang::PgsSettings,
-    /// `[solvers.normtang_qp]`.
-    pub normtang_qp: normtang::NormTangQpSettings,
-    /// `[solvers.lemke_dense]`.
-    pub lemke_dense: lemke::LemkeSettings,
+/// What a scene says that can rule a solver out before any problem is built ([`Entry::scene_applies`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SceneFacts {
+    /// Coulomb's μ > 0 (or rolling): the tangential problem exists.
+    pub frictional: bool,
+    /// A moment is prescribed (at some step).
+    pub moment_load: bool,
+}
+
+/// Any scene: no scene-level restriction ([`Entry::scene_applies`]).
+pub fn any_scene(_: &SceneFacts) -> Result<(), String> {
+    Ok(())
+}
+
+impl Entry {
+    /// An entry whose settings are `T` (parsed from the `[solvers.NAME]` table with serde, validated by
+    /// [`Validate`], defaults by `Default`); `build` receives them typed.
+    pub const fn new<T>(
+        name: &'static str,
+        summary: &'static str,
+        in_all: bool,
+        counters: &'static [&'static str],
+        build: Builder,
+        cost: fn(f64) -> (f64, f64),
+    ) -> Entry
+    where
+        T: SettingsType,
+    {
+        Entry {
+            id: SolverId::new(name),
+            summary,
+            in_all,
+            counters,
+            parse: |name, raw| parse_settings::<T>(name, raw).map(|t| Arc::new(t) as Arc<dyn Settings>),
+            defaults: || Arc::new(T::default()),
+            build,
+            cost,
+            scene_applies: any_scene,
+        }
+    }
+
+    /// The same entry with a scene-level restriction ([`Entry::scene_applies`]).
+    pub const fn restricted(self, scene_applies: fn(&SceneFacts) -> Result<(), String>) -> Entry {
+        Entry { scene_applies, ..self }
+    }
+
+    /// Its name.
+    pub fn name(&self) -> &'static str {
+        self.id.name()
+    }
+}
+
+/// What a settings type must be: a serde table with defaults and range checks.
+pub trait SettingsType:
+    Serialize + DeserializeOwned + Default + Clone + PartialEq + std::fmt::Debug + Validate + Send + Sync + 'static
+{
+}
+
+impl<T> SettingsType for T where
+    T: Serialize + DeserializeOwned + Default + Clone + PartialEq + std::fmt::Debug + Validate + Send + Sync + 'static
+{
+}
+
+/// One solver's settings, typed by its solver and seen by the rest of rollbem only through this trait.
+pub trait Settings: std::fmt::Debug + Send + Sync + Any {
+    /// The settings as a TOML table, every default filled in (the scene as parsed).
+    fn table(&self) -> toml::Value;
+    /// The relative tolerance an iterative solver stops at (`None` for a direct one).
+    fn tolerance(&self) -> Option<f64>;
+    /// Equality with another solver's settings (false for another type).
+    fn same(&self, other: &dyn Settings) -> bool;
+    /// As `Any`, for [`settings_of`].
+    fn as_any(&self) -> &dyn Any;
+}
+
+impl<T: SettingsType> Settings for T {
+    fn table(&self) -> toml::Value {
+        settings_value(self)
+    }
+
+    fn tolerance(&self) -> Option<f64> {
+        Validate::tolerance(self)
+    }
+
+    fn same(&self, other: &dyn Settings) -> bool {
+        other.as_any().downcast_ref::<T>() == Some(self)
+    }
+
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+}
+
+/// A solver's own settings, typed (in its [`Entry::build`]): the registry hands every solver the type its entry
+/// parsed, so this is `Some` there; `None` for another type.
+pub fn settings_of<T: 'static>(s: &dyn Settings) -> Option<&T> {
+    s.as_any().downcast_ref::<T>()
+}
+
+/// The settings of every solver a scene names (`[solvers.NAME]` tables), typed by their solvers, validated when
+/// a scene is read ([`SolverSettings::from_tables`]) — no solver is built for that — so that a bad value is an
+/// input error naming its key before anything runs. A solver without a table has its defaults.
+#[derive(Debug, Clone, Default)]
+pub struct SolverSettings(BTreeMap<SolverId, Arc<dyn Settings>>);
+
+impl PartialEq for SolverSettings {
+    fn eq(&self, other: &Self) -> bool {
+        self.0.len() == other.0.len() && self.0.iter().zip(&other.0).all(|((a, x), (b, y))| a == b && x.same(&**y))
+    }
 }
 
 impl SolverSettings {
     /// Parse and validate the settings tables of a scene (`[solvers.NAME]`, keyed by solver name; absent tables take
     /// the defaults). An unknown table or key, or a value out of range, is an error naming `solvers.NAME.KEY`.
     pub fn from_tables(tables: &BTreeMap<String, toml::Value>) -> Result<SolverSettings, SettingsError> {
-        if let Some(k) = tables.keys().find(|k| SolverId::from_name(k).is_none()) {
-            return Err(SettingsError {
-                field: format!("solvers.{k}"),
-                message: format!("unknown solver settings table (solvers are: {})", names()),
-                unknown: true,
-            });
+        let mut out = BTreeMap::new();
+        for (k, v) in tables {
+            let Some(entry) = SolverId::from_name(k).and_then(SolverId::entry) else {
+                return Err(SettingsError {
+                    field: format!("solvers.{k}"),
+                    message: format!("unknown solver settings table (solvers are: {})", names()),
+                    unknown: true,
+                });
+            };
+            out.insert(entry.id, (entry.parse)(entry.name(), Some(v))?);
         }
-        let t = |id: SolverId| tables.get(id.name());
-        Ok(SolverSettings {
-            lemke: parse_settings("lemke", t(SolverId::Lemke))?,
-            active_set: parse_settings("active_set", t(SolverId::ActiveSet))?,
-            clarabel: parse_settings("clarabel", t(SolverId::Clarabel))?,
-            pgs: parse_settings("pgs", t(SolverId::Pgs))?,
-            normtang_qp: parse_settings("normtang_qp", t(SolverId::NormtangQp))?,
-            lemke_dense: parse_settings("lemke_dense", t(SolverId::LemkeDense))?,
+        Ok(SolverSettings(out))
+    }
+
+    /// The settings of one solver, if the scene gave a table for it (else the solver takes its defaults).
+    pub fn get(&self, id: SolverId) -> Option<&dyn Settings> {
+        self.0.get(&id).map(|s| &**s)
+    }
+
+    /// The settings as tables keyed by solver name, for every registered solver, every default filled in (the
+    /// scene as parsed).
+    pub fn tables(&self) -> BTreeMap<String, toml::Value> {
+        registry()
+            .into_iter()
+            .map(|e| {
+                let table = match self.get(e.id) {
+                    Some(s) => s.table(),
+                    None => (e.defaults)().table(),
+                };
+                (e.name().to_string(), table)
+            })
+            .collect()
+    }
+
+    /// The relative tolerance an iterative solver stops at with these settings (`None` for a direct one or an
+    /// unregistered identity).
+    pub fn tolerance(&self, id: SolverId) -> Option<f64> {
+        match self.get(id) {
+            Some(s) => s.tolerance(),
+            None => id.entry().and_then(|e| (e.defaults)().tolerance()),
+        }
+    }
+}
+
+/// The layout of a problem's unknowns, with the identity of the flexibility it is posed on: what a solver's state
+/// must match to be reused ([`SolverState`]). Two problems of one layout have the same number of contact nodes,
+/// the same kind (frictionless, frictional, at the sliding limit), and the same rigid degrees of freedom, each
+/// prescribed or unknown alike; the LCPs they pose then have the same size and block structure.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Layout {
+    flexibility: u64,
+    nodes: usize,
+    kind: u8,
+    dofs: Vec<(DofKind, bool)>,
+}
+
+impl Layout {
+    /// The layout of a problem.
+    pub fn of(p: &ContactProblem) -> Layout {
+        use crate::formulation::ProblemKind as K;
+        let kind = match p.kind {
+            K::Frictionless => 0,
+            K::Frictional => 1,
+            K::SlidingLimit { .. } => 2,
+            K::GrossSliding { .. } => 3,
+        };
+        let dofs = p.dofs.iter().map(|d| (d.kind, p.is_unknown(d))).collect();
+        Layout { flexibility: p.flex.id.get(), nodes: p.n(), kind, dofs }
+    }
+}
+
+/// A solver's own state after a run, for its next run: typed by the solver (its own type `T`, opaque to the rest of
+/// rollbem), stamped with the solver and the problem's [`Layout`] (the flexibility's identity included). It is handed
+/// back ([`Start::take_state`]) only to the same solver on a problem of the same layout.
+pub struct SolverState {
+    solver: SolverId,
+    layout: Layout,
+    data: Box<dyn Any + Send + Sync>,
+}
+
+impl SolverState {
+    /// Keep `data` as `solver`'s state after a run on `problem`.
+    pub fn new<T: Send + Sync + 'static>(solver: SolverId, problem: &ContactProblem, data: T) -> SolverState {
+        SolverState { solver, layout: Layout::of(problem), data: Box::new(data) }
+    }
+
+    /// Which solver left it.
+    pub fn solver(&self) -> SolverId {
+        self.solver
+    }
+
+    /// Whether it was left by `solver` on a problem of `problem`'s layout (same flexibility, same unknowns).
+    pub fn fits(&self, solver: SolverId, problem: &ContactProblem) -> bool {
+        self.solver == solver && self.layout == Layout::of(problem)
+    }
+}
+
+impl std::fmt::Debug for SolverState {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "SolverState({} on {:?})", self.solver, self.layout)
+    }
+}
+
+/// What a solve starts from: a nearby solution (the previous drive's or substep's, in the problem's unknowns), the
+/// solver's own state from its previous run, and the caller's cancellation token. [`Start::cold`] has none of
+/// them. A solver must not trust either blindly: [`Start::solution_for`] and [`Start::take_state`] hand them out
+/// only when they fit the problem.
+#[derive(Debug, Default)]
+pub struct Start {
+    /// A nearby solution (see [`Start::solution_for`]).
+    pub solution: Option<Solution>,
+    /// The solver's own state from its previous run (see [`Start::take_state`]).
+    pub state: Option<SolverState>,
+    /// The caller's cancellation token: a solver checks it at each iteration and returns promptly when it is
+    /// raised (its termination is then `not_converged`, and the pipeline reports the run as cancelled).
+    pub cancel: Cancel,
+}
+
+impl Start {
+    /// No start: the solver's cold start, not cancellable.
+    pub fn cold() -> Start {
+        Start::default()
+    }
+
+    /// A cold start with a cancellation token.
+    pub fn cancellable(cancel: Cancel) -> Start {
+        Start { cancel, ..Start::default() }
+    }
+
+    /// The nearby solution, if it has the problem's shape: f of n nodes, h of n nodes or none, one value per rigid
+    /// DOF, every value finite. A solution of another shape is ignored (a cold start), never indexed.
+    pub fn solution_for(&self, p: &ContactProblem) -> Option<&Solution> {
+        let n = p.n();
+        self.solution.as_ref().filter(|w| {
+            w.f.len() == n
+                && w.rigid.len() == p.dofs.len()
+                && w.h.as_ref().is_none_or(|h| h.len() == n)
+                && w.f.iter().chain(w.h.iter().flatten()).chain(&w.rigid).all(|v| v.is_finite())
         })
     }
 
-    /// The settings as tables keyed by solver name, every default filled in (the scene as parsed).
-    pub fn tables(&self) -> BTreeMap<String, toml::Value> {
-        let mut out = BTreeMap::new();
-        let mut put = |id: SolverId, v: toml::Value| {
-            out.insert(id.name().to_string(), v);
-        };
-        put(SolverId::Lemke, settings_value(&self.lemke));
-        put(SolverId::ActiveSet, settings_value(&self.active_set));
-        put(SolverId::Clarabel, settings_value(&self.clarabel));
-        put(SolverId::Pgs, settings_value(&self.pgs));
-        put(SolverId::NormtangQp, settings_value(&self.normtang_qp));
-        put(SolverId::LemkeDense, settings_value(&self.lemke_dense));
-        out
-    }
-
-    /// Check every solver's ranges (for settings built in code; [`SolverSettings::from_tables`] already did).
-    pub fn validate(&self) -> Result<(), SettingsError> {
-        SolverSettings::from_tables(&self.tables()).map(|_| ())
-    }
-
-    /// The relative tolerance an iterative solver stops at (`None` for a direct one).
-    pub fn tolerance(&self, id: SolverId) -> Option<f64> {
-        match id {
-            SolverId::Pgs => Some(self.pgs.tolerance),
-            SolverId::NormtangQp => Some(self.normtang_qp.tolerance),
-            _ => None,
-        }
+    /// Take the solver's own state, typed, if it was left by `solver` on a problem of `p`'s layout and is a `T`;
+    /// otherwise drop it (`None`: a cold start).
+    pub fn take_state<T: 'static>(&mut self, solver: SolverId, p: &ContactProblem) -> Option<T> {
+        let state = self.state.take().filter(|s| s.fits(solver, p))?;
+        state.data.downcast::<T>().ok().map(|b| *b)
     }
 }
 
@@ -208,8 +473,14 @@ pub trait Solver: Send + Sync {
     /// Whether it applies to a problem; `Err` says why not.
     fn applies(&self, problem: &ContactProblem) -> Result<(), String>;
 
-    /// Solve. Called only when [`Solver::applies`] is `Ok` and the problem has a static solution to look for.
-    fn solve(&self, problem: &ContactProblem) -> Outcome;
+    /// Solve from a start (a nearby solution, its own state, a cancellation token). Called only when
+    /// [`Solver::applies`] is `Ok` and the problem has a static solution to look for.
+    fn solve_from(&self, problem: &ContactProblem, start: Start) -> Outcome;
+
+    /// Solve from the cold start ([`Start::cold`]).
+    fn solve(&self, problem: &ContactProblem) -> Outcome {
+        self.solve_from(problem, Start::cold())
+    }
 
     /// The relative tolerance it stops at, for an iterative solver (`None` for a direct one).
     fn tolerance(&self) -> Option<f64> {
@@ -336,8 +607,31 @@ impl Serialize for Work {
     }
 }
 
+/// A solver's own figures of a run, named (e.g. clarabel's `polish_change`), in the solver's order: what the
+/// harness reports beside the work counters without knowing what they mean.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(transparent)]
+pub struct Figures(pub BTreeMap<String, f64>);
+
+impl Figures {
+    /// One figure.
+    pub fn one(name: &str, value: f64) -> Figures {
+        Figures(BTreeMap::from([(name.to_string(), value)]))
+    }
+
+    /// The value of a figure.
+    pub fn get(&self, name: &str) -> Option<f64> {
+        self.0.get(name).copied()
+    }
+
+    /// Whether there is none.
+    pub fn is_empty(&self) -> bool {
+        self.0.is_empty()
+    }
+}
+
 /// What a solver run produced.
-#[derive(Debug, Clone)]
+#[derive(Debug)]
 pub struct Outcome {
     /// The solution in the problem's unknowns (`None` when nothing was computed).
     pub solution: Option<Solution>,
@@ -347,9 +641,17 @@ pub struct Outcome {
     pub message: String,
     /// Work counters.
     pub work: Work,
-    /// For clarabel: max |p − p_unpolished| / p_max, the effect of solving the symmetrised QP before the
-    /// active-set polish with the nonsymmetric flexibility.
-    pub polish_change: Option<f64>,
+    /// The solver's own figures of the run (none for most).
+    pub figures: Figures,
+    /// What the solver leaves for its next run on a problem of the same layout ([`SolverState`]).
+    pub state: Option<SolverState>,
+}
+
+impl Outcome {
+    /// An outcome with no solution (a failure, or a cancelled run), no figures and no state.
+    pub fn failed(status: Termination, message: String, work: Work) -> Outcome {
+        Outcome { solution: None, status, message, work, figures: Figures::default(), state: None }
+    }
 }
 
 /// A solver setting out of range or unknown: an input error naming the dotted key.
@@ -383,6 +685,11 @@ impl SettingsError {
 pub trait Validate {
     /// `Err((key, message))` for the first value out of range (the key relative to the settings table).
     fn validate(&self) -> Result<(), (&'static str, String)>;
+
+    /// The relative tolerance an iterative solver with these settings stops at (`None`, the default: a direct one).
+    fn tolerance(&self) -> Option<f64> {
+        None
+    }
 }
 
 /// Parse and validate a solver's settings table (`None`: the defaults). Errors name `solvers.NAME.KEY`.
@@ -406,20 +713,21 @@ where
     Ok(settings)
 }
 
-/// A settings struct as a TOML table (for the scene as parsed, with defaults filled in).
+/// A settings struct as a TOML table (for the scene as parsed, with defaults filled in); a settings type that does
+/// not serialise to a table (a type of a plugged-in solver) gives an empty table.
 pub fn settings_value<T: Serialize>(t: &T) -> toml::Value {
-    toml::Value::try_from(t).expect("solver settings serialise to a TOML table")
+    toml::Value::try_from(t).unwrap_or_else(|_| toml::Value::Table(Default::default()))
 }
 
 /// The registry entry of a name.
 pub fn entry(name: &str) -> Option<&'static Entry> {
-    REGISTRY.iter().find(|e| e.name == name)
+    registry().into_iter().find(|e| e.name() == name)
 }
 
 /// The union of the registry's work counters, in registry order (the work columns of a sweep CSV).
 pub fn work_columns() -> Vec<&'static str> {
     let mut out: Vec<&'static str> = Vec::new();
-    for c in REGISTRY.iter().flat_map(|e| e.counters) {
+    for c in registry().into_iter().flat_map(|e| e.counters) {
         if !out.contains(c) {
             out.push(c);
         }
@@ -429,13 +737,13 @@ pub fn work_columns() -> Vec<&'static str> {
 
 /// Every registered name, comma-separated (for error messages and help).
 pub fn names() -> String {
-    REGISTRY.iter().map(|e| e.name).collect::<Vec<_>>().join(", ")
+    registry().into_iter().map(|e| e.name()).collect::<Vec<_>>().join(", ")
 }
 
 /// The solver of a name with the default settings; an unknown name is an error listing the valid ones.
 pub fn build(name: &str) -> Result<Box<dyn Solver>, SettingsError> {
-    match SolverId::from_name(name) {
-        Some(id) => Ok(id.build(&SolverSettings::default())),
+    match SolverId::from_name(name).and_then(|id| id.build(&SolverSettings::default())) {
+        Some(solver) => Ok(solver),
         None => Err(SettingsError {
             unknown: true,
             field: "solvers.use".into(),

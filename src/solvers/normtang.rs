@@ -21,7 +21,8 @@
 
 use super::clarabel_box::solve_box;
 use super::clarabel_qp::{solve_frictionless, QpSettings};
-use super::{Entry, Solver, SolverId, SolverSettings, Termination, Validate, Work};
+use super::{settings_of, Entry, Figures, Solver, SolverId, Start, Termination, Validate, Work};
+use crate::cancel::Cancel;
 use crate::formulation::{ContactProblem, Dof, DofKind, ProblemKind, Solution};
 use faer::Mat;
 use serde::{Deserialize, Serialize};
@@ -79,13 +80,17 @@ pub struct Split {
     pub normal: Dof,
     /// Tangential drive, dimensionless.
     pub tangential: Dof,
-    /// A starting guess (f, h, rigid motion by slot): the problem's warm start, if any.
+    /// A starting guess (f, h, rigid motion by slot): the problem's warm start, if any. A guess whose f or h is not
+    /// n long is ignored (the cold start).
     pub start: Option<(Vec<f64>, Vec<f64>, [f64; 3])>,
+    /// The caller's cancellation token, checked at every outer iteration and inner sweep.
+    pub cancel: Cancel,
 }
 
 impl Split {
-    /// The split view of a problem (frictionless or frictional; the caller has checked that NORM-TANG applies).
-    pub fn from_problem(p: &ContactProblem) -> Split {
+    /// The split view of a problem (frictionless or frictional; the caller has checked that NORM-TANG applies),
+    /// starting from `warm` (a nearby solution in the problem's unknowns) when it has the problem's shape.
+    pub fn from_problem(p: &ContactProblem, warm: Option<&Solution>) -> Split {
         let flex = p.flex;
         let n = flex.n();
         let mu = p.law.friction;
@@ -152,15 +157,16 @@ impl Split {
             rigid_given,
             normal,
             tangential,
-            start: p.warm.as_ref().map(|w| {
+            start: warm.filter(|w| w.f.len() == n && w.rigid.len() == p.dofs.len()).map(|w| {
                 let mut rigid = rigid_given;
                 for (d, v) in p.dofs.iter().zip(&w.rigid) {
                     if d.is_load() {
                         rigid[slot(d.kind)] = *v;
                     }
                 }
-                (w.f.clone(), w.h.clone().unwrap_or_else(|| vec![0.0; n]), rigid)
+                (w.f.clone(), w.h.clone().filter(|h| h.len() == n).unwrap_or_else(|| vec![0.0; n]), rigid)
             }),
+            cancel: Cancel::never(),
         }
     }
 }
@@ -187,6 +193,10 @@ impl Default for PgsSettings {
 }
 
 impl Validate for PgsSettings {
+    fn tolerance(&self) -> Option<f64> {
+        Some(self.tolerance)
+    }
+
     fn validate(&self) -> Result<(), (&'static str, String)> {
         super::check_tolerance("tolerance", self.tolerance)?;
         super::check_count("max_sweeps", self.max_sweeps)?;
@@ -217,6 +227,10 @@ impl Default for NormTangQpSettings {
 }
 
 impl Validate for NormTangQpSettings {
+    fn tolerance(&self) -> Option<f64> {
+        Some(self.tolerance)
+    }
+
     fn validate(&self) -> Result<(), (&'static str, String)> {
         super::check_tolerance("tolerance", self.tolerance)?;
         super::check_count("max_outer", self.max_outer)?;
@@ -271,6 +285,7 @@ pub fn pgs_box(
     omega: f64,
     tol: f64,
     max_sweeps: usize,
+    cancel: &Cancel,
 ) -> (usize, bool) {
     for i in 0..n {
         x[i] = x[i].clamp(lo[i], hi[i]);
@@ -288,6 +303,9 @@ pub fn pgs_box(
         }
         if change <= tol * scale || scale == 0.0 && change == 0.0 {
             return (sweep, true);
+        }
+        if cancel.is_cancelled() {
+            return (sweep, false);
         }
     }
     (max_sweeps, false)
@@ -387,8 +405,8 @@ fn root<F: FnMut(f64) -> Result<f64, Failure>>(
 pub fn solve(p: &Split, inner: &Inner) -> Outcome {
     let n = p.n;
     let (mut f, mut h, mut rigid) = match &p.start {
-        Some((f, h, r)) => (f.clone(), h.clone(), *r),
-        None => (vec![0.0; n], vec![0.0; n], p.rigid_given),
+        Some((f, h, r)) if f.len() == n && h.len() == n => (f.clone(), h.clone(), *r),
+        _ => (vec![0.0; n], vec![0.0; n], p.rigid_given),
     };
     let mut sweeps = 0usize;
     let mut qp_iterations = 0u32;
@@ -401,6 +419,9 @@ pub fn solve(p: &Split, inner: &Inner) -> Outcome {
     let mut change = f64::INFINITY;
     let result = loop {
         outer += 1;
+        if p.cancel.is_cancelled() {
+            break Err(Failure(Termination::NotConverged, format!("cancelled at outer iteration {outer}")));
+        }
         let (f_prev, h_prev) = (f.clone(), h.clone());
         if let Err(Failure(st, msg)) = norm(p, inner, &h, &mut f, &mut rigid, &mut sweeps, &mut qp_iterations) {
             break Err(Failure(st, format!("NORM, outer iteration {outer}: {msg}")));
@@ -468,7 +489,8 @@ fn norm(
             check_diagonal(&p.knn_rows, n, "normal")?;
             let mut solve_at = |d: f64, f: &mut Vec<f64>| -> Result<f64, Failure> {
                 let q: Vec<f64> = (0..n).map(|i| q0[i] + c[i] * d).collect();
-                let (sw, ok) = pgs_box(&p.knn_rows, n, &q, &lo, &hi, f, s.relaxation, 0.1 * s.tolerance, s.max_sweeps);
+                let (sw, ok) =
+                    pgs_box(&p.knn_rows, n, &q, &lo, &hi, f, s.relaxation, 0.1 * s.tolerance, s.max_sweeps, &p.cancel);
                 *sweeps += sw;
                 if !ok {
                     return Err(pgs_not_converged(s.max_sweeps, *sweeps));
@@ -628,8 +650,18 @@ fn tang_pgs(
     check_diagonal(&sub.ktt_rows, na, "tangential")?;
     let mut solve_at = |d: f64, x: &mut Vec<f64>| -> Result<f64, Failure> {
         let q: Vec<f64> = (0..na).map(|i| sub.q0[i] + sub.c[i] * d).collect();
-        let (sw, ok) =
-            pgs_box(&sub.ktt_rows, na, &q, &sub.lo, &sub.hi, x, s.relaxation, 0.1 * s.tolerance, s.max_sweeps);
+        let (sw, ok) = pgs_box(
+            &sub.ktt_rows,
+            na,
+            &q,
+            &sub.lo,
+            &sub.hi,
+            x,
+            s.relaxation,
+            0.1 * s.tolerance,
+            s.max_sweeps,
+            &p.cancel,
+        );
         *sweeps += sw;
         if !ok {
             return Err(pgs_not_converged(s.max_sweeps, *sweeps));
@@ -704,30 +736,51 @@ pub struct NormTangQp {
     pub settings: NormTangQpSettings,
 }
 
+/// NORM-TANG with PGS: its identity.
+pub const PGS_ID: SolverId = SolverId::new("pgs");
+
+/// NORM-TANG with clarabel QPs: its identity.
+pub const NORMTANG_QP_ID: SolverId = SolverId::new("normtang_qp");
+
+/// What rules NORM-TANG out from a scene alone: a prescribed moment.
+fn scene_applies(facts: &super::SceneFacts) -> Result<(), String> {
+    if facts.moment_load {
+        Err(NO_MOMENT.into())
+    } else {
+        Ok(())
+    }
+}
+
+/// Why NORM-TANG does not apply to a prescribed moment.
+const NO_MOMENT: &str = "the NORM-TANG split does not carry a prescribed moment (use lemke)";
+
 /// Registry entry of NORM-TANG with PGS.
-pub const PGS_ENTRY: Entry = Entry {
-    id: SolverId::Pgs,
-    name: "pgs",
-    summary: "NORM-TANG split (Kalker; González & Abascal) with projected Gauss–Seidel sweeps; no moment load",
-    in_all: true,
-    counters: &["sweeps", "outer"],
-    build: |s: &SolverSettings| Box::new(Pgs { settings: s.pgs }),
-};
+pub const PGS_ENTRY: Entry = Entry::new::<PgsSettings>(
+    "pgs",
+    "NORM-TANG split (Kalker; González & Abascal) with projected Gauss–Seidel sweeps; no moment load",
+    true,
+    &["sweeps", "outer"],
+    |s| Box::new(Pgs { settings: settings_of::<PgsSettings>(s).copied().unwrap_or_default() }),
+    // Up to m sweeps of m² each on the dense rows.
+    |m| (5e-9 * m * m * m, 24.0 * m * m),
+)
+.restricted(scene_applies);
 
 /// Registry entry of NORM-TANG with clarabel QPs.
-pub const NORMTANG_QP_ENTRY: Entry = Entry {
-    id: SolverId::NormtangQp,
-    name: "normtang_qp",
-    summary: "NORM-TANG with clarabel QPs as the inner solver; no moment load",
-    in_all: true,
-    counters: &["iterations", "outer"],
-    build: |s: &SolverSettings| Box::new(NormTangQp { settings: s.normtang_qp.clone() }),
-};
+pub const NORMTANG_QP_ENTRY: Entry = Entry::new::<NormTangQpSettings>(
+    "normtang_qp",
+    "NORM-TANG with clarabel QPs as the inner solver; no moment load",
+    true,
+    &["iterations", "outer"],
+    |s| Box::new(NormTangQp { settings: settings_of::<NormTangQpSettings>(s).cloned().unwrap_or_default() }),
+    super::clarabel::cost,
+)
+.restricted(scene_applies);
 
 /// Whether NORM-TANG applies: not with a prescribed moment, not at the sliding limit.
 fn applies(p: &ContactProblem) -> Result<(), String> {
     if matches!(p.drive.rotational, Dof::Load(_)) {
-        Err("the NORM-TANG split does not carry a prescribed moment (use lemke)".into())
+        Err(NO_MOMENT.into())
     } else if matches!(p.kind, ProblemKind::SlidingLimit { .. }) {
         Err("at the sliding limit |Q| = μP the problem is solved as full slip by lemke".into())
     } else {
@@ -735,26 +788,29 @@ fn applies(p: &ContactProblem) -> Result<(), String> {
     }
 }
 
-/// Run NORM-TANG and put its answer in the one solution shape.
-fn run(p: &ContactProblem, inner: &Inner) -> super::Outcome {
-    let out = solve(&Split::from_problem(p), inner);
+/// Run NORM-TANG from a start and put its answer in the one solution shape.
+fn run(p: &ContactProblem, inner: &Inner, start: Start) -> super::Outcome {
+    let mut split = Split::from_problem(p, start.solution_for(p));
+    split.cancel = start.cancel;
+    let out = solve(&split, inner);
     let work = match inner {
         Inner::Pgs(_) => Work::of(&[("sweeps", out.sweeps as u64), ("outer", out.outer as u64)]),
         Inner::Qp(_) => Work::of(&[("iterations", out.qp_iterations as u64), ("outer", out.outer as u64)]),
     };
     let rigid = p.dofs.iter().map(|d| out.rigid[slot(d.kind)]).collect();
     super::Outcome {
-        solution: Some(Solution { f: out.f, h: out.h, rigid, tangential_known: true, support: None }),
+        solution: Some(Solution { f: out.f, h: out.h, rigid, tangential_known: true }),
         status: out.status,
         message: out.message,
         work,
-        polish_change: None,
+        figures: Figures::default(),
+        state: None,
     }
 }
 
 impl Solver for Pgs {
     fn id(&self) -> SolverId {
-        SolverId::Pgs
+        PGS_ID
     }
     fn applies(&self, p: &ContactProblem) -> Result<(), String> {
         applies(p)
@@ -762,14 +818,14 @@ impl Solver for Pgs {
     fn tolerance(&self) -> Option<f64> {
         Some(self.settings.tolerance)
     }
-    fn solve(&self, p: &ContactProblem) -> super::Outcome {
-        run(p, &Inner::Pgs(self.settings))
+    fn solve_from(&self, p: &ContactProblem, start: Start) -> super::Outcome {
+        run(p, &Inner::Pgs(self.settings), start)
     }
 }
 
 impl Solver for NormTangQp {
     fn id(&self) -> SolverId {
-        SolverId::NormtangQp
+        NORMTANG_QP_ID
     }
     fn applies(&self, p: &ContactProblem) -> Result<(), String> {
         if p.slip.is_steady() && p.law.friction > 0.0 {
@@ -782,7 +838,7 @@ impl Solver for NormTangQp {
     fn tolerance(&self) -> Option<f64> {
         Some(self.settings.tolerance)
     }
-    fn solve(&self, p: &ContactProblem) -> super::Outcome {
-        run(p, &Inner::Qp(self.settings.clone()))
+    fn solve_from(&self, p: &ContactProblem, start: Start) -> super::Outcome {
+        run(p, &Inner::Qp(self.settings.clone()), start)
     }
 }

@@ -263,7 +263,7 @@ pub fn solve_system_with_response(model: &Model, sys: &System) -> Result<(Flexib
         g0: mesh.contact_nodes.iter().map(|&i| mesh.initial_gap(i)).collect(),
         weights,
         scales: Scales { length: model.length, modulus: model.modulus },
-        memo: Default::default(),
+        id: Default::default(),
         derived: Default::default(),
     };
     Ok((flex, BemHealth { system_size: 2 * nn, pivot_ratio, system_condition }, sol))

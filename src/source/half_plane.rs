@@ -161,7 +161,7 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
         g0,
         weights,
         scales: Scales { length: l0, modulus: w.material.youngs_modulus },
-        memo: Default::default(),
+        id: Default::default(),
         derived: Default::default(),
     };
     add_counter_body(&mut flex, scene, &grid);

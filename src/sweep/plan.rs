@@ -399,7 +399,7 @@ fn costs(scene: &Scene) -> Costs {
     let contact = strips * per_element(scene.element());
     let m = if Model::needs(scene).0 > crate::source::Blocks::Normal { 3.0 * contact + 2.0 } else { contact + 2.0 };
     let set = scene.solvers();
-    let all = crate::solvers::REGISTRY.iter().filter(|e| set.all && e.in_all && !set.names(e.id)).map(|e| e.id);
+    let all = crate::solvers::registry().into_iter().filter(|e| set.all && e.in_all && !set.names(e.id)).map(|e| e.id);
     let substeps = match scene.loading() {
         Loading::Drive(_) => 1.0,
         Loading::Path(steps) => steps.iter().map(|s| s.substeps as f64).sum(),
@@ -414,14 +414,9 @@ fn costs(scene: &Scene) -> Costs {
 }
 
 /// A solver's rough time (s) and memory (bytes) on m complementarity unknowns, beyond a fixed 0.5 ms a run
-/// (module docs).
+/// (module docs): its registry entry's cost model ([`crate::solvers::Entry::cost`]).
 fn solver_cost(id: SolverId, m: f64) -> (f64, f64) {
-    match id {
-        SolverId::Lemke | SolverId::LemkeDense => (4e-10 * m * m * m, 24.0 * m * m),
-        SolverId::ActiveSet => (1e-7 * m * m, 8.0 * m * m),
-        SolverId::Pgs => (5e-9 * m * m * m, 24.0 * m * m),
-        SolverId::Clarabel | SolverId::NormtangQp => (2e-9 * m * m * m, 24.0 * m * m),
-    }
+    id.entry().map_or((0.0, 0.0), |e| (e.cost)(m))
 }
 
 /// The cases to run, in units sharing a model, and the estimate's sums.

@@ -24,16 +24,18 @@
 //! changes factorise A(S) afresh, which becomes the new A(S₀).
 //!
 //! **Across solves.** On a model solved for many drives with warm starts (a creep curve, a sweep with
-//! `warm_start = true`), what a solve leaves is kept in the flexibility's memo and used by the next one only when it
+//! `warm_start = true`), what a solve leaves is kept in the solver's state ([`crate::solvers::SolverState`], owned by
+//! the caller's warm start, stamped with the flexibility and the problem's layout) and used by the next one only when it
 //! is provably the same: the normal phase's result when the normal problem's data (gap constants, load rows, loads,
 //! settings) are equal bit for bit, the normal factorisation when its matrix-defining data are, and A(S₀) when D and
 //! the tangential load rows are (K_TT is the flexibility's own). A cold solve reads nothing (its work must not depend
 //! on what ran before it).
 
 use super::{
-    gaps, iterate, slip_factor, slips, warm_unknowns, ActiveSetSettings, Data, Iterate, Linear, NodeSet, Reduced, Step,
+    gaps, iterate, slip_factor, slips, warm_unknowns, ActiveSetSettings, Control, Data, Iterate, Linear, NodeSet,
+    Reduced, Step,
 };
-use crate::formulation::ContactProblem;
+use crate::formulation::{ContactProblem, Solution};
 use faer::Mat;
 
 /// The largest relative residual (max-norm, relative to the right-hand side's) a bordered solve may leave before it
@@ -70,7 +72,7 @@ pub(super) struct Run {
 }
 
 /// What a solve leaves for the next one on the same flexibility (module docs, "Across solves").
-struct Kept {
+pub(super) struct Kept {
     normal_matrix: Vec<u64>,
     normal_data: Vec<u64>,
     normal_base: Option<Reduced>,
@@ -115,19 +117,22 @@ fn keys(
     (normal_matrix, normal_data, tangential_matrix)
 }
 
-/// Solve a problem for which [`applies`] holds from `start` (a warm start's or a coarse grid's sets).
+/// Solve a problem for which [`applies`] holds from `start` (a warm start's or a coarse grid's sets), with `warm`
+/// the warm start's solution and `kept` what the last run on this layout left; returns the run and what it leaves.
 pub(super) fn solve(
-    settings: &ActiveSetSettings,
+    ctl: &Control,
     p: &ContactProblem,
     d: &Data,
     start: Option<Vec<NodeSet>>,
+    warm: Option<&Solution>,
+    kept: Option<Kept>,
     count: &mut usize,
-) -> Run {
+) -> (Run, Kept) {
     let n = d.n;
+    let settings = ctl.settings;
     let dn = Data::of(p, true);
     let tangential_load: Vec<bool> = p.load_dofs().map(|dof| dof.kind.is_tangential()).collect();
     let (normal_matrix, normal_data, tangential_matrix) = keys(settings, p, d, &dn, &tangential_load);
-    let kept = if p.warm.is_some() { p.flex.memo.take::<Kept>() } else { None };
     let (mut normal_base, mut normal_solution, mut tangential_base) = (None, None, None);
     let mut normal_exact = false;
     if let Some(k) = kept {
@@ -149,11 +154,11 @@ pub(super) fn solve(
                 Some(s) => s.iter().map(|v| if *v == NodeSet::Separated { *v } else { NodeSet::Stick }).collect(),
                 None => vec![NodeSet::Stick; n],
             };
-            let y0 = warm_unknowns(p, &dn);
+            let y0 = warm_unknowns(p, &dn, warm);
             let mut linear = Linear::new();
             linear.base = normal_base.take();
             linear.base_exact = normal_exact && linear.base.is_some();
-            let out = iterate(&dn, sets, y0, settings, count, &mut linear);
+            let out = iterate(&dn, sets, y0, ctl, count, &mut linear);
             run.factorisations += linear.factorisations;
             run.gmres += linear.gmres_iterations;
             normal_base = linear.base;
@@ -161,7 +166,15 @@ pub(super) fn solve(
                 Ok(v) => v,
                 Err(why) => {
                     run.result = Err(format!("normal phase: {why}"));
-                    return run;
+                    let kept = Kept {
+                        normal_matrix,
+                        normal_data,
+                        normal_base,
+                        normal_solution: None,
+                        tangential_matrix,
+                        tangential_base,
+                    };
+                    return (run, kept);
                 }
             }
         }
@@ -191,19 +204,19 @@ pub(super) fn solve(
         base: tangential_base,
         factorisations: 0,
     };
-    let out = iterate(d, sets, None, settings, count, &mut tangential);
+    let out = iterate(d, sets, None, ctl, count, &mut tangential);
     run.factorisations += tangential.factorisations;
     let tangential_base = tangential.base.take();
     run.result = out.map(|(it, _)| it).map_err(|why| format!("tangential phase: {why}"));
-    p.flex.memo.put(Kept {
+    let kept = Kept {
         normal_matrix,
         normal_data,
         normal_base,
         normal_solution: Some((normal_it, normal_sets)),
         tangential_matrix,
         tangential_base,
-    });
-    run
+    };
+    (run, kept)
 }
 
 /// A factorised tangential system A(S₀): its unknowns (nodes i < n, tangential loads n + k) and their positions.

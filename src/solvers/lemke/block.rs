@@ -34,6 +34,7 @@
 //! same pivot path on exact data.
 
 use super::{column, LemkeOutcome, LemkeSettings, Scaled, Z0_NEGLIGIBLE};
+use crate::cancel::Cancel;
 use crate::solvers::Termination;
 use faer::linalg::matmul::matmul;
 use faer::linalg::solvers::{PartialPivLu, Solve};
@@ -576,7 +577,7 @@ fn numerical_failure(sc: &Scaled, msg: String, pivots: usize) -> LemkeOutcome {
 
 /// The initial pivot (z₀ enters) and Lemke's loop from the engine's current complementary basis, whose basic
 /// values x are not all ≥ 0, and whose covering vector makes z₀'s pivot column −e (d = B e).
-fn lemke_loop(e: &mut Engine, sc: &Scaled, settings: &LemkeSettings) -> LemkeOutcome {
+fn lemke_loop(e: &mut Engine, sc: &Scaled, settings: &LemkeSettings, cancel: &Cancel) -> LemkeOutcome {
     let n = e.n;
     let mut d = vec![0.0; n];
     e.ftran(Var::Z0, &mut d);
@@ -649,6 +650,14 @@ fn lemke_loop(e: &mut Engine, sc: &Scaled, settings: &LemkeSettings) -> LemkeOut
                 format!("pivot limit {max_pivots} reached"),
             );
         }
+        if cancel.is_cancelled() {
+            return sc.finish(
+                e.z_vector(),
+                Termination::NotConverged,
+                pivots,
+                format!("cancelled after {pivots} pivots"),
+            );
+        }
         if e.eta_slots.len() >= settings.refactor_every.max(e.base.zvars.len() / 4) && !e.refactor() {
             return numerical_failure(
                 sc,
@@ -661,10 +670,10 @@ fn lemke_loop(e: &mut Engine, sc: &Scaled, settings: &LemkeSettings) -> LemkeOut
 
 /// Run the block-revised engine on a prepared (scaled, q ≱ 0) problem: the cold start (covering vector e, initial
 /// basis I).
-pub(crate) fn run(sc: &Scaled, settings: &LemkeSettings) -> LemkeOutcome {
+pub(crate) fn run(sc: &Scaled, settings: &LemkeSettings, cancel: &Cancel) -> LemkeOutcome {
     let n = sc.q.len();
     let mut e = Engine::new(sc, vec![1.0; n]);
-    lemke_loop(&mut e, sc, settings)
+    lemke_loop(&mut e, sc, settings, cancel)
 }
 
 /// Why a warm start was abandoned, and the pivots it spent.
@@ -682,7 +691,12 @@ pub(crate) struct WarmFailure {
 /// vector d̄ ≥ 0 (Cottle, Pang & Stone §4.4 on general covering vectors), and the lexicographic rule is taken with
 /// respect to B_g, so its anti-cycling argument carries over. `Err` when the guessed basis is singular or the
 /// warm-started path does not end with z₀ leaving (the caller then starts cold).
-pub(crate) fn run_warm(sc: &Scaled, settings: &LemkeSettings, guess: &[bool]) -> Result<LemkeOutcome, WarmFailure> {
+pub(crate) fn run_warm(
+    sc: &Scaled,
+    settings: &LemkeSettings,
+    guess: &[bool],
+    cancel: &Cancel,
+) -> Result<LemkeOutcome, WarmFailure> {
     let n = sc.q.len();
     let fail = |reason: String, pivots| Err(WarmFailure { reason, pivots });
     if guess.len() != n {
@@ -721,7 +735,7 @@ pub(crate) fn run_warm(sc: &Scaled, settings: &LemkeSettings, guess: &[bool]) ->
     e.cover = cover;
     let nguess = guess.iter().filter(|&&g| g).count();
     let ninfeasible = e.x.iter().filter(|&&v| v < -feas_tol).count();
-    let out = lemke_loop(&mut e, sc, settings);
+    let out = lemke_loop(&mut e, sc, settings, cancel);
     if out.status == Termination::Solved {
         let repair = if dropped > 0 { format!(" ({dropped} dropped to make it nonsingular)") } else { String::new() };
         let message = format!(

@@ -18,22 +18,27 @@
 //! exactly as before the rework.
 
 use super::{column, prepare, Lemke, LemkeOutcome, LemkeSettings, Scaled, Z0_NEGLIGIBLE};
-use crate::solvers::{Entry, Lcp, SolverId, SolverSettings, Termination};
+use crate::cancel::Cancel;
+use crate::solvers::{settings_of, Entry, Lcp, SolverId, Termination};
 use faer::linalg::matmul::matmul;
 use faer::linalg::solvers::Solve;
 use faer::{Accum, Mat, MatMut, MatRef, Par};
 
+/// The dense engine's identity.
+pub const ID: SolverId = SolverId::new("lemke_dense");
+
 /// Registry entry: Lemke with the dense engine (not part of `all`: run it by name).
-pub const ENTRY: Entry = Entry {
-    id: SolverId::LemkeDense,
-    name: "lemke_dense",
-    summary: "Lemke's method, dense reference engine (whole basis inverse); every scene; run by name only",
-    in_all: false,
-    counters: &["pivots"],
-    build: |s: &SolverSettings| {
-        Box::new(Lemke { id: SolverId::LemkeDense, settings: s.lemke_dense, engine: solve_dense })
+pub const ENTRY: Entry = Entry::new::<LemkeSettings>(
+    "lemke_dense",
+    "Lemke's method, dense reference engine (whole basis inverse); every scene; run by name only",
+    false,
+    &["pivots"],
+    |s| {
+        let settings = settings_of::<LemkeSettings>(s).copied().unwrap_or_default();
+        Box::new(Lemke { id: ID, settings, engine: solve_dense_cancellable })
     },
-};
+    super::cost,
+);
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Var {
@@ -331,6 +336,11 @@ impl Work<'_> {
 /// per pivot and O(m³) per refactorisation. Slower than [`super::solve`], kept as an independent implementation that the
 /// tests compare against.
 pub fn solve_dense(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
+    solve_dense_cancellable(lcp, settings, &Cancel::never())
+}
+
+/// [`solve_dense`], stopping (`not_converged`) at the first pivot after `cancel` is raised.
+pub fn solve_dense_cancellable(lcp: &Lcp, settings: &LemkeSettings, cancel: &Cancel) -> LemkeOutcome {
     let sc = match prepare(lcp) {
         Ok(sc) => sc,
         Err(out) => return out,
@@ -412,6 +422,10 @@ pub fn solve_dense(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
         if pivots >= max_pivots {
             let z = extract_z(&wk);
             return finish(z, Termination::NotConverged, pivots, format!("pivot limit {max_pivots} reached"));
+        }
+        if cancel.is_cancelled() {
+            let z = extract_z(&wk);
+            return finish(z, Termination::NotConverged, pivots, format!("cancelled after {pivots} pivots"));
         }
         if wk.eta_rows.len() >= settings.refactor_every && !wk.absorb() {
             return fail(format!("the basis became numerically singular after {pivots} pivots"), pivots);

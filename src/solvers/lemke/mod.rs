@@ -74,7 +74,11 @@
 pub mod block;
 pub mod dense;
 
-use super::{Entry, LcpOutcome, LcpSolver, Outcome, Solver, SolverId, SolverSettings, Termination, Validate, Work};
+use super::{
+    settings_of, Entry, Figures, LcpOutcome, LcpSolver, Outcome, Solver, SolverId, SolverState, Start, Termination,
+    Validate, Work,
+};
+use crate::cancel::Cancel;
 use crate::formulation::{lcp::frictional_lcp, ContactProblem, Dof, Lcp, ProblemKind};
 use faer::Mat;
 
@@ -261,8 +265,13 @@ pub(crate) fn prepare(lcp: &Lcp) -> Result<Scaled<'_>, LemkeOutcome> {
 /// Solve `w = M z + q ⊥ z ≥ 0` by Lemke's method: the block-revised engine ([`block`]), which works
 /// on the k × k block of the basis that involves z-columns only.
 pub fn solve(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
+    solve_cancellable(lcp, settings, &Cancel::never())
+}
+
+/// [`solve`], stopping (`not_converged`, "cancelled") at the first pivot after `cancel` is raised.
+pub fn solve_cancellable(lcp: &Lcp, settings: &LemkeSettings, cancel: &Cancel) -> LemkeOutcome {
     match prepare(lcp) {
-        Ok(sc) => block::run(&sc, settings),
+        Ok(sc) => block::run(&sc, settings, cancel),
         Err(out) => out,
     }
 }
@@ -278,14 +287,19 @@ pub fn solve(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
 /// or the pivot limit), the LCP is solved by the cold start ([`solve`]) and the message says so; the pivots of
 /// the abandoned attempt are included in the count.
 pub fn solve_warm(lcp: &Lcp, settings: &LemkeSettings, guess: &[bool]) -> LemkeOutcome {
+    solve_warm_cancellable(lcp, settings, guess, &Cancel::never())
+}
+
+/// [`solve_warm`], stopping at the first pivot after `cancel` is raised.
+pub fn solve_warm_cancellable(lcp: &Lcp, settings: &LemkeSettings, guess: &[bool], cancel: &Cancel) -> LemkeOutcome {
     let sc = match prepare(lcp) {
         Ok(sc) => sc,
         Err(out) => return out,
     };
-    match block::run_warm(&sc, settings, guess) {
+    match block::run_warm(&sc, settings, guess, cancel) {
         Ok(out) => out,
         Err(failure) => {
-            let out = block::run(&sc, settings);
+            let out = block::run(&sc, settings, cancel);
             LemkeOutcome {
                 pivots: out.pivots + failure.pivots,
                 message: format!(
@@ -298,11 +312,11 @@ pub fn solve_warm(lcp: &Lcp, settings: &LemkeSettings, guess: &[bool]) -> LemkeO
     }
 }
 
-/// A Lemke engine: solve a bare LCP with the given settings.
-pub type Engine = fn(&Lcp, &LemkeSettings) -> LemkeOutcome;
+/// A Lemke engine: solve a bare LCP with the given settings, stopping when `cancel` is raised.
+pub type Engine = fn(&Lcp, &LemkeSettings, &Cancel) -> LemkeOutcome;
 
-/// Lemke's method as a contact solver: one engine ([`solve`] or [`dense::solve_dense`]) with the
-/// slack-sign retry and the ray interpretation of this module.
+/// Lemke's method as a contact solver: one engine ([`solve_cancellable`] or [`dense::solve_dense_cancellable`])
+/// with the slack-sign retry and the ray interpretation of this module.
 pub struct Lemke {
     /// Which registered engine this is.
     pub id: SolverId,
@@ -312,20 +326,37 @@ pub struct Lemke {
     pub engine: Engine,
 }
 
+/// The block-revised engine's identity.
+pub const ID: SolverId = SolverId::new("lemke");
+
+/// A rough cost of Lemke on m unknowns (seconds, bytes): O(m³) pivoting, the LCP's m × m matrix three times over.
+pub(crate) fn cost(m: f64) -> (f64, f64) {
+    (4e-10 * m * m * m, 24.0 * m * m)
+}
+
 /// Registry entry of the block-revised engine.
-pub const ENTRY: Entry = Entry {
-    id: SolverId::Lemke,
-    name: "lemke",
-    summary: "Lemke's method, block-revised (only the z-part of the basis is factorised), lexicographic anti-cycling; \
-              every scene",
-    in_all: true,
-    counters: &["pivots"],
-    build: |s: &SolverSettings| Box::new(Lemke { id: SolverId::Lemke, settings: s.lemke, engine: solve }),
-};
+pub const ENTRY: Entry = Entry::new::<LemkeSettings>(
+    "lemke",
+    "Lemke's method, block-revised (only the z-part of the basis is factorised), lexicographic anti-cycling; \
+     every scene",
+    true,
+    &["pivots"],
+    |s| {
+        let settings = settings_of::<LemkeSettings>(s).copied().unwrap_or_default();
+        Box::new(Lemke { id: ID, settings, engine: solve_cancellable })
+    },
+    cost,
+);
+
+/// What Lemke keeps between runs on one layout ([`SolverState`]): the support of its last solution (which LCP
+/// unknowns were positive), the guessed basis of its next warm start.
+struct LemkeState {
+    support: Vec<bool>,
+}
 
 impl LcpSolver for Lemke {
     fn solve_lcp(&self, lcp: &Lcp) -> LcpOutcome {
-        let o = (self.engine)(lcp, &self.settings);
+        let o = (self.engine)(lcp, &self.settings, &Cancel::never());
         LcpOutcome {
             z: o.z,
             w: o.w,
@@ -353,12 +384,14 @@ impl Solver for Lemke {
         Some(self)
     }
 
-    fn solve(&self, p: &ContactProblem) -> Outcome {
+    fn solve_from(&self, p: &ContactProblem, mut start: Start) -> Outcome {
         let lcp = p.lcp();
+        let guess = start.take_state::<LemkeState>(self.id, p).map(|s| s.support);
+        let attempt = Attempt { guess: guess.as_deref(), cancel: &start.cancel };
         let out = match p.kind {
-            ProblemKind::Frictional => self.frictional(p).1,
+            ProblemKind::Frictional => self.frictional_from(p, &attempt).1,
             ProblemKind::SlidingLimit { .. } => {
-                let o = self.first_attempt(p, lcp);
+                let o = self.first_attempt(lcp, &attempt);
                 let message = format!(
                     "sliding limit |Q| = μP: every contact node slips (q = μp sgn Q); the tangential shift is \
                      indeterminate (reported null); {}",
@@ -366,29 +399,36 @@ impl Solver for Lemke {
                 );
                 LemkeOutcome { message, ..o }
             }
-            _ => self.first_attempt(p, lcp),
+            _ => self.first_attempt(lcp, &attempt),
         };
         let (status, message) = classify_ray(out.status, out.message, p);
-        let mut solution = p.unpack(&out.z);
-        solution.support = Some(out.z.iter().map(|&v| v > 0.0).collect());
+        let support = out.z.iter().map(|&v| v > 0.0).collect();
         Outcome {
-            solution: Some(solution),
+            solution: Some(p.unpack(&out.z)),
+            state: (status == Termination::Solved).then(|| SolverState::new(self.id, p, LemkeState { support })),
             status,
             message,
             work: Work::one("pivots", out.pivots as u64),
-            polish_change: None,
+            figures: Figures::default(),
         }
     }
 }
 
+/// What one attempt on an LCP starts from: a guessed basis (the previous run's support) and the cancellation token.
+struct Attempt<'a> {
+    guess: Option<&'a [bool]>,
+    cancel: &'a Cancel,
+}
+
 impl Lemke {
-    /// The first attempt on a problem's LCP: warm-started from the previous step's basis when the problem carries
-    /// one of the right size and the settings allow it (block engine), else the engine's cold start.
-    fn first_attempt(&self, p: &ContactProblem, lcp: &Lcp) -> LemkeOutcome {
-        let guess = p.warm.as_ref().and_then(|w| w.support.as_ref()).filter(|g| g.len() == lcp.size());
-        match guess {
-            Some(g) if self.settings.warm_start && self.id == SolverId::Lemke => solve_warm(lcp, &self.settings, g),
-            _ => (self.engine)(lcp, &self.settings),
+    /// The first attempt on a problem's LCP: warm-started from the previous run's basis when it has the LCP's size
+    /// and the settings allow it (block engine), else the engine's cold start.
+    fn first_attempt(&self, lcp: &Lcp, a: &Attempt) -> LemkeOutcome {
+        match a.guess.filter(|g| g.len() == lcp.size()) {
+            Some(g) if self.settings.warm_start && self.id == ID => {
+                solve_warm_cancellable(lcp, &self.settings, g, a.cancel)
+            }
+            _ => (self.engine)(lcp, &self.settings, a.cancel),
         }
     }
 
@@ -396,8 +436,13 @@ impl Lemke {
     /// load-driven DOFs (the same solution set; see [`crate::formulation::lcp`]). Returns the LCP that was solved
     /// (when a retry solved it) and the outcome, with the pivots of all attempts summed.
     pub fn frictional(&self, p: &ContactProblem) -> (Option<Lcp>, LemkeOutcome) {
+        self.frictional_from(p, &Attempt { guess: None, cancel: &Cancel::never() })
+    }
+
+    /// [`Lemke::frictional`] from an attempt's start.
+    fn frictional_from(&self, p: &ContactProblem, a: &Attempt) -> (Option<Lcp>, LemkeOutcome) {
         let lcp = p.lcp();
-        let mut out = self.first_attempt(p, lcp);
+        let mut out = self.first_attempt(lcp, a);
         let defaults: Vec<f64> = p.load_dofs().map(|d| d.default_sign()).collect();
         let loads = defaults.len();
         if out.status != Termination::RayTermination || loads == 0 {
@@ -405,10 +450,13 @@ impl Lemke {
         }
         let mut pivots = out.pivots;
         for pattern in 1..(1usize << loads) {
+            if a.cancel.is_cancelled() {
+                break;
+            }
             let signs: Vec<f64> =
                 defaults.iter().enumerate().map(|(b, s)| if pattern & (1 << b) != 0 { -s } else { *s }).collect();
             let alt = frictional_lcp(p, &signs).lcp;
-            let o = (self.engine)(&alt, &self.settings);
+            let o = (self.engine)(&alt, &self.settings, a.cancel);
             pivots += o.pivots;
             if o.status == Termination::Solved {
                 let msg = format!(
