@@ -9,6 +9,7 @@ use plotters::prelude::*;
 use super::axis::{min_max, says_unit, with_unit, Axis};
 use super::draw::*;
 use super::legend::*;
+use super::prepared::{Prepared, PreparedSeries};
 use super::style::{Appearance, Style};
 use super::{write_atomic, PlotError};
 
@@ -400,22 +401,6 @@ struct Frame {
     pub(super) x_desc_h: f64,
     /// Height of the title (0 without one).
     pub(super) title_h: f64,
-}
-
-/// Data after filtering and axis transform (log10 for log axes).
-pub(super) struct Prepared {
-    pub(super) series: Vec<PreparedSeries>,
-    pub(super) x: Axis,
-    pub(super) y: Axis,
-    /// y offset of each prepared series (categorical axes only; else 0).
-    pub(super) offsets: Vec<f64>,
-}
-
-pub(super) struct PreparedSeries {
-    /// Index into `Chart::series` (selects the appearance).
-    pub(super) index: usize,
-    /// Runs of consecutive drawable points, in transformed coordinates.
-    pub(super) segments: Vec<Vec<(f64, f64)>>,
 }
 
 #[cfg(test)]
