@@ -1,5 +1,5 @@
 //! Frictionless contact, end to end from a scene: Hertz at equal load, Lemke against clarabel, resultants,
-//! problem sizes and unit invariance. Expected values: Hertz's formulas (REFERENCES.md, `rollbem::hertz`), the
+//! problem sizes and unit invariance. Expected values: Hertz's formulas (REFERENCES.md, `rollbem::theory::Hertz2D`), the
 //! prescribed load, and the peer solver.
 
 use rollbem::pipeline::run_scene;
@@ -16,7 +16,7 @@ use std::path::Path;
 fn scene(r: f64, e: f64, nu: f64, hub: f64, a_over_r: f64, element: &str, ne: usize, other: usize) -> Scene {
     let estar = e / (1.0 - nu * nu);
     let a = a_over_r * r;
-    let p = std::f64::consts::PI * estar * a * a / (4.0 * r);
+    let p = rollbem::theory::Hertz2D::from_half_width(a, r, estar).load;
     let arc_deg = (4.0 * a_over_r).to_degrees();
     let text = format!(
         r#"
@@ -65,7 +65,7 @@ fn hertz_at_equal_load_constant_and_quadratic() {
                 assert_eq!(run.status, Status::Solved, "{element} {}: {}", run.solver, run.explanation());
                 let a = run.contact.as_ref().unwrap().fit_half_width.unwrap();
                 let p0 = run.contact.as_ref().unwrap().fit_peak_pressure.unwrap();
-                let (ea, ep) = ((a / h.half_width - 1.0).abs(), (p0 / h.peak_pressure - 1.0).abs());
+                let (ea, ep) = ((a / h.a - 1.0).abs(), (p0 / h.p0 - 1.0).abs());
                 eprintln!("R={r} {element} {}: a err {ea:.2e}, p0 err {ep:.2e}", run.solver);
                 assert!(ea <= t && ep <= t, "R={r} {element} {}: a err {ea:.3e}, p0 err {ep:.3e} > {t}", run.solver);
                 // The pressure resultant equals the prescribed load.
@@ -87,7 +87,7 @@ fn lemke_and_clarabel_agree_and_lemke_is_complementary() {
             let (l, c) = (solver(&rep, "lemke"), solver(&rep, "clarabel"));
             assert_eq!(l.status, Status::Solved);
             assert_eq!(c.status, Status::Solved);
-            let p0 = rep.references.hertz.unwrap().peak_pressure;
+            let p0 = rep.references.hertz.unwrap().p0;
             assert_eq!(l.nodes.len(), c.nodes.len(), "{element}: nodes of the two solvers");
             let d = l.nodes.iter().zip(&c.nodes).map(|(a, b)| (a.pressure - b.pressure).abs()).fold(0.0, f64::max);
             assert!(d <= tol::SOLVER_AGREEMENT * p0, "{element}: |Δp| = {:.3e} p0", d / p0);

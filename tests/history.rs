@@ -444,7 +444,7 @@ fn creepage_driven_rolling_from_rest_winds_up_to_steady_rolling() {
         let k1 = along.iter().position(|d| *d < 1e-2).unwrap();
         let k2 = along.iter().position(|d| *d < 1e-5).unwrap();
         let fitted = (k2 - k1) as f64 * 0.3 / (along[k1] / along[k2]).ln();
-        let c = h.a * theory::carter_c_over_a(q_end / (0.3 * h.load()));
+        let c = h.a * theory::carter_c_over_a(q_end / (0.3 * h.load));
         let model = c * ((2.0 * datum / h.a).ln() + 0.5);
         eprintln!("D = {datum}: decay length {fitted:.2} mm, model {model:.2} mm; end distance {:.2e}", along[m]);
         assert!((fitted / model - 1.0).abs() < 0.15, "D = {datum}: {fitted} vs model {model}");

@@ -159,7 +159,7 @@ impl SceneParams {
     fn hertz_load(&self) -> f64 {
         let e_star = self.youngs / (1.0 - self.nu * self.nu);
         let a = self.a_over_r * self.radius;
-        std::f64::consts::PI * e_star * a * a / (4.0 * self.radius)
+        rollbem::theory::Hertz2D::from_half_width(a, self.radius, e_star).load
     }
 
     fn scene(&self) -> SceneDocument {

@@ -12,7 +12,7 @@ use crate::post::stick_edges;
 use crate::references::beta_zero;
 use crate::results::{Report, SolverRun};
 use crate::scene::{BodyModel, CounterBody, RollingMode, Scene};
-use crate::theory::{self, Hertz2D, TangentialPath};
+use crate::theory::{self, TangentialPath};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
@@ -226,7 +226,7 @@ fn md_loop(r: &Report, runs: &[(usize, &SolverRun)], solver: &str, md: &mut Stri
 /// is D' = D e^(1/(2(1 − ν))) (tests/history.rs derives it); the compliances of the two bodies of a pair add (the
 /// displacement is linear in 1/E*, each body with its own datum); the wheel's shift is minus the counter-body's δ.
 pub fn md_shift(s: &Scene, p: f64) -> impl Fn(TangentialPath, f64) -> f64 {
-    let h = Hertz2D::from_load(p, s.radius(), s.contact_modulus());
+    let h = crate::references::hertz_at(s, p);
     let mu = s.friction();
     let wheel_datum = match s.body() {
         crate::scene::Body::HalfPlane { datum_depth, .. } => *datum_depth,
@@ -385,7 +385,7 @@ fn stick_zone(
     let mut theory_pts = Vec::new();
     let mut what = "";
     if let Some((p, q_star)) = md_pattern(s) {
-        let h = Hertz2D::from_load(p, s.radius(), s.contact_modulus());
+        let h = crate::references::hertz_at(s, p);
         for (k, x) in runs {
             if let Some(f) = x.resultants {
                 if r.steps[*k].step >= 1 {
@@ -403,7 +403,7 @@ fn stick_zone(
         let a_end = runs
             .last()
             .and_then(|(_, x)| x.resultants)
-            .map_or(f64::INFINITY, |f| Hertz2D::from_load(f.normal, s.radius(), s.contact_modulus()).a);
+            .map_or(f64::INFINITY, |f| crate::references::hertz_at(s, f.normal).a);
         let resolved = 2.0 * coupled.resolution + s.zone().element_length(s.radius()) / a_end;
         let in_range = (closed - coupled.c_over_a).abs() <= resolved;
         // Self-similar: c(P) = (c/a) · a(P), with the coupled contact half-width for the coupled reference.
@@ -411,7 +411,7 @@ fn stick_zone(
             runs.iter()
                 .filter_map(|(k, x)| {
                     let f = x.resultants.filter(|f| f.normal > 0.0)?;
-                    Some(((k + 1) as f64, ratio * Hertz2D::from_load(f.normal, s.radius(), s.contact_modulus()).a))
+                    Some(((k + 1) as f64, ratio * crate::references::hertz_at(s, f.normal).a))
                 })
                 .collect()
         };

@@ -146,7 +146,7 @@ fn path_table(csv: &Path, stem: &str, out: &Path, scene: Option<&Scene>) -> Resu
     if let Some((s, (p, q_star))) = md {
         loop_ = loop_.add(Series::new("Mindlin–Deresiewicz (2D)", super::md_curve(s, p, q_star), Style::Dashed));
         if let Some((_, runs)) = by_solver.iter().next() {
-            let h = crate::theory::Hertz2D::from_load(p, s.radius(), s.contact_modulus());
+            let h = crate::references::hertz_at(s, p);
             let c: Vec<(f64, f64)> = runs
                 .iter()
                 .filter(|(_, r)| r.step >= 1)
