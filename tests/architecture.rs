@@ -6,7 +6,9 @@
 //!   folder the graph "child module → the sibling modules it names" has no cycle. A folder's own `mod.rs` (or
 //!   `X.rs` beside folder `X/`) is the folder's root, not a sibling: its items (`super::write_atomic`) are not
 //!   sibling references;
-//! - no function of the library over 100 lines (from its `fn` line to its closing brace at the same indentation).
+//! - no function of the library over 100 lines (from its `fn` line to its closing brace at the same indentation);
+//! - every `#[ignore]`d test of `tests/` is run by CI (`.ci/run` runs `cargo test --release --test NAME -- --ignored`
+//!   for each file that has one).
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -379,4 +381,37 @@ fn no_function_over_100_lines() {
     }
     assert!(functions > 1000, "the functions were found ({functions})");
     assert!(long.is_empty(), "functions over 100 lines: {long:#?}");
+}
+
+/// The `#[ignore]`d tests of `tests/`, by file stem (`tests/sweep.rs` → `sweep`).
+fn files_with_ignored_tests() -> BTreeSet<String> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests");
+    let mut out = BTreeSet::new();
+    for e in std::fs::read_dir(&dir).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_some_and(|x| x == "rs") {
+            let text = std::fs::read_to_string(&p).unwrap();
+            if text.lines().any(|l| l.trim_start().starts_with("#[ignore")) {
+                out.insert(p.file_stem().unwrap().to_string_lossy().into_owned());
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn every_ignored_test_is_run_by_ci() {
+    // An ignored test that nothing runs can rot unseen: CI (`.ci/run`) runs each file's ignored tests with
+    // `cargo test --release --test NAME -- --ignored`.
+    let ci = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(".ci/run")).unwrap();
+    let files = files_with_ignored_tests();
+    assert!(files.contains("slurm") && files.contains("sweep"), "the ignored tests were found: {files:?}");
+    let run = |name: &str| {
+        ci.lines().any(|l| {
+            let l = l.trim_start();
+            !l.starts_with('#') && l.contains(&format!("cargo test --release --test {name} -- --ignored"))
+        })
+    };
+    let missing: Vec<&String> = files.iter().filter(|f| !run(f)).collect();
+    assert!(missing.is_empty(), "ignored tests that .ci/run does not run: {missing:?}");
 }

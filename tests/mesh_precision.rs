@@ -6,6 +6,9 @@
 //! 4.43–4.45), towards which the wheel tends as a/R → 0; and the same scene at a/R = 6e-4, where the old `y + R` gap
 //! was already exact to 1e-9, for the claim that nothing but round-off changes between scales.
 
+#[path = "common/paired.rs"]
+mod paired;
+use paired::paired;
 use rollbem::mesh::{Mesh, MeshSpec, Shape};
 use rollbem::pipeline::run_scene;
 use rollbem::results::SolverRun;
@@ -92,10 +95,7 @@ fn a_tiny_contact_is_solved_as_accurately_as_a_small_one() {
         let (tiny, h_tiny) = scene(kind, 1e-7, 30);
         let (rs, rt) = (solved(&small), solved(&tiny));
         assert_eq!(rs.nodes.len(), rt.nodes.len());
-        let shape_difference = rs
-            .nodes
-            .iter()
-            .zip(&rt.nodes)
+        let shape_difference = paired(&rs.nodes, &rt.nodes)
             .map(|(s, t)| (s.pressure / h_small.p0 - t.pressure / h_tiny.p0).abs())
             .fold(0.0, f64::max);
         let hertz = |run: &SolverRun, h: &Hertz2D| {
