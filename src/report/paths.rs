@@ -134,7 +134,7 @@ fn summary(r: &Report, md: &mut String) {
 }
 
 /// A curve to draw: label, points, style.
-type Curve = (String, Vec<(f64, f64)>, Style);
+pub(super) type Curve = (String, Vec<(f64, f64)>, Style);
 
 /// Q against the rigid shift, with Mindlin–Deresiewicz where it applies; the cycle's dissipation against theory.
 fn hysteresis(
@@ -255,7 +255,7 @@ pub fn md_curve(s: &Scene, p: f64, q_star: f64) -> Vec<(f64, f64)> {
 }
 
 /// The loop with the chord through its tips subtracted, so that its width shows (the loop is thin beside the
-/// elastic compliance): the shifts at the largest and smallest Q define the chord.
+/// elastic compliance): the report's figure and text.
 fn opened_loop(
     name: &str,
     pts: &[(f64, f64)],
@@ -264,34 +264,46 @@ fn opened_loop(
     md: &mut String,
     figs: &mut Figs,
 ) -> Result<()> {
-    // The loop is thin beside the elastic compliance: subtract the chord through the computed loop's tips
-    // (the shifts at the largest and smallest Q) so that its width can be seen.
-    let hi = pts.iter().copied().max_by(|a, b| a.1.total_cmp(&b.1));
-    let lo = pts.iter().copied().min_by(|a, b| a.1.total_cmp(&b.1));
-    if let (Some(hi), Some(lo)) = (hi, lo) {
-        if hi.1 > lo.1 {
-            let slope = (hi.0 - lo.0) / (hi.1 - lo.1);
-            let open =
-                |v: &[(f64, f64)]| v.iter().map(|&(d, q)| (d - lo.0 - slope * (q - lo.1), q)).collect::<Vec<_>>();
-            let mut chart = Chart::new(format!("{name}: loop less its chord"), "δ_T − chord(Q)", "Q")
-                .x_unit(units.length.clone())
-                .y_unit(units.line_load());
-            for (label, p, style) in series {
-                chart = chart.add(Series::new(label.clone(), open(p), *style));
-            }
-            let file =
-                figs.save(&chart, &format!("{name}-hysteresis-opened.svg"), format!("{name}: the loop opened"))?;
-            writeln!(
-                md,
-                "The same loop with the straight chord through its tips (δ_T at the largest and smallest Q, compliance \
-                 {slope:.3e} {}/({})) subtracted, so that its width shows:\n\n![hysteresis loop opened]({file})\n",
-                units.length,
-                units.line_load()
-            )
-            .unwrap();
-        }
-    }
+    let Some((chart, slope)) = loop_less_chord(name, pts, series, &units.length, &units.line_load()) else {
+        return Ok(());
+    };
+    let file = figs.save(&chart, &format!("{name}-hysteresis-opened.svg"), format!("{name}: the loop opened"))?;
+    writeln!(
+        md,
+        "The same loop with the straight chord through its tips (δ_T at the largest and smallest Q, compliance \
+         {slope:.3e} {}/({})) subtracted, so that its width shows:\n\n![hysteresis loop opened]({file})\n",
+        units.length,
+        units.line_load()
+    )
+    .unwrap();
     Ok(())
+}
+
+/// The Q–δ_T loop less its chord, titled `NAME: loop less its chord`: every curve of `series` with the straight
+/// chord through the tips of `pts` (the computed loop's (δ_T, Q): the shifts at its largest and smallest Q)
+/// subtracted from its shifts, so that the loop's width shows beside the elastic compliance it is thin against.
+/// Returns the chart and the chord's slope (compliance, shift per unit Q); `None` when Q does not vary. Drawn for a
+/// result document's path and for a path's CSV (`rollbem plot`).
+pub(super) fn loop_less_chord(
+    name: &str,
+    pts: &[(f64, f64)],
+    series: &[Curve],
+    length_unit: &str,
+    load_unit: &str,
+) -> Option<(Chart, f64)> {
+    let hi = pts.iter().copied().max_by(|a, b| a.1.total_cmp(&b.1))?;
+    let lo = pts.iter().copied().min_by(|a, b| a.1.total_cmp(&b.1))?;
+    if hi.1 <= lo.1 {
+        return None;
+    }
+    let slope = (hi.0 - lo.0) / (hi.1 - lo.1);
+    let open = |v: &[(f64, f64)]| v.iter().map(|&(d, q)| (d - lo.0 - slope * (q - lo.1), q)).collect::<Vec<_>>();
+    let mut chart =
+        Chart::new(format!("{name}: loop less its chord"), "δ_T − chord(Q)", "Q").x_unit(length_unit).y_unit(load_unit);
+    for (label, p, style) in series {
+        chart = chart.add(Series::new(label.clone(), open(p), *style));
+    }
+    Some((chart, slope))
 }
 
 /// Grid size of the coupled Spence reference in the report (per half contact; 1.25 a / 250 = 0.005 a).
