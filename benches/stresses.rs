@@ -25,7 +25,7 @@ const NU: f64 = 0.3;
 /// elements on |x| ≤ 1.25a and a 100 × 50 `[stresses]` grid.
 fn scene(model: &str) -> Scene {
     let a = 0.0025 * R;
-    let p = std::f64::consts::PI * E / (1.0 - NU * NU) * a * a / (4.0 * R);
+    let p = rollbem::theory::Hertz2D::from_half_width(a, R, E / (1.0 - NU * NU)).load;
     let (body, other, depth0, half) = if model == "bem" {
         ("support = { kind = \"hub\", radius = 100.0 }", "other_elements = 200", 0.2 * a, 1.25 * a)
     } else {

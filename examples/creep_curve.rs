@@ -26,7 +26,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             continue;
         };
         // Carter (Johnson §8.2): ξ = (μa/R)(1 − √(1 − |Q|/(μP))), so |Q|/(μP) = 1 − (1 − ξR/(μa))² below saturation.
-        let a = rollbem::references::hertz_at(&scene, f.normal).half_width;
+        let a = rollbem::references::hertz_at(&scene, f.normal).a;
         let s = (xi * scene.radius() / (mu * a)).min(1.0);
         let carter = 1.0 - (1.0 - s) * (1.0 - s);
         println!(

@@ -3,10 +3,10 @@
 //! ([`crate::references`]), and every pair of solvers against each other ([`compare`], the one definition of a
 //! solver-vs-reference difference, shared with `rollbem report`).
 
-use crate::hertz::Hertz;
 use crate::post::NodeResult;
 use crate::results::{Check, CheckKind, SolverRun};
 use crate::scene::{Dof, ElementKind, Scene};
+use crate::theory::Hertz2D;
 use crate::tolerances as tol;
 
 /// How two solvers' answers differ.
@@ -125,7 +125,7 @@ pub fn resolution_check(scene: &Scene, element: ElementKind, element_length: f64
     );
     if !pass {
         let p = r.resultants.map_or(0.0, |x| x.normal);
-        let a = crate::references::hertz_at(scene, p).half_width;
+        let a = crate::references::hertz_at(scene, p).a;
         let needed = (scene.zone().elements as f64 * element_length * min / (2.0 * a)).ceil();
         c.note = Some(format!(
             "the contact spans {} element(s) ({} loaded node(s)); at least {min} are needed for its width and \
@@ -142,10 +142,10 @@ pub fn resolution_check(scene: &Scene, element: ElementKind, element_length: f64
 /// Hertz's a and p0 for a run of a frictionless scene: figures when the reference applies and the elliptic fit
 /// exists, a failed verdict when it applies and the fit fails, a note when the reference does not apply (too few
 /// elements across Hertz's width, or a/R beyond the half-space theory).
-fn hertz_checks(scene: &Scene, element: ElementKind, element_length: f64, r: &SolverRun, h: &Hertz) -> Vec<Check> {
+fn hertz_checks(scene: &Scene, element: ElementKind, element_length: f64, r: &SolverRun, h: &Hertz2D) -> Vec<Check> {
     let Some(contact) = &r.contact else { return Vec::new() };
-    let across = 2.0 * h.half_width / element_length;
-    let a_over_r = h.half_width / scene.radius();
+    let across = 2.0 * h.a / element_length;
+    let a_over_r = h.a / scene.radius();
     let t = scene.expect().hertz.unwrap_or(match element {
         ElementKind::Constant => tol::HERTZ_CONSTANT,
         ElementKind::Quadratic => tol::HERTZ_QUADRATIC,
@@ -157,7 +157,7 @@ fn hertz_checks(scene: &Scene, element: ElementKind, element_length: f64, r: &So
             format!(
                 "{across:.3} elements across Hertz's contact width 2a = {:.3e}; its tolerance ({t:.1e}) needs at \
                  least {}",
-                2.0 * h.half_width,
+                2.0 * h.a,
                 tol::HERTZ_MIN_ELEMENTS
             ),
         )];
@@ -169,10 +169,9 @@ fn hertz_checks(scene: &Scene, element: ElementKind, element_length: f64, r: &So
         )];
     }
     match (contact.fit_half_width, contact.fit_peak_pressure) {
-        (Some(a), Some(p0)) => vec![
-            check(name("half-width a (fit)"), a, h.half_width, t),
-            check(name("peak pressure p0 (fit)"), p0, h.peak_pressure, t),
-        ],
+        (Some(a), Some(p0)) => {
+            vec![check(name("half-width a (fit)"), a, h.a, t), check(name("peak pressure p0 (fit)"), p0, h.p0, t)]
+        }
         _ => vec![verdict(
             name("a and p0 (fit)"),
             false,
@@ -210,7 +209,7 @@ pub fn make_checks(
     element_length: f64,
     runs: &[SolverRun],
     bounds: &[f64],
-    hertz: Option<&Hertz>,
+    hertz: Option<&Hertz2D>,
     model: Option<&ModelReference>,
 ) -> Vec<Check> {
     let mut out = Vec::new();
@@ -243,7 +242,7 @@ fn run_checks(
     element_length: f64,
     r: &SolverRun,
     bound: f64,
-    hertz: Option<&Hertz>,
+    hertz: Option<&Hertz2D>,
 ) -> Vec<Check> {
     let mut out = Vec::new();
     let expected = scene.expect().status_for(r.solver);
@@ -355,7 +354,7 @@ fn cattaneo_checks(scene: &Scene, runs: &[SolverRun], model: Option<&ModelRefere
 
 /// Hertz's half-width at a run's normal load.
 fn hertz_at_load(scene: &Scene, r: &SolverRun) -> f64 {
-    crate::references::hertz_at(scene, r.resultants.map_or(0.0, |x| x.normal)).half_width
+    crate::references::hertz_at(scene, r.resultants.map_or(0.0, |x| x.normal)).a
 }
 
 /// The figure checks of Cattaneo–Mindlin's stick zone (half-width and centre, in elements) of one run's metrics,
@@ -410,7 +409,7 @@ fn carter_checks(scene: &Scene, elem: f64, runs: &[SolverRun], model: Option<&Mo
         };
         let mh = metrics(ms, mr);
         let note = |v: f64| finite_body_note("Carter", v, ms);
-        match creepages(scene, r, &m, mr) {
+        match creepages(scene, r, mr) {
             // The tangential load is prescribed: the creepage is the answer.
             Some((xi, xe, xh)) => out.push(model_comparison(name("creepage ξ"), xi, xe, xh, 0.0, note(xh))),
             None => {
@@ -427,18 +426,15 @@ fn carter_checks(scene: &Scene, elem: f64, runs: &[SolverRun], model: Option<&Mo
 }
 
 /// With the tangential load prescribed in steady rolling: (computed ξ, Carter's ξ, the counterpart's ξ).
-fn creepages(scene: &Scene, r: &SolverRun, m: &crate::references::Metrics, mr: &SolverRun) -> Option<(f64, f64, f64)> {
+fn creepages(scene: &Scene, r: &SolverRun, mr: &SolverRun) -> Option<(f64, f64, f64)> {
     let computed = |r: &SolverRun| r.rolling.and_then(|x| (!x.creepage_prescribed).then_some(x.creepage).flatten());
     let (xi, xh) = (computed(r)?, computed(mr)?);
-    Some((xi, carter_creepage(scene, r, m)?, xh))
+    Some((xi, carter_creepage(scene, r)?, xh))
 }
 
-/// Carter's creepage at a run's loads (Q prescribed): ξ = −sgn(Q) (μa/R)(1 − c/a).
-fn carter_creepage(scene: &Scene, r: &SolverRun, m: &crate::references::Metrics) -> Option<f64> {
-    let f = r.resultants?;
-    let ce = m.carter_c_over_a_exact?;
-    let a = hertz_at_load(scene, r);
-    Some(-f.tangential.signum() * scene.friction() * a / scene.radius() * (1.0 - ce))
+/// Carter's creepage at a run's loads (with Q prescribed: [`crate::theory::carter_creepage`]).
+fn carter_creepage(scene: &Scene, r: &SolverRun) -> Option<f64> {
+    crate::references::carter_solution(scene, r).map(|c| c.creepage)
 }
 
 /// The figure checks of Carter where it holds: Q/(μP) with the creepage prescribed, the creepage with Q
@@ -453,7 +449,7 @@ fn carter_figures(scene: &Scene, who: &str, r: &SolverRun, elem: f64, t: f64) ->
     let a = hertz_at_load(scene, r);
     let mut out = Vec::new();
     let computed = r.rolling.and_then(|x| (!x.creepage_prescribed).then_some(x.creepage).flatten());
-    match (computed, carter_creepage(scene, r, &m)) {
+    match (computed, carter_creepage(scene, r)) {
         // Q prescribed: Q/(μP) is the input; the creepage is the answer. One element of stick zone moves
         // ξ = (μa/R)(1 − c/a) by μh/R.
         (Some(xi), Some(xe)) => {

@@ -1221,8 +1221,8 @@ mod tests {
             let (sxy, sxx) =
                 mesh.xc.iter().zip(&uz).fold((0.0, 0.0), |(sy, sx), (x, u)| (sy + (u - u0) * x * x, sx + x.powi(4)));
             let r_fit = -sxx / (2.0 * sxy);
-            let load = PI * a * p0 / 2.0;
-            let a2 = 4.0 * load * r_fit / (PI * es);
+            let load = crate::theory::Hertz2D::new(a, p0).load;
+            let a2 = crate::theory::Hertz2D::from_load(load, r_fit, es).a.powi(2);
             println!("Hertz N={n}: max |du_z - exact| / max|exact| = {err:.3e}, a² from fitted R = {a2:.6}");
             errs.push((err, (a2 - a * a).abs()));
         }

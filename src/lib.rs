@@ -21,7 +21,7 @@
 //! [`scene`] (a validated scene: [`scene::Scene`]) → [`source`] (the flexibility: [`mesh`] → [`bem`] assembly →
 //! condensation, [`source::bem_wheel`]; or the half-plane's closed forms) → [`flexibility`] → [`formulation`] (the
 //! contact problem: LCP / QP, slip operator) → [`solvers`] (one trait, one registry) → [`post`] (residuals,
-//! resultants, states) → [`checks`] (against [`references`], [`hertz`], [`theory`] and between solvers) →
+//! resultants, states) → [`checks`] (against [`references`], which poses [`theory`], and between solvers) →
 //! [`results`] (the result document, its text and CSV renderings); with `[stresses]`, [`stresses`] evaluates the
 //! subsurface field of each solved run. [`pipeline`] runs these stages: a [`pipeline::Model`] is built once per
 //! scene and solved for many drives; [`sweep`] and [`report`] run many scenes.
@@ -68,7 +68,6 @@ pub mod exit;
 pub mod flexibility;
 pub mod formulation;
 pub mod halfplane;
-pub mod hertz;
 pub mod io;
 pub mod lcp_io;
 pub mod lcp_residual;

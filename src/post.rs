@@ -11,7 +11,6 @@
 
 use crate::flexibility::ModeKind;
 use crate::formulation::{ContactProblem, Dof, Solution};
-use crate::hertz;
 use crate::tolerances::{SEPARATED_PRESSURE, STICK_MARGIN};
 use serde::{Deserialize, Serialize};
 
@@ -525,7 +524,7 @@ fn summary(nodes: &[NodeResult], peak_pressure: f64, pressure_scale: f64) -> Con
     let xs: Vec<f64> = nodes.iter().map(|nd| nd.x).collect();
     let ps: Vec<f64> =
         nodes.iter().map(|nd| if nd.state == NodeState::Separated { 0.0 } else { nd.pressure }).collect();
-    let fit = hertz::fit_ellipse(&xs, &ps);
+    let fit = crate::theory::Hertz2D::fit(&xs, &ps).map(|h| (h.a, h.p0));
     ContactSummary {
         x_min,
         x_max,

@@ -17,12 +17,14 @@
 //!   q = −sgn(ξ) μ p in the slip zone. Errors: Q/(μP) absolute, the stick zone's half-width and centre in elements,
 //!   the RMS of |q − q_C|/(μ p0) over the loaded nodes, and the computed creepage relative to Carter's.
 //!
+//! The closed forms are [`crate::theory`]'s ([`Hertz2D`], [`theory::cattaneo_traction`], [`theory::carter_traction`],
+//! …), each tested there against an independent computation; this module only poses them for a scene and a run.
 //! The sweep CSVs, the reports and `rollbem check` all use these functions.
 
-use crate::hertz::Hertz;
 use crate::post::NodeState;
 use crate::results::SolverRun;
 use crate::scene::{BodyModel, Dof, Rolling, Scene};
+use crate::theory::{self, Hertz2D};
 use crate::tolerances::{CATTANEO_EDGE_ELEMENTS, CATTANEO_MAX_A_OVER_R_AT_NU_HALF};
 use serde::Serialize;
 
@@ -67,9 +69,9 @@ pub struct Metrics {
     pub carter_creepage_err: Option<f64>,
 }
 
-/// Hertz at load `p` with the scene's pair modulus E*.
-pub fn hertz_at(scene: &Scene, p: f64) -> Hertz {
-    Hertz::with_modulus(scene.radius(), scene.contact_modulus(), p)
+/// Hertz at load `p` with the scene's wheel radius and pair modulus E*.
+pub fn hertz_at(scene: &Scene, p: f64) -> Hertz2D {
+    Hertz2D::from_load(p, scene.radius(), scene.contact_modulus())
 }
 
 /// Where a half-space theory of the decoupled problem (Cattaneo–Mindlin, Carter) stands for a scene.
@@ -137,27 +139,49 @@ pub fn half_space_counterpart(scene: &Scene) -> Option<crate::Result<Scene>> {
     }))
 }
 
-/// Carter's solution for a steady-rolling run: (c/a, Q/(μP), ξ, stick-zone centre d, Hertz). `None` when it does
-/// not apply or the run has no resultant.
-fn carter_solution(scene: &Scene, run: &SolverRun) -> Option<(f64, f64, f64, f64, Hertz)> {
+/// Carter's solution for a steady-rolling run ([`carter_solution`]), from [`crate::theory`]'s closed forms.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct CarterReference {
+    /// Hertz at the run's load P.
+    pub(crate) hertz: Hertz2D,
+    /// Stick-zone half-width over a.
+    pub(crate) c_over_a: f64,
+    /// Q/(μP): negative for ξ > 0 (braking: the friction on the wheel is negative).
+    pub(crate) q_over_mup: f64,
+    /// The creepage ξ: the prescribed one, or Carter's for the prescribed Q.
+    pub(crate) creepage: f64,
+    /// Centre d of the stick zone (at the leading edge: signed with the rolling direction).
+    pub(crate) centre: f64,
+    /// Rolling direction, ±1.
+    direction: f64,
+}
+
+impl CarterReference {
+    /// Carter's shear traction on the wheel at x, for friction coefficient `mu`: [`theory::carter_traction`],
+    /// mirrored when rolling towards −x.
+    pub(crate) fn traction(&self, mu: f64, x: f64) -> f64 {
+        let q_force = self.q_over_mup * mu * self.hertz.load;
+        theory::carter_traction(&self.hertz, mu, q_force, self.direction * x)
+    }
+}
+
+/// Carter's solution for a steady-rolling run, at the run's P. `None` when it does not apply or the run has no
+/// resultant.
+pub(crate) fn carter_solution(scene: &Scene, run: &SolverRun) -> Option<CarterReference> {
     let p = run.resultants?.normal;
     if !carter_applies(scene, p) {
         return None;
     }
-    let direction = scene.rolling()?.direction();
-    let mu = scene.friction();
-    let h = Hertz::with_modulus(scene.radius(), scene.contact_modulus(), p);
-    let crit = mu * h.half_width / scene.radius();
-    let (c_over_a, xi) = match scene.drive()?.tangential {
-        Dof::Displacement(xi) => ((1.0 - xi.abs() / crit).max(0.0), xi),
-        Dof::Load(q) => {
-            let ca = (1.0 - (q.abs() / (mu * p)).min(1.0)).sqrt();
-            (ca, -q.signum() * crit * (1.0 - ca))
-        }
+    let direction = f64::from(scene.rolling()?.direction());
+    let (mu, r) = (scene.friction(), scene.radius());
+    let hertz = hertz_at(scene, p);
+    let (c_over_a, creepage) = match scene.drive()?.tangential {
+        Dof::Displacement(xi) => (theory::carter_c_over_a_of_creepage(&hertz, mu, r, xi), xi),
+        Dof::Load(q) => (theory::carter_c_over_a(q / (mu * p)), theory::carter_creepage(&hertz, mu, r, q)),
     };
-    let q_over = -xi.signum() * (1.0 - c_over_a * c_over_a);
-    let d = direction as f64 * h.half_width * (1.0 - c_over_a);
-    Some((c_over_a, q_over, xi, d, h))
+    let q_over_mup = theory::carter_force(&hertz, mu, r, creepage) / (mu * hertz.load);
+    let centre = direction * theory::carter_stick_zone(&hertz, c_over_a).1;
+    Some(CarterReference { hertz, c_over_a, q_over_mup, creepage, centre, direction })
 }
 
 /// Whether Hertz is compared with a scene: frictionless, and in plane strain (not on a strip of half-spaces,
@@ -167,12 +191,12 @@ pub fn hertz_applies(scene: &Scene) -> bool {
 }
 
 /// Hertz at the run's load P, when [`hertz_applies`] and the run solved with P > 0.
-pub fn hertz_for(scene: &Scene, run: &SolverRun) -> Option<Hertz> {
+pub fn hertz_for(scene: &Scene, run: &SolverRun) -> Option<Hertz2D> {
     if !hertz_applies(scene) {
         return None;
     }
     let p = run.resultants?.normal;
-    (p > 0.0).then(|| Hertz::with_modulus(scene.radius(), scene.contact_modulus(), p))
+    (p > 0.0).then(|| hertz_at(scene, p))
 }
 
 /// Whether the normal and tangential problems decouple as the half-plane theories (Cattaneo–Mindlin, Carter)
@@ -182,7 +206,7 @@ pub fn hertz_for(scene: &Scene, run: &SolverRun) -> Option<Hertz> {
 /// bending even where β = 0). `p` is the normal load.
 pub fn beta_zero(scene: &Scene, p: f64) -> bool {
     let r = scene.radius();
-    let a_over_r = Hertz::with_modulus(r, scene.contact_modulus(), p).half_width / r;
+    let a_over_r = hertz_at(scene, p).a / r;
     let beta_vanishes = scene.dundurs_beta().abs() < 1e-12;
     let finite_ok = scene.model() == BodyModel::HalfPlane || a_over_r <= CATTANEO_MAX_A_OVER_R_AT_NU_HALF;
     !scene.law().coupling || (beta_vanishes && finite_ok)
@@ -223,97 +247,90 @@ fn tributary(nodes: &[crate::post::NodeResult], i: usize) -> f64 {
 /// Compute the metrics of a run.
 pub fn metrics(scene: &Scene, run: &SolverRun) -> Metrics {
     let mut m = Metrics::default();
-    let Some(contact) = &run.contact else { return m };
-    if let Some(h) = hertz_for(scene, run) {
-        m.hertz_a_err = contact.fit_half_width.map(|a| (a - h.half_width).abs() / h.half_width);
-        m.hertz_p0_err = contact.fit_peak_pressure.map(|p| (p - h.peak_pressure).abs() / h.peak_pressure);
-        let (mut num, mut den) = (0.0, 0.0);
-        let nodes = &run.nodes;
-        for (i, n) in nodes.iter().enumerate() {
-            let w = tributary(nodes, i);
-            let ph = h.pressure(n.x);
-            num += w * (n.pressure - ph).powi(2);
-            den += w * ph * ph;
-        }
-        m.hertz_l2_err = (den > 0.0).then(|| (num / den).sqrt());
+    if run.contact.is_none() {
+        return m;
     }
-    if let Some((ca, qmup, xi, d, h)) = carter_solution(scene, run) {
-        let mu = scene.friction();
-        let elem = element_length(scene);
-        let res = run.resultants.expect("solved");
-        m.carter_q_over_mup = Some(res.tangential / (mu * res.normal));
-        m.carter_q_over_mup_exact = Some(qmup);
-        m.carter_c_over_a_exact = Some(ca);
-        let c_exact = ca * h.half_width;
-        match crate::post::stick_edges(&run.nodes) {
-            Some((left, right)) => {
-                let (c, centre) = (0.5 * (right - left), 0.5 * (right + left));
-                m.carter_c_over_a = Some(c / h.half_width);
-                m.carter_c_err_elements = Some((c - c_exact) / elem);
-                m.carter_centre_err_elements = Some((centre - d) / elem);
-            }
-            None => {
-                m.carter_c_over_a = Some(0.0);
-                m.carter_c_err_elements = Some(-c_exact / elem);
-            }
-        }
-        let sg = -xi.signum();
-        let (mut sum2, mut count) = (0.0, 0usize);
-        for n in run.nodes.iter().filter(|n| n.state != NodeState::Separated) {
-            let pa = h.pressure(n.x);
-            let in_stick = c_exact > 0.0 && (n.x - d).abs() < c_exact;
-            let qa = sg
-                * if in_stick {
-                    mu * pa - mu * h.peak_pressure * ca * (1.0 - ((n.x - d) / c_exact).powi(2)).sqrt()
-                } else {
-                    mu * pa
-                };
-            sum2 += ((n.shear - qa) / (mu * h.peak_pressure)).powi(2);
-            count += 1;
-        }
-        m.carter_shear_rms = (count > 0).then(|| (sum2 / count as f64).sqrt());
-        let computed = run.rolling.and_then(|r| (!r.creepage_prescribed).then_some(r.creepage).flatten());
-        m.carter_creepage_err = computed.filter(|_| xi != 0.0).map(|x| (x - xi).abs() / xi.abs());
-    }
-    if cattaneo_applies(scene) {
-        if let Some((Dof::Load(p), Dof::Load(q))) = scene.drive().map(|d| (d.normal, d.tangential)) {
-            let mu = scene.friction();
-            let h = Hertz::with_modulus(scene.radius(), scene.contact_modulus(), p);
-            let ce = h.half_width * (1.0 - q.abs() / (mu * p)).sqrt();
-            let elem = element_length(scene);
-            m.cm_c_over_a_exact = Some(ce / h.half_width);
-            let nodes = &run.nodes;
-            if let Some((left, right)) = crate::post::stick_edges(nodes) {
-                let (c, centre) = (0.5 * (right - left), 0.5 * (right + left));
-                m.cm_c_over_a = Some(c / h.half_width);
-                m.cm_c_err_elements = Some((c - ce) / elem);
-                m.cm_centre_elements = Some(centre / elem);
-            }
-            let sg = q.signum();
-            let edge = CATTANEO_EDGE_ELEMENTS * elem;
-            let away = |x: f64| x.abs() <= h.half_width - edge && (x.abs() - ce).abs() >= edge;
-            let (mut num, mut den) = (0.0, 0.0);
-            for (i, n) in nodes.iter().enumerate() {
-                let w = tributary(nodes, i);
-                let pa = h.pressure(n.x);
-                let qa = sg * (mu * pa - mu * h.peak_pressure / h.half_width * (ce * ce - n.x * n.x).max(0.0).sqrt());
-                num += w * (n.shear - qa).powi(2);
-                den += w * (mu * pa).powi(2);
-            }
-            m.cm_shear_l2_err = (den > 0.0).then(|| (num / den).sqrt());
-            let mut worst = 0.0_f64;
-            for n in nodes.iter().filter(|n| away(n.x)) {
-                let pa = h.pressure(n.x);
-                let qa = sg
-                    * if n.x.abs() < ce {
-                        mu * pa - mu * h.peak_pressure * (ce / h.half_width) * (1.0 - (n.x / ce).powi(2)).sqrt()
-                    } else {
-                        mu * pa
-                    };
-                worst = worst.max((n.shear - qa).abs() / (mu * h.peak_pressure));
-            }
-            m.cm_shear_err = Some(worst);
-        }
-    }
+    hertz_metrics(scene, run, &mut m);
+    carter_metrics(scene, run, &mut m);
+    cattaneo_metrics(scene, run, &mut m);
     m
+}
+
+/// The Hertz figures of [`Metrics`], where Hertz applies.
+fn hertz_metrics(scene: &Scene, run: &SolverRun, m: &mut Metrics) {
+    let (Some(contact), Some(h)) = (&run.contact, hertz_for(scene, run)) else { return };
+    m.hertz_a_err = contact.fit_half_width.map(|a| (a - h.a).abs() / h.a);
+    m.hertz_p0_err = contact.fit_peak_pressure.map(|p| (p - h.p0).abs() / h.p0);
+    let (mut num, mut den) = (0.0, 0.0);
+    let nodes = &run.nodes;
+    for (i, n) in nodes.iter().enumerate() {
+        let w = tributary(nodes, i);
+        let ph = h.pressure(n.x);
+        num += w * (n.pressure - ph).powi(2);
+        den += w * ph * ph;
+    }
+    m.hertz_l2_err = (den > 0.0).then(|| (num / den).sqrt());
+}
+
+/// The Carter figures of [`Metrics`], where Carter applies.
+fn carter_metrics(scene: &Scene, run: &SolverRun, m: &mut Metrics) {
+    let (Some(c), Some(res)) = (carter_solution(scene, run), run.resultants) else { return };
+    let (h, mu, elem) = (c.hertz, scene.friction(), element_length(scene));
+    m.carter_q_over_mup = Some(res.tangential / (mu * res.normal));
+    m.carter_q_over_mup_exact = Some(c.q_over_mup);
+    m.carter_c_over_a_exact = Some(c.c_over_a);
+    let c_exact = c.c_over_a * h.a;
+    match crate::post::stick_edges(&run.nodes) {
+        Some((left, right)) => {
+            let (half, centre) = (0.5 * (right - left), 0.5 * (right + left));
+            m.carter_c_over_a = Some(half / h.a);
+            m.carter_c_err_elements = Some((half - c_exact) / elem);
+            m.carter_centre_err_elements = Some((centre - c.centre) / elem);
+        }
+        None => {
+            m.carter_c_over_a = Some(0.0);
+            m.carter_c_err_elements = Some(-c_exact / elem);
+        }
+    }
+    let (mut sum2, mut count) = (0.0, 0usize);
+    for n in run.nodes.iter().filter(|n| n.state != NodeState::Separated) {
+        sum2 += ((n.shear - c.traction(mu, n.x)) / (mu * h.p0)).powi(2);
+        count += 1;
+    }
+    m.carter_shear_rms = (count > 0).then(|| (sum2 / count as f64).sqrt());
+    let computed = run.rolling.and_then(|r| (!r.creepage_prescribed).then_some(r.creepage).flatten());
+    let xi = c.creepage;
+    m.carter_creepage_err = computed.filter(|_| xi != 0.0).map(|x| (x - xi).abs() / xi.abs());
+}
+
+/// The Cattaneo–Mindlin figures of [`Metrics`], where Cattaneo–Mindlin applies.
+fn cattaneo_metrics(scene: &Scene, run: &SolverRun, m: &mut Metrics) {
+    if !cattaneo_applies(scene) {
+        return;
+    }
+    let Some((Dof::Load(p), Dof::Load(q))) = scene.drive().map(|d| (d.normal, d.tangential)) else { return };
+    let mu = scene.friction();
+    let h = hertz_at(scene, p);
+    let ce = h.a * theory::cattaneo_c_over_a(q / (mu * p));
+    let elem = element_length(scene);
+    m.cm_c_over_a_exact = Some(ce / h.a);
+    let nodes = &run.nodes;
+    if let Some((left, right)) = crate::post::stick_edges(nodes) {
+        let (c, centre) = (0.5 * (right - left), 0.5 * (right + left));
+        m.cm_c_over_a = Some(c / h.a);
+        m.cm_c_err_elements = Some((c - ce) / elem);
+        m.cm_centre_elements = Some(centre / elem);
+    }
+    let q_cm = |x: f64| theory::cattaneo_traction(&h, mu, q, x);
+    let (mut num, mut den) = (0.0, 0.0);
+    for (i, n) in nodes.iter().enumerate() {
+        let w = tributary(nodes, i);
+        num += w * (n.shear - q_cm(n.x)).powi(2);
+        den += w * (mu * h.pressure(n.x)).powi(2);
+    }
+    m.cm_shear_l2_err = (den > 0.0).then(|| (num / den).sqrt());
+    let edge = CATTANEO_EDGE_ELEMENTS * elem;
+    let away = |x: f64| x.abs() <= h.a - edge && (x.abs() - ce).abs() >= edge;
+    let worst = nodes.iter().filter(|n| away(n.x)).map(|n| (n.shear - q_cm(n.x)).abs() / (mu * h.p0));
+    m.cm_shear_err = Some(worst.fold(0.0, f64::max));
 }

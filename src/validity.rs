@@ -34,7 +34,7 @@ fn contact_scale(scene: &Scene, ev: &Evaluation) -> f64 {
     let h = scene.zone().element_length(scene.radius());
     let measured = ev.contact.half_width.map_or(0.0, |w| w + 0.5 * h);
     let p = ev.resultants.normal;
-    let hertz = if p > 0.0 { crate::references::hertz_at(scene, p).half_width } else { 0.0 };
+    let hertz = if p > 0.0 { crate::references::hertz_at(scene, p).a } else { 0.0 };
     measured.max(hertz).max(0.5 * h)
 }
 
@@ -101,7 +101,7 @@ fn zone_edge(scene: &Scene, problem: &ContactProblem, ev: &Evaluation) -> Option
     let middle =
         nodes.iter().min_by(|a, b| (a.x - mid).abs().total_cmp(&(b.x - mid).abs())).map_or(0.0, |n| n.pressure);
     let p = ev.resultants.normal;
-    let a_h = if p > 0.0 { crate::references::hertz_at(scene, p).half_width } else { 0.0 };
+    let a_h = if p > 0.0 { crate::references::hertz_at(scene, p).a } else { 0.0 };
     let need = ZONE_WIDTH_FACTOR * (centre.abs() + a_h);
     let at_least = if matches!(problem.drive.normal, Dof::Displacement(_)) {
         " at least (the approach is prescribed, and the cut-off zone carries less than the full contact would)"

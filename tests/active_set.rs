@@ -3,6 +3,9 @@
 //! tractions to 1e-10 of the peak pressure, node by node; on load paths at every substep. When the active-set method
 //! falls back to Lemke its message must say so.
 
+#[path = "common/paired.rs"]
+mod paired;
+use paired::paired;
 use rollbem::pipeline::run_scene;
 use rollbem::results::SolverRun;
 use rollbem::scene::Scene;
@@ -40,10 +43,7 @@ fn compare(what: &str, l: &SolverRun, a: &SolverRun) -> Option<f64> {
         assert!(a.nodes.iter().all(|n| n.pressure == 0.0 && n.shear == 0.0), "{what}: no contact");
         return Some(0.0);
     }
-    let d = l
-        .nodes
-        .iter()
-        .zip(&a.nodes)
+    let d = paired(&l.nodes, &a.nodes)
         .map(|(x, y)| (x.pressure - y.pressure).abs().max((x.shear - y.shear).abs()))
         .fold(0.0, f64::max)
         / p0;

@@ -5,8 +5,11 @@
 //! rest. Expected values come from the analytic fields: rigid motions, a constant-stress patch
 //! (u = ε·x, ε = (σ − ν tr σ I)/(2G), t = σ·n) and Lamé's thick cylinder.
 
+#[path = "common/paired.rs"]
+mod paired;
 use faer::linalg::solvers::Solve;
 use faer::Mat;
+use paired::paired;
 use rollbem::bem::{assemble_full, kelvin::Kelvin};
 use rollbem::mesh::MeshSpec;
 use rollbem::mesh::{Bc, Mesh};
@@ -99,7 +102,7 @@ fn patch_error(n: usize, kind: ElementKind) -> f64 {
     // Error in the solved displacements of the traction boundary, relative to the largest exact displacement.
     let mut err = 0.0_f64;
     let mut scale = 0.0_f64;
-    for (node, ui) in m.nodes.iter().zip(&u) {
+    for (node, ui) in paired(&m.nodes, &u) {
         let ue = u_of(node.pos);
         scale = scale.max(ue[0].hypot(ue[1]));
         if node.bc != Bc::Support {
@@ -147,7 +150,7 @@ fn lame_error(n: usize, kind: ElementKind) -> (f64, f64) {
     let (u, t) = solve_mixed(&m, &k, &u_of, &t_of);
     let mut eu = 0.0_f64;
     let mut et = 0.0_f64;
-    for ((node, ui), ti) in m.nodes.iter().zip(&u).zip(&t) {
+    for ((node, ui), ti) in paired(paired(&m.nodes, &u), &t) {
         let r = node.pos[0].hypot(node.pos[1]);
         if node.bc == Bc::Support {
             // Radial traction on the hole: t = σ·n, n = −e_r.

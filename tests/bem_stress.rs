@@ -7,8 +7,11 @@
 //! the two-point-load limit), and brute-force composite Gauss integration of the same discrete integrals (for the
 //! quadrature alone). Run with `--nocapture` to see every error figure and the timings.
 
+#[path = "common/paired.rs"]
+mod paired;
 use faer::linalg::solvers::Solve;
 use faer::Mat;
+use paired::paired;
 use rollbem::bem::kelvin::Kelvin;
 use rollbem::bem::quadratic::{shape, ArcElement, XI_NODES};
 use rollbem::bem::quadrature::gauss_legendre;
@@ -234,7 +237,7 @@ fn field_error(
     scale: f64,
 ) -> f64 {
     let s = interior_stress(m, k, u, t, points);
-    points.iter().zip(&s).map(|(p, s)| max_err(s.as_ref().expect("interior point"), &exact(*p))).fold(0.0, f64::max)
+    paired(points, &s).map(|(p, s)| max_err(s.as_ref().expect("interior point"), &exact(*p))).fold(0.0, f64::max)
         / scale
 }
 
@@ -599,7 +602,7 @@ fn hondros_disk_by_bem() {
             let mut worst: f64 = 0.0;
             let mut worst_at = [0.0; 2];
             let mut centre = [0.0; 3];
-            for ((x, want), got) in pts.iter().zip(&s) {
+            for ((x, want), got) in paired(&pts, &s) {
                 let got = got.expect("interior");
                 if *x == [0.0, 0.0] {
                     centre = got;
@@ -718,7 +721,7 @@ fn grid_100_by_50_converges_under_the_contact() {
         .flat_map(|j| (0..100).map(move |i| [-0.12 + 0.24 * i as f64 / 99.0, -0.99 + 0.29 * j as f64 / 49.0]))
         .collect();
     let worst_error = |s: &[Result<[f64; 3], StressError>]| {
-        pts.iter().zip(s).map(|(p, s)| max_err(s.as_ref().unwrap(), &lame.sigma(*p))).fold(0.0, f64::max) / lame.scale()
+        paired(&pts, s).map(|(p, s)| max_err(s.as_ref().unwrap(), &lame.sigma(*p))).fold(0.0, f64::max) / lame.scale()
     };
     for kind in [ElementKind::Constant, ElementKind::Quadratic] {
         let spec = MeshSpec::arc(kind, 30.0, 100, 200);

@@ -2,14 +2,18 @@
 //! against the physical conditions, against each other, against Cattaneo–Mindlin (REFERENCES.md) and against a
 //! brute-force enumeration of node states that does not use the LCP at all.
 
+#[path = "common/paired.rs"]
+mod paired;
 use faer::linalg::solvers::Solve;
 use faer::Mat;
+use paired::paired;
 use rollbem::pipeline::run_scene;
 use rollbem::post::NodeState;
 use rollbem::results::{Report, SolverRun};
 use rollbem::scene::{Scene, Support};
 use rollbem::solvers::{Status, Termination};
 use rollbem::source::{self, Blocks};
+use rollbem::theory;
 use std::path::Path;
 
 fn scene(text: &str) -> Scene {
@@ -87,7 +91,7 @@ fn displacement_and_loading_formulations_describe_one_physics() {
         assert_eq!(ll.formulation, "loading");
         assert_eq!(ld.formulation, "displacement");
         let p0 = ld.contact.as_ref().unwrap().peak_pressure;
-        for (a, b) in ld.nodes.iter().zip(&ll.nodes) {
+        for (a, b) in paired(&ld.nodes, &ll.nodes) {
             assert!((a.pressure - b.pressure).abs() <= 1e-8 * p0, "ν={nu} μ={mu}: Δp at x={}", a.x);
             assert!((a.shear - b.shear).abs() <= 1e-8 * p0, "ν={nu} μ={mu}: Δq at x={}", a.x);
             assert_eq!(a.state, b.state);
@@ -119,8 +123,8 @@ fn cattaneo_mindlin_stick_zone_and_tractions_at_beta_zero() {
             let r = run(&s);
             let l = lemke(&r);
             assert_eq!(l.status, Status::Solved, "{}", l.explanation());
-            let h = rollbem::hertz::Hertz::new(1.0, 94500.0, nu, p);
-            let c_exact = h.half_width * (1.0 - q / (mu * p)).sqrt();
+            let h = theory::Hertz2D::from_load(p, 1.0, theory::contact_modulus(94500.0, nu, f64::INFINITY, 0.0));
+            let c_exact = h.a * theory::cattaneo_c_over_a(q / (mu * p));
             let elem = arc.to_radians() / 60.0;
             // Stick-zone edges: midway between the outermost sticking node and its slipping neighbour.
             let nodes = &l.nodes;
@@ -131,9 +135,9 @@ fn cattaneo_mindlin_stick_zone_and_tractions_at_beta_zero() {
             let (c_num, centre) = (0.5 * (right - left), 0.5 * (right + left));
             eprintln!(
                 "ν={nu} {extra} a/R={:.3} μ={mu} Q/P={qr}: c/a {:.4} vs {:.4} ({:+.2} elements), centre {:+.2} elements",
-                h.half_width,
-                c_num / h.half_width,
-                c_exact / h.half_width,
+                h.a,
+                c_num / h.a,
+                c_exact / h.a,
                 (c_num - c_exact) / elem,
                 centre / elem
             );
@@ -143,16 +147,10 @@ fn cattaneo_mindlin_stick_zone_and_tractions_at_beta_zero() {
             // where a nodal comparison measures where the discrete edge falls inside its element rather than the
             // traction; the pointwise error is taken away from them (1.5 elements), and the RMS over every loaded
             // node includes them.
-            let away = |x: f64| x.abs() <= h.half_width - 1.5 * elem && (x.abs() - c_exact).abs() >= 1.5 * elem;
+            let away = |x: f64| x.abs() <= h.a - 1.5 * elem && (x.abs() - c_exact).abs() >= 1.5 * elem;
             let (mut worst, mut sum2, mut count) = (0.0_f64, 0.0, 0usize);
             for n in nodes.iter().filter(|n| n.state != NodeState::Separated) {
-                let pa = h.pressure(n.x);
-                let qa = if n.x.abs() < c_exact {
-                    mu * pa - mu * h.peak_pressure * (c_exact / h.half_width) * (1.0 - (n.x / c_exact).powi(2)).sqrt()
-                } else {
-                    mu * pa
-                };
-                let err = (n.shear - qa).abs() / (mu * h.peak_pressure);
+                let err = (n.shear - theory::cattaneo_traction(&h, mu, q, n.x)).abs() / (mu * h.p0);
                 sum2 += err * err;
                 count += 1;
                 if away(n.x) {

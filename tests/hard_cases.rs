@@ -60,7 +60,7 @@ fn hard_cases_say_what_their_descriptions_promise() {
     assert!(c.nodes_stick >= 1, "a stick zone of about √0.001 a survives");
     assert!(s.document().contact.friction > 0.0);
     let (_, r) = hard("rail-wheel-R-over-a-660");
-    let a = r.references.hertz.unwrap().half_width;
+    let a = r.references.hertz.unwrap().a;
     assert!(460.0 / a >= 500.0);
     assert!(r.checks.iter().any(|c| c.name.contains("Hertz half-width") && c.pass));
 }

@@ -2,6 +2,9 @@
 //! scene calls for, `rollbem check` and its failure on a violated declared tolerance. Reference values: the peer
 //! solver (Lemke, a pivoting method exact to round-off) and the declared tolerances.
 
+#[path = "common/paired.rs"]
+mod paired;
+use paired::paired;
 use rollbem::pipeline::run_scene;
 use rollbem::results::{Report, SolverRun};
 use rollbem::scene::Scene;
@@ -28,9 +31,7 @@ fn get<'a>(r: &'a Report, solver: &str) -> &'a SolverRun {
 
 fn max_diff(a: &SolverRun, b: &SolverRun) -> f64 {
     let p0 = a.contact.as_ref().unwrap().peak_pressure;
-    a.nodes
-        .iter()
-        .zip(&b.nodes)
+    paired(&a.nodes, &b.nodes)
         .fold(0.0_f64, |m, (x, y)| m.max((x.pressure - y.pressure).abs()).max((x.shear - y.shear).abs()))
         / p0
 }

@@ -9,6 +9,9 @@
 // Index loops over matrix rows read like the formulas they implement (as in the library).
 #![allow(clippy::needless_range_loop)]
 
+#[path = "common/paired.rs"]
+mod paired;
+use paired::paired;
 #[path = "common/lcp_enum.rs"]
 mod lcp_enum;
 
@@ -47,7 +50,7 @@ fn assert_solves(p: &Lcp, out: &LemkeOutcome, what: &str) {
 fn assert_is_enumerated(out: &LemkeOutcome, sols: &[Vec<f64>], what: &str) {
     let zs = out.z.iter().fold(1.0_f64, |m, v| m.max(v.abs()));
     assert!(
-        sols.iter().any(|s| s.iter().zip(&out.z).all(|(a, b)| (a - b).abs() <= 1e-9 * zs)),
+        sols.iter().any(|s| paired(s, &out.z).all(|(a, b)| (a - b).abs() <= 1e-9 * zs)),
         "{what}: Lemke's z = {:?} is not among the enumerated solutions {sols:?}",
         out.z
     );
@@ -215,7 +218,7 @@ fn murty_exponential_example() {
         for (name, out) in [("block", &blk), ("dense", &dns)] {
             assert_solves(&p, out, &format!("Murty n={n} ({name})"));
             // Unique solution (P-matrix, CPS Thm 3.3.7): the textbook answer, and the enumeration for n ≤ 8.
-            for (a, b) in out.z.iter().zip(&zt) {
+            for (a, b) in paired(&out.z, &zt) {
                 assert!(
                     (a - b).abs() <= 1e-9 * (1.0 + b.abs()),
                     "Murty n={n} ({name}): z = {:?}, textbook {zt:?}",
@@ -254,7 +257,7 @@ fn murty_beyond_ten_ends_solved_or_at_the_pivot_limit() {
                 Termination::Solved => {
                     assert_solves(&p, &out, engine);
                     let (_, zt, _) = textbook_lemke(&p, &vec![1.0; n]);
-                    assert!(out.z.iter().zip(&zt).all(|(a, b)| (a - b).abs() <= 1e-9 * (1.0 + b.abs())));
+                    assert!(paired(&out.z, &zt).all(|(a, b)| (a - b).abs() <= 1e-9 * (1.0 + b.abs())));
                 }
                 Termination::NotConverged => assert_eq!(out.pivots, limit),
                 s => panic!("Murty n = {n} ({engine}): unexpected {s}: {}", out.message),
@@ -521,13 +524,13 @@ fn write_then_read_is_identical_and_solves_identically() {
                 assert_eq!(back.m[(i, j)].to_bits(), p.m[(i, j)].to_bits(), "problem {k}: M[{i},{j}]");
             }
         }
-        assert!(back.q.iter().zip(&p.q).all(|(a, b)| a.to_bits() == b.to_bits()), "problem {k}: q");
+        assert!(paired(&back.q, &p.q).all(|(a, b)| a.to_bits() == b.to_bits()), "problem {k}: q");
         for solve in [lemke::solve, rollbem::solvers::lemke::dense::solve_dense] {
             let s = LemkeSettings::default();
             let (a, b) = (solve(p, &s), solve(&back, &s));
             assert_eq!(a.status, b.status);
             assert_eq!(a.pivots, b.pivots);
-            assert!(a.z.iter().zip(&b.z).all(|(x, y)| x.to_bits() == y.to_bits()), "problem {k}: z differs");
+            assert!(paired(&a.z, &b.z).all(|(x, y)| x.to_bits() == y.to_bits()), "problem {k}: z differs");
         }
     }
 }

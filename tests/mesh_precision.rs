@@ -6,18 +6,23 @@
 //! 4.43–4.45), towards which the wheel tends as a/R → 0; and the same scene at a/R = 6e-4, where the old `y + R` gap
 //! was already exact to 1e-9, for the claim that nothing but round-off changes between scales.
 
+#[path = "common/paired.rs"]
+mod paired;
+use paired::paired;
 use rollbem::mesh::{Mesh, MeshSpec, Shape};
 use rollbem::pipeline::run_scene;
 use rollbem::results::SolverRun;
 use rollbem::scene::{Scene, MIN_CONTACT_ELEMENT_ANGLE};
 use rollbem::status::Status;
+use rollbem::theory::Hertz2D;
 
 /// A frictionless top-arc wheel (R = 1, E = 1, ν = 0.3) with `n` elements of kind `element` on a contact arc of
-/// half-angle `half` rad, loaded so that Hertz's a is 0.7 of the zone's half-width.
-fn scene(element: &str, half: f64, n: usize) -> (Scene, f64, f64) {
+/// half-angle `half` rad, loaded so that Hertz's a is 0.7 of the zone's half-width; with that Hertz contact.
+fn scene(element: &str, half: f64, n: usize) -> (Scene, Hertz2D) {
     let e_star = 1.0 / (1.0 - 0.09);
     let a = 0.7 * half.sin();
-    let p = std::f64::consts::PI * e_star * a * a / 4.0;
+    let h = Hertz2D::from_half_width(a, 1.0, e_star);
+    let p = h.load;
     let text = format!(
         r#"
 name = "small-arc"
@@ -40,7 +45,7 @@ use = ["lemke"]
 "#,
         arc = (2.0 * half).to_degrees()
     );
-    (Scene::from_toml(&text, std::path::Path::new("small-arc.toml")).unwrap(), a, p)
+    (Scene::from_toml(&text, std::path::Path::new("small-arc.toml")).unwrap(), h)
 }
 
 fn solved(s: &Scene) -> SolverRun {
@@ -59,7 +64,7 @@ fn gap_from_x(r: f64, x: f64) -> f64 {
 fn the_initial_gap_keeps_its_relative_precision_at_small_angles() {
     for kind in ["constant", "quadratic"] {
         for half in [1e-2, 1e-5, 1e-8] {
-            let (s, _, _) = scene(kind, half, 30);
+            let (s, _) = scene(kind, half, 30);
             let (support, spec) = MeshSpec::of_scene(&s).unwrap();
             let mesh = Mesh::wheel(1.0, support, &spec);
             let mut worst = 0.0_f64;
@@ -86,28 +91,17 @@ fn the_initial_gap_keeps_its_relative_precision_at_small_angles() {
 #[test]
 fn a_tiny_contact_is_solved_as_accurately_as_a_small_one() {
     for kind in ["constant", "quadratic"] {
-        let (small, a_small, p_small) = scene(kind, 1e-3, 30);
-        let (tiny, a_tiny, p_tiny) = scene(kind, 1e-7, 30);
-        let p0 = |a: f64, p: f64| 2.0 * p / (std::f64::consts::PI * a);
+        let (small, h_small) = scene(kind, 1e-3, 30);
+        let (tiny, h_tiny) = scene(kind, 1e-7, 30);
         let (rs, rt) = (solved(&small), solved(&tiny));
         assert_eq!(rs.nodes.len(), rt.nodes.len());
-        let shape_difference = rs
-            .nodes
-            .iter()
-            .zip(&rt.nodes)
-            .map(|(s, t)| (s.pressure / p0(a_small, p_small) - t.pressure / p0(a_tiny, p_tiny)).abs())
+        let shape_difference = paired(&rs.nodes, &rt.nodes)
+            .map(|(s, t)| (s.pressure / h_small.p0 - t.pressure / h_tiny.p0).abs())
             .fold(0.0, f64::max);
-        let hertz = |run: &SolverRun, a: f64, p: f64| {
-            run.nodes
-                .iter()
-                .map(|n| {
-                    let xi = n.x / a;
-                    let ph = if xi.abs() < 1.0 { (1.0 - xi * xi).sqrt() } else { 0.0 };
-                    (n.pressure / p0(a, p) - ph).abs()
-                })
-                .fold(0.0, f64::max)
+        let hertz = |run: &SolverRun, h: &Hertz2D| {
+            run.nodes.iter().map(|n| (n.pressure - h.pressure(n.x)).abs() / h.p0).fold(0.0, f64::max)
         };
-        let (hs, ht) = (hertz(&rs, a_small, p_small), hertz(&rt, a_tiny, p_tiny));
+        let (hs, ht) = (hertz(&rs, &h_small), hertz(&rt, &h_tiny));
         eprintln!(
             "{kind}: max |Δ(p/p0)| tiny vs small {shape_difference:.2e}; against Hertz: small {hs:.2e}, tiny {ht:.2e}"
         );

@@ -1,6 +1,9 @@
 //! The model API: a scene's flexibility built once and solved for many drives gives the same answers as separate
 //! runs, says in its timings that it reused the build, and refuses a scene of other bodies or mesh by name.
 
+#[path = "common/paired.rs"]
+mod paired;
+use paired::paired;
 use rollbem::pipeline::{run_scene, Model};
 use rollbem::results::Setup;
 use rollbem::scene::{Dof, Drive, Scene};
@@ -22,7 +25,7 @@ fn a_creep_curve_on_one_model_equals_separate_runs_and_builds_once() {
     let curve = model.solve_all(&scenes).unwrap();
     assert_eq!(model.solves(), 50);
     let mut worst: f64 = 0.0;
-    for (k, (s, r)) in scenes.iter().zip(&curve).enumerate() {
+    for (k, (s, r)) in paired(&scenes, &curve).enumerate() {
         let on_model = &r.runs[0];
         assert_eq!(on_model.status, Status::Solved, "ξ = {:e}: {}", s.creepage().unwrap(), on_model.explanation());
         // The timing says the flexibility was built once: the first solve built it, the other 49 reused it.
@@ -34,7 +37,7 @@ fn a_creep_curve_on_one_model_equals_separate_runs_and_builds_once() {
         assert_eq!(alone.timing_s.setup, Setup::Built);
         let p0 = alone.contact.as_ref().unwrap().peak_pressure;
         assert_eq!(on_model.nodes.len(), alone.nodes.len());
-        for (a, b) in on_model.nodes.iter().zip(&alone.nodes) {
+        for (a, b) in paired(&on_model.nodes, &alone.nodes) {
             worst = worst.max((a.pressure - b.pressure).abs() / p0).max((a.shear - b.shear).abs() / p0);
         }
     }
@@ -94,9 +97,7 @@ fn an_empty_solver_list_is_bad_input_not_an_empty_answer() {
 fn traction_difference(a: &rollbem::results::SolverRun, b: &rollbem::results::SolverRun) -> f64 {
     let p0 = b.contact.as_ref().unwrap().peak_pressure;
     assert_eq!(a.nodes.len(), b.nodes.len());
-    a.nodes
-        .iter()
-        .zip(&b.nodes)
+    paired(&a.nodes, &b.nodes)
         .fold(0.0_f64, |w, (x, y)| w.max((x.pressure - y.pressure).abs() / p0).max((x.shear - y.shear).abs() / p0))
 }
 
@@ -123,7 +124,7 @@ fn warm_starts_change_the_work_not_the_answers() {
         let model = Model::build(&family[0]).unwrap();
         let warm = model.solve_all(family).unwrap();
         let (mut warm_work, mut cold_work, mut worst) = (0, 0, 0.0_f64);
-        for (s, r) in family.iter().zip(&warm) {
+        for (s, r) in paired(family, &warm) {
             let alone = run_scene(s).unwrap();
             let (w, c) = (&r.runs[0], &alone.runs[0]);
             assert_eq!(w.status, Status::Solved, "{name}: {}", w.explanation());

@@ -260,3 +260,88 @@ fn plot_draws_a_path_csv_with_its_theory_and_refuses_a_sweep_csv_without_its_ana
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("--analysis"));
 }
+
+/// The texts of an SVG as `(text-anchor, content)`.
+fn svg_texts(svg: &str) -> Vec<(String, String)> {
+    svg.split("<text")
+        .skip(1)
+        .filter_map(|t| {
+            let (attrs, rest) = t.split_once('>')?;
+            let anchor = attrs.split("text-anchor=\"").nth(1)?.split('"').next()?.to_string();
+            Some((anchor, rest.split("</text>").next()?.trim().to_string()))
+        })
+        .collect()
+}
+
+/// Issue 31: `rollbem plot` of a load path's CSV draws, as a result document's path does, the fretting loop less its
+/// chord (with the elastic compliance in it the loop of md-fretting-loop is a line: a hysteresis 1.4e-3 mm wide
+/// inside ±0.047 mm), and the approach the path holds as the constant it is, with tick labels a person can read (it
+/// drew the round-off with labels of 18 characters). Expected values: the loop's width computed here from the CSV
+/// (the chord through the tips of the first solver's loop, as the figure's definition says).
+#[test]
+fn plot_of_a_path_csv_draws_the_loop_less_its_chord_and_readable_ticks() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/scenes/md-fretting-loop.toml");
+    let csv = dir.path().join("md.csv");
+    let bin = env!("CARGO_BIN_EXE_rollbem");
+    let o = Command::new(bin).args(["run", "--quiet", "--path-csv"]).arg(&csv).arg(&scene).output().unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // The loop's width less its chord, from the CSV: the first solver's (shift, Q) at every substep.
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let first = rows[0][col("solver")];
+    let pts: Vec<(f64, f64)> = rows
+        .iter()
+        .filter(|r| r[col("solver")] == first)
+        .map(|r| (r[col("shift")].parse().unwrap(), r[col("Q")].parse().unwrap()))
+        .collect();
+    assert!(pts.len() > 40, "the path's substeps");
+    let hi = pts.iter().copied().fold((0.0, f64::NEG_INFINITY), |m, p| if p.1 > m.1 { p } else { m });
+    let lo = pts.iter().copied().fold((0.0, f64::INFINITY), |m, p| if p.1 < m.1 { p } else { m });
+    let slope = (hi.0 - lo.0) / (hi.1 - lo.1);
+    let width = pts.iter().map(|&(d, q)| (d - lo.0 - slope * (q - lo.1)).abs()).fold(0.0, f64::max);
+    let span = pts.iter().map(|p| p.0.abs()).fold(0.0, f64::max);
+    assert!(width > 0.0 && width < 0.05 * span, "a thin loop: width {width:e} in ±{span:e}");
+
+    for scene_arg in [None, Some(&scene)] {
+        let out = dir.path().join(if scene_arg.is_some() { "with-scene" } else { "bare" });
+        let mut cmd = Command::new(bin);
+        cmd.arg("plot").arg(&csv).arg("--out").arg(&out);
+        if let Some(s) = scene_arg {
+            cmd.arg("--scene").arg(s);
+        }
+        let o = cmd.output().unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        let svg = |what: &str| std::fs::read_to_string(out.join(format!("md-{what}.svg"))).unwrap();
+        // The loop less its chord: every solver's series, with x ticks on the scale of the loop's width (the loop
+        // itself has them on the scale of its span, 30 times wider).
+        let opened = svg("loop-opened");
+        let texts = svg_texts(&opened);
+        assert!(texts.iter().any(|(_, t)| t == "md: loop less its chord"), "{texts:?}");
+        for solver in ["lemke", "active_set", "pgs"] {
+            assert!(texts.iter().any(|(_, t)| t == solver), "{solver} in the legend: {texts:?}");
+        }
+        assert_eq!(scene_arg.is_some(), opened.contains("Mindlin–Deresiewicz"), "the theory with --scene only");
+        let x_ticks = |texts: &[(String, String)]| -> f64 {
+            let v: Vec<f64> = texts.iter().filter(|(a, _)| a == "middle").filter_map(|(_, t)| t.parse().ok()).collect();
+            assert!(v.len() >= 3, "x ticks: {texts:?}");
+            v.iter().fold(0.0, |m: f64, x| m.max(x.abs()))
+        };
+        let (opened_ticks, loop_ticks) = (x_ticks(&texts), x_ticks(&svg_texts(&svg("loop"))));
+        assert!((0.5 * width..=1.5 * width).contains(&opened_ticks), "ticks to {opened_ticks:e}, width {width:e}");
+        assert!(loop_ticks > 0.5 * span, "the loop itself: ticks to {loop_ticks:e}, span {span:e}");
+        // Tick labels of bounded length in every figure; the held approach drawn as a constant, and said so.
+        for what in ["loop", "loop-opened", "stick-zone", "approach"] {
+            for (_, t) in svg_texts(&svg(what)) {
+                if t.parse::<f64>().is_ok() {
+                    assert!(t.chars().count() <= 8, "{what}: tick label `{t}`");
+                }
+            }
+        }
+        let approach = svg_texts(&svg("approach"));
+        assert!(approach.iter().any(|(_, t)| t.contains("constant to round-off")), "{approach:?}");
+    }
+}

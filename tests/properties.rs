@@ -14,7 +14,10 @@
 //!    merely copositive matrices never make Lemke panic and any `Solved` answer is a valid solution.
 //! 3. The scene parser returns `Ok` or `Err` on arbitrary text and on mutations of the reference scenes.
 
+#[path = "common/paired.rs"]
+mod paired;
 use faer::Mat;
+use paired::paired;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, RngSeed, TestCaseError, TestRunner};
 use rollbem::pipeline::run_scene;
@@ -159,7 +162,7 @@ impl SceneParams {
     fn hertz_load(&self) -> f64 {
         let e_star = self.youngs / (1.0 - self.nu * self.nu);
         let a = self.a_over_r * self.radius;
-        std::f64::consts::PI * e_star * a * a / (4.0 * self.radius)
+        rollbem::theory::Hertz2D::from_half_width(a, self.radius, e_star).load
     }
 
     fn scene(&self) -> SceneDocument {
@@ -347,9 +350,10 @@ use = ["lemke", "normtang_qp"]
 "#;
 
 /// Solvers agree on existence: `infeasible` claims that no solution exists, so it must never stand next to a run
-/// whose solution passed the solver-independent residual check. Fails today (Lemke's ray termination is taken as
-/// a proof of infeasibility although, on coarse quadratic meshes, the condensed flexibility is far from symmetric
-/// positive definite and the LCP is not copositive-plus); run with `--ignored` once that is fixed.
+/// whose solution passed the solver-independent residual check. Starts with the reproducer of FUZZING.md's bug 1
+/// (Lemke's ray termination taken as a proof of infeasibility although, on coarse quadratic meshes, the condensed
+/// flexibility is far from symmetric positive definite and the LCP is not copositive-plus; fixed: a ray is
+/// `infeasible` only when a bound proves it).
 #[test]
 fn random_valid_scenes_solvers_agree_on_existence() {
     let assert_agree = |scene: &Scene| -> Result<(), TestCaseError> {
@@ -473,7 +477,7 @@ fn lemke_solves_p_matrix_lcps_and_engines_agree() {
             prop_assert_eq!(out.status, Termination::Solved, "{} engine: {}", name, out.message);
             prop_assert!(p.violation(&out.z) <= LCP_EPS, "{} engine: violation {:.3e}", name, p.violation(&out.z));
         }
-        let diff = a.z.iter().zip(&b.z).fold(0.0_f64, |m, (x, y)| m.max((x - y).abs()));
+        let diff = paired(&a.z, &b.z).fold(0.0_f64, |m, (x, y)| m.max((x - y).abs()));
         prop_assert!(diff <= 1e-8 * p.scale(&a.z), "engines disagree by {diff:.3e}: {:?} vs {:?}", a.z, b.z);
         Ok(())
     });

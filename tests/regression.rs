@@ -11,6 +11,9 @@
 //! moment of a symmetric contact, the shear of a frictionless one) is compared on that scale, not on its own. Scenes
 //! with `[stresses]` also record the largest principal shear (to itself) and its depth (to R).
 
+#[path = "common/paired.rs"]
+mod paired;
+use paired::paired;
 use rollbem::pipeline::run_scene;
 use rollbem::scene::Scene;
 use std::collections::BTreeMap;
@@ -117,7 +120,7 @@ fn key_figures_match_the_recorded_values() {
         // One value per figure, now and recorded, before zipping them (a short row would compare only its head).
         assert_eq!(vals.len(), FIGURES.len(), "{scene}: figures now");
         assert_eq!(old.len(), FIGURES.len(), "{scene}: figures recorded (re-record, see module docs)");
-        for ((name, a), b) in FIGURES.iter().zip(vals).zip(old) {
+        for ((name, a), b) in paired(paired(&FIGURES, vals), old) {
             let natural = match *name {
                 "normal" | "tangential" => p,
                 "moment" => p * r,

@@ -3,6 +3,9 @@
 //! `rollbem lcp solve`, and agrees with the block-revised `lemke`. Reference: the block engine (an independent
 //! implementation of the same pivoting rule, which follows the same path on exact data).
 
+#[path = "common/paired.rs"]
+mod paired;
+use paired::paired;
 use rollbem::pipeline::run_scene;
 use rollbem::scene::Scene;
 use rollbem::solvers::{registry, Status};
@@ -72,7 +75,7 @@ fn lemke_dense_solves_lcp_files_and_the_other_solvers_say_they_do_not() {
         z.push(doc["z"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect::<Vec<f64>>());
     }
     let zmax = z[0].iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-    for (a, b) in z[0].iter().zip(&z[1]) {
+    for (a, b) in paired(&z[0], &z[1]) {
         assert!((a - b).abs() <= 1e-10 * zmax, "{a} vs {b}");
     }
     let out = Command::new(bin).args(["lcp", "solve"]).arg(&file).args(["--solver", "pgs"]).output().unwrap();

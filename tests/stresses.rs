@@ -315,7 +315,7 @@ fn steady_rolling_in_full_slip_has_the_sliding_field() {
 /// |x| ≤ 1.25a (inside the contact mesh, elements 0.02a long with n = 125), 0.1a ≤ z ≤ 3a.
 fn small_contact(model: &str, element: &str, n: usize, ar: f64) -> (Scene, Hertz2D) {
     let a = ar * R;
-    let p = std::f64::consts::PI * estar() * a * a / (4.0 * R);
+    let p = Hertz2D::from_half_width(a, R, estar()).load;
     let body = if model == "bem" { "support = { kind = \"hub\", radius = 100.0 }" } else { "" };
     let other = if model == "bem" { "other_elements = 200" } else { "" };
     let s = scene(&format!(
@@ -388,7 +388,7 @@ fn finite_wheel_field_agrees_with_the_half_plane_at_small_a_over_r() {
 fn clamped_disk(top: f64, other: usize) -> (StressResult, f64) {
     let (r, e) = (1.0, 1.0);
     let a = 0.01 * r;
-    let p = std::f64::consts::PI * (e / (1.0 - NU * NU)) * a * a / (4.0 * r);
+    let p = Hertz2D::from_half_width(a, r, e / (1.0 - NU * NU)).load;
     let s = scene(&format!(
         r#"
 name = "clamped-disk"
@@ -467,7 +467,7 @@ fn finite_wheel_far_field_is_the_diametrally_loaded_disk() {
 /// `[stresses]` table `stresses` (empty: none).
 fn bem_scene_text(stresses: &str) -> String {
     let a = 0.0025 * R;
-    let p = std::f64::consts::PI * estar() * a * a / (4.0 * R);
+    let p = Hertz2D::from_half_width(a, R, estar()).load;
     format!(
         r#"
 name = "stress-input"

@@ -1,5 +1,8 @@
 //! Sweeps: expansion of the grids, sharding and merging, bad specs.
 
+#[path = "common/paired.rs"]
+mod paired;
+use paired::paired;
 use rollbem::scene::ElementKind;
 use rollbem::sweep::{merge, run_sweep, Shard, SweepSpec, TIMING_COLUMNS};
 use rollbem::Error;
@@ -27,10 +30,7 @@ fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
 fn without_timing(header: &[String], rows: &[Vec<String>]) -> Vec<Vec<String>> {
     rows.iter()
         .map(|r| {
-            r.iter()
-                .zip(header)
-                .map(|(c, h)| if TIMING_COLUMNS.contains(&h.as_str()) { "" } else { c }.into())
-                .collect()
+            paired(r, header).map(|(c, h)| if TIMING_COLUMNS.contains(&h.as_str()) { "" } else { c }.into()).collect()
         })
         .collect()
 }
@@ -70,7 +70,7 @@ contact.friction = [0.1, 0.2]     # unquoted dotted key: a nested table, same me
     assert_eq!(cases.len(), 6);
     // Keys sorted ("mesh..." < "wheel..."), the last varying fastest.
     let expect = [("10", "0.2"), ("10", "0.3"), ("20", "0.2"), ("20", "0.3"), ("30", "0.2"), ("30", "0.3")];
-    for (i, (c, (n, nu))) in cases.iter().zip(expect).enumerate() {
+    for (i, (c, (n, nu))) in paired(&cases, expect).enumerate() {
         assert_eq!(c.index, i);
         assert_eq!(
             c.params,
@@ -383,11 +383,13 @@ fn merge_refuses_different_headers() {
     assert!(merge(&[], &out).is_err());
 }
 
-/// The reference sweeps (`reference/sweeps/*.toml`) run end to end; slow (about a minute each in release on two
-/// cores), so ignored by default: `cargo test --release --test sweep -- --ignored --nocapture`. Set
+/// The reference sweeps `hertz-accuracy` and `cattaneo-accuracy` (`reference/sweeps/`) run end to end: every case
+/// builds and the direct solvers solve it. Slow for `cargo test` (about 50 s of CPU on two threads, 108 cases), so
+/// ignored there and run by CI (`.ci/run`, after `cargo test --release`) as
+/// `cargo test --release --test sweep -- --ignored --nocapture`, the command to run it by hand too. Set
 /// `ROLLBEM_SWEEP_OUT=DIR` to keep the CSVs.
 #[test]
-#[ignore]
+#[ignore = "slow (about 50 s CPU): CI runs it, `cargo test --release --test sweep -- --ignored`"]
 fn reference_sweeps_run() {
     let dir = tempfile::tempdir().unwrap();
     let out_dir = std::env::var_os("ROLLBEM_SWEEP_OUT").map(PathBuf::from).unwrap_or_else(|| dir.path().into());

@@ -64,7 +64,7 @@ use = ["lemke"]
 /// E* = E/(1 − ν²)), μ = 0.3, 40 contact elements on a 12° arc, moment = 0, Q = 0.1P.
 fn free_wheel(drive: &str) -> String {
     let estar = 94500.0 / (1.0 - 0.01);
-    let p = std::f64::consts::PI * estar * 0.05f64.powi(2) / 4.0;
+    let p = rollbem::theory::Hertz2D::from_half_width(0.05, 1.0, estar).load;
     let drive = drive.replace("{P}", &format!("{p:?}")).replace("{Q}", &format!("{:?}", 0.1 * p));
     format!(
         r#"
@@ -116,9 +116,9 @@ fn number_after(msg: &str, key: &str) -> f64 {
     t.trim_end_matches([',', ';']).parse().unwrap_or_else(|_| panic!("`{t}` after `{key}` in: {msg}"))
 }
 
-/// Hertz's half-width of a cylinder on a rigid flat, plane strain: a² = 4PR(1 − ν²)/(πE).
+/// Hertz's half-width of a cylinder on a rigid flat, plane strain ([`rollbem::theory::Hertz2D`]).
 fn hertz_a(p: f64, r: f64, e: f64, nu: f64) -> f64 {
-    (4.0 * p * r * (1.0 - nu * nu) / (std::f64::consts::PI * e)).sqrt()
+    rollbem::theory::Hertz2D::from_load(p, r, rollbem::theory::contact_modulus(e, nu, f64::INFINITY, 0.0)).a
 }
 
 #[test]

@@ -6,13 +6,13 @@ use crate::checks::{make_checks, ModelReference};
 use crate::diagnostics::{asymmetry, diagnose};
 use crate::error::{Error, Result};
 use crate::formulation::{ContactLaw, ContactProblem, Drive, DriveIssue, ProblemKind, SlipOperator};
-use crate::hertz::Hertz;
 use crate::post::{evaluate, Evaluation, RollingPost};
 use crate::results::{EffectNote, MeshInfo, ProblemClass, References, Report, SolverRun, Timing};
 use crate::scene::{BodyModel, CounterBody, Dof, Rolling, Scene};
 use crate::solvers::{Outcome, Solver, SolverId, Start, Termination, Work};
 use crate::source::{Blocks, Built};
 use crate::status::{Status, Verdict, VerdictReason};
+use crate::theory::Hertz2D;
 use std::time::Instant;
 
 /// The contact law the pipeline simulates: the scene's ([`Scene::law`]), without normal–tangential coupling where the
@@ -403,12 +403,12 @@ pub fn evaluate_outcome(ctx: &RunContext, outcome: Outcome) -> (SolverRun, Optio
 
 /// Hertz at the scene's load, or at the first solved run's load when the approach is prescribed (and for a load
 /// path, whose runs are at its end).
-fn reference_hertz(scene: &Scene, runs: &[SolverRun]) -> Option<Hertz> {
+fn reference_hertz(scene: &Scene, runs: &[SolverRun]) -> Option<Hertz2D> {
     let p = match scene.drive().map(|d| d.normal) {
         Some(Dof::Load(p)) => Some(p),
         _ => runs.iter().find_map(|r| r.resultants.map(|x| x.normal)),
     }?;
-    (p > 0.0).then(|| Hertz::with_modulus(scene.radius(), scene.contact_modulus(), p))
+    (p > 0.0).then(|| crate::references::hertz_at(scene, p))
 }
 
 /// Whether the scene's wheel is the half-plane model.

@@ -20,6 +20,15 @@ pub(super) fn says_unit(text: &str) -> bool {
     t.ends_with(']') && t.contains('[')
 }
 
+/// Relative spread of a linear axis's data (over their largest magnitude) up to which they are one value with
+/// round-off: such an axis is drawn around that value, with a note saying so ([`Axis::text`]) instead of ticks
+/// that spell out the round-off to the last digit. Solvers agree to about 1e-12 and round-off is about 1e-16.
+pub(super) const ROUND_OFF: f64 = 1e-9;
+
+/// Significant digits beyond which the tick labels of a linear axis are written from an offset (`d_N − 0.2563705
+/// [mm]` with ticks 1e-8, 2e-8, …) rather than in full: a label never needs more than about this many digits.
+const MAX_TICK_DIGITS: i32 = 6;
+
 /// One axis in transformed coordinates: range, grid/tick positions and how to label them.
 #[derive(Clone)]
 pub(super) struct Axis {
@@ -35,10 +44,24 @@ pub(super) struct Axis {
     pub(super) names: Option<Vec<String>>,
     /// Values increase downward (depth).
     pub(super) reversed: bool,
+    /// Tick `v` is labelled `v − offset` (0: none), the offset written in the axis text ([`Axis::text`]).
+    pub(super) offset: f64,
+    /// A remark for the axis text: the data are one value with round-off ([`ROUND_OFF`]), which it names.
+    pub(super) note: Option<String>,
 }
 
 impl Axis {
+    /// A linear axis over data `min..=max` with a 5 % margin (a single value: ±10 % of it). Data that are one value
+    /// with round-off ([`ROUND_OFF`]) are drawn as that value, with a note; ticks that would need more than
+    /// [`MAX_TICK_DIGITS`] digits are labelled from an offset.
     pub(super) fn linear(min: f64, max: f64, target: usize) -> Axis {
+        let magnitude = min.abs().max(max.abs());
+        if max > min && max - min <= ROUND_OFF * magnitude {
+            let mid = min + 0.5 * (max - min);
+            let mut axis = Axis::linear(mid, mid, target);
+            axis.note = Some(format!("{}, constant to round-off", fmt_digits(mid, 7)));
+            return axis;
+        }
         let span = max - min;
         let pad = if span > 0.0 {
             0.05 * span
@@ -48,7 +71,46 @@ impl Axis {
             1.0
         };
         let (lo, hi) = if (max + pad - (min - pad)).is_finite() { (min - pad, max + pad) } else { (min, max) };
-        Axis::exact(lo, hi, target)
+        Axis::exact(lo, hi, target).with_offset()
+    }
+
+    /// Label the ticks from an offset when in full they would need more than [`MAX_TICK_DIGITS`] significant
+    /// digits: the offset is the round number nearest the middle at the power of ten above the range.
+    fn with_offset(mut self) -> Axis {
+        let (Some(step), span) = (self.step, self.hi - self.lo) else { return self };
+        let magnitude = self.lo.abs().max(self.hi.abs());
+        if !(span > 0.0 && magnitude.is_finite()) || magnitude / step < 10f64.powi(MAX_TICK_DIGITS) {
+            return self;
+        }
+        let unit = 10f64.powf(span.log10().ceil());
+        let mid = 0.5 * (self.lo + self.hi);
+        // A multiple of a power of ten below 1 is formed by dividing by the exact integer 1/unit, so that it is the
+        // double nearest its decimal (0.2563705, not 0.25637050000000003).
+        self.offset = if unit < 1.0 {
+            let inv = (1.0 / unit).round();
+            (mid * inv).round() / inv
+        } else {
+            (mid / unit).round() * unit
+        };
+        self
+    }
+
+    /// The axis text: `label [unit]`, with the offset the ticks are labelled from (`label − 0.2563705 [unit]`) and
+    /// the note on data that are one value with round-off.
+    pub(super) fn text(&self, label: &str, unit: Option<&str>) -> String {
+        let label = if self.offset != 0.0 && !label.trim().is_empty() {
+            let unit_step = 10f64.powf((self.hi - self.lo).log10().ceil());
+            let sign = if self.offset > 0.0 { '−' } else { '+' };
+            format!("{} {sign} {}", label.trim_end(), fmt_linear(self.offset.abs(), unit_step, self.offset.abs()))
+        } else {
+            label.to_string()
+        };
+        let text = with_unit(&label, unit);
+        match &self.note {
+            Some(note) if !text.is_empty() => format!("{text}: {note}"),
+            Some(note) => note.clone(),
+            None => text,
+        }
     }
 
     /// A linear axis over exactly `lo..hi` with nice ticks inside it.
@@ -62,7 +124,17 @@ impl Axis {
         } else {
             Vec::new()
         };
-        Axis { lo, hi, bold, light: Vec::new(), step: Some(step), names: None, reversed: false }
+        Axis {
+            lo,
+            hi,
+            bold,
+            light: Vec::new(),
+            step: Some(step),
+            names: None,
+            reversed: false,
+            offset: 0.0,
+            note: None,
+        }
     }
 
     pub(super) fn log(min: f64, max: f64, target: usize) -> Axis {
@@ -85,7 +157,7 @@ impl Axis {
                 light.extend((2..=9).map(|m| k as f64 + f64::from(m).log10()));
             }
         }
-        Axis { lo, hi, bold, light, step: None, names: None, reversed: false }
+        Axis { lo, hi, bold, light, step: None, names: None, reversed: false, offset: 0.0, note: None }
     }
 
     /// Categories at 0, 1, …, n−1, half a unit of room either side; ticks only at the categories.
@@ -99,6 +171,8 @@ impl Axis {
             step: Some(1.0),
             names: Some(names.to_vec()),
             reversed: false,
+            offset: 0.0,
+            note: None,
         }
     }
 
@@ -109,7 +183,10 @@ impl Axis {
         }
         match self.step {
             None => power_of_ten(v.round() as i64),
-            Some(step) => fmt_linear(v, step, self.lo.abs().max(self.hi.abs())),
+            Some(step) => {
+                let (lo, hi) = (self.lo - self.offset, self.hi - self.offset);
+                fmt_linear(v - self.offset, step, lo.abs().max(hi.abs()))
+            }
         }
     }
 }
@@ -176,6 +253,26 @@ pub(super) fn fmt_linear(v: f64, step: f64, magnitude: f64) -> String {
     } else {
         let decimals = (-step_exp).max(0) as usize;
         format!("{v:.decimals$}")
+    }
+}
+
+/// `v` with `digits` significant digits, trailing zeros of a fixed-notation value dropped; fixed notation for
+/// magnitudes in 10⁻³..10⁵, else scientific.
+fn fmt_digits(v: f64, digits: i32) -> String {
+    if !v.is_finite() || v == 0.0 {
+        return fmt_sig(v);
+    }
+    let e = v.abs().log10().floor() as i32;
+    if (-3..5).contains(&e) {
+        let decimals = (digits - 1 - e).max(0) as usize;
+        let s = format!("{v:.decimals$}");
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        }
+    } else {
+        format!("{v:.*e}", (digits - 1).max(0) as usize)
     }
 }
 
@@ -262,5 +359,35 @@ mod tests {
         assert_eq!(fmt_level(0.5, 0.25), "0.5");
         assert_eq!(fmt_level(1.0 / 3.0, 0.1), "0.333");
         assert_eq!(fmt_level(20.0, 10.0), "20");
+    }
+
+    #[test]
+    fn round_off_of_a_constant_is_drawn_as_the_constant_and_said() {
+        // Expected: data 0.2563705365911895..0.2563705365911900 (a held approach, its last digits round-off) are
+        // the value 0.2563705 with a note, and ticks of a few digits around it (the ±10 % of a single value).
+        let (lo, hi) = (0.2563705365911895, 0.25637053659119);
+        let a = Axis::linear(lo, hi, 6);
+        assert!(a.lo < lo && a.hi > hi && a.hi - a.lo > 0.04, "{}..{}", a.lo, a.hi);
+        let labels: Vec<String> = a.bold.iter().map(|v| a.label(*v)).collect();
+        assert!(labels.iter().all(|l| l.len() <= 5), "{labels:?}");
+        assert_eq!(a.text("approach d_N", Some("mm")), "approach d_N [mm]: 0.2563705, constant to round-off");
+        // A single value is no round-off: no note.
+        assert_eq!(Axis::linear(0.25, 0.25, 6).text("d", None), "d");
+    }
+
+    #[test]
+    fn ticks_that_would_need_many_digits_are_labelled_from_an_offset() {
+        // Expected: a real spread of 4e-8 on 0.25637 (beyond ROUND_OFF) keeps its ticks; they are labelled as
+        // differences from the round offset 0.2563705 (a multiple of 1e-7, the power of ten above the range), which
+        // the axis text names.
+        let (lo, hi) = (0.25637052, 0.25637056);
+        let a = Axis::linear(lo, hi, 6);
+        assert!(a.note.is_none() && a.offset == 0.2563705, "offset {}", a.offset);
+        let labels: Vec<String> = a.bold.iter().map(|v| a.label(*v)).collect();
+        assert!(labels.len() >= 3 && labels.iter().all(|l| l.len() <= 8), "{labels:?}");
+        assert_eq!(a.text("d_N", Some("mm")), "d_N − 0.2563705 [mm]");
+        // Ticks on ordinary data are written in full.
+        let b = Axis::linear(0.2, 0.3, 6);
+        assert_eq!((b.offset, b.text("d_N", Some("mm"))), (0.0, "d_N [mm]".to_string()));
     }
 }

@@ -6,11 +6,11 @@ use plotters::prelude::*;
 use std::ops::Range;
 
 use super::axis::*;
-use super::contour::{
-    Bands, MapCaptions, MapLayout, CAPTION_SIZE, MAP_LABEL_SIZE, MAP_MARKERS, MAP_MARKER_SIZE, NO_DATA,
-};
 use super::draw::*;
 use super::field::Field;
+use super::map_layout::{
+    Bands, MapCaptions, MapLayout, CAPTION_SIZE, MAP_LABEL_SIZE, MAP_MARKERS, MAP_MARKER_SIZE, NO_DATA,
+};
 
 /// Pixel points of a contour line.
 pub(super) type PixelLine = Vec<(i32, i32)>;

@@ -9,6 +9,7 @@ use plotters::prelude::*;
 use super::axis::{min_max, says_unit, with_unit, Axis};
 use super::draw::*;
 use super::legend::*;
+use super::prepared::{Prepared, PreparedSeries};
 use super::style::{Appearance, Style};
 use super::{write_atomic, PlotError};
 
@@ -138,12 +139,13 @@ impl Chart {
         self
     }
 
-    /// The x axis text as drawn: the label with its unit.
+    /// The x axis text: the label with its unit. The drawn text adds to it, for data that need them, the offset
+    /// the ticks are labelled from (`d_N − 0.2563705 [mm]`) or a note that the data are one value with round-off.
     pub fn x_axis_text(&self) -> String {
         with_unit(&self.x_label, self.x_unit.as_deref())
     }
 
-    /// The y axis text as drawn: the label with its unit.
+    /// The y axis text: the label with its unit (the drawn text may add to it, as for [`Chart::x_axis_text`]).
     pub fn y_axis_text(&self) -> String {
         with_unit(&self.y_label, self.y_unit.as_deref())
     }
@@ -272,7 +274,13 @@ impl Chart {
 
     /// The room the frame takes around the plot: tick labels and axis texts, and the title.
     fn frame(&self, prep: &Prepared) -> Frame {
-        let (x_text, y_text) = (self.x_axis_text(), self.y_axis_text());
+        // The axes' texts as drawn: with the offset their ticks are labelled from and a note on constant data.
+        let x_text = prep.x.text(&self.x_label, self.x_unit.as_deref());
+        let y_text = if self.categories().is_some() {
+            self.y_axis_text()
+        } else {
+            prep.y.text(&self.y_label, self.y_unit.as_deref())
+        };
         let y_tick_w = prep.y.bold.iter().map(|v| text_width(&prep.y.label(*v), TICK_SIZE)).fold(0.0, f64::max) + 14.0;
         let y_desc_w = if y_text.is_empty() { 0.0 } else { DESC_SIZE * 1.5 };
         let y_area = (y_tick_w + y_desc_w).ceil() as u32;
@@ -402,27 +410,31 @@ struct Frame {
     pub(super) title_h: f64,
 }
 
-/// Data after filtering and axis transform (log10 for log axes).
-pub(super) struct Prepared {
-    pub(super) series: Vec<PreparedSeries>,
-    pub(super) x: Axis,
-    pub(super) y: Axis,
-    /// y offset of each prepared series (categorical axes only; else 0).
-    pub(super) offsets: Vec<f64>,
-}
-
-pub(super) struct PreparedSeries {
-    /// Index into `Chart::series` (selects the appearance).
-    pub(super) index: usize,
-    /// Runs of consecutive drawable points, in transformed coordinates.
-    pub(super) segments: Vec<Vec<(f64, f64)>>,
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::plot::style::{Dash, Marker, PALETTE};
     use crate::plot::test_support::*;
+
+    #[test]
+    fn data_constant_to_round_off_and_data_that_need_an_offset_keep_short_tick_labels() {
+        // Expected: a path's held approach (one value, its last digits round-off) is drawn as that value, the y axis
+        // saying so; a real spread of 4e-8 on 0.2564 is labelled from the offset the axis names. No tick label is
+        // longer than 8 characters either way (the round-off was labelled 0.2563705365911895, …).
+        let held: Vec<(f64, f64)> =
+            (0..6).map(|k| (f64::from(k), 0.2563705365911895 + f64::from(k % 3) * 5.6e-17)).collect();
+        let moving: Vec<(f64, f64)> = (0..6).map(|k| (f64::from(k), 0.25637052 + 8e-9 * f64::from(k))).collect();
+        for (points, axis_text) in
+            [(held, "approach d_N [mm]: 0.2563705, constant to round-off"), (moving, "approach d_N − 0.2563705 [mm]")]
+        {
+            let chart = Chart::new("approach", "substep", "approach d_N").x_unit("1").y_unit("mm");
+            let svg = chart.add(Series::new("lemke", points, Style::LineMarkers)).to_svg().unwrap();
+            let t = texts(&svg);
+            assert!(t.iter().any(|x| x == axis_text), "{t:?}");
+            let ticks: Vec<&String> = t.iter().filter(|x| x.parse::<f64>().is_ok()).collect();
+            assert!(ticks.len() >= 6 && ticks.iter().all(|x| x.len() <= 8), "{ticks:?}");
+        }
+    }
 
     fn circles() -> Appearance {
         Appearance { color: PALETTE[2], marker: Marker::Circle, dash: Dash::Solid }

@@ -5,10 +5,10 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::ops::Range;
 
-use super::chart::Prepared;
 use super::draw::{
     draw_dashed, draw_marker, err, text, text_width, to_px, Anchor, LEGEND_SAMPLE, LEGEND_SIZE, MARKER_SIZE,
 };
+use super::prepared::Prepared;
 use super::style::{Appearance, Style};
 
 /// One legend entry.

@@ -45,7 +45,8 @@
 //! `chart.rs`: line, marker and state charts; `contour.rs`: contour maps of a `field.rs` field; `legend.rs`: a
 //! chart's legend; `axis.rs`: ranges, ticks and number formats; `style.rs`: colours, markers and dashes;
 //! `colormap.rs`: viridis and cividis; `draw.rs`: text, dashed lines and markers; `canvas.rs`: the parts of a
-//! contour map around the map. Every public item is re-exported here: `rollbem::plot::X` names each of them.
+//! contour map around the map; `map_layout.rs`: a contour map's bands, captions and layout; `prepared.rs`: a line
+//! chart's data ready to draw. Every public item is re-exported here: `rollbem::plot::X` names each of them.
 
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -58,6 +59,8 @@ mod contour;
 mod draw;
 mod field;
 mod legend;
+mod map_layout;
+mod prepared;
 mod style;
 #[cfg(test)]
 mod test_support;

@@ -441,7 +441,7 @@ fn seed_fig6(reports: &BTreeMap<String, Report>) -> Option<Chart> {
         .add(Series::new("constant elements", c.nodes.iter().map(|n| (n.x, n.pressure)).collect(), Style::Markers))
         .add(Series::new("quadratic elements", q.nodes.iter().map(|n| (n.x, n.pressure)).collect(), Style::Markers));
     if let Some(h) = h {
-        let xs: Vec<f64> = (0..=200).map(|i| -1.5 * h.half_width + 3.0 * h.half_width * i as f64 / 200.0).collect();
+        let xs: Vec<f64> = (0..=200).map(|i| -1.5 * h.a + 3.0 * h.a * i as f64 / 200.0).collect();
         chart = chart.add(Series::new("Hertz", xs.iter().map(|&x| (x, h.pressure(x))).collect(), Style::Dashed));
     }
     Some(chart)
@@ -476,9 +476,8 @@ fn seed_group(
             // Hertz's pressure at this scene's load, the analytic curve the seed compares its tractions with.
             let sc = &reports[*name].scene;
             if let Some(res) = l.resultants.filter(|r| r.normal > 0.0) {
-                let h = crate::hertz::Hertz::with_modulus(sc.radius(), sc.contact_modulus(), res.normal);
-                let xs: Vec<f64> =
-                    (0..=200).map(|i| -1.5 * h.half_width + 3.0 * h.half_width * i as f64 / 200.0).collect();
+                let h = crate::references::hertz_at(sc, res.normal);
+                let xs: Vec<f64> = (0..=200).map(|i| -1.5 * h.a + 3.0 * h.a * i as f64 / 200.0).collect();
                 tr = tr.add(Series::new(
                     format!("Hertz p at P = {:.4e}", res.normal),
                     xs.iter().map(|&x| (x, h.pressure(x))).collect(),

@@ -12,7 +12,7 @@ use crate::post::stick_edges;
 use crate::references::beta_zero;
 use crate::results::{Report, SolverRun};
 use crate::scene::{BodyModel, CounterBody, RollingMode, Scene};
-use crate::theory::{self, Hertz2D, TangentialPath};
+use crate::theory::{self, TangentialPath};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
@@ -134,7 +134,7 @@ fn summary(r: &Report, md: &mut String) {
 }
 
 /// A curve to draw: label, points, style.
-type Curve = (String, Vec<(f64, f64)>, Style);
+pub(super) type Curve = (String, Vec<(f64, f64)>, Style);
 
 /// Q against the rigid shift, with Mindlin–Deresiewicz where it applies; the cycle's dissipation against theory.
 fn hysteresis(
@@ -226,7 +226,7 @@ fn md_loop(r: &Report, runs: &[(usize, &SolverRun)], solver: &str, md: &mut Stri
 /// is D' = D e^(1/(2(1 − ν))) (tests/history.rs derives it); the compliances of the two bodies of a pair add (the
 /// displacement is linear in 1/E*, each body with its own datum); the wheel's shift is minus the counter-body's δ.
 pub fn md_shift(s: &Scene, p: f64) -> impl Fn(TangentialPath, f64) -> f64 {
-    let h = Hertz2D::from_load(p, s.radius(), s.contact_modulus());
+    let h = crate::references::hertz_at(s, p);
     let mu = s.friction();
     let wheel_datum = match s.body() {
         crate::scene::Body::HalfPlane { datum_depth, .. } => *datum_depth,
@@ -255,7 +255,7 @@ pub fn md_curve(s: &Scene, p: f64, q_star: f64) -> Vec<(f64, f64)> {
 }
 
 /// The loop with the chord through its tips subtracted, so that its width shows (the loop is thin beside the
-/// elastic compliance): the shifts at the largest and smallest Q define the chord.
+/// elastic compliance): the report's figure and text.
 fn opened_loop(
     name: &str,
     pts: &[(f64, f64)],
@@ -264,34 +264,46 @@ fn opened_loop(
     md: &mut String,
     figs: &mut Figs,
 ) -> Result<()> {
-    // The loop is thin beside the elastic compliance: subtract the chord through the computed loop's tips
-    // (the shifts at the largest and smallest Q) so that its width can be seen.
-    let hi = pts.iter().copied().max_by(|a, b| a.1.total_cmp(&b.1));
-    let lo = pts.iter().copied().min_by(|a, b| a.1.total_cmp(&b.1));
-    if let (Some(hi), Some(lo)) = (hi, lo) {
-        if hi.1 > lo.1 {
-            let slope = (hi.0 - lo.0) / (hi.1 - lo.1);
-            let open =
-                |v: &[(f64, f64)]| v.iter().map(|&(d, q)| (d - lo.0 - slope * (q - lo.1), q)).collect::<Vec<_>>();
-            let mut chart = Chart::new(format!("{name}: loop less its chord"), "δ_T − chord(Q)", "Q")
-                .x_unit(units.length.clone())
-                .y_unit(units.line_load());
-            for (label, p, style) in series {
-                chart = chart.add(Series::new(label.clone(), open(p), *style));
-            }
-            let file =
-                figs.save(&chart, &format!("{name}-hysteresis-opened.svg"), format!("{name}: the loop opened"))?;
-            writeln!(
-                md,
-                "The same loop with the straight chord through its tips (δ_T at the largest and smallest Q, compliance \
-                 {slope:.3e} {}/({})) subtracted, so that its width shows:\n\n![hysteresis loop opened]({file})\n",
-                units.length,
-                units.line_load()
-            )
-            .unwrap();
-        }
-    }
+    let Some((chart, slope)) = loop_less_chord(name, pts, series, &units.length, &units.line_load()) else {
+        return Ok(());
+    };
+    let file = figs.save(&chart, &format!("{name}-hysteresis-opened.svg"), format!("{name}: the loop opened"))?;
+    writeln!(
+        md,
+        "The same loop with the straight chord through its tips (δ_T at the largest and smallest Q, compliance \
+         {slope:.3e} {}/({})) subtracted, so that its width shows:\n\n![hysteresis loop opened]({file})\n",
+        units.length,
+        units.line_load()
+    )
+    .unwrap();
     Ok(())
+}
+
+/// The Q–δ_T loop less its chord, titled `NAME: loop less its chord`: every curve of `series` with the straight
+/// chord through the tips of `pts` (the computed loop's (δ_T, Q): the shifts at its largest and smallest Q)
+/// subtracted from its shifts, so that the loop's width shows beside the elastic compliance it is thin against.
+/// Returns the chart and the chord's slope (compliance, shift per unit Q); `None` when Q does not vary. Drawn for a
+/// result document's path and for a path's CSV (`rollbem plot`).
+pub(super) fn loop_less_chord(
+    name: &str,
+    pts: &[(f64, f64)],
+    series: &[Curve],
+    length_unit: &str,
+    load_unit: &str,
+) -> Option<(Chart, f64)> {
+    let hi = pts.iter().copied().max_by(|a, b| a.1.total_cmp(&b.1))?;
+    let lo = pts.iter().copied().min_by(|a, b| a.1.total_cmp(&b.1))?;
+    if hi.1 <= lo.1 {
+        return None;
+    }
+    let slope = (hi.0 - lo.0) / (hi.1 - lo.1);
+    let open = |v: &[(f64, f64)]| v.iter().map(|&(d, q)| (d - lo.0 - slope * (q - lo.1), q)).collect::<Vec<_>>();
+    let mut chart =
+        Chart::new(format!("{name}: loop less its chord"), "δ_T − chord(Q)", "Q").x_unit(length_unit).y_unit(load_unit);
+    for (label, p, style) in series {
+        chart = chart.add(Series::new(label.clone(), open(p), *style));
+    }
+    Some((chart, slope))
 }
 
 /// Grid size of the coupled Spence reference in the report (per half contact; 1.25 a / 250 = 0.005 a).
@@ -385,7 +397,7 @@ fn stick_zone(
     let mut theory_pts = Vec::new();
     let mut what = "";
     if let Some((p, q_star)) = md_pattern(s) {
-        let h = Hertz2D::from_load(p, s.radius(), s.contact_modulus());
+        let h = crate::references::hertz_at(s, p);
         for (k, x) in runs {
             if let Some(f) = x.resultants {
                 if r.steps[*k].step >= 1 {
@@ -403,7 +415,7 @@ fn stick_zone(
         let a_end = runs
             .last()
             .and_then(|(_, x)| x.resultants)
-            .map_or(f64::INFINITY, |f| Hertz2D::from_load(f.normal, s.radius(), s.contact_modulus()).a);
+            .map_or(f64::INFINITY, |f| crate::references::hertz_at(s, f.normal).a);
         let resolved = 2.0 * coupled.resolution + s.zone().element_length(s.radius()) / a_end;
         let in_range = (closed - coupled.c_over_a).abs() <= resolved;
         // Self-similar: c(P) = (c/a) · a(P), with the coupled contact half-width for the coupled reference.
@@ -411,7 +423,7 @@ fn stick_zone(
             runs.iter()
                 .filter_map(|(k, x)| {
                     let f = x.resultants.filter(|f| f.normal > 0.0)?;
-                    Some(((k + 1) as f64, ratio * Hertz2D::from_load(f.normal, s.radius(), s.contact_modulus()).a))
+                    Some(((k + 1) as f64, ratio * crate::references::hertz_at(s, f.normal).a))
                 })
                 .collect()
         };

@@ -1,10 +1,14 @@
 //! `rollbem plot TABLE.csv`: figures of the user's own tables.
 //!
 //! - A **load path's CSV** (`rollbem run SCENE --path-csv FILE`): the tangential force against the rigid shift (the
-//!   hysteresis loop), the stick zone's half-width and the approach against the substep, one series per solver.
-//!   With `--scene SCENE.toml` (the scene that wrote it), Mindlin–Deresiewicz's loop and stick zone are drawn
-//!   beside them where that theory applies (the half-plane model with β = 0 — against a rigid flat or against an
-//!   elastic half-plane of a β = 0 pair, steel on steel — P held, Q cycled ±Q*).
+//!   hysteresis loop, `STEM-loop.svg`), the same loop less its chord (`STEM-loop-opened.svg`: the straight chord
+//!   through the tips of the first solver's loop subtracted from every curve, so that a hysteresis thin beside the
+//!   elastic compliance shows; the figure a result document's path gets, drawn by the same code), the stick zone's
+//!   half-width and the approach against the substep, one series per solver. With `--scene SCENE.toml` (the scene
+//!   that wrote it), Mindlin–Deresiewicz's loop and stick zone are drawn beside them where that theory applies (the
+//!   half-plane model with β = 0 — against a rigid flat or against an elastic half-plane of a β = 0 pair, steel on
+//!   steel — P held, Q cycled ±Q*). An approach held along the path is drawn as the constant it is, its axis saying
+//!   so, rather than its round-off.
 //! - A **sweep's CSV** (`rollbem sweep`): the figures of its analysis (`--analysis`, as the sweep spec names it:
 //!   `creep_curve` draws Q/(μP) against ξR/(μa) with Carter's curve; `accuracy` the errors against the mesh and
 //!   against time; `finite_vs_half_plane` the relative differences against a/R). The analysis is not guessed from
@@ -12,6 +16,7 @@
 //!
 //! Files are written into the output folder as `STEM-WHAT.svg` (STEM the table's file name without `.csv`).
 
+use super::paths::{loop_less_chord, Curve};
 use super::plot_result::Plotted;
 use super::{Figs, SweepFigures};
 use crate::error::{Error, Result};
@@ -128,14 +133,18 @@ fn path_table(csv: &Path, stem: &str, out: &Path, scene: Option<&Scene>) -> Resu
     };
     let mut loop_ = Chart::new(format!("{stem}: tangential force against rigid shift"), "rigid shift δ_T", "Q")
         .x_unit(lu.clone())
-        .y_unit(fu);
+        .y_unit(fu.clone());
     let mut stick = Chart::new(format!("{stem}: stick zone along the path"), "substep", "stick half-width")
         .x_unit("1")
         .y_unit(lu.clone());
-    let mut approach =
-        Chart::new(format!("{stem}: approach along the path"), "substep", "approach d_N").x_unit("1").y_unit(lu);
+    let mut approach = Chart::new(format!("{stem}: approach along the path"), "substep", "approach d_N")
+        .x_unit("1")
+        .y_unit(lu.clone());
+    // The loops, also drawn less their chord below.
+    let mut loops: Vec<Curve> = Vec::new();
     for (solver, runs) in &by_solver {
         let pts: Vec<(f64, f64)> = runs.iter().filter_map(|(_, r)| Some((r.shift?, r.q?))).collect();
+        loops.push((solver.to_string(), pts.clone(), Style::LineMarkers));
         loop_ = loop_.add(Series::new(*solver, pts, Style::LineMarkers));
         let c: Vec<(f64, f64)> =
             runs.iter().filter_map(|(k, r)| r.stick.map(|(l, rr)| (*k as f64, 0.5 * (rr - l)))).collect();
@@ -144,9 +153,11 @@ fn path_table(csv: &Path, stem: &str, out: &Path, scene: Option<&Scene>) -> Resu
         approach = approach.add(Series::new(*solver, d, Style::LineMarkers));
     }
     if let Some((s, (p, q_star))) = md {
-        loop_ = loop_.add(Series::new("Mindlin–Deresiewicz (2D)", super::md_curve(s, p, q_star), Style::Dashed));
+        let curve = super::md_curve(s, p, q_star);
+        loops.push(("Mindlin–Deresiewicz (2D)".into(), curve.clone(), Style::Dashed));
+        loop_ = loop_.add(Series::new("Mindlin–Deresiewicz (2D)", curve, Style::Dashed));
         if let Some((_, runs)) = by_solver.iter().next() {
-            let h = crate::theory::Hertz2D::from_load(p, s.radius(), s.contact_modulus());
+            let h = crate::references::hertz_at(s, p);
             let c: Vec<(f64, f64)> = runs
                 .iter()
                 .filter(|(_, r)| r.step >= 1)
@@ -162,16 +173,26 @@ fn path_table(csv: &Path, stem: &str, out: &Path, scene: Option<&Scene>) -> Resu
             stick = stick.add(Series::new("Mindlin–Deresiewicz: current branch", c, Style::Dashed));
         }
     }
+    // The chord through the tips of the first solver's loop (the CSV's rows are in the scene's solver order).
+    let first = rows.first().map_or("", |r| r.solver.as_str());
+    let tips = loops.iter().find(|(label, ..)| label == first).map_or(&[][..], |c| &c.1[..]);
+    let opened = loop_less_chord(stem, tips, &loops, &lu, &fu);
     let mut figs = Figs::new(out, "");
     figs.save(&loop_, &format!("{stem}-loop.svg"), "loop".into())?;
+    if let Some((chart, _)) = &opened {
+        figs.save(chart, &format!("{stem}-loop-opened.svg"), "loop less its chord".into())?;
+    }
     figs.save(&stick, &format!("{stem}-stick-zone.svg"), "stick zone".into())?;
     figs.save(&approach, &format!("{stem}-approach.svg"), "approach".into())?;
-    let skipped = match (scene, md) {
+    let mut skipped = match (scene, md) {
         (Some(_), None) => {
             vec!["Mindlin–Deresiewicz: the scene is not of its pattern (half-plane, β = 0, P then ±Q*)".into()]
         }
         (None, _) => vec!["theory: no --scene given".into()],
         _ => Vec::new(),
     };
+    if opened.is_none() {
+        skipped.push("loop less its chord: Q does not vary along the path".into());
+    }
     Ok(Plotted { files: figs.list.into_iter().map(|(_, f)| out.join(f)).collect(), skipped })
 }

@@ -79,7 +79,7 @@ struct Context {
     name: String,
     length_unit: String,
     stress_unit: String,
-    hertz: Option<crate::hertz::Hertz>,
+    hertz: Option<crate::theory::Hertz2D>,
 }
 
 /// Draw the figures of the result document `json` into `out` (default: its folder); see the module docs.
@@ -104,7 +104,7 @@ pub fn plot_result(json: &Path, out: Option<&Path>) -> Result<Plotted> {
         name: scene.name().to_string(),
         length_unit: spec.and_then(|s| s.length_unit.clone()).unwrap_or_else(|| from_label(1, "length unit")),
         stress_unit: spec.and_then(|s| s.stress_unit.clone()).unwrap_or_else(|| from_label(2, "stress unit")),
-        hertz: report.references.hertz.filter(|h| h.half_width > 0.0 && h.peak_pressure > 0.0),
+        hertz: report.references.hertz.filter(|h| h.a > 0.0 && h.p0 > 0.0),
     };
     let mut done = Plotted::default();
     for run in &report.runs {
@@ -142,7 +142,7 @@ fn run_figures(ctx: &Context, run: &SolverRun, done: &mut Plotted) -> Result<()>
         .add(Series::new("pressure p", p, Style::LineMarkers))
         .add(Series::new("shear q", q, Style::LineMarkers));
     if let Some(h) = ctx.hertz {
-        let a = h.half_width;
+        let a = h.a;
         let curve = (0..=200).map(|i| -a + 2.0 * a * f64::from(i) / 200.0).map(|x| (x, h.pressure(x))).collect();
         chart = chart.add(Series::new("Hertz pressure", curve, Style::Dashed));
     }

@@ -3,11 +3,11 @@
 //! rename none.
 
 use crate::formulation::{FormulationName, ProblemKind};
-use crate::hertz::Hertz;
 use crate::post::{ContactSummary, NodeResult, Residuals, Resultants, RigidBody, RollingResult};
 use crate::scene::{BodyModel, ElementKind, Scene};
 use crate::solvers::{SolverId, Work};
 use crate::status::{Status, Termination, Verdict};
+use crate::theory::Hertz2D;
 use serde::{Deserialize, Serialize};
 
 mod export;
@@ -248,7 +248,7 @@ pub struct Diagnostics {
 pub struct References {
     /// Hertz at the run's load (frictionless scenes in plane strain: none on a strip of half-spaces), from the first
     /// solved run's P when displacement-driven, with the pair's contact modulus E*.
-    pub hertz: Option<Hertz>,
+    pub hertz: Option<Hertz2D>,
     /// Dundurs' β of the pair (wheel against counter-body; a rigid flat has G → ∞): the normal–tangential coupling
     /// of two half-planes vanishes with it.
     pub dundurs_beta: f64,

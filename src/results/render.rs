@@ -78,7 +78,7 @@ fn header(out: &mut String, r: &Report) {
         w!(out, "WARNING: {w}");
     }
     if let Some(h) = &r.references.hertz {
-        w!(out, "Hertz at P = {:.6e}: a = {:.6e}, p0 = {:.6e}", h.load, h.half_width, h.peak_pressure);
+        w!(out, "Hertz at P = {:.6e}: a = {:.6e}, p0 = {:.6e}", h.load, h.a, h.p0);
     }
 }
 

@@ -62,8 +62,8 @@ fn run_row(case: &Case, contact_nodes: usize, r: &SolverRun) -> SweepRow {
     row.contact_modulus = Some(scene.contact_modulus());
     row.friction = Some(scene.friction());
     let hertz = r.resultants.filter(|f| f.normal > 0.0).map(|f| crate::references::hertz_at(scene, f.normal));
-    row.hertz_a = hertz.map(|h| h.half_width);
-    row.hertz_p0 = hertz.map(|h| h.peak_pressure);
+    row.hertz_a = hertz.map(|h| h.a);
+    row.hertz_p0 = hertz.map(|h| h.p0);
     row.shift = r.rigid_body.and_then(|b| b.tangential);
     row.approach = r.rigid_body.map(|b| b.normal);
     let edges = crate::post::stick_edges(r.answer_nodes()).filter(|_| scene.friction() > 0.0);

@@ -36,29 +36,42 @@ pub fn carter_c_over_a(q_over_mu_p: f64) -> f64 {
     cattaneo_c_over_a(q_over_mu_p)
 }
 
+/// Carter stick-zone ratio from the creepage: `c/a = 1 − |ξ|R/(μa)` (0 at and beyond full slip, `|ξ| ≥ μa/R`).
+/// `r` is the (effective) radius.
+pub fn carter_c_over_a_of_creepage(h: &Hertz2D, mu: f64, r: f64, xi: f64) -> f64 {
+    (1.0 - xi.abs() * r / (mu * h.a)).max(0.0)
+}
+
+/// Carter stick zone `(c, d)` for the stick-zone ratio `c_over_a`, rolling towards `+x`: half-width `c = (c/a) a`,
+/// centred at `d = a − c` (touching the leading edge `x = a`).
+pub fn carter_stick_zone(h: &Hertz2D, c_over_a: f64) -> (f64, f64) {
+    let c = h.a * c_over_a;
+    (c, h.a - c)
+}
+
 /// Carter traction on the cylinder, rolling towards `+x`, total tangential force `Q` on the
-/// cylinder (|Q| ≥ μP gives full slip `sgn(Q) μ p`). See module docs §4.
+/// cylinder (|Q| ≥ μP gives full slip `sgn(Q) μ p`). See module docs §4. Rolling towards `−x`, the traction at `x`
+/// is this one at `−x` (the problem mirrored, with the same force).
 pub fn carter_traction(h: &Hertz2D, mu: f64, q_force: f64, x: f64) -> f64 {
-    let c = h.a * carter_c_over_a(q_force / (mu * h.load()));
-    let d = h.a - c;
+    let (c, d) = carter_stick_zone(h, carter_c_over_a(q_force / (mu * h.load)));
     q_force.signum() * mu * h.p0 / h.a * (semi(x, h.a) - semi(x - d, c))
 }
 
 /// Carter creepage `ξ = (V − ΩR)/V` for the force `Q` on the cylinder (|Q| ≤ μP):
 /// `ξ = −sgn(Q) (μa/R)(1 − √(1 − |Q|/(μP)))`. `r` is the (effective) radius.
 pub fn carter_creepage(h: &Hertz2D, mu: f64, r: f64, q_force: f64) -> f64 {
-    let k = carter_c_over_a(q_force / (mu * h.load()));
+    let k = carter_c_over_a(q_force / (mu * h.load));
     -q_force.signum() * mu * h.a / r * (1.0 - k)
 }
 
-/// Inverse creepage–force law: `Q = −sgn(ξ) μP [1 − (1 − |ξ|R/(μa))²]`, saturating at
-/// `Q = −sgn(ξ) μP` for `|ξ| ≥ μa/R` (full slip).
+/// Inverse creepage–force law: `Q = −sgn(ξ) μP [1 − (c/a)²]` with `c/a = 1 − |ξ|R/(μa)`
+/// ([`carter_c_over_a_of_creepage`]), saturating at `Q = −sgn(ξ) μP` for `|ξ| ≥ μa/R` (full slip).
 pub fn carter_force(h: &Hertz2D, mu: f64, r: f64, xi: f64) -> f64 {
     if xi == 0.0 {
         return 0.0;
     }
-    let s = (xi.abs() * r / (mu * h.a)).min(1.0);
-    -xi.signum() * mu * h.load() * (1.0 - (1.0 - s) * (1.0 - s))
+    let k = carter_c_over_a_of_creepage(h, mu, r, xi);
+    -xi.signum() * mu * h.load * (1.0 - k * k)
 }
 
 /// Carter slip `s(x) = ξ − ∂u_x/∂x` (slip velocity of the cylinder surface relative to the flat,
@@ -68,8 +81,7 @@ pub fn carter_slip(h: &Hertz2D, mu: f64, r: f64, q_force: f64, x: f64) -> f64 {
     if x.abs() > h.a {
         return f64::NAN;
     }
-    let c = h.a * carter_c_over_a(q_force / (mu * h.load()));
-    let d = h.a - c;
+    let (c, d) = carter_stick_zone(h, carter_c_over_a(q_force / (mu * h.load)));
     if x >= h.a - 2.0 * c {
         0.0
     } else {
@@ -93,7 +105,7 @@ mod tests {
         let r = 1.0;
         let h = Hertz2D::from_load(1.0, r, e);
         let mu = 0.3;
-        let mp = mu * h.load();
+        let mp = mu * h.load;
         for ratio in [-0.9, -0.4, 0.4, 0.9] {
             let qf = ratio * mp;
             let c = h.a * carter_c_over_a(ratio);
@@ -105,6 +117,12 @@ mod tests {
             assert!(close(carter_force(&h, mu, r, xi), qf, 1e-13));
         }
         assert!(close(carter_force(&h, mu, r, 2.0 * mu * h.a / r), -mp, 1e-15));
+        // c/a from the creepage inverts the creepage of a force (the closed form c/a = √(1 − |Q|/(μP))).
+        for ratio in [-0.9, 0.0, 0.4, 1.0] {
+            let xi = carter_creepage(&h, mu, r, ratio * mp);
+            assert!(close(carter_c_over_a_of_creepage(&h, mu, r, xi), carter_c_over_a(ratio), 1e-14));
+        }
+        assert_eq!(carter_c_over_a_of_creepage(&h, mu, r, -3.0 * mu * h.a / r), 0.0);
         assert!(close(carter_force(&h, mu, r, -mu * h.a / r), mp, 1e-15));
     }
 
@@ -123,7 +141,7 @@ mod tests {
         let r = 0.46;
         let h = Hertz2D::from_load(1.0e5, r, e);
         let mu = 0.35;
-        let mp = mu * h.load();
+        let mp = mu * h.load;
         let scale = mu * h.a / r;
         for ratio in [-0.95, -0.5, 0.2, 0.5, 0.95] {
             let qf = ratio * mp;
@@ -156,7 +174,7 @@ mod tests {
         let e = 1.0;
         let h = Hertz2D::from_load(1.0, 1.0, e);
         let mu = 0.3;
-        let qf = 0.5 * mu * h.load();
+        let qf = 0.5 * mu * h.load;
         let c = h.a * carter_c_over_a(0.5);
         let d = h.a - c;
         let q = |t: f64| mu * h.p0 / h.a * (semi(t, h.a) - semi(t + d, c));

@@ -23,7 +23,7 @@ pub fn cattaneo_c_over_a(q_over_mu_p: f64) -> f64 {
 /// Cattaneo–Mindlin traction `q(x)` on the body for a tangential force `q_force = Q` applied after
 /// the normal load (β = 0). Has the sign of `Q`; |Q| ≥ μP gives gross sliding `q = sgn(Q) μ p`.
 pub fn cattaneo_traction(h: &Hertz2D, mu: f64, q_force: f64, x: f64) -> f64 {
-    let c = h.a * cattaneo_c_over_a(q_force / (mu * h.load()));
+    let c = h.a * cattaneo_c_over_a(q_force / (mu * h.load));
     q_force.signum() * mu * h.p0 / h.a * (semi(x, h.a) - semi(x, c))
 }
 
@@ -39,7 +39,7 @@ mod tests {
         // displaces rigidly (slip u(x) − u(0) = 0 for |x| < c) while the slip zone slips against q.
         let (e_star, mu) = (1.0, 0.3);
         let h = Hertz2D::from_load(1.0, 1.0, e_star);
-        let mp = mu * h.load();
+        let mp = mu * h.load;
         for ratio in [0.3, 0.8, -0.5] {
             let qf = ratio * mp;
             let c = h.a * cattaneo_c_over_a(ratio);

@@ -85,7 +85,7 @@ pub enum TangentialPath {
 /// Superposition weights: `q(x) = (μ p0/a) Σ w_i √(c_i² − x²)₊`. The second entry is the stick
 /// zone of the current branch.
 fn md_terms(h: &Hertz2D, mu: f64, path: TangentialPath, q_force: f64) -> [(f64, f64); 3] {
-    let mp = mu * h.load();
+    let mp = mu * h.load;
     let a = h.a;
     let c_of = |r: f64| a * (1.0 - r).max(0.0).sqrt();
     match path {
@@ -137,7 +137,7 @@ pub fn md_displacement_branches(
     path: TangentialPath,
     q_force: f64,
 ) -> f64 {
-    let mp = mu * h.load();
+    let mp = mu * h.load;
     let lambda = 2.0 / (PI * e_star) * ((2.0 * d_datum / h.a).ln() + 0.5);
     let k = mp / (PI * e_star);
     match path {
@@ -181,7 +181,7 @@ mod tests {
         // Expected: continuity at the turning points, ∫q = Q (quadrature), |q| ≤ μp, and the two
         // displacement implementations agree.
         let (h, mu, e) = md_setup();
-        let mp = mu * h.load();
+        let mp = mu * h.load;
         let qs = 0.7 * mp;
         let (un, re) = (TangentialPath::Unloading { q_star: qs }, TangentialPath::Reloading { q_star: qs });
         for i in 0..=20 {
@@ -220,7 +220,7 @@ mod tests {
         // increment between two states of a branch vanishes in the current stick zone and opposes
         // the friction in the slip zone (unloading: q = −μp there, slip increment > 0).
         let (h, mu, e) = md_setup();
-        let mp = mu * h.load();
+        let mp = mu * h.load;
         let qs = 0.8 * mp;
         let cs = h.a * (1.0f64 - 0.8).sqrt();
         let paths = [
@@ -270,7 +270,7 @@ mod tests {
     /// `d√(c₂² − t²)/dQ = c₂ c₂'(Q)/√(c₂² − t²)`; `c₂'(Q)` by central difference, `t = c₂ sin θ`.
     fn md_slip_rate(h: &Hertz2D, mu: f64, e_star: f64, path: TangentialPath, qf: f64, x: f64) -> f64 {
         let (w2, c2) = md_terms(h, mu, path, qf)[1];
-        let eps = 1e-5 * mu * h.load();
+        let eps = 1e-5 * mu * h.load;
         let dc =
             (md_stick_half_width(h, mu, path, qf + eps) - md_stick_half_width(h, mu, path, qf - eps)) / (2.0 * eps);
         let kern = |th: f64| {
@@ -309,7 +309,7 @@ mod tests {
         // (ii) the frictional dissipation ∮∫|q||ds| with the slip rate derived from the traction
         // rate and the half-plane log kernel (independent of the δ formulas). Required ≤ 1e-6.
         let (h, mu, e) = md_setup();
-        let p = h.load();
+        let p = h.load;
         for ratio in [0.3, 0.9] {
             let qs = ratio * mu * p;
             let w = md_cycle_dissipation(mu, p, e, qs);

@@ -4,6 +4,9 @@
 
 #![allow(dead_code)]
 
+#[path = "paired.rs"]
+mod paired;
+use paired::paired;
 use rollbem::sweep::TIMING_COLUMNS;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -31,9 +34,8 @@ pub fn masked(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
     let rows = r
         .records()
         .map(|x| {
-            x.unwrap()
-                .iter()
-                .zip(&h)
+            let x = x.unwrap();
+            paired(x.iter().collect::<Vec<_>>(), &h)
                 .map(|(c, n)| if TIMING_COLUMNS.contains(&n.as_str()) { String::new() } else { c.to_string() })
                 .collect()
         })
