@@ -3,8 +3,8 @@
 //! released and Ctrl-C honoured ([`crate::worker`]).
 
 use crate::convert::to_json;
-use crate::drive::{steps_from_json, with_steps, DriveKeys};
-use crate::errors::{solve_error, to_py, Failure};
+use crate::drive::{with_steps, DriveKeys};
+use crate::errors::{solve_error, to_py};
 use crate::report::PyReport;
 use crate::scene::PyScene;
 use crate::worker;
@@ -45,33 +45,61 @@ pub struct PyModel {
     inner: Arc<Model>,
 }
 
-/// A drive argument: a `Scene`, or a mapping of drive keys merged with keyword drive keys.
-fn job_of(model: &Model, item: Option<&Bound<'_, PyAny>>, kwargs: Option<&Bound<'_, PyDict>>) -> Result<Job, Failure> {
+/// The `TypeError` of an argument of the wrong kind (`what` says what it must be).
+pub fn wrong_type(obj: &Bound<'_, PyAny>, what: &str) -> PyErr {
+    let ty = obj.get_type().name().map(|n| n.to_string()).unwrap_or_else(|_| "?".into());
+    pyo3::exceptions::PyTypeError::new_err(format!("{what}, not {ty}"))
+}
+
+/// A drive argument: a `Scene`, or a mapping of drive keys merged with keyword drive keys. A key given both in the
+/// mapping and as a keyword is bad input naming `drive.KEY`; an argument that is neither a `Scene` nor a mapping is
+/// a `TypeError`.
+fn job_of(
+    py: Python<'_>,
+    model: &Model,
+    item: Option<&Bound<'_, PyAny>>,
+    kwargs: Option<&Bound<'_, PyDict>>,
+) -> PyResult<Job> {
     let base = model.scene();
+    let invalid = |field: String, message: String| {
+        to_py(py, rollbem::Error::Invalid { path: base.origin().to_path_buf(), field, message }.into())
+    };
     if let Some(item) = item {
         if let Ok(s) = item.cast::<PyScene>() {
             if kwargs.is_some_and(|k| !k.is_empty()) {
-                let error = rollbem::Error::Invalid {
-                    path: base.origin().to_path_buf(),
-                    field: "drive".into(),
-                    message: "give a Scene or drive keys, not both (use scene.with_drive(...))".into(),
-                };
-                return Err(error.into());
+                return Err(invalid(
+                    "drive".into(),
+                    "give a Scene or drive keys, not both (use scene.with_drive(...))".into(),
+                ));
             }
             return Ok(Job::Scene(Box::new(s.get().inner.clone())));
         }
     }
     let mut value = match item {
-        Some(m) => to_json(m, "drive", base.origin())?,
+        Some(m) => to_json(m, "drive", base.origin()).map_err(|f| to_py(py, f))?,
         None => serde_json::Value::Object(Default::default()),
     };
-    if let (Some(kw), serde_json::Value::Object(map)) = (kwargs, &mut value) {
+    let serde_json::Value::Object(map) = &mut value else {
+        return Err(wrong_type(
+            item.unwrap_or(&py.None().into_bound(py)),
+            "a drive is a Scene or a mapping of drive keys",
+        ));
+    };
+    if let Some(kw) = kwargs {
         for (k, v) in kw.iter() {
-            let k = k.extract::<String>().map_err(|e| crate::errors::keyed(base.origin(), "drive", e.to_string()))?;
-            map.insert(k.clone(), to_json(&v, &format!("drive.{k}"), base.origin())?);
+            let k = k.extract::<String>()?;
+            if map.contains_key(&k) {
+                return Err(invalid(
+                    format!("drive.{k}"),
+                    format!("`{k}` given twice: in the drive mapping and as a keyword argument"),
+                ));
+            }
+            map.insert(k.clone(), to_json(&v, &format!("drive.{k}"), base.origin()).map_err(|f| to_py(py, f))?);
         }
     }
-    Ok(Job::Drive(DriveKeys::from_json(value, base)?))
+    let keys = DriveKeys::from_json(value, base).map_err(|f| to_py(py, f))?;
+    keys.check(base).map_err(|e| to_py(py, e.into()))?;
+    Ok(Job::Drive(keys))
 }
 
 /// Reports as Python objects; with `check`, the `SolveError` of the first one whose runs did not all end as the
@@ -140,7 +168,7 @@ impl PyModel {
         check: bool,
         drive_keys: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<Py<PyReport>> {
-        let job = job_of(&self.inner, drive, drive_keys).map_err(|f| to_py(py, f))?;
+        let job = job_of(py, &self.inner, drive, drive_keys)?;
         let model = self.inner.clone();
         let report = worker::run(py, move |_| {
             let scene = job.scene(model.scene())?;
@@ -157,7 +185,7 @@ impl PyModel {
     fn solve_all(&self, py: Python<'_>, drives: &Bound<'_, PyAny>, check: bool) -> PyResult<Vec<Py<PyReport>>> {
         let mut jobs = Vec::new();
         for item in drives.try_iter()? {
-            jobs.push(job_of(&self.inner, Some(&item?), None).map_err(|f| to_py(py, f))?);
+            jobs.push(job_of(py, &self.inner, Some(&item?), None)?);
         }
         let model = self.inner.clone();
         let reports = worker::run(py, move |cancel| {
@@ -182,8 +210,7 @@ impl PyModel {
     #[pyo3(signature = (steps, *, check = false))]
     fn solve_path(&self, py: Python<'_>, steps: &Bound<'_, PyAny>, check: bool) -> PyResult<Py<PyReport>> {
         let base = self.inner.scene();
-        let steps =
-            to_json(steps, "steps", base.origin()).and_then(|v| steps_from_json(v, base)).map_err(|f| to_py(py, f))?;
+        let steps = crate::drive::path_of(py, steps, base)?;
         let model = self.inner.clone();
         let report = worker::run(py, move |_| {
             let scene = Job::Path(steps).scene(model.scene())?;
