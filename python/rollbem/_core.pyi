@@ -274,7 +274,7 @@ class Stresses:
     @property
     def surface_x(self) -> _FloatArray:
         """x of the surface points [length] (depth 0, the contact elements' centres), shape (n_surface,)."""
-    def surface(self, quantity: str, /) -> _FloatArray:
+    def surface(self, quantity: str) -> _FloatArray:
         """A quantity at the surface points [stress], shape (n_surface,), float64 (NaN where refused); ``KeyError``
         as for ``st[quantity]``."""
     @property
