@@ -158,8 +158,12 @@ impl PyModel {
     /// or a mapping of drive keys; keyword drive keys may be given instead (`model.solve(creepage=1e-3)`). Drive
     /// keys: `normal_approach` | `normal_load`, `tangential_shift` | `tangential_load`, `rotation` | `moment`, and
     /// `creepage`; each changes that degree of freedom of the scene's drive and keeps the others (units and signs
-    /// of the scene file). With `check=True` a run that did not end with the status the scene expects raises
-    /// `SolveError` (with the report attached); otherwise the status is in the report.
+    /// of the scene file: d_N, d_T lengths, P, Q force per unit thickness, φ radians, M moment per unit thickness,
+    /// ξ dimensionless). A key given both in the mapping and as a keyword, or both keys of one degree of freedom
+    /// (or `creepage` with `tangential_load` in steady rolling), is an `InputError` naming `drive.KEY`; a `drive`
+    /// that is neither `None`, a `Scene` nor a mapping is a `TypeError`. With `check=True` a run that did not end
+    /// with the status the scene expects raises `SolveError` (with the report attached); otherwise the status is in
+    /// the report.
     #[pyo3(signature = (drive = None, *, check = false, **drive_keys))]
     fn solve(
         &self,
@@ -204,8 +208,8 @@ impl PyModel {
         finish(py, reports, check)
     }
 
-    /// Walk a load path on this model: `steps` is a list of mappings with the keys of `[[steps]]` (drive keys,
-    /// `substeps`, `roll`), friction with memory from substep to substep. The report's `steps` hold every substep
+    /// Walk a load path on this model: `steps` is a sequence of mappings with the keys of `[[steps]]` (drive keys,
+    /// `substeps`, `roll`; `TypeError` for anything but a sequence), friction with memory from substep to substep. The report's `steps` hold every substep
     /// and `history()` gives them as arrays. `check` as for `solve`.
     #[pyo3(signature = (steps, *, check = false))]
     fn solve_path(&self, py: Python<'_>, steps: &Bound<'_, PyAny>, check: bool) -> PyResult<Py<PyReport>> {

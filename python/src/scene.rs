@@ -74,7 +74,8 @@ impl PyScene {
         scene.map(PyScene::new).map_err(|f| to_py(py, f))
     }
 
-    /// Read, parse and validate a scene file.
+    /// Read, parse and validate a scene file; a file that is not there raises `FileNotFoundError` (Python's
+    /// `OSError` of the system's error), one that is not UTF-8 text `InputError`.
     #[staticmethod]
     fn from_file(py: Python<'_>, path: PathBuf) -> PyResult<PyScene> {
         let text = std::fs::read_to_string(&path)
@@ -83,7 +84,7 @@ impl PyScene {
     }
 
     /// A scene from a mapping of its tables (the TOML document as nested dicts), keyword arguments, or both
-    /// (keywords override the mapping's top-level keys).
+    /// (keywords override the mapping's top-level keys). `TypeError` when `tables` is not a mapping.
     #[staticmethod]
     #[pyo3(signature = (tables = None, **kwargs))]
     fn from_dict(
@@ -112,7 +113,7 @@ impl PyScene {
     }
 
     /// A changed copy: `changes` maps dotted keys (`"drive.normal_load"`, `"contact.friction"`, `"solvers.use"`) to
-    /// their new values (`None` removes a key); validated again.
+    /// their new values (`None` removes a key); validated again. `TypeError` when `changes` is not a mapping.
     fn edit(&self, py: Python<'_>, changes: &Bound<'_, PyAny>) -> PyResult<PyScene> {
         let origin = self.inner.origin().to_path_buf();
         let Value::Object(changes) = to_json(changes, "", &origin).map_err(|f| to_py(py, f))? else {
@@ -132,7 +133,8 @@ impl PyScene {
     /// The scene with another one-step drive: the keys of `[drive]` (`normal_approach` | `normal_load`,
     /// `tangential_shift` | `tangential_load`, `rotation` | `moment`) and `creepage`. A degree of freedom named by
     /// one of its keys is replaced, the others kept; in steady rolling `creepage` and `tangential_load` replace each
-    /// other. Units are the scene's; signs as in the scene file.
+    /// other. Units are the scene's; signs as in the scene file. Both keys of one degree of freedom (or `creepage`
+    /// with `tangential_load` in steady rolling) are an `InputError` naming the first.
     #[pyo3(signature = (**drive))]
     fn with_drive(&self, py: Python<'_>, drive: Option<&Bound<'_, PyDict>>) -> PyResult<PyScene> {
         let keys = match drive {
@@ -150,8 +152,8 @@ impl PyScene {
         self.inner.with_creepage(creepage).map(PyScene::new).map_err(|e| to_py(py, e.into()))
     }
 
-    /// The scene walking a load path: a list of step mappings with the keys of `[[steps]]` (the drive keys,
-    /// `substeps`, `roll`).
+    /// The scene walking a load path: a sequence of step mappings with the keys of `[[steps]]` (the drive keys,
+    /// `substeps`, `roll`); `TypeError` for anything but a sequence.
     fn with_steps(&self, py: Python<'_>, steps: &Bound<'_, PyAny>) -> PyResult<PyScene> {
         let steps = path_of(py, steps, &self.inner)?;
         with_steps(&self.inner, steps).map(PyScene::new).map_err(|e| to_py(py, e.into()))
