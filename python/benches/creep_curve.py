@@ -18,7 +18,10 @@ creepages, the solver `active_set` unless told otherwise:
 
 The sides run interleaved, `rounds` times each (after one warm-up round), and the medians are compared, of the wall
 time and of the process's CPU time (all threads; less sensitive to other work on a shared machine); the curves must
-agree to the last bit. The ratio asked for (issue 22) is Python / Rust <= 1.2.
+agree to round-off (1e-12 of max |Q|). `solve_all` starts each creepage from the previous one's solution
+(`rollbem::pipeline::Warm`) and the other sides from rest, so `python_one_call` does less work than `rust` (measured
+0.12 of its time): compare `python_per_point` with `rust` for the cost of the binding. The ratio asked for (issue 22)
+is Python / Rust <= 1.2.
 """
 
 from __future__ import annotations
@@ -65,10 +68,15 @@ def main() -> None:
         "python_per_point": lambda: python_per_point(scene, xis),
     }
     reference = None
-    for f in sides.values():  # warm-up, and the curves must be identical
+    for k, f in sides.items():  # warm-up, and the curves must agree
         _, q = f()
         reference = q if reference is None else reference
-        assert q == reference, "the curves differ"
+        # `solve_all` starts each creepage from the previous one's solution (rollbem::pipeline::Warm), the others
+        # from rest: the same certified answer reached by another pivoting path, so equal to round-off (measured
+        # 6e-15 of max |Q|), not bit for bit.
+        scale = max(abs(v) for v in reference)
+        worst = max(abs(a - b) for a, b in zip(q, reference))
+        assert worst <= 1e-12 * scale, f"the curves differ: {k} by {worst / scale:.1e} of max |Q|"
     wall = {k: [] for k in sides}
     cpu = {k: [] for k in sides}
     for _ in range(args.rounds):

@@ -20,8 +20,16 @@ contact carries (``normal_load`` P > 0 compressive, ``tangential_load`` Q along 
 about the wheel centre). The creepage xi is dimensionless, xi > 0 braking. Units are the scene's own, consistent
 (N, mm, MPa or N, m, Pa).
 
+Results are made once and kept (``run.pressure is run.pressure``); their NumPy arrays are read-only. A run's node
+arrays hold its answer: empty (shape (0,)) for a run whose status is not ``solved``, the refused answer of a
+``contact_at_zone_edge`` or ``kinematics_out_of_range`` run staying in ``run.to_dict()["nodes"]`` as evidence.
+Drives use a scene's ``[drive]`` keys everywhere (``Scene.drive``, ``Step.drive``, ``Model.solve``).
+
 Errors are exceptions of :mod:`rollbem.errors`: bad input raises :class:`InputError` (a ``ValueError``) naming the
-key; a run that did not solve is a status in the report, or :class:`SolveError` when asked (``check=True``).
+key (a drive key given twice included); a run that did not solve is a status in the report, or :class:`SolveError`
+when asked (``check=True``). Where Python has a class of its own it is raised: ``FileNotFoundError`` (and the other
+``OSError`` subclasses) for a file, ``KeyError`` for a solver or quantity a result does not hold, ``TypeError`` for
+an argument of the wrong kind.
 Solves release the GIL and run on a worker thread; Ctrl-C raises ``KeyboardInterrupt`` within about 20 ms (a list
 of drives stops before its next drive; a single solve in progress finishes in the background, its result dropped).
 """

@@ -5,6 +5,25 @@ crate docs, "Conventions"): x horizontal, y up, wheel centre at the origin, the 
 wheel, pressure p = t_y >= 0, shear q = t_x (+x); approach d_N towards the flat (positive compresses), shift d_T
 (+x), rotation phi counter-clockwise (radians); loads P > 0 compressive, Q along +x, M counter-clockwise about the
 wheel centre; creepage xi dimensionless, xi > 0 braking.
+
+Written below as: [length], [stress] (force per length squared), [force/thickness] (a force per unit thickness, the
+scene's force unit over its length unit), [moment/thickness] (force x length per unit thickness), [energy/thickness],
+[rad], [-] (dimensionless), [s] (seconds).
+
+Results are made once and kept: a run's node arrays, a report's runs and steps, a path's history arrays and a
+stress field's arrays are the same objects on every access, and the NumPy arrays among them are read-only
+(``a.flags.writeable`` is False and cannot be set back; ``a.copy()`` is the caller's own). Dicts (``timing``,
+``work``, ``contact``, ``mesh``, ...) are made anew on each access.
+
+A run's node arrays hold its answer: every array has one entry per contact node for a run whose ``status`` is
+``"solved"`` and shape (0,) for any other status. A run judged ``contact_at_zone_edge`` or
+``kinematics_out_of_range`` keeps the answer the harness refused as the evidence for its verdict in
+``Run.to_dict()["nodes"]`` (the JSON document), not in the arrays.
+
+Errors: ``rollbem.errors.InputError`` (a ``ValueError``) for bad input, naming the dotted key; Python's own
+``OSError`` subclass for a file (``FileNotFoundError``, ``PermissionError``, ``IsADirectoryError``); ``KeyError`` for
+a solver or stress quantity a result does not hold; ``TypeError`` for an argument of the wrong kind (a drive that is
+not a ``Scene`` or a mapping, a load path that is not a sequence).
 """
 
 from __future__ import annotations
@@ -54,15 +73,16 @@ class Scene:
         errors (default ``"<scene>"``)."""
     @staticmethod
     def from_file(path: _Path) -> Scene:
-        """Read, parse and validate a scene file."""
+        """Read, parse and validate a scene file; ``FileNotFoundError`` (an ``OSError``) when it is not there."""
     @staticmethod
     def from_dict(tables: Optional[Mapping[str, Any]] = None, **kwargs: Any) -> Scene:
         """A scene from a mapping of its tables (the TOML document as nested dicts: ``name``, ``wheel``, ``mesh``,
         ``contact``, ``drive``, ``rolling``, ``steps``, ``solvers``, ...), keyword arguments, or both (keywords
-        override the mapping's top-level keys)."""
+        override the mapping's top-level keys). ``TypeError`` when ``tables`` is not a mapping."""
     def edit(self, changes: Mapping[str, Any]) -> Scene:
         """A changed copy: ``changes`` maps dotted keys (``"drive.normal_load"``, ``"contact.friction"``,
-        ``"solvers.use"``) to their new values (``None`` removes a key); validated again."""
+        ``"solvers.use"``) to their new values (``None`` removes a key); validated again. ``TypeError`` when
+        ``changes`` is not a mapping."""
     def with_drive(
         self,
         *,
@@ -74,15 +94,21 @@ class Scene:
         moment: Optional[float] = ...,
         creepage: Optional[float] = ...,
     ) -> Scene:
-        """The scene with another one-step drive. A degree of freedom named by one of its keys is replaced (giving
-        ``normal_load`` drops ``normal_approach``), the others are kept; in steady rolling ``creepage`` and
-        ``tangential_load`` replace each other. A load path becomes a one-step scene."""
+        """The scene with another one-step drive: ``normal_approach`` d_N [length, towards the flat > 0] |
+        ``normal_load`` P [force/thickness, compressive > 0], ``tangential_shift`` d_T [length, +x] |
+        ``tangential_load`` Q [force/thickness, +x], ``rotation`` phi [rad, counter-clockwise] | ``moment`` M
+        [moment/thickness, counter-clockwise about the wheel centre], ``creepage`` xi [-, > 0 braking]. A degree of
+        freedom named by one of its keys is replaced (giving ``normal_load`` drops the scene's ``normal_approach``),
+        the others are kept; in steady rolling ``creepage`` and ``tangential_load`` replace the scene's other one. A
+        load path becomes a one-step scene. Both keys of one degree of freedom (or ``creepage`` and
+        ``tangential_load`` in steady rolling) are bad input (``InputError`` naming the first)."""
     def with_creepage(self, creepage: float) -> Scene:
         """The scene at another creepage xi (dimensionless, xi > 0 braking); ``InputError`` naming
         ``rolling.creepage`` for a scene without ``[rolling]``."""
     def with_steps(self, steps: Sequence[Mapping[str, float]]) -> Scene:
-        """The scene walking a load path: step mappings with the keys of ``[[steps]]`` (the drive keys, ``substeps``,
-        ``roll``)."""
+        """The scene walking a load path: a sequence of step mappings with the keys of ``[[steps]]`` (the drive keys
+        of ``with_drive`` but ``creepage``, at the step's end; ``substeps``, an int >= 1; ``roll`` [length] >= 0).
+        ``TypeError`` when ``steps`` is not a sequence."""
     def to_dict(self) -> Dict[str, Any]:
         """The scene as a dict of its tables, defaults filled in."""
     def to_toml(self) -> str:
@@ -91,7 +117,8 @@ class Scene:
     def name(self) -> str:
         """Short identifier (names output files)."""
     @property
-    def description(self) -> str: ...
+    def description(self) -> str:
+        """What the scene is and where its numbers come from."""
     @property
     def units(self) -> Optional[str]:
         """The units label (e.g. ``"N, mm, MPa"``), or ``None``."""
@@ -103,21 +130,26 @@ class Scene:
         """The wheel's radius R (length unit)."""
     @property
     def friction(self) -> float:
-        """Coulomb's mu (0: frictionless)."""
+        """Coulomb's mu [-] (0: frictionless)."""
     @property
     def contact_modulus(self) -> float:
-        """E* of the pair (stress unit): 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2, the second term 0 for a rigid
+        """E* of the pair [stress]: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2, the second term 0 for a rigid
         flat."""
     @property
     def dundurs_beta(self) -> float:
-        """Dundurs' beta of the pair (0: normal and tangential problems uncouple)."""
+        """Dundurs' second parameter beta of the pair in plane strain [-] (``rollbem::material::dundurs_beta``):
+        body 1 is the wheel, body 2 the counter-body (a rigid flat has 1/G2 = 0),
+        beta = [(1 - 2 nu1)/G1 - (1 - 2 nu2)/G2] / [2 ((1 - nu1)/G1 + (1 - nu2)/G2)]. Swapping the bodies changes
+        its sign; an elastic wheel on a rigid flat has beta = (1 - 2 nu)/(2 (1 - nu)) > 0 (2/7 at nu = 0.3); the
+        more compliant body as the wheel gives beta > 0; 0 (identical materials) uncouples the normal and tangential
+        problems."""
     @property
     def model(self) -> str:
         """``"bem"`` (the finite wheel) or ``"half_plane"``."""
     @property
-    def strip_width(self) -> float | None:
-        """The width of the strip of half-spaces the contact is posed on (``[mesh] strip_width``, CONTACT's 2D model;
-        length unit), or None in plane strain."""
+    def strip_width(self) -> Optional[float]:
+        """The width [length] of the strip of half-spaces the contact is posed on (``[mesh] strip_width``, CONTACT's
+        2D model), or None in plane strain."""
     @property
     def element(self) -> str:
         """``"constant"`` or ``"quadratic"``."""
@@ -126,13 +158,16 @@ class Scene:
         """``"steady"``, ``"seed"``, ``"transient"``, or ``None``."""
     @property
     def creepage(self) -> Optional[float]:
-        """The prescribed creepage xi, or ``None``."""
+        """The prescribed creepage xi [-, > 0 braking], or ``None``."""
     @property
     def drive(self) -> Dict[str, float]:
-        """The ``[drive]`` table (empty for a load path)."""
+        """The ``[drive]`` table with its keys (``normal_approach`` [length] | ``normal_load`` [force/thickness],
+        ``tangential_shift`` [length] | ``tangential_load`` [force/thickness], ``rotation`` [rad] | ``moment``
+        [moment/thickness]); empty for a load path."""
     @property
     def steps(self) -> List[Dict[str, Any]]:
-        """The ``[[steps]]`` of a load path (empty for a one-step scene)."""
+        """The ``[[steps]]`` of a load path: the drive keys of ``drive``, ``substeps``, ``roll`` [length] (empty for a
+        one-step scene)."""
     @property
     def solvers(self) -> List[str]:
         """``[solvers] use``."""
@@ -153,7 +188,7 @@ class Model:
         """How many solves the model has done."""
     @property
     def build_time(self) -> Dict[str, float]:
-        """Seconds of the build: ``assembly``, ``condensation``."""
+        """The build's time [s]: ``assembly``, ``condensation``."""
     def accepts(self, scene: Scene) -> bool:
         """Whether ``scene`` shares the model's bodies, mesh and candidate zone (and needs no other blocks)."""
     def solve(
@@ -170,49 +205,54 @@ class Model:
         creepage: float = ...,
     ) -> Report:
         """Solve once: the model's scene (``drive=None``), another ``Scene`` on the same bodies and mesh, or the
-        model's scene with a drive changed by a mapping or keywords (``model.solve(creepage=1e-3)``). With
-        ``check=True`` a run that did not end with the status the scene expects raises ``SolveError``."""
+        model's scene with a drive changed by a mapping or keywords (``model.solve(creepage=1e-3)``), with the keys
+        and units of ``Scene.with_drive`` (a ``Step.drive`` is such a mapping). A key given both in the mapping and
+        as a keyword, or both keys of one degree of freedom, is bad input (``InputError`` naming ``drive.KEY``); a
+        ``drive`` that is neither a ``Scene`` nor a mapping is a ``TypeError``. With ``check=True`` a run that did
+        not end with the status the scene expects raises ``SolveError``."""
     def solve_all(self, drives: Iterable[Union[Scene, _Drive]], *, check: bool = False) -> List[Report]:
         """Solve for each drive in order, each from rest, on this one model (a creep curve:
         ``[{"creepage": xi} for xi in xis]``); Ctrl-C stops before the next drive."""
     def solve_path(self, steps: Sequence[Mapping[str, float]], *, check: bool = False) -> Report:
-        """Walk a load path (``[[steps]]`` mappings: drive keys, ``substeps``, ``roll``), friction with memory."""
+        """Walk a load path (a sequence of ``[[steps]]`` mappings, as ``Scene.with_steps``), friction with memory
+        from substep to substep."""
 
 @final
 class Residuals:
-    """Solver-independent residuals of the physical conditions, relative."""
+    """Solver-independent residuals of the physical conditions, each relative [-]."""
 
     @property
     def complementarity(self) -> float:
-        """max |p g| / (p_max l), l the largest rigid gap over the candidate zone."""
+        """max |p g| / (p_max l) [-], l the largest rigid gap over the candidate zone."""
     @property
     def penetration(self) -> float:
-        """max(0, -min g) / l."""
+        """max(0, -min g) / l [-]."""
     @property
     def tension(self) -> float:
-        """max(0, -min p) / p_max."""
+        """max(0, -min p) / p_max [-]."""
     @property
     def friction(self) -> Optional[float]:
-        """Coulomb's law (cone and slip terms) over mu p_max; ``None`` without friction."""
+        """Coulomb's law (cone and slip terms) over mu p_max [-]; ``None`` without friction."""
     @property
     def equilibrium(self) -> Optional[float]:
-        """Worst |resultant - load| / |load| of the load-driven DOFs; ``None`` when displacement-driven."""
+        """Worst |resultant - load| / |load| of the load-driven DOFs [-]; ``None`` when displacement-driven."""
     @property
     def max(self) -> float:
-        """The largest of those that apply."""
+        """The largest of those that apply [-]."""
 
 @final
 class Stresses:
-    """A run's subsurface stresses on the ``[stresses]`` grid: plane strain, tension positive, the scene's stress
-    unit; depth z from the flat into the wheel. Fields have shape (nz, nx): row j at ``depth[j]``, column i at
-    ``x[i]``; NaN where a point has no value."""
+    """A run's subsurface stresses on the ``[stresses]`` grid: plane strain, tension positive, [stress]; depth z
+    [length] from the flat into the body (on the loaded surface szz = -p, txz = -q). Fields have shape (nz, nx): row
+    j at ``depth[j]``, column i at ``x[i]``; NaN where a point has no value. Every array is made once and read-only.
+    """
 
     @property
     def x(self) -> _FloatArray:
-        """x of the columns (length unit), shape (nx,)."""
+        """x of the columns [length], shape (nx,)."""
     @property
     def depth(self) -> _FloatArray:
-        """Depth of the rows (length unit), shape (nz,)."""
+        """Depth of the rows [length], shape (nz,)."""
     @property
     def shape(self) -> Tuple[int, int]:
         """(nz, nx)."""
@@ -221,39 +261,46 @@ class Stresses:
         """The quantities computed (``sxx``, ``szz``, ``txz``, ``syy``, ``principal_shear``, ``von_mises``,
         ``orthogonal_shear``)."""
     def __getitem__(self, quantity: str, /) -> npt.NDArray[np.float64]:
-        """The field of a quantity, shape (nz, nx), float64."""
+        """The field of a quantity [stress], shape (nz, nx), float64; ``KeyError`` for a name that is not a stress
+        quantity or a quantity not computed."""
     def __contains__(self, quantity: str, /) -> bool: ...
     @property
     def maxima(self) -> Dict[str, Optional[Dict[str, float]]]:
-        """Per quantity its largest |value| (sign kept) and where: ``{"value", "x", "depth"}``; grid and surface
-        points."""
+        """Per quantity its largest |value| (sign kept) [stress] and where: ``{"value", "x", "depth"}`` (x, depth
+        [length]); grid and surface points."""
     @property
     def body(self) -> str:
         """``"wheel"``, or ``"counter_body"`` for an elastic counter-body's own field (depth measured into it)."""
     @property
     def surface_x(self) -> _FloatArray:
-        """x of the surface points (depth 0, the contact elements' centres), shape (n_surface,)."""
-    def surface(self, quantity: str, /) -> _FloatArray:
-        """A quantity at the surface points, shape (n_surface,), float64 (NaN where refused)."""
+        """x of the surface points [length] (depth 0, the contact elements' centres), shape (n_surface,)."""
+    def surface(self, quantity: str) -> _FloatArray:
+        """A quantity at the surface points [stress], shape (n_surface,), float64 (NaN where refused); ``KeyError``
+        as for ``st[quantity]``."""
     @property
     def refused(self) -> Dict[str, int]:
-        """Refused points per reason."""
+        """Refused points per reason (``outside_body``, ``near_boundary``, ``singular``)."""
     @property
-    def time_s(self) -> float: ...
+    def time_s(self) -> float:
+        """Wall-clock time of the evaluation [s]."""
 
 @final
 class Run:
-    """One solver's run. Node arrays are float64 of shape (n_nodes,), new on each access, empty when the run has no
-    answer (or holding the judged answer of a ``contact_at_zone_edge`` / ``kinematics_out_of_range`` run)."""
+    """One solver's run. Node arrays (``x`` ... ``state``) are float64 (``state`` int8) of shape (n_nodes,), made
+    once and read-only: one entry per contact node for a solved run, shape (0,) for any other status (a
+    ``contact_at_zone_edge`` or ``kinematics_out_of_range`` run keeps its refused answer in ``to_dict()["nodes"]``
+    only). Resultants and rigid motion are ``None`` unless solved."""
 
     @property
-    def solver(self) -> str: ...
+    def solver(self) -> str:
+        """The solver's registry name (``lemke``, ``active_set``, ``clarabel``, ``pgs``, ``normtang_qp``)."""
     @property
     def status(self) -> str:
         """``solved``, ``infeasible``, ``ray_termination``, ``not_converged``, ``numerical_error``,
         ``contact_at_zone_edge`` or ``kinematics_out_of_range``: the harness's conclusion."""
     @property
-    def solved(self) -> bool: ...
+    def solved(self) -> bool:
+        """Whether ``status`` is ``solved``: whether the run has an answer (node arrays, resultants, rigid motion)."""
     @property
     def termination(self) -> str:
         """How the solver itself ended, before the harness checked its answer."""
@@ -261,85 +308,93 @@ class Run:
     def verdict(self) -> Optional[Dict[str, str]]:
         """Why ``status`` differs from ``termination`` (``reason``, ``message``), or ``None``."""
     @property
-    def explanation(self) -> str: ...
+    def explanation(self) -> str:
+        """What to tell a user about the run (the verdict's explanation, then the solver's message)."""
     @property
     def formulation(self) -> str:
         """``frictionless``, ``displacement`` or ``loading``."""
     @property
-    def problem_size(self) -> int: ...
+    def problem_size(self) -> int:
+        """Number of complementarity (or QP) unknowns."""
     @property
     def work(self) -> Dict[str, int]:
         """The solver's counters (pivots, iterations, sweeps, ...)."""
     @property
     def timing(self) -> Dict[str, Any]:
-        """Seconds: ``assembly``, ``condensation``, ``formulation``, ``solve``, ``total``; ``setup`` is ``"built"``
-        or ``"reused"``."""
+        """Times [s]: ``assembly``, ``condensation``, ``formulation``, ``solve``, ``total``; ``setup`` is
+        ``"built"`` or ``"reused"``."""
     @property
-    def residuals(self) -> Optional[Residuals]: ...
+    def residuals(self) -> Optional[Residuals]:
+        """The residuals, or ``None`` unless a solution was produced."""
     @property
     def residual(self) -> Optional[float]:
-        """The largest residual."""
+        """The largest residual [-]."""
     @property
     def normal_load(self) -> Optional[float]:
-        """Resultant P of the tractions on the wheel (compressive > 0)."""
+        """Resultant P = int p dx of the tractions on the wheel [force/thickness], compressive > 0."""
     @property
     def tangential_load(self) -> Optional[float]:
-        """Resultant Q (+x)."""
+        """Resultant Q = int q dx [force/thickness], +x."""
     @property
     def moment(self) -> Optional[float]:
-        """Moment M about the wheel centre (counter-clockwise)."""
+        """Moment M about the wheel centre [moment/thickness], counter-clockwise."""
     @property
     def normal_approach(self) -> Optional[float]:
-        """The support's approach d_N (towards the flat > 0)."""
+        """The support's approach d_N [length], towards the flat > 0."""
     @property
     def tangential_shift(self) -> Optional[float]:
-        """The support's shift d_T (+x); ``None`` when indeterminate (|Q| = mu P)."""
+        """The support's shift d_T [length], +x; ``None`` when indeterminate (|Q| = mu P)."""
     @property
     def rotation(self) -> Optional[float]:
-        """The support's rotation phi (counter-clockwise, radians)."""
+        """The support's rotation phi [rad], counter-clockwise."""
     @property
     def creepage(self) -> Optional[float]:
-        """The creepage xi, prescribed or computed from a prescribed Q."""
+        """The creepage xi [-, > 0 braking], prescribed or computed from a prescribed Q."""
     @property
     def contact(self) -> Optional[Dict[str, Any]]:
-        """Contact figures: ``x_min``, ``x_max``, ``half_width``, ``peak_pressure``, fits, stick zone, counts."""
+        """Contact figures: ``x_min``, ``x_max``, ``half_width``, ``fit_half_width``, ``stick_x_min``,
+        ``stick_x_max`` [length]; ``peak_pressure``, ``fit_peak_pressure`` [stress]; node counts."""
     @property
     def stick_zone(self) -> Optional[Tuple[float, float]]:
-        """x of the outermost sticking nodes, or ``None``."""
+        """The stick zone's edges (left, right) [length], each midway between the outermost sticking node and its
+        neighbour; ``None`` without friction, when nothing sticks, or for a run not solved."""
     @property
-    def n_nodes(self) -> int: ...
+    def n_nodes(self) -> int:
+        """Entries of each node array: the contact nodes of a solved run, 0 for any other status."""
     @property
     def x(self) -> _FloatArray:
-        """x of each contact node (undeformed)."""
+        """x of each contact node (undeformed) [length]."""
     @property
     def y(self) -> _FloatArray:
-        """y of each contact node (undeformed; the flat is y = -R)."""
+        """y of each contact node (undeformed) [length]; the flat is y = -R."""
     @property
     def pressure(self) -> _FloatArray:
-        """p = t_y >= 0 on the wheel."""
+        """p = t_y >= 0 on the wheel [stress]."""
     @property
     def shear(self) -> _FloatArray:
-        """q = t_x on the wheel (+x)."""
+        """q = t_x on the wheel [stress], +x; 0 without friction."""
     @property
     def gap(self) -> _FloatArray:
-        """g = g0 + u_y (0 in contact)."""
+        """g = g0 + u_y to the flat [length]; 0 in contact."""
     @property
     def slip(self) -> _FloatArray:
-        """Slip of the wheel relative to the flat (+x); NaN where separated or not computed."""
+        """Slip of the wheel relative to the flat [length], +x; NaN where separated or not computed."""
     @property
     def u_x(self) -> _FloatArray:
-        """u_x with the rigid motion; NaN when the tangential problem was not built."""
+        """u_x with the rigid motion [length], +x; NaN when the tangential problem was not built."""
     @property
     def u_y(self) -> _FloatArray:
-        """u_y with the rigid motion (+y)."""
+        """u_y with the rigid motion [length], +y."""
     @property
     def slip_velocity(self) -> _FloatArray:
-        """Slip velocity (seed eq. 12; dimensionless); NaN without ``[rolling]``."""
+        """Slip velocity relative to the rolling speed [-] (seed eq. 12); NaN without ``[rolling]``."""
     @property
     def state(self) -> npt.NDArray[np.int8]:
-        """State codes, int8: ``NODE_STATES[code]`` names them."""
+        """State codes, int8: 0 stick, 1 slip, 2 contact (frictionless), 3 separated; ``NODE_STATES[code]`` names
+        them."""
     @property
-    def state_names(self) -> List[str]: ...
+    def state_names(self) -> Tuple[str, ...]:
+        """The state of each node by name (``"stick"``, ``"slip"``, ``"contact"``, ``"separated"``)."""
     @property
     def stresses(self) -> Optional[Stresses]:
         """With ``[stresses]``, for a solved run."""
@@ -349,26 +404,33 @@ class Run:
     def raise_for_status(self) -> None:
         """Raise ``SolveError`` unless the run ended with the status its scene expects."""
     def to_dict(self) -> Dict[str, Any]:
-        """The run's entry of the JSON document."""
+        """The run's entry of the JSON document (``nodes`` holds a refused answer's evidence)."""
 
 @final
 class Step:
     """One substep of a load path."""
 
     @property
-    def step(self) -> int: ...
+    def step(self) -> int:
+        """Step index, from 0 as in ``[[steps]]``."""
     @property
-    def substep(self) -> int: ...
+    def substep(self) -> int:
+        """Substep, 1 ..= ``substeps``."""
     @property
-    def substeps(self) -> int: ...
+    def substeps(self) -> int:
+        """Number of substeps of the step."""
     @property
     def rolled(self) -> float:
-        """Distance rolled since the start (length unit)."""
+        """Distance rolled since the start [length]."""
     @property
-    def drive(self) -> Dict[str, Dict[str, float]]:
-        """Per DOF ``{"Displacement": v}`` or ``{"Load": v}``."""
+    def drive(self) -> Dict[str, float]:
+        """The drive at the substep's end with the keys of a scene's ``[drive]``: ``normal_approach`` [length] |
+        ``normal_load`` [force/thickness], ``tangential_shift`` [length] | ``tangential_load`` [force/thickness],
+        ``rotation`` [rad] | ``moment`` [moment/thickness]; a tangential or rotational DOF held at zero
+        displacement is left out, as in a scene. ``Model.solve`` and ``Scene.with_drive`` accept it."""
     @property
-    def runs(self) -> List[Run]: ...
+    def runs(self) -> Tuple[Run, ...]:
+        """Every solver's run at the substep's end."""
 
 @final
 class Report:
@@ -376,18 +438,22 @@ class Report:
 
     @staticmethod
     def read(path: _Path) -> Report:
-        """Read a result document; another schema is refused (``InputError``)."""
+        """Read a result document; another schema is refused (``InputError``); ``FileNotFoundError`` when it is not
+        there."""
     @staticmethod
-    def from_json(text: str) -> Report: ...
+    def from_json(text: str) -> Report:
+        """Parse a result document's JSON text."""
     @property
-    def runs(self) -> List[Run]:
+    def runs(self) -> Tuple[Run, ...]:
         """One run per solver (a load path's at the last step it reached)."""
     def run(self, solver: Optional[str] = None) -> Run:
         """The run of ``solver``, or the first; ``KeyError`` when there is none."""
     @property
-    def steps(self) -> List[Step]: ...
+    def steps(self) -> Tuple[Step, ...]:
+        """A load path's substeps (empty for a one-step scene)."""
     @property
-    def scene(self) -> Scene: ...
+    def scene(self) -> Scene:
+        """The scene as solved."""
     @property
     def ok(self) -> bool:
         """Whether every run ended with the status the scene expects."""
@@ -395,30 +461,47 @@ class Report:
         """Raise ``SolveError`` unless ``ok``."""
     @property
     def hertz(self) -> Optional[Dict[str, float]]:
-        """Hertz at the run's load (frictionless scenes): ``half_width``, ``peak_pressure``, ``load``."""
+        """Hertz at the run's load (frictionless scenes): ``half_width`` a [length], ``peak_pressure`` p0 [stress],
+        ``load`` P [force/thickness]."""
     @property
-    def checks(self) -> List[Dict[str, Any]]: ...
+    def dundurs_beta(self) -> float:
+        """Dundurs' beta of the pair [-], body 1 the wheel (as ``Scene.dundurs_beta``: > 0 for an elastic wheel on
+        a rigid flat, sign flips when the bodies swap)."""
     @property
-    def all_pass(self) -> bool: ...
+    def checks(self) -> List[Dict[str, Any]]:
+        """The checks against theory and between solvers (``name``, ``measured``, ``reference``, ``error``,
+        ``tolerance``, ``pass``, ``kind``, ``note``)."""
     @property
-    def warnings(self) -> List[str]: ...
+    def all_pass(self) -> bool:
+        """Whether every check passed."""
     @property
-    def mesh(self) -> Dict[str, Any]: ...
+    def warnings(self) -> List[str]:
+        """Run-level warnings."""
     @property
-    def diagnostics(self) -> Dict[str, Any]: ...
+    def mesh(self) -> Dict[str, Any]:
+        """Mesh facts (``model``, ``elements``, ``nodes``, ``contact_nodes``, ``element``, ``system_size``,
+        ``contact_element_length`` [length])."""
+    @property
+    def diagnostics(self) -> Dict[str, Any]:
+        """Numerical health (condition estimates, flexibility asymmetry, warnings)."""
     def history(self, solver: Optional[str] = None) -> Dict[str, Any]:
-        """A load path per substep, as arrays: ``step``, ``substep``, ``rolled``, ``normal_load``,
-        ``tangential_load``, ``moment``, ``normal_approach``, ``tangential_shift``, ``rotation``, ``creepage``,
-        ``dissipated``, ``dissipated_total`` (NaN where absent), and ``status`` (list of str)."""
+        """A load path per substep, as read-only arrays (the same arrays on every call, in a new dict):
+        ``step``, ``substep`` (int64), ``rolled`` [length], ``normal_load``, ``tangential_load``
+        [force/thickness], ``moment`` [moment/thickness], ``normal_approach``, ``tangential_shift`` [length],
+        ``rotation`` [rad], ``creepage`` [-], ``dissipated``, ``dissipated_total`` [energy/thickness] (NaN where a
+        substep did not solve), and ``status`` (tuple of str). ``KeyError`` for a solver the report has no run of;
+        empty arrays for a one-step report."""
     def to_dict(self) -> Dict[str, Any]:
         """The whole document, as ``rollbem run --json`` writes it."""
-    def to_json(self, indent: Optional[int] = None) -> str: ...
+    def to_json(self, indent: Optional[int] = None) -> str:
+        """The document as JSON text (``indent`` spaces, or compact)."""
     def __len__(self) -> int: ...
 
 def run(scene: Scene, *, check: bool = False) -> Report:
     """Build the scene's model and solve the scene once (``rollbem run``)."""
 
 def _rust_creep_curve(scene: Scene, creepages: Sequence[float], on_worker: bool = False) -> Tuple[float, List[float]]:
-    """Benchmark reference: the same creep curve through the Rust API alone: (seconds, Q per creepage)."""
+    """Benchmark reference: the same creep curve through the Rust API alone: (time [s], Q per creepage
+    [force/thickness])."""
 
 def _sweep_rows(spec: str, shard: Optional[str] = None) -> Tuple[List[str], List[List[Any]]]: ...

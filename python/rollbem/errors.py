@@ -5,7 +5,7 @@ Every one derives from :class:`RollbemError`. They follow the command line's exi
 ==================  =========================================================  =========
 exception           raised for                                                 CLI exit
 ==================  =========================================================  =========
-``InputError``      bad input: a file that cannot be read, malformed TOML, an  2
+``InputError``      bad input: a file that is not text, malformed TOML, an     2
                     unknown or missing key, a wrong type, a value out of
                     range, a solver that does not apply; ``key`` names the
                     dotted key (``"wheel.radius"``) where it is known
@@ -19,6 +19,13 @@ exception           raised for                                                 C
 
 ``InputError`` is a :class:`ValueError`, ``NumericalError`` an :class:`ArithmeticError` and ``OutputError`` an
 :class:`OSError`, so code that catches the built-in kinds keeps working.
+
+Where Python has a class of its own, rollbem raises it rather than one of these: a file that is not there, not
+readable or a directory raises Python's ``OSError`` subclass of that ``errno`` (``FileNotFoundError``,
+``PermissionError``, ``IsADirectoryError``; ``filename`` names the file), as ``open()`` does (the CLI's exit code 2);
+a solver or stress quantity a result does not hold raises ``KeyError``; an argument of the wrong kind (a drive that
+is not a ``Scene`` or a mapping, a load path that is not a sequence) raises ``TypeError``. A file that is there but
+is not UTF-8 text, and a sweep spec whose ``base`` scene is not there, are ``InputError``.
 """
 
 from __future__ import annotations

@@ -8,11 +8,17 @@
 //! [`rollbem::scene::Scene::with_creepage`] does). A load path's scene becomes a one-step scene. The result is
 //! validated like a scene file.
 //!
+//! One mapping names each degree of freedom once: both keys of a pair (`normal_approach` and `normal_load`, ...),
+//! or `creepage` with `tangential_load` in steady rolling, are bad input naming the first key of the pair
+//! ([`DriveKeys::check`]), as a scene file's `[drive]` is; nothing is resolved silently. (A key given both in a
+//! mapping and as a keyword is refused where they are merged, `crate::model`.)
+//!
 //! A load path is a list of step mappings with the keys of `[[steps]]` (the drive keys, `substeps`, `roll`); it
 //! replaces the scene's drive or path.
 
-use crate::convert::typed;
-use crate::errors::Failure;
+use crate::convert::{to_json, typed};
+use crate::errors::{to_py, Failure};
+use pyo3::prelude::*;
 use rollbem::error::Error;
 use rollbem::scene::document::StepTable;
 use rollbem::scene::{RollingMode, Scene};
@@ -45,6 +51,36 @@ impl DriveKeys {
         typed(value, "drive", scene.origin())
     }
 
+    /// Refuse a mapping that drives a degree of freedom twice (module docs): an `Invalid` error naming
+    /// `drive.KEY`, the first key of the pair.
+    pub fn check(&self, scene: &Scene) -> rollbem::Result<()> {
+        let k = self;
+        let pairs = [
+            ("normal_approach", k.normal_approach, "normal_load", k.normal_load),
+            ("tangential_shift", k.tangential_shift, "tangential_load", k.tangential_load),
+            ("rotation", k.rotation, "moment", k.moment),
+        ];
+        let twice = |a: &str, b: &str, why: &str| Error::Invalid {
+            path: scene.origin().to_path_buf(),
+            field: format!("drive.{a}"),
+            message: format!("give either `{a}` or `{b}`, not both ({why})"),
+        };
+        for (a, va, b, vb) in pairs {
+            if va.is_some() && vb.is_some() {
+                return Err(twice(a, b, "each drives the same degree of freedom"));
+            }
+        }
+        let steady = scene.document().rolling.as_ref().is_some_and(|r| r.mode == RollingMode::Steady);
+        if steady && k.creepage.is_some() && k.tangential_load.is_some() {
+            return Err(twice(
+                "creepage",
+                "tangential_load",
+                "in steady rolling each drives the tangential degree of freedom",
+            ));
+        }
+        Ok(())
+    }
+
     /// Whether no key is given.
     pub fn is_empty(&self) -> bool {
         *self == DriveKeys::default()
@@ -52,6 +88,7 @@ impl DriveKeys {
 
     /// The scene with this drive (module docs).
     pub fn apply(&self, scene: &Scene) -> rollbem::Result<Scene> {
+        self.check(scene)?;
         if self.creepage.is_some() && scene.rolling().is_none() {
             return Err(Error::Invalid {
                 path: scene.origin().to_path_buf(),
@@ -91,9 +128,14 @@ impl DriveKeys {
     }
 }
 
-/// A load path: step tables from a JSON array (errors name `steps[i].KEY`).
-pub fn steps_from_json(value: Value, scene: &Scene) -> Result<Vec<StepTable>, Failure> {
-    typed(value, "steps", scene.origin())
+/// A load path given from Python: a sequence (not a string or a mapping) of step mappings, as step tables (errors
+/// name `steps[i].KEY`); an argument that is not a sequence is a `TypeError`.
+pub fn path_of(py: Python<'_>, steps: &Bound<'_, PyAny>, scene: &Scene) -> PyResult<Vec<StepTable>> {
+    let value = to_json(steps, "steps", scene.origin()).map_err(|f| to_py(py, f))?;
+    if !value.is_array() {
+        return Err(crate::model::wrong_type(steps, "a load path is a sequence of step mappings"));
+    }
+    typed(value, "steps", scene.origin()).map_err(|f| to_py(py, f))
 }
 
 /// The scene walking the load path `steps` (validated like a scene file; at least one step).

@@ -4,7 +4,8 @@
 //!
 //! | [`rollbem::Error`] | exception | the CLI's exit code |
 //! |---|---|---|
-//! | `Io`, `Parse`, `Invalid`, `Unsupported` | `InputError` (`key`: the dotted key where known) | 2 |
+//! | `Io` from the system (a file not there, not readable, a directory) | Python's own `OSError` of that `errno`: `FileNotFoundError`, `PermissionError`, `IsADirectoryError`, ... (`filename`: the file) | 2 |
+//! | `Io` without an `errno` (a file that is not UTF-8 text), `Parse`, `Invalid`, `Unsupported` | `InputError` (`key`: the dotted key where known) | 2 |
 //! | `Write`, `Output` | `OutputError` | 3 |
 //! | `Numerical` | `NumericalError` (`stage`) | 4 |
 //! | a run not solved, when the caller asks ([`solve_error`]) | `SolveError` | 5 |
@@ -56,6 +57,17 @@ fn leading_key(message: &str) -> Option<String> {
     ok.then(|| head.to_string())
 }
 
+/// Python's `OSError(errno, strerror, filename)`, which Python makes the subclass of that `errno`
+/// (`FileNotFoundError` for `ENOENT`, `PermissionError` for `EACCES`, ...), as `open()` raises it.
+fn os_error(py: Python<'_>, errno: i32, file: &std::path::Path) -> PyErr {
+    let made = (|| -> PyResult<PyErr> {
+        let strerror = py.import("os")?.call_method1("strerror", (errno,))?;
+        let cls = py.import("builtins")?.getattr("OSError")?;
+        Ok(PyErr::from_value(cls.call1((errno, strerror, file.display().to_string()))?))
+    })();
+    made.unwrap_or_else(|e| e)
+}
+
 /// The Python exception of a failure (see the module docs).
 pub fn to_py(py: Python<'_>, failure: Failure) -> PyErr {
     let (error, known_key) = match failure {
@@ -68,7 +80,10 @@ pub fn to_py(py: Python<'_>, failure: Failure) -> PyErr {
     let message = error.to_string();
     let path = |p: &std::path::Path| Some(p.display().to_string());
     match &error {
-        Error::Io { path: p, .. } => raise(py, "InputError", message, &[("key", known_key), ("path", path(p))]),
+        Error::Io { path: p, source } => match source.raw_os_error() {
+            Some(errno) => os_error(py, errno, p),
+            None => raise(py, "InputError", message, &[("key", known_key), ("path", path(p))]),
+        },
         Error::Parse { path: p, message: m } => {
             let key = known_key.or_else(|| leading_key(m));
             raise(py, "InputError", message, &[("key", key), ("path", path(p))])
@@ -83,6 +98,9 @@ pub fn to_py(py: Python<'_>, failure: Failure) -> PyErr {
         Error::Write { path: p, .. } => raise(py, "OutputError", message, &[("path", path(p))]),
         Error::Output { .. } => raise(py, "OutputError", message, &[]),
         Error::Numerical { stage, .. } => raise(py, "NumericalError", message, &[("stage", Some(stage.to_string()))]),
+        // Only a Ctrl-C cancels a job, and the caller has then raised KeyboardInterrupt already; should a cancelled
+        // job's error reach Python anyway, it is that.
+        Error::Cancelled => pyo3::exceptions::PyKeyboardInterrupt::new_err(message),
     }
 }
 

@@ -3,14 +3,14 @@
 //! released and Ctrl-C honoured ([`crate::worker`]).
 
 use crate::convert::to_json;
-use crate::drive::{steps_from_json, with_steps, DriveKeys};
-use crate::errors::{solve_error, to_py, Failure};
+use crate::drive::{with_steps, DriveKeys};
+use crate::errors::{solve_error, to_py};
 use crate::report::PyReport;
 use crate::scene::PyScene;
 use crate::worker;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use rollbem::pipeline::Model;
+use rollbem::pipeline::{Model, Warm};
 use rollbem::results::Report;
 use rollbem::scene::document::StepTable;
 use rollbem::scene::Scene;
@@ -45,33 +45,61 @@ pub struct PyModel {
     inner: Arc<Model>,
 }
 
-/// A drive argument: a `Scene`, or a mapping of drive keys merged with keyword drive keys.
-fn job_of(model: &Model, item: Option<&Bound<'_, PyAny>>, kwargs: Option<&Bound<'_, PyDict>>) -> Result<Job, Failure> {
+/// The `TypeError` of an argument of the wrong kind (`what` says what it must be).
+pub fn wrong_type(obj: &Bound<'_, PyAny>, what: &str) -> PyErr {
+    let ty = obj.get_type().name().map(|n| n.to_string()).unwrap_or_else(|_| "?".into());
+    pyo3::exceptions::PyTypeError::new_err(format!("{what}, not {ty}"))
+}
+
+/// A drive argument: a `Scene`, or a mapping of drive keys merged with keyword drive keys. A key given both in the
+/// mapping and as a keyword is bad input naming `drive.KEY`; an argument that is neither a `Scene` nor a mapping is
+/// a `TypeError`.
+fn job_of(
+    py: Python<'_>,
+    model: &Model,
+    item: Option<&Bound<'_, PyAny>>,
+    kwargs: Option<&Bound<'_, PyDict>>,
+) -> PyResult<Job> {
     let base = model.scene();
+    let invalid = |field: String, message: String| {
+        to_py(py, rollbem::Error::Invalid { path: base.origin().to_path_buf(), field, message }.into())
+    };
     if let Some(item) = item {
         if let Ok(s) = item.cast::<PyScene>() {
             if kwargs.is_some_and(|k| !k.is_empty()) {
-                let error = rollbem::Error::Invalid {
-                    path: base.origin().to_path_buf(),
-                    field: "drive".into(),
-                    message: "give a Scene or drive keys, not both (use scene.with_drive(...))".into(),
-                };
-                return Err(error.into());
+                return Err(invalid(
+                    "drive".into(),
+                    "give a Scene or drive keys, not both (use scene.with_drive(...))".into(),
+                ));
             }
             return Ok(Job::Scene(Box::new(s.get().inner.clone())));
         }
     }
     let mut value = match item {
-        Some(m) => to_json(m, "drive", base.origin())?,
+        Some(m) => to_json(m, "drive", base.origin()).map_err(|f| to_py(py, f))?,
         None => serde_json::Value::Object(Default::default()),
     };
-    if let (Some(kw), serde_json::Value::Object(map)) = (kwargs, &mut value) {
+    let serde_json::Value::Object(map) = &mut value else {
+        return Err(wrong_type(
+            item.unwrap_or(&py.None().into_bound(py)),
+            "a drive is a Scene or a mapping of drive keys",
+        ));
+    };
+    if let Some(kw) = kwargs {
         for (k, v) in kw.iter() {
-            let k = k.extract::<String>().map_err(|e| crate::errors::keyed(base.origin(), "drive", e.to_string()))?;
-            map.insert(k.clone(), to_json(&v, &format!("drive.{k}"), base.origin())?);
+            let k = k.extract::<String>()?;
+            if map.contains_key(&k) {
+                return Err(invalid(
+                    format!("drive.{k}"),
+                    format!("`{k}` given twice: in the drive mapping and as a keyword argument"),
+                ));
+            }
+            map.insert(k.clone(), to_json(&v, &format!("drive.{k}"), base.origin()).map_err(|f| to_py(py, f))?);
         }
     }
-    Ok(Job::Drive(DriveKeys::from_json(value, base)?))
+    let keys = DriveKeys::from_json(value, base).map_err(|f| to_py(py, f))?;
+    keys.check(base).map_err(|e| to_py(py, e.into()))?;
+    Ok(Job::Drive(keys))
 }
 
 /// Reports as Python objects; with `check`, the `SolveError` of the first one whose runs did not all end as the
@@ -130,8 +158,12 @@ impl PyModel {
     /// or a mapping of drive keys; keyword drive keys may be given instead (`model.solve(creepage=1e-3)`). Drive
     /// keys: `normal_approach` | `normal_load`, `tangential_shift` | `tangential_load`, `rotation` | `moment`, and
     /// `creepage`; each changes that degree of freedom of the scene's drive and keeps the others (units and signs
-    /// of the scene file). With `check=True` a run that did not end with the status the scene expects raises
-    /// `SolveError` (with the report attached); otherwise the status is in the report.
+    /// of the scene file: d_N, d_T lengths, P, Q force per unit thickness, φ radians, M moment per unit thickness,
+    /// ξ dimensionless). A key given both in the mapping and as a keyword, or both keys of one degree of freedom
+    /// (or `creepage` with `tangential_load` in steady rolling), is an `InputError` naming `drive.KEY`; a `drive`
+    /// that is neither `None`, a `Scene` nor a mapping is a `TypeError`. With `check=True` a run that did not end
+    /// with the status the scene expects raises `SolveError` (with the report attached); otherwise the status is in
+    /// the report.
     #[pyo3(signature = (drive = None, *, check = false, **drive_keys))]
     fn solve(
         &self,
@@ -140,11 +172,11 @@ impl PyModel {
         check: bool,
         drive_keys: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<Py<PyReport>> {
-        let job = job_of(&self.inner, drive, drive_keys).map_err(|f| to_py(py, f))?;
+        let job = job_of(py, &self.inner, drive, drive_keys)?;
         let model = self.inner.clone();
-        let report = worker::run(py, move |_| {
+        let report = worker::run(py, move |cancel| {
             let scene = job.scene(model.scene())?;
-            Ok(model.solve(&scene)?)
+            Ok(model.solve_with(&scene, &mut Warm::default(), cancel)?)
         })?;
         Ok(finish(py, vec![report], check)?.remove(0))
     }
@@ -157,37 +189,34 @@ impl PyModel {
     fn solve_all(&self, py: Python<'_>, drives: &Bound<'_, PyAny>, check: bool) -> PyResult<Vec<Py<PyReport>>> {
         let mut jobs = Vec::new();
         for item in drives.try_iter()? {
-            jobs.push(job_of(&self.inner, Some(&item?), None).map_err(|f| to_py(py, f))?);
+            jobs.push(job_of(py, &self.inner, Some(&item?), None)?);
         }
+        self.inner.check_result_count(jobs.len()).map_err(|e| to_py(py, e.into()))?;
         let model = self.inner.clone();
         let reports = worker::run(py, move |cancel| {
             let mut out = Vec::with_capacity(jobs.len());
             // Each drive starts from the previous one's solutions (the answers do not depend on it; the work does).
-            let mut warm = rollbem::pipeline::Warm::default();
+            let mut warm = Warm::default();
             for job in jobs {
-                if cancel.raised() {
-                    break;
-                }
                 let scene = job.scene(model.scene())?;
-                out.push(model.solve_warm(&scene, &mut warm)?);
+                out.push(model.solve_with(&scene, &mut warm, cancel)?);
             }
             Ok(out)
         })?;
         finish(py, reports, check)
     }
 
-    /// Walk a load path on this model: `steps` is a list of mappings with the keys of `[[steps]]` (drive keys,
-    /// `substeps`, `roll`), friction with memory from substep to substep. The report's `steps` hold every substep
+    /// Walk a load path on this model: `steps` is a sequence of mappings with the keys of `[[steps]]` (drive keys,
+    /// `substeps`, `roll`; `TypeError` for anything but a sequence), friction with memory from substep to substep. The report's `steps` hold every substep
     /// and `history()` gives them as arrays. `check` as for `solve`.
     #[pyo3(signature = (steps, *, check = false))]
     fn solve_path(&self, py: Python<'_>, steps: &Bound<'_, PyAny>, check: bool) -> PyResult<Py<PyReport>> {
         let base = self.inner.scene();
-        let steps =
-            to_json(steps, "steps", base.origin()).and_then(|v| steps_from_json(v, base)).map_err(|f| to_py(py, f))?;
+        let steps = crate::drive::path_of(py, steps, base)?;
         let model = self.inner.clone();
-        let report = worker::run(py, move |_| {
+        let report = worker::run(py, move |cancel| {
             let scene = Job::Path(steps).scene(model.scene())?;
-            Ok(model.solve(&scene)?)
+            Ok(model.solve_with(&scene, &mut Warm::default(), cancel)?)
         })?;
         Ok(finish(py, vec![report], check)?.remove(0))
     }
@@ -209,7 +238,8 @@ impl PyModel {
 #[pyo3(signature = (scene, *, check = false))]
 pub fn run(py: Python<'_>, scene: &PyScene, check: bool) -> PyResult<Py<PyReport>> {
     let scene = scene.inner.clone();
-    let report = worker::run(py, move |_| Ok(rollbem::pipeline::run_scene(&scene)?))?;
+    let report =
+        worker::run(py, move |cancel| Ok(Model::build(&scene)?.solve_with(&scene, &mut Warm::default(), cancel)?))?;
     Ok(finish(py, vec![report], check)?.remove(0))
 }
 

@@ -1,18 +1,34 @@
 //! `rollbem.Report`, `rollbem.Run`, `rollbem.Step`, `rollbem.Residuals`: the result document of a solve
 //! ([`rollbem::results::Report`]) read from Python, node results as NumPy arrays.
 //!
-//! The document stays in Rust (shared by its runs); arrays and dicts are made when asked for, a new one each time.
+//! The document stays in Rust (shared by its runs). What it holds is made into Python objects once, when first
+//! asked for, and kept: a report's `Run` and `Step` objects, a run's node arrays and its stresses, a path's history
+//! arrays. So `run.pressure is run.pressure`, and a loop over `run.pressure[i]` reads one array. The kept NumPy
+//! arrays are read-only (their `WRITEABLE` flag cleared; they do not own their memory, so a caller cannot set it
+//! back): one caller cannot change what another reads. Dicts (`timing`, `work`, `contact`, ...) are small and
+//! made anew on each access, so a caller may change its copy.
+//!
+//! A run's node arrays are its **answer**: the nodes of a run whose status is `solved`
+//! ([`SolverRun::answer_nodes`]), and none (arrays of shape (0,)) for any other status. A run judged
+//! `contact_at_zone_edge` or `kinematics_out_of_range` keeps the discrete answer the harness refused as the
+//! evidence for its verdict: in the document (`to_dict()["nodes"]`, the JSON), not in the arrays, which would pass
+//! it off as an answer. Every figure derived from the nodes (`stick_zone`, `state`, `n_nodes`) follows the same
+//! rule, as the library's own tables do.
+//!
 //! Units are the scene's; signs as in the crate docs ("Conventions"): tractions act on the wheel, pressure p ≥ 0,
 //! shear q = t_x (+x); x along the flat, the contact centred at x = 0.
 
 use crate::convert::to_python;
 use crate::errors::{solve_error, to_py};
 use crate::stresses::PyStresses;
-use numpy::PyArray1;
+use numpy::{Element, PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::sync::PyOnceLock;
+use pyo3::types::{PyDict, PyTuple};
+use rollbem::formulation::{Dof, Drive};
 use rollbem::post::{NodeResult, NodeState};
 use rollbem::results::{Report, SolverRun};
+use std::collections::BTreeMap;
 use std::sync::Arc;
 
 /// The names of the node state codes of [`PyRun::state`], by code.
@@ -28,12 +44,33 @@ fn state_code(s: NodeState) -> i8 {
     }
 }
 
+/// A NumPy array made read-only: its `WRITEABLE` flag cleared. The arrays the binding keeps are made from Rust
+/// vectors and do not own their memory, so NumPy refuses to set the flag back (`ValueError`).
+pub fn read_only<'py, T: Element, D: numpy::ndarray::Dimension>(
+    array: Bound<'py, numpy::PyArray<T, D>>,
+) -> PyResult<Bound<'py, numpy::PyArray<T, D>>> {
+    let writable = array.try_readwrite().map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(e.to_string()))?;
+    drop(writable.make_nonwriteable());
+    Ok(array)
+}
+
+/// A read-only float array of `values`.
+fn floats(py: Python<'_>, values: Vec<f64>) -> PyResult<Py<PyArray1<f64>>> {
+    Ok(read_only(PyArray1::from_vec(py, values))?.unbind())
+}
+
 /// The result document of one solve: the scene, mesh facts, numerical health, the references, one run per solver
 /// and, for a load path, every substep's runs.
 #[pyclass(name = "Report", module = "rollbem", frozen)]
 pub struct PyReport {
     /// The document.
     pub inner: Arc<Report>,
+    /// The runs as `Run` objects, made once.
+    runs: PyOnceLock<Py<PyTuple>>,
+    /// The substeps as `Step` objects, made once.
+    steps: PyOnceLock<Py<PyTuple>>,
+    /// Each solver's path history (`history()`), made once for all solvers.
+    histories: PyOnceLock<BTreeMap<String, History>>,
 }
 
 /// Where a run sits in its report.
@@ -45,11 +82,54 @@ enum At {
     Step(usize, usize),
 }
 
-/// One solver's run: status, resultants, rigid motion, residuals and the per-node results.
+/// One solver's run: status, resultants, rigid motion, residuals and the per-node results (its answer: none unless
+/// solved; see the module docs).
 #[pyclass(name = "Run", module = "rollbem", frozen)]
 pub struct PyRun {
     report: Arc<Report>,
     at: At,
+    /// The node arrays, made on first access.
+    arrays: PyOnceLock<NodeArrays>,
+    /// The wheel's stresses, made on first access.
+    stresses: PyOnceLock<Option<Py<PyStresses>>>,
+    /// The counter-body's stresses, made on first access.
+    counter_body_stresses: PyOnceLock<Option<Py<PyStresses>>>,
+}
+
+/// A run's node arrays (read-only) and state names, made once from its answer nodes.
+struct NodeArrays {
+    x: Py<PyArray1<f64>>,
+    y: Py<PyArray1<f64>>,
+    pressure: Py<PyArray1<f64>>,
+    shear: Py<PyArray1<f64>>,
+    gap: Py<PyArray1<f64>>,
+    slip: Py<PyArray1<f64>>,
+    u_x: Py<PyArray1<f64>>,
+    u_y: Py<PyArray1<f64>>,
+    slip_velocity: Py<PyArray1<f64>>,
+    state: Py<PyArray1<i8>>,
+    state_names: Py<PyTuple>,
+}
+
+impl NodeArrays {
+    /// The arrays of `nodes`, NaN where a value does not exist.
+    fn of(py: Python<'_>, nodes: &[NodeResult]) -> PyResult<NodeArrays> {
+        let col = |f: &dyn Fn(&NodeResult) -> f64| floats(py, nodes.iter().map(f).collect());
+        let nan = f64::NAN;
+        Ok(NodeArrays {
+            x: col(&|n| n.x)?,
+            y: col(&|n| n.y)?,
+            pressure: col(&|n| n.pressure)?,
+            shear: col(&|n| n.shear)?,
+            gap: col(&|n| n.gap)?,
+            slip: col(&|n| n.slip.unwrap_or(nan))?,
+            u_x: col(&|n| n.u_x.unwrap_or(nan))?,
+            u_y: col(&|n| n.u_y)?,
+            slip_velocity: col(&|n| n.slip_velocity.unwrap_or(nan))?,
+            state: read_only(PyArray1::from_vec(py, nodes.iter().map(|n| state_code(n.state)).collect()))?.unbind(),
+            state_names: PyTuple::new(py, nodes.iter().map(|n| NODE_STATES[state_code(n.state) as usize]))?.unbind(),
+        })
+    }
 }
 
 /// One substep of a load path: where it is on the path and every solver's run at its end.
@@ -57,6 +137,8 @@ pub struct PyRun {
 pub struct PyStep {
     report: Arc<Report>,
     index: usize,
+    /// The runs as `Run` objects, made once.
+    runs: PyOnceLock<Py<PyTuple>>,
 }
 
 /// Solver-independent residuals of a run's physical conditions, relative (see `rollbem::post::evaluate`).
@@ -93,25 +175,119 @@ impl PyResiduals {
     }
 }
 
+/// The `KeyError` of a solver the report has no run of.
+fn no_run(report: &Report, solver: Option<&str>) -> PyErr {
+    let have: Vec<&str> = report.runs.iter().map(|r| r.solver.name()).collect();
+    let have = if have.is_empty() { "none".to_string() } else { have.join(", ") };
+    let what = match solver {
+        Some(name) => format!("no run of solver '{name}' in this report (its runs: {have})"),
+        None => "the report has no runs".to_string(),
+    };
+    pyo3::exceptions::PyKeyError::new_err(what)
+}
+
+/// The index of the run of `solver` (the first run when `None`) in `report.runs`.
+fn run_index(report: &Report, solver: Option<&str>) -> PyResult<usize> {
+    let i = match solver {
+        None => (!report.runs.is_empty()).then_some(0),
+        Some(name) => report.runs.iter().position(|r| r.solver.name() == name),
+    };
+    i.ok_or_else(|| no_run(report, solver))
+}
+
 impl PyReport {
     /// Wrap a document.
     pub fn new(inner: Report) -> PyReport {
-        PyReport { inner: Arc::new(inner) }
+        PyReport {
+            inner: Arc::new(inner),
+            runs: PyOnceLock::new(),
+            steps: PyOnceLock::new(),
+            histories: PyOnceLock::new(),
+        }
     }
 
-    fn run_at(&self, at: At) -> PyRun {
-        PyRun { report: self.inner.clone(), at }
+    /// The `Run` objects, made on first access.
+    fn run_objects<'py>(&self, py: Python<'py>) -> PyResult<&Bound<'py, PyTuple>> {
+        let made = self.runs.get_or_try_init(py, || -> PyResult<Py<PyTuple>> {
+            let runs = (0..self.inner.runs.len())
+                .map(|i| Py::new(py, PyRun::new(self.inner.clone(), At::Final(i))))
+                .collect::<PyResult<Vec<_>>>()?;
+            Ok(PyTuple::new(py, runs)?.unbind())
+        })?;
+        Ok(made.bind(py))
     }
 }
 
-/// A float array of the nodes.
-fn column<'py>(py: Python<'py>, nodes: &[NodeResult], f: impl Fn(&NodeResult) -> f64) -> Bound<'py, PyArray1<f64>> {
-    PyArray1::from_vec(py, nodes.iter().map(f).collect())
+/// A load path's history for one solver: one column per quantity, one entry per substep that solver reached.
+struct History {
+    /// The float and integer columns (read-only arrays), by name.
+    columns: Vec<(&'static str, Py<PyAny>)>,
+    /// `status` per substep.
+    status: Py<PyTuple>,
+}
+
+impl History {
+    /// The history of `solver` in `report`.
+    fn of(py: Python<'_>, report: &Report, solver: &str) -> PyResult<History> {
+        use rollbem::results::StepResult;
+        let rows: Vec<(&StepResult, &SolverRun)> = report
+            .steps
+            .iter()
+            .filter_map(|st| st.runs.iter().find(|r| r.solver.name() == solver).map(|r| (st, r)))
+            .collect();
+        let nan = f64::NAN;
+        let col = |f: &dyn Fn(&StepResult, &SolverRun) -> f64| -> PyResult<Py<PyAny>> {
+            Ok(floats(py, rows.iter().map(|(s, r)| f(s, r)).collect())?.into_any())
+        };
+        let ints = |f: &dyn Fn(&StepResult) -> usize| -> PyResult<Py<PyAny>> {
+            let v: Vec<i64> = rows.iter().map(|(s, _)| f(s) as i64).collect();
+            Ok(read_only(PyArray1::from_vec(py, v))?.into_any().unbind())
+        };
+        let columns = vec![
+            ("step", ints(&|s| s.step)?),
+            ("substep", ints(&|s| s.substep)?),
+            ("rolled", col(&|s, _| s.rolled)?),
+            ("normal_load", col(&|_, r| r.resultants.map_or(nan, |f| f.normal))?),
+            ("tangential_load", col(&|_, r| r.resultants.map_or(nan, |f| f.tangential))?),
+            ("moment", col(&|_, r| r.resultants.map_or(nan, |f| f.moment))?),
+            ("normal_approach", col(&|_, r| r.rigid_body.map_or(nan, |b| b.normal))?),
+            ("tangential_shift", col(&|_, r| r.rigid_body.and_then(|b| b.tangential).unwrap_or(nan))?),
+            ("rotation", col(&|_, r| r.rigid_body.map_or(nan, |b| b.rotation))?),
+            ("creepage", col(&|_, r| r.rolling.and_then(|x| x.creepage).unwrap_or(nan))?),
+            ("dissipated", col(&|_, r| r.history.map_or(nan, |h| h.dissipated))?),
+            ("dissipated_total", col(&|_, r| r.history.map_or(nan, |h| h.dissipated_total))?),
+        ];
+        let status = PyTuple::new(py, rows.iter().map(|(_, r)| r.status.name()))?.unbind();
+        Ok(History { columns, status })
+    }
+}
+
+/// A drive as a scene's `[drive]` table gives it: per degree of freedom the key that names what is prescribed
+/// (`normal_approach` or `normal_load`, `tangential_shift` or `tangential_load`, `rotation` or `moment`) and its
+/// value, in the scene's units; a tangential or rotational DOF held at zero displacement is left out, as a scene
+/// leaves it out (an absent key means zero displacement there, and a half-plane has no rotation to name).
+fn drive_dict<'py>(py: Python<'py>, drive: &Drive) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    match drive.normal {
+        Dof::Displacement(v) => d.set_item("normal_approach", v)?,
+        Dof::Load(v) => d.set_item("normal_load", v)?,
+    }
+    for (dof, displacement, load) in
+        [(drive.tangential, "tangential_shift", "tangential_load"), (drive.rotational, "rotation", "moment")]
+    {
+        match dof {
+            Dof::Displacement(0.0) => {}
+            Dof::Displacement(v) => d.set_item(displacement, v)?,
+            Dof::Load(v) => d.set_item(load, v)?,
+        }
+    }
+    Ok(d)
 }
 
 #[pymethods]
 impl PyReport {
-    /// Read a result document (`rollbem run --json FILE`); one of another schema is refused (`InputError`).
+    /// Read a result document (`rollbem run --json FILE`); one of another schema is refused (`InputError`), a file
+    /// that is not there raises `FileNotFoundError`.
     #[staticmethod]
     fn read(py: Python<'_>, path: std::path::PathBuf) -> PyResult<PyReport> {
         Report::read(&path).map(PyReport::new).map_err(|e| to_py(py, e.into()))
@@ -123,31 +299,31 @@ impl PyReport {
         Report::from_json(text, std::path::Path::new("<json>")).map(PyReport::new).map_err(|e| to_py(py, e.into()))
     }
 
-    /// One run per solver (for a load path: its run at the last step it reached).
+    /// One run per solver (for a load path: its run at the last step it reached), as a tuple made once: the same
+    /// `Run` objects on every access.
     #[getter]
-    fn runs(&self) -> Vec<PyRun> {
-        (0..self.inner.runs.len()).map(|i| self.run_at(At::Final(i))).collect()
+    fn runs(&self, py: Python<'_>) -> PyResult<Py<PyTuple>> {
+        Ok(self.run_objects(py)?.clone().unbind())
     }
 
     /// The run of `solver` (a registry name such as `"lemke"`), or the first run when `solver` is `None`; `KeyError`
     /// when the report has no run of that solver.
     #[pyo3(signature = (solver = None))]
-    fn run(&self, solver: Option<&str>) -> PyResult<PyRun> {
-        let i = match solver {
-            None if !self.inner.runs.is_empty() => Some(0),
-            None => None,
-            Some(name) => self.inner.runs.iter().position(|r| r.solver.name() == name),
-        };
-        i.map(|i| self.run_at(At::Final(i))).ok_or_else(|| {
-            let have: Vec<&str> = self.inner.runs.iter().map(|r| r.solver.name()).collect();
-            pyo3::exceptions::PyKeyError::new_err(format!("no run of {solver:?} (runs: {})", have.join(", ")))
-        })
+    fn run(&self, py: Python<'_>, solver: Option<&str>) -> PyResult<Py<PyAny>> {
+        let i = run_index(&self.inner, solver)?;
+        Ok(self.run_objects(py)?.get_item(i)?.unbind())
     }
 
-    /// A load path's substeps (empty for a one-step scene).
+    /// A load path's substeps (empty for a one-step scene), as a tuple made once.
     #[getter]
-    fn steps(&self) -> Vec<PyStep> {
-        (0..self.inner.steps.len()).map(|index| PyStep { report: self.inner.clone(), index }).collect()
+    fn steps(&self, py: Python<'_>) -> PyResult<Py<PyTuple>> {
+        let made = self.steps.get_or_try_init(py, || -> PyResult<Py<PyTuple>> {
+            let steps = (0..self.inner.steps.len())
+                .map(|index| Py::new(py, PyStep { report: self.inner.clone(), index, runs: PyOnceLock::new() }))
+                .collect::<PyResult<Vec<_>>>()?;
+            Ok(PyTuple::new(py, steps)?.unbind())
+        })?;
+        Ok(made.clone_ref(py))
     }
 
     /// The scene as solved.
@@ -171,11 +347,20 @@ impl PyReport {
         }
     }
 
-    /// Hertz at the run's load (frictionless scenes), as a dict (`half_width` a, `peak_pressure` p0, `load` P), or
-    /// `None`.
+    /// Hertz at the run's load (frictionless scenes), as a dict (`half_width` a, length; `peak_pressure` p0,
+    /// stress; `load` P, force per unit thickness), or `None`.
     #[getter]
     fn hertz<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         to_python(py, &self.inner.references.hertz)
+    }
+
+    /// Dundurs' β of the pair, as the document's references give it: body 1 the wheel, body 2 the counter-body (a
+    /// rigid flat has 1/G₂ = 0); β = [(1 − 2ν₁)/G₁ − (1 − 2ν₂)/G₂] / [2((1 − ν₁)/G₁ + (1 − ν₂)/G₂)],
+    /// dimensionless. Swapping the bodies changes its sign; an elastic wheel on a rigid flat has
+    /// β = (1 − 2ν)/(2(1 − ν)) > 0; 0 uncouples the normal and tangential problems.
+    #[getter]
+    fn dundurs_beta(&self) -> f64 {
+        self.inner.references.dundurs_beta
     }
 
     /// The checks against theory and between solvers, as dicts (`name`, `measured`, `reference`, `error`,
@@ -198,7 +383,7 @@ impl PyReport {
     }
 
     /// Mesh facts as a dict (`model`, `elements`, `nodes`, `contact_nodes`, `element`, `system_size`,
-    /// `contact_element_length`).
+    /// `contact_element_length` in the length unit).
     #[getter]
     fn mesh<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         to_python(py, &self.inner.mesh)
@@ -210,56 +395,31 @@ impl PyReport {
         to_python(py, &self.inner.diagnostics)
     }
 
-    /// A load path's history for one solver (the first run's when `None`): a dict of arrays, one entry per substep
-    /// that solver reached: `step`, `substep`, `rolled` (distance rolled), the resultants `normal_load`,
-    /// `tangential_load`, `moment`, the rigid motion `normal_approach`, `tangential_shift`, `rotation`, the
-    /// `creepage`, `dissipated` and `dissipated_total` (frictional energy per unit thickness), NaN where a value
-    /// does not exist (a run that did not solve); and `status`, a list of str.
+    /// A load path's history for one solver (the first run's when `None`; `KeyError`, as `run`, for a solver the
+    /// report has no run of): a new dict of arrays made once per report (read-only, the same arrays on every
+    /// call), one entry per substep that solver reached: `step`, `substep` (int64), `rolled` (distance rolled,
+    /// length), the resultants `normal_load`, `tangential_load` (force per unit thickness), `moment` (force × length
+    /// per unit thickness), the rigid motion `normal_approach`, `tangential_shift` (length), `rotation` (radians),
+    /// the `creepage` (dimensionless), `dissipated` and `dissipated_total` (frictional energy per unit thickness),
+    /// NaN where a value does not exist (a substep whose run did not solve); and `status`, a tuple of str. A
+    /// one-step report has no substeps: every array is empty.
     #[pyo3(signature = (solver = None))]
     fn history<'py>(&self, py: Python<'py>, solver: Option<&str>) -> PyResult<Bound<'py, PyDict>> {
-        let want = match solver {
-            Some(s) => s.to_string(),
-            None => self.inner.runs.first().map(|r| r.solver.name().to_string()).unwrap_or_default(),
-        };
-        let mut rows: Vec<(&rollbem::results::StepResult, &SolverRun)> = Vec::new();
-        for st in &self.inner.steps {
-            if let Some(r) = st.runs.iter().find(|r| r.solver.name() == want) {
-                rows.push((st, r));
+        let name = self.inner.runs[run_index(&self.inner, solver)?].solver.name();
+        let all = self.histories.get_or_try_init(py, || -> PyResult<BTreeMap<String, History>> {
+            let mut all = BTreeMap::new();
+            for r in &self.inner.runs {
+                let solver = r.solver.name();
+                all.insert(solver.to_string(), History::of(py, &self.inner, solver)?);
             }
-        }
+            Ok(all)
+        })?;
+        let h = all.get(name).ok_or_else(|| no_run(&self.inner, Some(name)))?;
         let out = PyDict::new(py);
-        let nan = f64::NAN;
-        let col = |f: &dyn Fn(&rollbem::results::StepResult, &SolverRun) -> f64| -> Vec<f64> {
-            rows.iter().map(|(s, r)| f(s, r)).collect()
-        };
-        let ints = |f: &dyn Fn(&rollbem::results::StepResult) -> usize| -> Vec<i64> {
-            rows.iter().map(|(s, _)| f(s) as i64).collect()
-        };
-        out.set_item("step", PyArray1::from_vec(py, ints(&|s| s.step)))?;
-        out.set_item("substep", PyArray1::from_vec(py, ints(&|s| s.substep)))?;
-        out.set_item("rolled", PyArray1::from_vec(py, col(&|s, _| s.rolled)))?;
-        out.set_item("normal_load", PyArray1::from_vec(py, col(&|_, r| r.resultants.map_or(nan, |f| f.normal))))?;
-        out.set_item(
-            "tangential_load",
-            PyArray1::from_vec(py, col(&|_, r| r.resultants.map_or(nan, |f| f.tangential))),
-        )?;
-        out.set_item("moment", PyArray1::from_vec(py, col(&|_, r| r.resultants.map_or(nan, |f| f.moment))))?;
-        out.set_item("normal_approach", PyArray1::from_vec(py, col(&|_, r| r.rigid_body.map_or(nan, |b| b.normal))))?;
-        out.set_item(
-            "tangential_shift",
-            PyArray1::from_vec(py, col(&|_, r| r.rigid_body.and_then(|b| b.tangential).unwrap_or(nan))),
-        )?;
-        out.set_item("rotation", PyArray1::from_vec(py, col(&|_, r| r.rigid_body.map_or(nan, |b| b.rotation))))?;
-        out.set_item(
-            "creepage",
-            PyArray1::from_vec(py, col(&|_, r| r.rolling.and_then(|x| x.creepage).unwrap_or(nan))),
-        )?;
-        out.set_item("dissipated", PyArray1::from_vec(py, col(&|_, r| r.history.map_or(nan, |h| h.dissipated))))?;
-        out.set_item(
-            "dissipated_total",
-            PyArray1::from_vec(py, col(&|_, r| r.history.map_or(nan, |h| h.dissipated_total))),
-        )?;
-        out.set_item("status", rows.iter().map(|(_, r)| r.status.name()).collect::<Vec<_>>())?;
+        for (k, v) in &h.columns {
+            out.set_item(*k, v.bind(py))?;
+        }
+        out.set_item("status", h.status.bind(py))?;
         Ok(out)
     }
 
@@ -296,12 +456,32 @@ impl PyReport {
 }
 
 impl PyRun {
+    fn new(report: Arc<Report>, at: At) -> PyRun {
+        PyRun {
+            report,
+            at,
+            arrays: PyOnceLock::new(),
+            stresses: PyOnceLock::new(),
+            counter_body_stresses: PyOnceLock::new(),
+        }
+    }
+
     fn get(&self) -> &SolverRun {
         match self.at {
             At::Final(i) => &self.report.runs[i],
             At::Step(s, i) => &self.report.steps[s].runs[i],
         }
     }
+
+    /// The node arrays of the answer (module docs), made on first access.
+    fn arrays(&self, py: Python<'_>) -> PyResult<&NodeArrays> {
+        self.arrays.get_or_try_init(py, || NodeArrays::of(py, self.get().answer_nodes()))
+    }
+}
+
+/// A kept array, as the getter returns it.
+fn kept<T>(py: Python<'_>, a: &Py<T>) -> Py<T> {
+    a.clone_ref(py)
 }
 
 #[pymethods]
@@ -319,7 +499,7 @@ impl PyRun {
         self.get().status.name()
     }
 
-    /// Whether the status is `solved`.
+    /// Whether the status is `solved`: whether the run has an answer (node arrays, resultants, rigid motion).
     #[getter]
     fn solved(&self) -> bool {
         self.get().status == rollbem::status::Status::Solved
@@ -398,14 +578,14 @@ impl PyRun {
         self.get().resultants.map(|f| f.normal)
     }
 
-    /// Resultant Q = ∫q dx (+x); `None` unless solved.
+    /// Resultant Q = ∫q dx of the tractions on the wheel (force per unit thickness, +x); `None` unless solved.
     #[getter]
     fn tangential_load(&self) -> Option<f64> {
         self.get().resultants.map(|f| f.tangential)
     }
 
-    /// Moment M = Σ (x f_y − y f_x) of the tractions about the wheel centre (counter-clockwise); `None` unless
-    /// solved.
+    /// Moment M = Σ (x f_y − y f_x) of the tractions about the wheel centre (force × length per unit thickness,
+    /// counter-clockwise); `None` unless solved.
     #[getter]
     fn moment(&self) -> Option<f64> {
         self.get().resultants.map(|f| f.moment)
@@ -437,14 +617,16 @@ impl PyRun {
         self.get().rolling.and_then(|r| r.creepage)
     }
 
-    /// Contact figures as a dict (`x_min`, `x_max`, `half_width`, `peak_pressure`, `fit_half_width`,
-    /// `fit_peak_pressure`, `stick_x_min`, `stick_x_max`, node counts, ...), or `None` unless solved.
+    /// Contact figures as a dict (`x_min`, `x_max`, `half_width`, `fit_half_width`, `stick_x_min`, `stick_x_max`
+    /// in the length unit; `peak_pressure`, `fit_peak_pressure` in the stress unit; node counts, ...), or `None`
+    /// unless solved.
     #[getter]
     fn contact<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         to_python(py, &self.get().contact)
     }
 
-    /// The stick zone's edges (x of the outermost sticking nodes), or `None` (no friction, or nothing sticks).
+    /// The stick zone's edges (left, right; length unit), each midway between the outermost sticking node and its
+    /// neighbour, or `None`: no friction, nothing sticks, or no answer (a run not solved).
     #[getter]
     fn stick_zone(&self) -> Option<(f64, f64)> {
         let r = self.get();
@@ -454,92 +636,99 @@ impl PyRun {
         rollbem::post::stick_edges(r.answer_nodes())
     }
 
-    /// Number of contact nodes in the arrays below (0 for a run without an answer).
+    /// Number of contact nodes in the node arrays: the mesh's contact nodes for a solved run, 0 for any other status.
     #[getter]
     fn n_nodes(&self) -> usize {
-        self.get().nodes.len()
+        self.get().answer_nodes().len()
     }
 
-    /// x of each contact node (undeformed; length unit), shape (n,), float64.
+    /// x of each contact node (undeformed; length unit), shape (n_nodes,), float64, read-only.
     #[getter]
-    fn x<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        column(py, &self.get().nodes, |n| n.x)
+    fn x(&self, py: Python<'_>) -> PyResult<Py<PyArray1<f64>>> {
+        Ok(kept(py, &self.arrays(py)?.x))
     }
 
-    /// y of each contact node (undeformed; the flat is y = −R).
+    /// y of each contact node (undeformed; length unit; the flat is y = −R).
     #[getter]
-    fn y<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        column(py, &self.get().nodes, |n| n.y)
+    fn y(&self, py: Python<'_>) -> PyResult<Py<PyArray1<f64>>> {
+        Ok(kept(py, &self.arrays(py)?.y))
     }
 
     /// Pressure p = t_y ≥ 0 on the wheel at each node (stress unit).
     #[getter]
-    fn pressure<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        column(py, &self.get().nodes, |n| n.pressure)
+    fn pressure(&self, py: Python<'_>) -> PyResult<Py<PyArray1<f64>>> {
+        Ok(kept(py, &self.arrays(py)?.pressure))
     }
 
     /// Shear q = t_x on the wheel at each node (stress unit, +x; 0 without friction).
     #[getter]
-    fn shear<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        column(py, &self.get().nodes, |n| n.shear)
+    fn shear(&self, py: Python<'_>) -> PyResult<Py<PyArray1<f64>>> {
+        Ok(kept(py, &self.arrays(py)?.shear))
     }
 
     /// Gap g = g₀ + u_y to the flat at each node (length; 0 in contact).
     #[getter]
-    fn gap<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        column(py, &self.get().nodes, |n| n.gap)
+    fn gap(&self, py: Python<'_>) -> PyResult<Py<PyArray1<f64>>> {
+        Ok(kept(py, &self.arrays(py)?.gap))
     }
 
     /// Slip of the wheel relative to the flat at each node (length, +x; NaN where separated or not computed).
     #[getter]
-    fn slip<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        column(py, &self.get().nodes, |n| n.slip.unwrap_or(f64::NAN))
+    fn slip(&self, py: Python<'_>) -> PyResult<Py<PyArray1<f64>>> {
+        Ok(kept(py, &self.arrays(py)?.slip))
     }
 
-    /// Displacement u_x at each node, rigid motion included (length; NaN when the tangential problem was not
+    /// Displacement u_x at each node, rigid motion included (length, +x; NaN when the tangential problem was not
     /// built).
     #[getter]
-    fn u_x<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        column(py, &self.get().nodes, |n| n.u_x.unwrap_or(f64::NAN))
+    fn u_x(&self, py: Python<'_>) -> PyResult<Py<PyArray1<f64>>> {
+        Ok(kept(py, &self.arrays(py)?.u_x))
     }
 
     /// Displacement u_y at each node, rigid motion included (length, +y).
     #[getter]
-    fn u_y<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        column(py, &self.get().nodes, |n| n.u_y)
+    fn u_y(&self, py: Python<'_>) -> PyResult<Py<PyArray1<f64>>> {
+        Ok(kept(py, &self.arrays(py)?.u_y))
     }
 
     /// Slip velocity at each node (seed eq. 12; dimensionless, relative to the rolling speed; NaN without
     /// `[rolling]` or where not computed).
     #[getter]
-    fn slip_velocity<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        column(py, &self.get().nodes, |n| n.slip_velocity.unwrap_or(f64::NAN))
+    fn slip_velocity(&self, py: Python<'_>) -> PyResult<Py<PyArray1<f64>>> {
+        Ok(kept(py, &self.arrays(py)?.slip_velocity))
     }
 
-    /// Node state codes, int8: 0 stick, 1 slip, 2 contact (frictionless), 3 separated (`rollbem.NODE_STATES[code]`
-    /// is the name).
+    /// Node state codes, int8, read-only: 0 stick, 1 slip, 2 contact (frictionless), 3 separated
+    /// (`rollbem.NODE_STATES[code]` is the name).
     #[getter]
-    fn state<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<i8>> {
-        PyArray1::from_vec(py, self.get().nodes.iter().map(|n| state_code(n.state)).collect())
+    fn state(&self, py: Python<'_>) -> PyResult<Py<PyArray1<i8>>> {
+        Ok(kept(py, &self.arrays(py)?.state))
     }
 
-    /// Node state names (`"stick"`, `"slip"`, `"contact"`, `"separated"`).
+    /// Node state names (`"stick"`, `"slip"`, `"contact"`, `"separated"`), a tuple made once.
     #[getter]
-    fn state_names(&self) -> Vec<&'static str> {
-        self.get().nodes.iter().map(|n| NODE_STATES[state_code(n.state) as usize]).collect()
+    fn state_names(&self, py: Python<'_>) -> PyResult<Py<PyTuple>> {
+        Ok(kept(py, &self.arrays(py)?.state_names))
     }
 
-    /// The subsurface stresses (only with `[stresses]`, for a solved run), or `None`.
+    /// The subsurface stresses (only with `[stresses]`, for a solved run), or `None`; the same object on every
+    /// access.
     #[getter]
-    fn stresses(&self) -> Option<PyStresses> {
-        self.get().stresses.clone().map(PyStresses::new)
+    fn stresses(&self, py: Python<'_>) -> PyResult<Option<Py<PyStresses>>> {
+        let made = self.stresses.get_or_try_init(py, || -> PyResult<_> {
+            self.get().stresses.clone().map(|s| Py::new(py, PyStresses::new(s))).transpose()
+        })?;
+        Ok(made.as_ref().map(|s| s.clone_ref(py)))
     }
 
     /// The elastic counter-body's own subsurface stresses from the same tractions (with `[stresses]` and
     /// `[counter_body] kind = "half_plane"`, depth measured into the counter-body), or `None`.
     #[getter]
-    fn counter_body_stresses(&self) -> Option<PyStresses> {
-        self.get().counter_body_stresses.clone().map(PyStresses::new)
+    fn counter_body_stresses(&self, py: Python<'_>) -> PyResult<Option<Py<PyStresses>>> {
+        let made = self.counter_body_stresses.get_or_try_init(py, || -> PyResult<_> {
+            self.get().counter_body_stresses.clone().map(|s| Py::new(py, PyStresses::new(s))).transpose()
+        })?;
+        Ok(made.as_ref().map(|s| s.clone_ref(py)))
     }
 
     /// Raise `SolveError` unless the run ended with the status its scene expects (`solved` unless declared).
@@ -558,7 +747,8 @@ impl PyRun {
         Err(PyErr::from_value(cls.call((message,), Some(&kw))?))
     }
 
-    /// The run as a dict: exactly its entry in the JSON document.
+    /// The run as a dict: exactly its entry in the JSON document (for a run judged `contact_at_zone_edge` or
+    /// `kinematics_out_of_range`, `nodes` holds the refused answer, the verdict's evidence).
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         to_python(py, self.get())
     }
@@ -598,18 +788,25 @@ impl PyStep {
         self.report.steps[self.index].rolled
     }
 
-    /// The drive at the substep's end, as in the JSON document (per DOF `{"Displacement": v}` or `{"Load": v}`).
+    /// The drive at the substep's end with the keys of a scene's `[drive]`: per degree of freedom the one that names
+    /// what is prescribed there (`normal_approach` or `normal_load`, `tangential_shift` or `tangential_load`,
+    /// `rotation` or `moment`), in the scene's units; a tangential or rotational DOF held at zero displacement is
+    /// left out, as in a scene file. A drive mapping `Model.solve` and `Scene.with_drive` accept.
     #[getter]
-    fn drive<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        to_python(py, &self.report.steps[self.index].drive)
+    fn drive<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        drive_dict(py, &self.report.steps[self.index].drive)
     }
 
-    /// Every solver's run at the substep's end.
+    /// Every solver's run at the substep's end, as a tuple made once.
     #[getter]
-    fn runs(&self) -> Vec<PyRun> {
-        (0..self.report.steps[self.index].runs.len())
-            .map(|i| PyRun { report: self.report.clone(), at: At::Step(self.index, i) })
-            .collect()
+    fn runs(&self, py: Python<'_>) -> PyResult<Py<PyTuple>> {
+        let made = self.runs.get_or_try_init(py, || -> PyResult<Py<PyTuple>> {
+            let runs = (0..self.report.steps[self.index].runs.len())
+                .map(|i| Py::new(py, PyRun::new(self.report.clone(), At::Step(self.index, i))))
+                .collect::<PyResult<Vec<_>>>()?;
+            Ok(PyTuple::new(py, runs)?.unbind())
+        })?;
+        Ok(made.clone_ref(py))
     }
 
     fn __repr__(&self) -> String {

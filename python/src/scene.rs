@@ -2,7 +2,7 @@
 //! changed by dotted keys or by a drive, and read back as a dict or TOML.
 
 use crate::convert::{to_json, to_python, toml_document, typed};
-use crate::drive::{steps_from_json, with_steps, DriveKeys};
+use crate::drive::{path_of, with_steps, DriveKeys};
 use crate::errors::{keyed, to_py, Failure};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -74,7 +74,8 @@ impl PyScene {
         scene.map(PyScene::new).map_err(|f| to_py(py, f))
     }
 
-    /// Read, parse and validate a scene file.
+    /// Read, parse and validate a scene file; a file that is not there raises `FileNotFoundError` (Python's
+    /// `OSError` of the system's error), one that is not UTF-8 text `InputError`.
     #[staticmethod]
     fn from_file(py: Python<'_>, path: PathBuf) -> PyResult<PyScene> {
         let text = std::fs::read_to_string(&path)
@@ -83,7 +84,7 @@ impl PyScene {
     }
 
     /// A scene from a mapping of its tables (the TOML document as nested dicts), keyword arguments, or both
-    /// (keywords override the mapping's top-level keys).
+    /// (keywords override the mapping's top-level keys). `TypeError` when `tables` is not a mapping.
     #[staticmethod]
     #[pyo3(signature = (tables = None, **kwargs))]
     fn from_dict(
@@ -92,33 +93,33 @@ impl PyScene {
         kwargs: Option<&Bound<'_, PyDict>>,
     ) -> PyResult<PyScene> {
         let origin = code_origin();
+        let mut map = match tables {
+            Some(t) => match to_json(t, "", &origin).map_err(|f| to_py(py, f))? {
+                Value::Object(map) => map,
+                _ => return Err(crate::model::wrong_type(t, "a scene is a mapping of its tables")),
+            },
+            None => Default::default(),
+        };
         let made = (|| -> Result<Scene, Failure> {
-            let mut doc = match tables {
-                Some(t) => to_json(t, "", &origin)?,
-                None => Value::Object(Default::default()),
-            };
-            let Value::Object(map) = &mut doc else {
-                return Err(keyed(&origin, "", "a scene is a mapping of its tables".into()));
-            };
             if let Some(kw) = kwargs {
                 for (k, v) in kw.iter() {
                     let k = k.extract::<String>().map_err(|e| keyed(&origin, "", e.to_string()))?;
                     map.insert(k.clone(), to_json(&v, &k, &origin)?);
                 }
             }
-            from_json(doc, &origin)
+            from_json(Value::Object(map), &origin)
         })();
         made.map(PyScene::new).map_err(|f| to_py(py, f))
     }
 
     /// A changed copy: `changes` maps dotted keys (`"drive.normal_load"`, `"contact.friction"`, `"solvers.use"`) to
-    /// their new values (`None` removes a key); validated again.
+    /// their new values (`None` removes a key); validated again. `TypeError` when `changes` is not a mapping.
     fn edit(&self, py: Python<'_>, changes: &Bound<'_, PyAny>) -> PyResult<PyScene> {
         let origin = self.inner.origin().to_path_buf();
+        let Value::Object(changes) = to_json(changes, "", &origin).map_err(|f| to_py(py, f))? else {
+            return Err(crate::model::wrong_type(changes, "changes are a mapping of dotted keys to values"));
+        };
         let made = (|| -> Result<Scene, Failure> {
-            let Value::Object(changes) = to_json(changes, "", &origin)? else {
-                return Err(keyed(&origin, "", "changes are a mapping of dotted keys to values".into()));
-            };
             let mut doc = serde_json::to_value(self.inner.document())
                 .map_err(|e| keyed(&origin, "", format!("cannot serialise the scene: {e}")))?;
             for (k, v) in changes {
@@ -132,7 +133,8 @@ impl PyScene {
     /// The scene with another one-step drive: the keys of `[drive]` (`normal_approach` | `normal_load`,
     /// `tangential_shift` | `tangential_load`, `rotation` | `moment`) and `creepage`. A degree of freedom named by
     /// one of its keys is replaced, the others kept; in steady rolling `creepage` and `tangential_load` replace each
-    /// other. Units are the scene's; signs as in the scene file.
+    /// other. Units are the scene's; signs as in the scene file. Both keys of one degree of freedom (or `creepage`
+    /// with `tangential_load` in steady rolling) are an `InputError` naming the first.
     #[pyo3(signature = (**drive))]
     fn with_drive(&self, py: Python<'_>, drive: Option<&Bound<'_, PyDict>>) -> PyResult<PyScene> {
         let keys = match drive {
@@ -150,13 +152,11 @@ impl PyScene {
         self.inner.with_creepage(creepage).map(PyScene::new).map_err(|e| to_py(py, e.into()))
     }
 
-    /// The scene walking a load path: a list of step mappings with the keys of `[[steps]]` (the drive keys,
-    /// `substeps`, `roll`).
+    /// The scene walking a load path: a sequence of step mappings with the keys of `[[steps]]` (the drive keys,
+    /// `substeps`, `roll`); `TypeError` for anything but a sequence.
     fn with_steps(&self, py: Python<'_>, steps: &Bound<'_, PyAny>) -> PyResult<PyScene> {
-        let made = to_json(steps, "steps", self.inner.origin())
-            .and_then(|v| steps_from_json(v, &self.inner))
-            .and_then(|s| Ok(with_steps(&self.inner, s)?));
-        made.map(PyScene::new).map_err(|f| to_py(py, f))
+        let steps = path_of(py, steps, &self.inner)?;
+        with_steps(&self.inner, steps).map(PyScene::new).map_err(|e| to_py(py, e.into()))
     }
 
     /// The scene as a dict of its tables, defaults filled in (what a result document holds as `scene`).
@@ -213,7 +213,12 @@ impl PyScene {
         self.inner.contact_modulus()
     }
 
-    /// Dundurs' β of the pair (0: the normal and tangential problems uncouple).
+    /// Dundurs' second parameter β of the pair in plane strain (dimensionless; `rollbem::material::dundurs_beta`):
+    /// body 1 the wheel, body 2 the counter-body (a rigid flat has 1/G₂ = 0),
+    /// β = [(1 − 2ν₁)/G₁ − (1 − 2ν₂)/G₂] / [2((1 − ν₁)/G₁ + (1 − ν₂)/G₂)]. Swapping the bodies changes its sign;
+    /// an elastic wheel on a rigid flat has β = (1 − 2ν)/(2(1 − ν)) > 0; the more compliant body as the wheel gives
+    /// β > 0; 0 (identical materials, or an incompressible wheel on a rigid flat) uncouples the normal and
+    /// tangential problems.
     #[getter]
     fn dundurs_beta(&self) -> f64 {
         self.inner.dundurs_beta()
@@ -248,19 +253,21 @@ impl PyScene {
         })
     }
 
-    /// The prescribed creepage ξ, or `None`.
+    /// The prescribed creepage ξ (dimensionless, ξ > 0 braking), or `None`.
     #[getter]
     fn creepage(&self) -> Option<f64> {
         self.inner.creepage()
     }
 
-    /// The `[drive]` table as a dict (empty for a load path).
+    /// The `[drive]` table as a dict with its keys (`normal_approach` | `normal_load`, `tangential_shift` |
+    /// `tangential_load`, `rotation` | `moment`; the scene's units), empty for a load path.
     #[getter]
     fn drive<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         to_python(py, &self.inner.document().drive)
     }
 
-    /// The `[[steps]]` of a load path as a list of dicts (empty for a one-step scene).
+    /// The `[[steps]]` of a load path as a list of dicts with the keys of `[drive]`, `substeps` and `roll` (empty for
+    /// a one-step scene).
     #[getter]
     fn steps<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         to_python(py, &self.inner.document().steps)

@@ -3,23 +3,71 @@
 //! Axes and signs as in `rollbem::stresses`: x along the surface, depth z measured from the flat into the wheel;
 //! plane strain, tension positive (on the loaded surface σ_zz = −p and τ_xz = −q); the scene's stress unit. Every
 //! field is an array of shape (nz, nx): row j is depth `depth[j]`, column i is `x[i]`; NaN where a point has no value.
+//!
+//! Every array is made once, on first access, and kept read-only (as a run's node arrays, `crate::report`):
+//! `st["von_mises"] is st["von_mises"]`.
 
 use crate::convert::to_python;
+use crate::report::read_only;
 use numpy::ndarray::Array2;
 use numpy::{PyArray1, PyArray2};
 use pyo3::prelude::*;
+use pyo3::sync::PyOnceLock;
 use rollbem::stresses::{StressQuantity, StressResult};
+use std::collections::BTreeMap;
 
 /// The subsurface stresses of one run on the `[stresses]` grid.
 #[pyclass(name = "Stresses", module = "rollbem", frozen)]
 pub struct PyStresses {
     inner: StressResult,
+    /// `x`, `depth` and `surface_x`, made on first access.
+    axes: PyOnceLock<[Py<PyArray1<f64>>; 3]>,
+    /// The field of every quantity computed, made on first access.
+    fields: PyOnceLock<BTreeMap<&'static str, Py<PyArray2<f64>>>>,
+    /// The surface values of every quantity computed, made on first access.
+    surfaces: PyOnceLock<BTreeMap<&'static str, Py<PyArray1<f64>>>>,
+}
+
+/// The `KeyError` of a quantity name that is not a stress quantity, or was not computed.
+fn unknown(quantity: &str, known: bool) -> PyErr {
+    let what = if known {
+        format!("'{quantity}' was not computed (see `[stresses] quantities`)")
+    } else {
+        format!(
+            "'{quantity}' is not a stress quantity (sxx, szz, txz, syy, principal_shear, von_mises, orthogonal_shear)"
+        )
+    };
+    pyo3::exceptions::PyKeyError::new_err(what)
 }
 
 impl PyStresses {
     /// Wrap a run's stresses.
     pub fn new(inner: StressResult) -> PyStresses {
-        PyStresses { inner }
+        PyStresses { inner, axes: PyOnceLock::new(), fields: PyOnceLock::new(), surfaces: PyOnceLock::new() }
+    }
+
+    /// The kept axes `[x, depth, surface_x]`.
+    fn axes(&self, py: Python<'_>) -> PyResult<&[Py<PyArray1<f64>>; 3]> {
+        self.axes.get_or_try_init(py, || -> PyResult<_> {
+            let g = self.inner.grid;
+            let arr =
+                |v: Vec<f64>| -> PyResult<Py<PyArray1<f64>>> { Ok(read_only(PyArray1::from_vec(py, v))?.unbind()) };
+            Ok([
+                arr((0..g.points[0]).map(|i| g.x_at(i)).collect())?,
+                arr((0..g.points[1]).map(|j| g.depth_at(j)).collect())?,
+                arr(self.inner.surface.as_ref().map(|s| s.x.clone()).unwrap_or_default())?,
+            ])
+        })
+    }
+
+    /// The computed quantity named `quantity`, or the `KeyError`.
+    fn quantity(&self, quantity: &str) -> PyResult<StressQuantity> {
+        let q = StressQuantity::from_name(quantity).ok_or_else(|| unknown(quantity, false))?;
+        if self.inner.quantities.contains(&q) {
+            Ok(q)
+        } else {
+            Err(unknown(quantity, true))
+        }
     }
 
     /// The values of a quantity, row-major, NaN where refused; `None` when it was not computed.
@@ -38,18 +86,16 @@ impl PyStresses {
 
 #[pymethods]
 impl PyStresses {
-    /// x of the grid's columns (length unit), shape (nx,).
+    /// x of the grid's columns (length unit), shape (nx,), read-only.
     #[getter]
-    fn x<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        let g = self.inner.grid;
-        PyArray1::from_vec(py, (0..g.points[0]).map(|i| g.x_at(i)).collect())
+    fn x(&self, py: Python<'_>) -> PyResult<Py<PyArray1<f64>>> {
+        Ok(self.axes(py)?[0].clone_ref(py))
     }
 
-    /// Depth of the grid's rows below the flat (length unit, into the wheel), shape (nz,).
+    /// Depth of the grid's rows below the flat (length unit, into the wheel), shape (nz,), read-only.
     #[getter]
-    fn depth<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        let g = self.inner.grid;
-        PyArray1::from_vec(py, (0..g.points[1]).map(|j| g.depth_at(j)).collect())
+    fn depth(&self, py: Python<'_>) -> PyResult<Py<PyArray1<f64>>> {
+        Ok(self.axes(py)?[1].clone_ref(py))
     }
 
     /// The grid's shape (nz, nx): the shape of every field.
@@ -64,28 +110,31 @@ impl PyStresses {
         self.inner.quantities.iter().map(|q| q.name()).collect()
     }
 
-    /// The field of a quantity, shape (nz, nx), float64 (NaN where a point has no value); `KeyError` for a quantity
-    /// not computed.
-    fn __getitem__<'py>(&self, py: Python<'py>, quantity: &str) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let q = StressQuantity::from_name(quantity)
-            .ok_or_else(|| pyo3::exceptions::PyKeyError::new_err(format!("unknown stress quantity `{quantity}`")))?;
-        let v = self.values(q).ok_or_else(|| {
-            pyo3::exceptions::PyKeyError::new_err(format!(
-                "`{quantity}` was not computed (see `[stresses] quantities`)"
-            ))
+    /// The field of a quantity (stress unit, tension positive), shape (nz, nx), float64, read-only (NaN where a
+    /// point has no value); `KeyError` for a name that is not a stress quantity or a quantity not computed.
+    fn __getitem__(&self, py: Python<'_>, quantity: &str) -> PyResult<Py<PyArray2<f64>>> {
+        let q = self.quantity(quantity)?;
+        let fields = self.fields.get_or_try_init(py, || -> PyResult<_> {
+            let (nz, nx) = self.shape();
+            let mut out = BTreeMap::new();
+            for q in &self.inner.quantities {
+                let Some(v) = self.values(*q) else { continue };
+                let a = Array2::from_shape_vec((nz, nx), v).map_err(|e| {
+                    pyo3::exceptions::PyRuntimeError::new_err(format!("stress field of the wrong size: {e}"))
+                })?;
+                out.insert(q.name(), read_only(PyArray2::from_owned_array(py, a))?.unbind());
+            }
+            Ok(out)
         })?;
-        let (nz, nx) = self.shape();
-        let a = Array2::from_shape_vec((nz, nx), v)
-            .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(format!("stress field of the wrong size: {e}")))?;
-        Ok(PyArray2::from_owned_array(py, a))
+        fields.get(q.name()).map(|a| a.clone_ref(py)).ok_or_else(|| unknown(quantity, true))
     }
 
     fn __contains__(&self, quantity: &str) -> bool {
         StressQuantity::from_name(quantity).is_some_and(|q| self.inner.quantities.contains(&q))
     }
 
-    /// The maximum (largest |value|, sign kept) of each quantity and where: `{quantity: {"value", "x", "depth"}}`
-    /// (`None` for a quantity without a value anywhere).
+    /// The maximum (largest |value|, sign kept; stress unit) of each quantity and where (`x`, `depth`: length
+    /// unit): `{quantity: {"value", "x", "depth"}}` (`None` for a quantity without a value anywhere).
     #[getter]
     fn maxima<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, pyo3::types::PyDict>> {
         let d = pyo3::types::PyDict::new(py);
@@ -102,31 +151,36 @@ impl PyStresses {
         &self.inner.body
     }
 
-    /// x of the surface points (depth 0, the contact elements' centres), shape (n_surface,); empty when the run has
-    /// none. The maxima include these points: a sliding contact's stresses peak there.
+    /// x of the surface points (depth 0, the contact elements' centres; length unit), shape (n_surface,),
+    /// read-only; empty when the run has none. The maxima include these points: a sliding contact's stresses peak
+    /// there.
     #[getter]
-    fn surface_x<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        PyArray1::from_vec(py, self.inner.surface.as_ref().map(|s| s.x.clone()).unwrap_or_default())
+    fn surface_x(&self, py: Python<'_>) -> PyResult<Py<PyArray1<f64>>> {
+        Ok(self.axes(py)?[2].clone_ref(py))
     }
 
-    /// The values of a quantity at the surface points (`surface_x`), shape (n_surface,), float64 (NaN where a point
-    /// has no value); `KeyError` for a quantity not computed.
-    fn surface<'py>(&self, py: Python<'py>, quantity: &str) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        let q = StressQuantity::from_name(quantity)
-            .ok_or_else(|| pyo3::exceptions::PyKeyError::new_err(format!("unknown stress quantity `{quantity}`")))?;
-        if !self.inner.quantities.contains(&q) {
-            return Err(pyo3::exceptions::PyKeyError::new_err(format!(
-                "`{quantity}` was not computed (see `[stresses] quantities`)"
-            )));
-        }
-        let v = match &self.inner.surface {
-            Some(s) => s.values.get(q.name()).map(|v| v.iter().map(|x| x.unwrap_or(f64::NAN)).collect()),
-            None => Some(Vec::new()),
-        };
-        let v = v.ok_or_else(|| {
-            pyo3::exceptions::PyRuntimeError::new_err(format!("surface values of `{quantity}` missing"))
+    /// The values of a quantity at the surface points (`surface_x`; stress unit, tension positive), shape
+    /// (n_surface,), float64, read-only (NaN where a point has no value); `KeyError` as for `st[quantity]`.
+    fn surface(&self, py: Python<'_>, quantity: &str) -> PyResult<Py<PyArray1<f64>>> {
+        let q = self.quantity(quantity)?;
+        let surfaces = self.surfaces.get_or_try_init(py, || -> PyResult<_> {
+            let mut out = BTreeMap::new();
+            for q in &self.inner.quantities {
+                let v = match &self.inner.surface {
+                    Some(s) => match s.values.get(q.name()) {
+                        Some(v) => v.iter().map(|x| x.unwrap_or(f64::NAN)).collect(),
+                        None => continue,
+                    },
+                    None => Vec::new(),
+                };
+                out.insert(q.name(), read_only(PyArray1::from_vec(py, v))?.unbind());
+            }
+            Ok(out)
         })?;
-        Ok(PyArray1::from_vec(py, v))
+        surfaces
+            .get(q.name())
+            .map(|a| a.clone_ref(py))
+            .ok_or_else(|| pyo3::exceptions::PyRuntimeError::new_err(format!("surface values of `{quantity}` missing")))
     }
 
     /// Number of refused points per reason (`outside_body`, `near_boundary`, `singular`).

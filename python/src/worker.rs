@@ -2,10 +2,11 @@
 //!
 //! [`run`] hands the job to a worker thread and waits for it with the GIL released (`Python::detach`), waking every
 //! [`POLL`] to run Python's signal handlers (`check_signals`). On Ctrl-C the wait ends at once with
-//! `KeyboardInterrupt`, and the job's [`Cancel`] flag is raised: a job that solves a list of drives stops before its
-//! next drive; a single solve the library cannot stop in the middle runs on to its end in the background, its result
-//! dropped (the library has no cancellation point inside a solve). A panic inside the job is caught on its thread
-//! and becomes `InternalError`: no panic crosses into Python.
+//! `KeyboardInterrupt`, and the job's cancellation token ([`rollbem::cancel::Cancel`]) is raised: a list of drives
+//! stops before its next drive, a load path before its next substep, and every solver at its next iteration (a
+//! pivot, an active-set iteration, a sweep, an interior-point step), so the worker is idle again within an
+//! iteration and its partial work is dropped. A panic inside the job is caught on its thread and becomes
+//! `InternalError`: no panic crosses into Python.
 //!
 //! The workers are kept between calls ([`Pool`]): a thread per call made a 50-point creep curve solved point by point
 //! 1.5× slower in CPU time than the same solves on one thread (each new thread's allocations started on cold
@@ -14,7 +15,7 @@
 
 use crate::errors::{to_py, Failure};
 use pyo3::prelude::*;
-use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc;
 use std::sync::{Arc, Mutex, OnceLock};
 use std::time::Duration;
@@ -25,20 +26,7 @@ pub const POLL: Duration = Duration::from_millis(20);
 /// The stack of a worker thread (the main thread's usual size: the library is written for it).
 const STACK: usize = 8 << 20;
 
-/// Raised when the caller was interrupted: a job checks it between units of work and stops.
-#[derive(Clone, Default)]
-pub struct Cancel(Arc<AtomicBool>);
-
-impl Cancel {
-    /// Whether the caller was interrupted.
-    pub fn raised(&self) -> bool {
-        self.0.load(Ordering::Relaxed)
-    }
-
-    fn raise(&self) {
-        self.0.store(true, Ordering::Relaxed);
-    }
-}
+pub use rollbem::cancel::Cancel;
 
 /// A job for a worker.
 type Task = Box<dyn FnOnce() + Send>;
@@ -97,7 +85,7 @@ where
     T: Send + 'static,
     F: FnOnce(&Cancel) -> Result<T, Failure> + Send + 'static,
 {
-    let cancel = Cancel::default();
+    let cancel = Cancel::new();
     let (tx, rx) = mpsc::channel();
     let flag = cancel.clone();
     let spawned = Pool::get().submit(Box::new(move || {
@@ -113,7 +101,7 @@ where
             Ok(out) => return Ok(out),
             Err(mpsc::RecvTimeoutError::Timeout) => {
                 if let Err(e) = Python::attach(|py| py.check_signals()) {
-                    cancel.raise();
+                    cancel.cancel();
                     return Err(e);
                 }
             }

@@ -53,3 +53,8 @@ def cli() -> str:
         pytest.fail("the rollbem CLI binary was not found (set ROLLBEM_CLI)")
     pytest.skip("the rollbem CLI binary was not found (set ROLLBEM_CLI)")
     raise AssertionError("unreachable")
+
+
+def pytest_report_header(config: pytest.Config) -> str:
+    """Which rollbem the tests import (CI: the wheel installed in a fresh environment, not the sources)."""
+    return f"rollbem {rollbem.__version__} from {Path(rollbem._core.__file__).parent}"

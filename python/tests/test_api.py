@@ -1,16 +1,43 @@
 """The Python API's shapes: scenes from text, files and dicts; models built once; result arrays (shapes, dtypes,
-state codes); the report as a dict; load-path histories; stresses as 2D arrays."""
+state codes), made once per run and read-only, and absent for a run without an answer; the report as a dict;
+load-path histories and step drives in the scene's vocabulary; stresses as 2D arrays; Dundurs' beta and its sign."""
 
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 import rollbem
-from conftest import SCENES, scene
+from conftest import REPO, SCENES, scene
+
+NODE_ARRAYS = ("x", "y", "pressure", "shear", "gap", "slip", "u_x", "u_y", "slip_velocity", "state")
+
+# tests/trust.rs (item 1): a steel wheel (R = 0.46 m) whose Hertz contact at P = 1e7 N/m (a = 5.04 mm) is wider than
+# its 1-degree candidate zone: the discrete answer presses on the zone's last nodes, and the harness refuses it
+# (`contact_at_zone_edge`), keeping the nodes as the verdict's evidence.
+ZONE_EDGE = """
+name = "steel-arc1"
+[wheel]
+radius = 0.46
+youngs_modulus = 210e9
+poisson_ratio = 0.3
+support = { kind = "hub", radius = 0.1 }
+[mesh]
+element = "constant"
+contact_arc_deg = 1.0
+contact_elements = 100
+other_elements = 120
+[contact]
+friction = 0.0
+[drive]
+normal_load = 1e7
+[solvers]
+use = ["lemke"]
+"""
 
 HALF_PLANE = {
     "name": "hp",
@@ -72,7 +99,7 @@ def test_node_arrays_shapes_dtypes_and_states() -> None:
         assert isinstance(a, np.ndarray) and a.shape == (n,) and a.dtype == np.float64, name
     assert run.state.shape == (n,) and run.state.dtype == np.int8
     assert rollbem.NODE_STATES == ["stick", "slip", "contact", "separated"]
-    assert [rollbem.NODE_STATES[k] for k in run.state] == run.state_names
+    assert tuple(rollbem.NODE_STATES[k] for k in run.state) == run.state_names
     assert set(run.state_names) == {"stick", "slip", "separated"}
     # Separated nodes carry no pressure; steady rolling's slip is a velocity (`slip_velocity`), so the slip
     # displacement is NaN (not computed) at every node.
@@ -143,8 +170,133 @@ def test_load_path_history() -> None:
     sep = last.state == 3
     assert np.all(np.isnan(last.slip[sep])) and not np.any(np.isnan(last.slip[~sep])) and np.any(sep)
     assert np.all(np.isnan(last.slip_velocity))  # no [rolling]
-    assert report.steps[5].drive["tangential"] == {"Load": pytest.approx(1500.0)}
-    assert report.history("pgs")["step"].shape == (0,)  # no run of pgs: empty arrays
+    # A solver the report has no run of is a KeyError, as `report.run` raises it.
+    with pytest.raises(KeyError, match="no run of solver 'pgs'"):
+        report.history("pgs")
+
+
+def test_a_refused_run_has_no_node_arrays() -> None:
+    # A run the harness refused keeps the refused answer as evidence in the document, not in the arrays: every node
+    # array is empty and every figure derived from the nodes says "none", as `stick_zone` (which reads the answer
+    # nodes, `SolverRun::answer_nodes`) always did. Two refusals: a contact cut off by the candidate zone
+    # (frictionless) and a moment the linearised kinematics cannot carry (frictional: the evidence has sticking
+    # nodes, so old arrays showed a stick zone that `stick_zone` denied).
+    edge = rollbem.run(rollbem.Scene.from_toml(ZONE_EDGE)).run()
+    moment = rollbem.run(
+        rollbem.Scene.from_file(REPO / "reference" / "hard" / "moment-nearly-overturning.toml").edit(
+            {"solvers.use": ["lemke"]}
+        )
+    ).run()
+    assert (edge.status, moment.status) == ("contact_at_zone_edge", "kinematics_out_of_range")
+    for run, n in ((edge, 100), (moment, 60)):
+        assert not run.solved and run.n_nodes == 0, run.status
+        for name in NODE_ARRAYS:
+            a = getattr(run, name)
+            assert a.shape == (0,), (run.status, name)
+        assert run.state.dtype == np.int8 and run.pressure.dtype == np.float64
+        assert run.state_names == () and run.stick_zone is None and run.stresses is None
+        assert run.normal_load is None and run.contact is None and run.residuals is None
+        # The evidence is in the document: the refused answer, node by node.
+        evidence = run.to_dict()["nodes"]
+        assert len(evidence) == n
+    # The zone-edge evidence presses on both ends of the zone (tests/trust.rs item 1), and the moment's evidence has
+    # sticking nodes: what the arrays must not pass off as an answer.
+    nodes = edge.to_dict()["nodes"]
+    assert nodes[0]["pressure"] > 0 and nodes[-1]["pressure"] > 0
+    assert "stick" in [n["state"] for n in moment.to_dict()["nodes"]]
+    # A solved run of the same scene family has them all (contact inside a wider zone: trust.rs's advice).
+    wide = rollbem.Scene.from_toml(ZONE_EDGE).edit({"mesh.contact_arc_deg": 2.0})
+    ok = rollbem.run(wide).run()
+    assert ok.status == "solved" and ok.n_nodes == 100 and ok.pressure.shape == (100,)
+
+
+def test_arrays_are_made_once_and_read_only() -> None:
+    # A run's arrays are made on first access and kept: the same object on every access, so a loop over
+    # `run.pressure[i]` reads one array. Kept arrays are read-only, so one caller cannot change what another reads.
+    report = rollbem.run(scene("stresses-hertz-hub"), check=True)
+    run = report.run()
+    assert report.run() is run and report.runs[0] is run and report.runs is report.runs
+    for name in NODE_ARRAYS + ("state_names",):
+        assert getattr(run, name) is getattr(run, name), name
+    for name in NODE_ARRAYS:
+        a = getattr(run, name)
+        assert not a.flags.writeable, name
+        with pytest.raises(ValueError):
+            a[0] = 1
+        with pytest.raises(ValueError):  # the arrays do not own their memory: the flag cannot be set back
+            a.flags.writeable = True
+    # A copy is the caller's own.
+    mine = run.pressure.copy()
+    mine[0] = -1.0
+    assert run.pressure[0] != -1.0
+    st = run.stresses
+    assert st is not None and run.stresses is st
+    for q in st.quantities:
+        assert st[q] is st[q] and not st[q].flags.writeable
+        assert st.surface(q) is st.surface(q)
+    assert st.x is st.x and st.depth is st.depth and st.surface_x is st.surface_x and not st.x.flags.writeable
+    # A load path's steps, their runs and the history arrays too (the dict is new, the arrays in it are kept).
+    s = scene("md-fretting-loop", solvers__use=["lemke"])
+    path = rollbem.Model(s).solve_path(s.steps)
+    assert path.steps is path.steps and path.steps[3].runs is path.steps[3].runs
+    assert path.steps[3].runs[0].shear is path.steps[3].runs[0].shear
+    h1, h2 = path.history(), path.history("lemke")
+    assert h1 is not h2 and all(h1[k] is h2[k] for k in h1)
+    assert not h1["tangential_load"].flags.writeable
+
+
+def test_step_drive_speaks_the_scene_vocabulary() -> None:
+    # A substep's drive has the keys of a scene's `[drive]` (not the document's serde tags), so it can be given back
+    # as a drive: `Scene.with_drive` and `Model.solve` accept it.
+    s = scene("md-fretting-loop", solvers__use=["lemke"])
+    model = rollbem.Model(s)
+    report = model.solve_path(s.steps)
+    assert report.steps[0].drive == {"normal_load": 20000.0}
+    assert report.steps[5].drive == {"normal_load": pytest.approx(20000.0), "tangential_load": pytest.approx(1500.0)}
+    keys = {"normal_approach", "normal_load", "tangential_shift", "tangential_load", "rotation", "moment"}
+    for st in report.steps:
+        assert set(st.drive) <= keys, st.drive
+        s.with_drive(**st.drive)  # validated like a scene file
+    # Solved from rest at the first step's end: Q is the prescribed load, to LOAD_RESULTANT (1e-10, src/tolerances.rs:
+    # the equilibrium rows are part of the LCP).
+    end = report.steps[10]
+    assert (end.step, end.substep) == (1, 10)
+    again = model.solve(end.drive).run()
+    assert again.tangential_load == pytest.approx(3000.0, rel=1e-10)
+    # A scene's drive and steps use the same keys.
+    assert set(scene("half-plane-hertz").drive) == {"normal_load"}
+
+
+def dundurs_beta(e1: float, nu1: float, e2: float, nu2: float) -> float:
+    """Dundurs (1969), plane strain, computed here: beta = [(1-2nu1)/G1 - (1-2nu2)/G2] / [2((1-nu1)/G1 + (1-nu2)/G2)],
+    G = E/(2(1+nu)); a rigid body has 1/G = 0 (e = inf)."""
+    k1 = 0.0 if math.isinf(e1) else 2 * (1 + nu1) / e1
+    k2 = 0.0 if math.isinf(e2) else 2 * (1 + nu2) / e2
+    return ((1 - 2 * nu1) * k1 - (1 - 2 * nu2) * k2) / (2 * ((1 - nu1) * k1 + (1 - nu2) * k2))
+
+
+def test_dundurs_beta_sign_convention() -> None:
+    # Body 1 is the wheel: an elastic wheel on a rigid flat has beta = (1 - 2 nu)/(2 (1 - nu)) > 0 (2/7 at nu = 0.3).
+    s = rollbem.Scene.from_dict(HALF_PLANE)
+    assert s.dundurs_beta == pytest.approx(0.4 / 1.4, rel=1e-15) == dundurs_beta(210000.0, 0.3, math.inf, 0.3)
+    assert rollbem.run(s).dundurs_beta == s.dundurs_beta
+    # A steel wheel on an aluminium half-plane: the stiffer body first gives beta < 0, and swapping the materials
+    # flips the sign (beta(a, b) = -beta(b, a)).
+    pair = {
+        "wheel": {**HALF_PLANE["wheel"], "youngs_modulus": 210000.0, "poisson_ratio": 0.3},
+        "counter_body": {"kind": "half_plane", "youngs_modulus": 70000.0, "poisson_ratio": 0.33},
+    }
+    steel_on_al = rollbem.Scene.from_dict(HALF_PLANE, **pair)
+    al_on_steel = rollbem.Scene.from_dict(
+        HALF_PLANE,
+        wheel={**HALF_PLANE["wheel"], "youngs_modulus": 70000.0, "poisson_ratio": 0.33},
+        counter_body={"kind": "half_plane", "youngs_modulus": 210000.0, "poisson_ratio": 0.3},
+    )
+    want = dundurs_beta(210000.0, 0.3, 70000.0, 0.33)
+    assert want < 0 and steel_on_al.dundurs_beta == pytest.approx(want, rel=1e-14)
+    assert al_on_steel.dundurs_beta == pytest.approx(-want, rel=1e-14)
+    # Identical materials: 0 (the coupling vanishes).
+    assert scene("steel-on-steel-cattaneo").dundurs_beta == 0.0
 
 
 def test_stresses_are_2d_arrays() -> None:

@@ -35,14 +35,16 @@ def compare_runs(cli_runs: List[Dict[str, Any]], py_runs: List[rollbem.Run]) -> 
     assert [r["solver"] for r in cli_runs] == [r.solver for r in py_runs]
     for c, p in zip(cli_runs, py_runs):
         assert c["status"] == p.status
-        nodes = c["nodes"]
+        # The arrays are the answer: the document's nodes of a solved run, none otherwise (the document keeps a
+        # refused answer as evidence).
+        nodes = c["nodes"] if c["status"] == "solved" else []
         scale = max([n["pressure"] for n in nodes] + [1e-300])
         tol = 1e-12 * scale
         np.testing.assert_array_equal(np.array([n["x"] for n in nodes]), p.x)
         np.testing.assert_allclose(p.pressure, [n["pressure"] for n in nodes], rtol=0, atol=tol)
         np.testing.assert_allclose(p.shear, [n["shear"] for n in nodes], rtol=0, atol=tol)
         np.testing.assert_allclose(p.gap, [n["gap"] for n in nodes], rtol=0, atol=1e-12 * max(abs(p.gap).max(), 1e-300))
-        assert p.state_names == [n["state"] for n in nodes]
+        assert list(p.state_names) == [n["state"] for n in nodes]
         if c["resultants"] is not None:
             assert p.normal_load == pytest.approx(c["resultants"]["normal"], rel=1e-12, abs=tol)
             assert p.tangential_load == pytest.approx(c["resultants"]["tangential"], rel=1e-12, abs=tol)

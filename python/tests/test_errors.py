@@ -1,9 +1,13 @@
 """Errors are Python exceptions naming the key, as the command line's messages do: `InputError` (a ValueError) for
-bad input, `SolveError` for a run that did not solve when the caller asks; nothing else escapes."""
+bad input, `SolveError` for a run that did not solve when the caller asks; and Python's own classes where Python has
+one: `FileNotFoundError` (and the other `OSError`s) for a file, `KeyError` for a name a result does not hold,
+`TypeError` for an argument of the wrong kind. Nothing else escapes."""
 
 from __future__ import annotations
 
+import errno
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -38,7 +42,7 @@ def test_bad_scene_values_name_their_key(changes: dict, key: str, words: str) ->
     assert isinstance(e.value, ValueError) and isinstance(e.value, rollbem.RollbemError)
 
 
-def test_bad_toml_and_files() -> None:
+def test_bad_toml_and_files(tmp_path: Path) -> None:
     text = (SCENES / "half-plane-hertz.toml").read_text()
     # TOML that does not parse: the parser's message with the line; no key to name.
     with pytest.raises(rollbem.InputError, match="line 1") as e:
@@ -51,14 +55,94 @@ def test_bad_toml_and_files() -> None:
     # A missing key.
     with pytest.raises(rollbem.InputError, match="missing field `mesh`") as e:
         rollbem.Scene.from_dict({"name": "x", "wheel": BASE.to_dict()["wheel"]})
-    # A file that cannot be read.
-    with pytest.raises(rollbem.InputError, match="cannot read") as e:
-        rollbem.Scene.from_file(SCENES / "no-such-scene.toml")
-    assert e.value.path.endswith("no-such-scene.toml")
+    # A file that is there but is not UTF-8 text: bad input (no errno to make an OSError of).
+    binary = tmp_path / "binary.toml"
+    binary.write_bytes(b"name = \"\xff\xfe\"\n")
+    with pytest.raises(rollbem.InputError) as e:
+        rollbem.Scene.from_file(binary)
+    assert e.value.path.endswith("binary.toml")
     # A value Python has but a scene cannot hold.
     with pytest.raises(rollbem.InputError, match="not a scene value") as e:
         BASE.edit({"description": object()})
     assert e.value.key == "description"
+
+
+def test_files_that_are_not_there_raise_pythons_os_errors(tmp_path: Path) -> None:
+    # As `open()` raises them: FileNotFoundError with errno and filename, not an InputError.
+    missing = SCENES / "no-such-scene.toml"
+    calls = [
+        lambda: rollbem.Scene.from_file(missing),
+        lambda: rollbem.Report.read(tmp_path / "no-such-report.json"),
+        lambda: rollbem.sweep(tmp_path / "no-such-spec.toml"),
+    ]
+    for call in calls:
+        with pytest.raises(FileNotFoundError) as e:
+            call()
+        assert e.value.errno == errno.ENOENT and "no-such" in e.value.filename
+        assert not isinstance(e.value, rollbem.InputError)
+    # A sweep spec whose `base` names a scene that is not there: the spec is the file given, and it is bad input
+    # naming its key (as the CLI's exit 2 says), not a missing file of the caller's.
+    spec = tmp_path / "spec.toml"
+    spec.write_text('name = "s"\nbase = "gone.toml"\n[[grid]]\n"drive.normal_load" = [1.0]\n')
+    with pytest.raises(rollbem.InputError, match="gone.toml") as ie:
+        rollbem.sweep(spec)
+    assert ie.value.key == "base"
+    # A directory where a file is expected.
+    with pytest.raises(IsADirectoryError):
+        rollbem.Scene.from_file(SCENES)
+
+
+def test_names_a_result_does_not_hold_are_key_errors() -> None:
+    report = rollbem.run(BASE.edit({"solvers.use": ["lemke"]}))
+    for call in (lambda: report.run("pgs"), lambda: report.history("pgs")):
+        with pytest.raises(KeyError) as e:
+            call()
+        text = str(e.value)
+        assert "'pgs'" in text and "lemke" in text and "Some(" not in text, text
+    st = rollbem.run(scene("stresses-hertz-hub", **{"stresses.quantities": ["von_mises"]})).run().stresses
+    assert st is not None
+    with pytest.raises(KeyError, match="not a stress quantity"):
+        st["nonsense"]
+    with pytest.raises(KeyError, match="not computed"):
+        st["sxx"]
+    with pytest.raises(KeyError, match="not computed"):
+        st.surface("sxx")
+
+
+def test_arguments_of_the_wrong_kind_are_type_errors() -> None:
+    model = rollbem.Model(BASE)
+    for call in (
+        lambda: model.solve(5.0),
+        lambda: model.solve("normal_load"),
+        lambda: model.solve_all([5.0]),
+        lambda: model.solve_path("steps"),
+        lambda: model.solve_path({"normal_load": 1.0}),
+        lambda: BASE.with_steps(3),
+        lambda: BASE.edit(["wheel.radius", 1.0]),
+        lambda: rollbem.Scene.from_dict([1, 2]),
+    ):
+        with pytest.raises(TypeError):
+            call()
+
+
+def test_a_drive_given_twice_is_bad_input() -> None:
+    c = scene("carter-steady-rolling", solvers__use=["lemke"])
+    model = rollbem.Model(c)
+    # The same key in the mapping and as a keyword: nothing is resolved silently.
+    with pytest.raises(rollbem.InputError, match="given twice") as e:
+        model.solve({"creepage": 1e-3}, creepage=2e-3)
+    assert e.value.key == "drive.creepage"
+    # Both keys of one degree of freedom in one mapping, or the creepage and the tangential load of steady rolling.
+    for drive, key in (
+        ({"normal_load": 1e4, "normal_approach": 0.1}, "drive.normal_approach"),
+        ({"creepage": 1e-3, "tangential_load": -100.0}, "drive.creepage"),
+    ):
+        for call in (lambda: model.solve(drive), lambda: model.solve_all([drive]), lambda: c.with_drive(**drive)):
+            with pytest.raises(rollbem.InputError, match="not both") as e:
+                call()
+            assert e.value.key == key
+    # One key per degree of freedom is a drive (the other of the pair is dropped, as documented).
+    assert model.solve({"normal_load": 1e4}, creepage=1e-3).run().solved
 
 
 def test_bad_drives() -> None:

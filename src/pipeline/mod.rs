@@ -199,6 +199,34 @@ impl Model {
         }
     }
 
+    /// The size guard of a list of `count` drives solved on this model at once (e.g. Python's `Model.solve_all`,
+    /// which keeps every report): refused, before anything is solved, when the reports would need more than
+    /// [`crate::scene::MAX_PATH_RESULT_BYTES`] (count × solvers × contact nodes ×
+    /// [`crate::scene::PATH_BYTES_PER_NODE`], the estimate of a load path's substeps).
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] naming `drives` with the estimate.
+    pub fn check_result_count(&self, count: usize) -> Result<()> {
+        let set = self.scene.solvers();
+        let solvers = if set.all { crate::solvers::registry().len() } else { set.named.len().max(1) };
+        let bytes = count as u128 * solvers as u128 * self.built.flex.n() as u128
+            * crate::scene::PATH_BYTES_PER_NODE as u128;
+        if bytes > u128::from(crate::scene::MAX_PATH_RESULT_BYTES) {
+            return Err(Error::Invalid {
+                path: self.scene.origin().to_path_buf(),
+                field: "drives".into(),
+                message: format!(
+                    "{count} drives would keep about {:.1} GiB of reports ({count} × {solvers} solver(s) × {} contact \
+                     nodes); at most {:.0} GiB at once: solve them in batches",
+                    bytes as f64 / (1u64 << 30) as f64,
+                    self.built.flex.n(),
+                    crate::scene::MAX_PATH_RESULT_BYTES as f64 / (1u64 << 30) as f64
+                ),
+            });
+        }
+        Ok(())
+    }
+
     /// Solve many scenes sharing the model's bodies and mesh, in order (a creep curve, a family of loads), each
     /// from the previous one's solutions ([`Model::solve_warm`]).
     pub fn solve_all<'a>(&self, scenes: impl IntoIterator<Item = &'a Scene>) -> Result<Vec<Report>> {
