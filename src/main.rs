@@ -76,8 +76,9 @@ enum Cmd {
         #[arg(long)]
         out: Option<PathBuf>,
         /// Go on from the rows already written: those of a stopped run (OUT.partial; its last case is run again) or
-        /// of the finished OUT. Cases there (matched by case number and parameters) are not run again; a file of
-        /// another spec or shard is refused. With neither file, the sweep starts afresh.
+        /// of the finished OUT (which must hold every case). Cases there are not run again; a file written for other
+        /// cases (another base scene or key of it, swept values, spec name, shard or rollbem version) is refused,
+        /// naming what changed. With neither file, the sweep starts afresh.
         #[arg(long)]
         resume: bool,
         /// Run a grid of more than 100 000 cases (refused without it).
@@ -94,7 +95,8 @@ enum Cmd {
         /// Shard CSVs.
         #[arg(required = true)]
         inputs: Vec<PathBuf>,
-        /// The sweep spec: check that the inputs hold each of its cases exactly once, with its parameters.
+        /// The sweep spec: check that the inputs hold each of its cases exactly once, with its parameters, computed
+        /// for its scene as the spec resolves it now.
         #[arg(long)]
         spec: Option<PathBuf>,
     },

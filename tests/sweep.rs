@@ -1,7 +1,7 @@
 //! Sweeps: expansion of the grids, sharding and merging, bad specs.
 
 use rollbem::scene::ElementKind;
-use rollbem::sweep::{merge, run_sweep, Shard, SweepSpec, TIMING_COLUMNS};
+use rollbem::sweep::{merge, run_sweep, Shard, SweepSpec, PROVENANCE_COLUMNS};
 use rollbem::Error;
 use std::path::{Path, PathBuf};
 
@@ -29,7 +29,7 @@ fn without_timing(header: &[String], rows: &[Vec<String>]) -> Vec<Vec<String>> {
         .map(|r| {
             r.iter()
                 .zip(header)
-                .map(|(c, h)| if TIMING_COLUMNS.contains(&h.as_str()) { "" } else { c }.into())
+                .map(|(c, h)| if PROVENANCE_COLUMNS.contains(&h.as_str()) { "" } else { c }.into())
                 .collect()
         })
         .collect()
@@ -134,7 +134,7 @@ base = '{}'
 [[grid]]
 "mesh.contact_elements" = [8, 16]
 "contact.friction" = [0.2, 0.5]
-"solvers.use" = [["lemke"], ["clarabel"]]
+"solvers.use" = [["lemke"], ["pgs"]]
 "#,
             scene("seed-fig6-constant.toml")
         ),
@@ -147,6 +147,7 @@ fn expected_header() -> Vec<&'static str> {
     let mut h = vec!["case", "contact.friction", "mesh.contact_elements", "mesh.element", "solvers.use"];
     h.extend([
         "scene",
+        "scene_digest",
         "element",
         "contact_elements",
         "contact_nodes",
@@ -192,6 +193,7 @@ fn expected_header() -> Vec<&'static str> {
         "carter_c_over_a_exact",
         "carter_c_err_elements",
         "carter_shear_rms",
+        "message",
         "t_assembly",
         "t_condensation",
         "t_formulation",
@@ -201,7 +203,6 @@ fn expected_header() -> Vec<&'static str> {
         "t_total_max",
         "timing_runs",
         "setup",
-        "message",
     ]);
     h
 }
@@ -231,13 +232,13 @@ fn the_sweep_csv_has_one_row_per_run_under_the_published_header() {
     if std::env::var_os("SWEEP_TEST_SHOW").is_some() {
         eprintln!("{}", std::fs::read_to_string(&whole).unwrap());
     }
-    // Frictional clarabel: unsupported, written as an error row, not an abort.
-    let errs: Vec<&Vec<String>> = rows.iter().filter(|r| r[col("status")] == "error").collect();
-    assert!(errs.iter().any(|r| r[col("solver")] == "clarabel" && r[col("message")].contains("clarabel")));
-    // Frictional lemke rows carry the swept value (in TOML syntax) and solve.
-    assert!(rows
-        .iter()
-        .any(|r| r[col("solver")] == "lemke" && r[col("contact.friction")] == "0.2" && r[col("status")] == "solved"));
+    // Frictional lemke and pgs rows carry the swept value (in TOML syntax) and solve; no case is an error.
+    for solver in ["lemke", "pgs"] {
+        assert!(rows.iter().any(|r| r[col("solver")] == solver
+            && r[col("contact.friction")] == "0.2"
+            && r[col("status")] == "solved"));
+    }
+    assert!(rows.iter().all(|r| r[col("status")] != "error"));
 }
 
 #[test]
@@ -266,6 +267,15 @@ fn shards_merge_to_the_unsharded_sweep() {
     let (mh, mrows) = read_csv(&merged);
     assert_eq!(mh, header);
     assert_eq!(without_timing(&mh, &mrows), without_timing(&header, &rows));
+    // Issue 31: the results are the columns up to `message`, the provenance columns (the one documented mask) all
+    // come after it. Cut there, the merged shards are the serial CSV cell for cell; the provenance did differ
+    // (`setup`: a shard builds a model the serial run reused), so the cut is needed as well as sufficient.
+    let m = header.iter().position(|c| c == "message").unwrap();
+    assert_eq!(&header[m + 1..], PROVENANCE_COLUMNS);
+    let results = |rows: &[Vec<String>]| rows.iter().map(|r| r[..=m].to_vec()).collect::<Vec<_>>();
+    assert_eq!(results(&mrows), results(&rows));
+    let setup = header.iter().position(|c| c == "setup").unwrap();
+    assert!(mrows.iter().zip(&rows).any(|(a, b)| a[setup] != b[setup]), "no `setup` differs: a vacuous check");
 
     // The same shard twice is refused.
     let twice = [parts[0].clone(), parts[0].clone()];
@@ -375,9 +385,10 @@ fn merge_refuses_different_headers() {
     assert!(matches!(e, Error::Invalid { ref field, .. } if field == "header"), "{e}");
     assert!(!out.exists());
     assert_eq!(merge(&[c, a], &out).unwrap(), 3);
-    let (_, rows) = read_csv(&out);
+    let (h, rows) = read_csv(&out);
+    let solver = h.iter().position(|c| c == "solver").unwrap();
     assert_eq!(
-        rows.iter().map(|r| (r[0].as_str(), r[6].as_str())).collect::<Vec<_>>(),
+        rows.iter().map(|r| (r[0].as_str(), r[solver].as_str())).collect::<Vec<_>>(),
         [("0", "lemke"), ("1", "clarabel"), ("1", "lemke")]
     );
     assert!(merge(&[], &out).is_err());

@@ -4,7 +4,7 @@
 
 #![allow(dead_code)]
 
-use rollbem::sweep::TIMING_COLUMNS;
+use rollbem::sweep::PROVENANCE_COLUMNS;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::Duration;
@@ -34,7 +34,7 @@ pub fn masked(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
             x.unwrap()
                 .iter()
                 .zip(&h)
-                .map(|(c, n)| if TIMING_COLUMNS.contains(&n.as_str()) { String::new() } else { c.to_string() })
+                .map(|(c, n)| if PROVENANCE_COLUMNS.contains(&n.as_str()) { String::new() } else { c.to_string() })
                 .collect()
         })
         .collect();
