@@ -362,8 +362,8 @@ fn sweep(spec: &Path, out: &Path, options: &rollbem::sweep::SweepOptions, dry_ru
             }
             if o.errors > 0 {
                 eprintln!(
-                    "warning: {} of the {} rows have status `error` (a variant that could not run, e.g. a solver \
-                     that does not apply to it): see their `message` column",
+                    "warning: {} of the {} rows have status `error` (a variant that could not be built or run): \
+                     see their `message` column",
                     o.errors, o.rows
                 );
             }

@@ -241,6 +241,28 @@ fn the_sweep_csv_has_one_row_per_run_under_the_published_header() {
     assert!(rows.iter().all(|r| r[col("status")] != "error"));
 }
 
+/// Issue 31: a grid point whose named solver cannot take its scene (clarabel with friction) is bad input found when
+/// the grid is validated, before anything runs (it used to run, and write an `error` row for that case): the error
+/// names the case, `solvers.use` and why, and nothing is written.
+#[test]
+fn a_named_solver_that_cannot_take_a_case_refuses_the_sweep_before_it_runs() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(small_spec(dir.path())).unwrap();
+    let spec =
+        write(dir.path(), "clarabel.toml", &text.replace("[[\"lemke\"], [\"pgs\"]]", "[[\"lemke\"], [\"clarabel\"]]"));
+    let out = dir.path().join("out.csv");
+    let e = run_sweep(&spec, None, &out, false).unwrap_err();
+    match &e {
+        Error::Invalid { field, message, .. } => {
+            assert_eq!(field, "solvers.use", "{e}");
+            assert!(message.contains("case 5 (") && message.contains("clarabel does not apply"), "{e}");
+            assert!(message.contains("with friction use normtang_qp"), "{e}");
+        }
+        other => panic!("expected Error::Invalid, got {other}"),
+    }
+    assert!(!out.exists() && !dir.path().join("out.csv.partial").exists());
+}
+
 #[test]
 fn shards_merge_to_the_unsharded_sweep() {
     let dir = tempfile::tempdir().unwrap();

@@ -3,8 +3,8 @@
 //! ([`super::clarabel_qp`]). It applies to the frictionless problem without a prescribed moment.
 
 use super::clarabel_qp::{solve_frictionless, QpSettings, QpStatus};
-use super::{Entry, Outcome, Solver, SolverId, SolverSettings, Termination, Work};
-use crate::formulation::{ContactProblem, Dof, DofKind, ProblemKind};
+use super::{Entry, Facts, Outcome, Solver, SolverId, SolverSettings, Termination, Work};
+use crate::formulation::{ContactProblem, DofKind};
 
 /// clarabel on the frictionless QP.
 pub struct Clarabel {
@@ -28,15 +28,13 @@ impl Solver for Clarabel {
         SolverId::Clarabel
     }
 
-    fn applies(&self, p: &ContactProblem) -> Result<(), String> {
-        match p.kind {
-            ProblemKind::Frictionless if matches!(p.drive.rotational, Dof::Load(_)) => {
-                Err("the frictionless QP takes at most the normal load; this scene prescribes a moment".into())
-            }
-            ProblemKind::Frictionless => Ok(()),
-            _ => {
-                Err("it solves the frictionless QP; with friction use normtang_qp (NORM-TANG with clarabel QPs)".into())
-            }
+    fn admits(&self, f: &Facts) -> Result<(), String> {
+        if f.friction {
+            Err("it solves the frictionless QP; with friction use normtang_qp (NORM-TANG with clarabel QPs)".into())
+        } else if f.moment_load {
+            Err("the frictionless QP takes at most the normal load; this scene prescribes a moment".into())
+        } else {
+            Ok(())
         }
     }
 

@@ -21,8 +21,8 @@
 
 use super::clarabel_box::solve_box;
 use super::clarabel_qp::{solve_frictionless, QpSettings};
-use super::{Entry, Solver, SolverId, SolverSettings, Termination, Validate, Work};
-use crate::formulation::{ContactProblem, Dof, DofKind, ProblemKind, Solution};
+use super::{Entry, Facts, Solver, SolverId, SolverSettings, Termination, Validate, Work};
+use crate::formulation::{ContactProblem, Dof, DofKind, Solution};
 use faer::Mat;
 use serde::{Deserialize, Serialize};
 
@@ -725,10 +725,11 @@ pub const NORMTANG_QP_ENTRY: Entry = Entry {
 };
 
 /// Whether NORM-TANG applies: not with a prescribed moment, not at the sliding limit.
-fn applies(p: &ContactProblem) -> Result<(), String> {
-    if matches!(p.drive.rotational, Dof::Load(_)) {
+/// What the NORM-TANG split (both inner solvers) cannot take.
+fn admits(f: &Facts) -> Result<(), String> {
+    if f.moment_load {
         Err("the NORM-TANG split does not carry a prescribed moment (use lemke)".into())
-    } else if matches!(p.kind, ProblemKind::SlidingLimit { .. }) {
+    } else if f.sliding_limit {
         Err("at the sliding limit |Q| = μP the problem is solved as full slip by lemke".into())
     } else {
         Ok(())
@@ -756,8 +757,8 @@ impl Solver for Pgs {
     fn id(&self) -> SolverId {
         SolverId::Pgs
     }
-    fn applies(&self, p: &ContactProblem) -> Result<(), String> {
-        applies(p)
+    fn admits(&self, f: &Facts) -> Result<(), String> {
+        admits(f)
     }
     fn tolerance(&self) -> Option<f64> {
         Some(self.settings.tolerance)
@@ -771,13 +772,13 @@ impl Solver for NormTangQp {
     fn id(&self) -> SolverId {
         SolverId::NormtangQp
     }
-    fn applies(&self, p: &ContactProblem) -> Result<(), String> {
-        if p.slip.is_steady() && p.law.friction > 0.0 {
+    fn admits(&self, f: &Facts) -> Result<(), String> {
+        if f.steady_rolling && f.friction {
             return Err("the steady-rolling tangential operator D K_TT is far from symmetric, and the QP inner \
                         solver symmetrises it; use pgs or lemke"
                 .into());
         }
-        applies(p)
+        admits(f)
     }
     fn tolerance(&self) -> Option<f64> {
         Some(self.settings.tolerance)

@@ -334,10 +334,10 @@ impl Plan {
 ///
 /// The spec and the base scene must read, and every variant of every grid (not only this shard's) must parse and
 /// validate as a scene: an unknown key, a value of the wrong type or out of range, an unknown solver stops the sweep
-/// before anything runs ([`Error::Parse`] or [`Error::Invalid`], naming the case and its keys). A valid variant
-/// that cannot run (e.g. a named solver that does not apply to it, [`Error::Unsupported`]) gets rows with status
-/// `error` and the message in the column `message` (which holds the solver's explanation for the runs that
-/// did run).
+/// before anything runs ([`Error::Parse`] or [`Error::Invalid`], naming the case and its keys); so does a named
+/// solver that cannot take a variant (validation refuses it). A valid variant that still cannot be built or run
+/// (e.g. its BEM system singular, [`Error::Numerical`]) gets rows with status `error` and the reason in the
+/// column `message` (which holds the solver's explanation for the runs that did run).
 pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progress: bool) -> Result<usize> {
     let options = SweepOptions { shard, progress, ..SweepOptions::default() };
     Ok(Plan::new(spec_path, out_csv, &options)?.run()?.rows)
