@@ -84,8 +84,9 @@ enum Cmd {
         #[arg(long)]
         out: Option<PathBuf>,
         /// Go on from the rows already written: those of a stopped run (OUT.partial; its last case is run again) or
-        /// of the finished OUT. Cases there (matched by case number and parameters) are not run again; a file of
-        /// another spec or shard is refused. With neither file, the sweep starts afresh.
+        /// of the finished OUT (which must hold every case). Cases there are not run again; a file written for other
+        /// cases (another base scene or key of it, swept values, spec name, shard or rollbem version) is refused,
+        /// naming what changed. With neither file, the sweep starts afresh.
         #[arg(long)]
         resume: bool,
         /// Run a grid of more than 100 000 cases (refused without it).
@@ -102,7 +103,8 @@ enum Cmd {
         /// Shard CSVs.
         #[arg(required = true)]
         inputs: Vec<PathBuf>,
-        /// The sweep spec: check that the inputs hold each of its cases exactly once, with its parameters.
+        /// The sweep spec: check that the inputs hold each of its cases exactly once, with its parameters, computed
+        /// for its scene as the spec resolves it now.
         #[arg(long)]
         spec: Option<PathBuf>,
     },
@@ -392,8 +394,8 @@ fn sweep(spec: &Path, out: &Path, options: &crate::sweep::SweepOptions, dry_run:
             }
             if o.errors > 0 {
                 eprintln!(
-                    "warning: {} of the {} rows have status `error` (a variant that could not run, e.g. a solver \
-                     that does not apply to it): see their `message` column",
+                    "warning: {} of the {} rows have status `error` (a variant that could not be built or run): \
+                     see their `message` column",
                     o.errors, o.rows
                 );
             }

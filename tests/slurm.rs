@@ -1,12 +1,15 @@
 //! The sweep under a real batch scheduler (issue 23): on a SLURM cluster (a single-node one on this machine:
 //! `scripts/slurm/cluster.sh start`), `scripts/slurm/submit.sh` runs a reference sweep as a job array of shards and a
-//! dependent merge job; the merged CSV must be the single-process sweep's, row for row (timings masked). Then one
-//! shard is cancelled (`scancel`) while it runs, submitted again (it resumes from its journal), merged again: nothing
-//! lost, nothing twice (the merge checks every case of the spec is there once), the same CSV.
+//! dependent merge job; the merged CSV must be the single-process sweep's, row for row (provenance columns masked).
+//! Then (issue 31) one shard of three is cancelled (`scancel`) while another still runs, and the README's recovery,
+//! `scripts/slurm/resubmit.sh DIR 2`, submits it again (it resumes from its journal) and re-chains the merge: the
+//! merge must not run while any shard job is queued, and must be the serial CSV: nothing lost, nothing twice (the
+//! merge checks every case of the spec is there once), nothing raced.
 //!
 //! Needs the cluster (`SLURM_CONF` set), so ignored by `cargo test`; CI starts the cluster and runs
 //! `cargo test --release --test slurm -- --ignored --nocapture`. `ROLLBEM_SLURM_SPEC` and `ROLLBEM_SLURM_SHARDS`
-//! choose another sweep (default `reference/sweeps/finite-vs-half-plane.toml`, 3 shards).
+//! choose another sweep for the first part (default `reference/sweeps/finite-vs-half-plane.toml`, 3 shards); the
+//! recovery runs a sweep of its own ([`slow_spec`]), whose timing it needs.
 
 #[path = "common/sweep_cli.rs"]
 mod common;
@@ -47,6 +50,69 @@ fn wait(jobs: &[&str]) {
     }
 }
 
+/// What [`watch`] saw of a merge job and the shard jobs it must wait for.
+#[derive(Debug, Default)]
+struct Seen {
+    /// Polls in which the merge was pending while a shard job was queued or running.
+    held: usize,
+    /// Polls in which the merge was running, completing or done while a shard job was queued or running.
+    overlaps: usize,
+    /// Whether the merge was seen running, or has left the queue.
+    merge_ran: bool,
+    /// Whether the resubmitted tasks had all ended while a task of the original array was still queued or running:
+    /// the moment a merge that waited for the resubmitted tasks only would have started.
+    early: bool,
+}
+
+/// Poll the queue until the original array, the resubmitted tasks and the merge have left it, noting how the merge's
+/// state and the shards' overlapped (a guard of 10 minutes against a stuck cluster, not a time limit).
+fn watch(original: &str, again: &str, merge: &str) -> Seen {
+    let mut seen = Seen::default();
+    let start = Instant::now();
+    loop {
+        let out = run(Command::new("squeue").args(["-h", "-o", "%i %T"]));
+        let jobs: Vec<(&str, &str)> = out.lines().filter_map(|l| l.split_once(' ')).collect();
+        let of = |array: &str| jobs.iter().any(|(id, _)| *id == array || id.starts_with(&format!("{array}_")));
+        let (original_queued, again_queued) = (of(original), of(again));
+        seen.early |= original_queued && !again_queued;
+        let shard_queued = original_queued || again_queued;
+        match jobs.iter().find(|(id, _)| *id == merge).map(|(_, st)| *st) {
+            // Gone: it ran (it is never cancelled here), and ran while a shard job was queued if one still is.
+            None => {
+                seen.merge_ran = true;
+                if !shard_queued {
+                    return seen;
+                }
+                seen.overlaps += 1;
+            }
+            Some("PENDING") => seen.held += usize::from(shard_queued),
+            Some(_) => {
+                seen.merge_ran = true;
+                seen.overlaps += usize::from(shard_queued);
+            }
+        }
+        assert!(start.elapsed() < Duration::from_secs(600), "jobs still queued after 10 minutes: {out}");
+        std::thread::sleep(Duration::from_millis(100));
+    }
+}
+
+/// A sweep whose shard 3 is slow: 60 frictional BEM wheels, a model each, 20 cases (of one row) per shard of three;
+/// the cases of shard 3 (every third, `index % 3 == 2`) have 900 elements besides the contact zone, the others 400
+/// (measured, one thread: 1.3 s for shard 2, 6.6 s for shard 3). So a shard cancelled half-way and resubmitted ends
+/// well before shard 3, which starts when it is cancelled.
+fn slow_spec(dir: &Path) -> PathBuf {
+    let pairs: Vec<String> = (0..60).map(|i| format!("[{}, {}]", 60 + i, if i % 3 == 2 { 900 } else { 400 })).collect();
+    let text = format!(
+        "name = \"slurm-recovery\"\nbase = '{}'\n[[grid]]\n\"mesh.contact_elements & mesh.other_elements\" = [{}]\n\
+         \"contact.friction\" = [0.3]\n\"drive.tangential_load\" = [100.0]\n\"solvers.use\" = [[\"lemke\"]]\n",
+        root().join("reference/scenes/seed-fig6-constant.toml").display(),
+        pairs.join(", ")
+    );
+    let p = dir.join("slurm-recovery.toml");
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
 /// Complete lines of a file (0 when there is none).
 fn lines(p: &Path) -> usize {
     std::fs::read(p).map_or(0, |b| b.iter().filter(|&&c| c == b'\n').count())
@@ -81,45 +147,69 @@ fn a_job_array_merges_to_the_serial_sweep_and_a_cancelled_shard_resumes() {
         reference.1.len()
     );
 
-    // Shard 2 cancelled once its journal holds two cases, submitted again, merged again.
+    // The recovery of the README (issue 31): on a sweep whose shard 3 is slow, shard 2 of 3 is cancelled once its
+    // journal holds 8 of its 20 cases, while shard 1 runs and shard 3 waits for a core (two on this cluster);
+    // `scripts/slurm/resubmit.sh DIR 2`, exactly as the README says, submits it again and re-chains the merge. The
+    // resubmitted shard ends long before shard 3, so a merge that waited for the resubmitted task only (the recipe
+    // before) started while shard 3 ran and failed ("cannot read shard-3-of-3.csv": seen on this cluster with this
+    // sweep); this one must not run while any shard job is queued, and must equal the serial CSV.
     let t = Instant::now();
     let dir2 = dir.path().join("cancelled");
-    let (array, merge) = submit(&spec, n, &dir2);
-    let shard = dir2.join(format!("shard-2-of-{n}.csv"));
+    std::fs::create_dir(&dir2).unwrap();
+    let slow = slow_spec(&dir2);
+    let slow_serial = dir2.join("serial.csv");
+    run(bin().arg("sweep").arg(&slow).arg("--out").arg(&slow_serial));
+    let (array, _merge) = submit(&slow, 3, &dir2);
+    let shard = dir2.join("shard-2-of-3.csv");
     let start = Instant::now();
-    // The journal's first line, the header, then two cases of one row each.
-    while lines(&partial(&shard)) < 4 {
+    // The journal's first three lines (marker, identity, header), then one row per case: 8 of shard 2's 20 cases.
+    while lines(&partial(&shard)) < 3 + 8 {
         assert!(!shard.exists(), "shard 2 finished before it could be cancelled: use a slower sweep");
         assert!(start.elapsed() < Duration::from_secs(600), "shard 2 never started");
         std::thread::sleep(Duration::from_millis(10));
     }
+    let others: Vec<String> = ["1", "3"].iter().map(|k| format!("{array}_{k}")).filter(|j| queued(j)).collect();
+    assert!(!others.is_empty(), "no other shard is queued or running: the cancel does not test the recovery");
+    // resubmit.sh refuses a task still running (two runs of one shard would share its journal) and one not of 1..3.
+    for (task, why) in [("2", "is still queued or running"), ("4", "not a shard of 1..3")] {
+        let o = Command::new(root().join("scripts/slurm/resubmit.sh")).arg(&dir2).arg(task).output().unwrap();
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(o.status.code() == Some(2) && err.contains(why), "task {task}: {err}");
+    }
     run(Command::new("scancel").arg(format!("{array}_2")));
     wait(&[&format!("{array}_2")]);
     assert!(!shard.exists(), "shard 2 was cancelled before it finished");
-    let kept = lines(&partial(&shard)).saturating_sub(2);
-    // The merge waits on a task that will never succeed: cancel it, resubmit the task and a merge after it.
-    run(Command::new("scancel").arg(&merge));
-    wait(&[&array, &merge]);
-    let sbatch = |args: &[&str], script: &str| {
-        let mut c = Command::new("sbatch");
-        c.arg("--parsable").args(args).arg(root().join("scripts/slurm").join(script));
-        c.arg(env!("CARGO_BIN_EXE_rollbem")).arg(&spec).arg(n.to_string()).arg(&dir2);
-        run(&mut c).trim().to_string()
-    };
-    let log = format!("--output={}", dir2.join("shard-%a.log").display());
-    let again = sbatch(&["--array=2", &log], "shard.sbatch");
-    let merge_log = format!("--output={}", dir2.join("merge.log").display());
-    let merge2 = sbatch(&[&format!("--dependency=afterok:{again}"), &merge_log], "merge.sbatch");
-    wait(&[&again, &merge2]);
+    let kept = lines(&partial(&shard)).saturating_sub(3);
+    let out = run(Command::new(root().join("scripts/slurm/resubmit.sh")).arg(&dir2).arg("2"));
+    let ids: Vec<&str> = out.split_whitespace().collect();
+    assert_eq!(ids.len(), 2, "{out}");
+    let (again, merge2) = (ids[0].to_string(), ids[1].to_string());
+    let dependency = run(Command::new("scontrol").args(["show", "job", &merge2]));
+    let waits_for_array = others.iter().any(|j| queued(j));
+    // The merge waits for the resubmitted task to succeed and for the original array to end (if it was still queued
+    // when resubmit.sh looked: it is checked again just after, so a shard that ended in between may be missing).
+    assert!(dependency.contains(&format!("afterok:{again}")), "{dependency}");
+    if waits_for_array {
+        assert!(dependency.contains(&format!("afterany:{array}")), "{dependency}");
+    }
+    let seen = watch(&array, &again, &merge2);
+    assert!(seen.merge_ran, "the merge never ran");
+    assert_eq!(seen.overlaps, 0, "the merge ran while a shard job was queued or running: {seen:?}");
+    assert!(seen.early, "the resubmitted shard did not end before the original array: the race is not tested");
     let log = std::fs::read_to_string(dir2.join("shard-2.log")).unwrap();
     let resumed = log.lines().find(|l| l.contains("already done")).unwrap_or_else(|| panic!("no resume: {log}"));
     // The cases of the journal but its last one (which resume runs again, as it may be cut short) are not rerun.
     let done: usize = resumed.split("; ").nth(1).and_then(|s| s.split_whitespace().next()).unwrap().parse().unwrap();
     assert_eq!(done, kept - 1, "{log}");
-    assert_eq!(masked(&dir2.join("merged.csv")), reference, "{:?}", std::fs::read_to_string(dir2.join("merge.log")));
+    let merged = dir2.join("merged.csv");
+    assert!(merged.exists(), "no merged CSV: {:?}", std::fs::read_to_string(dir2.join("merge.log")));
+    assert_eq!(masked(&merged), masked(&slow_serial), "{:?}", std::fs::read_to_string(dir2.join("merge.log")));
     eprintln!(
-        "shard 2 cancelled with {kept} rows in its journal, resubmitted: {}; merged CSV = serial CSV ({:.1} s)",
-        resumed,
-        t.elapsed().as_secs_f64()
+        "shard 2 cancelled with {kept} of its 20 cases in its journal while {others:?} were queued; resubmit.sh: \
+         {again} {merge2} ({dependency_line}); the resubmitted shard ended before the original array; merge pending \
+         while a shard was queued in {} polls, ran in none of them; {resumed}; merged CSV = serial CSV ({:.1} s)",
+        seen.held,
+        t.elapsed().as_secs_f64(),
+        dependency_line = dependency.lines().find(|l| l.contains("Dependency=")).unwrap_or("").trim(),
     );
 }

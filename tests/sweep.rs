@@ -4,7 +4,7 @@
 mod paired;
 use paired::paired;
 use rollbem::scene::ElementKind;
-use rollbem::sweep::{merge, run_sweep, Shard, SweepSpec, TIMING_COLUMNS};
+use rollbem::sweep::{merge, run_sweep, Shard, SweepSpec, PROVENANCE_COLUMNS};
 use rollbem::Error;
 use std::path::{Path, PathBuf};
 
@@ -30,7 +30,9 @@ fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
 fn without_timing(header: &[String], rows: &[Vec<String>]) -> Vec<Vec<String>> {
     rows.iter()
         .map(|r| {
-            paired(r, header).map(|(c, h)| if TIMING_COLUMNS.contains(&h.as_str()) { "" } else { c }.into()).collect()
+            paired(r, header)
+                .map(|(c, h)| if PROVENANCE_COLUMNS.contains(&h.as_str()) { "" } else { c }.into())
+                .collect()
         })
         .collect()
 }
@@ -134,7 +136,7 @@ base = '{}'
 [[grid]]
 "mesh.contact_elements" = [8, 16]
 "contact.friction" = [0.2, 0.5]
-"solvers.use" = [["lemke"], ["clarabel"]]
+"solvers.use" = [["lemke"], ["pgs"]]
 "#,
             scene("seed-fig6-constant.toml")
         ),
@@ -147,6 +149,7 @@ fn expected_header() -> Vec<&'static str> {
     let mut h = vec!["case", "contact.friction", "mesh.contact_elements", "mesh.element", "solvers.use"];
     h.extend([
         "scene",
+        "scene_digest",
         "element",
         "contact_elements",
         "contact_nodes",
@@ -192,6 +195,7 @@ fn expected_header() -> Vec<&'static str> {
         "carter_c_over_a_exact",
         "carter_c_err_elements",
         "carter_shear_rms",
+        "message",
         "t_assembly",
         "t_condensation",
         "t_formulation",
@@ -201,7 +205,6 @@ fn expected_header() -> Vec<&'static str> {
         "t_total_max",
         "timing_runs",
         "setup",
-        "message",
     ]);
     h
 }
@@ -231,13 +234,35 @@ fn the_sweep_csv_has_one_row_per_run_under_the_published_header() {
     if std::env::var_os("SWEEP_TEST_SHOW").is_some() {
         eprintln!("{}", std::fs::read_to_string(&whole).unwrap());
     }
-    // Frictional clarabel: unsupported, written as an error row, not an abort.
-    let errs: Vec<&Vec<String>> = rows.iter().filter(|r| r[col("status")] == "error").collect();
-    assert!(errs.iter().any(|r| r[col("solver")] == "clarabel" && r[col("message")].contains("clarabel")));
-    // Frictional lemke rows carry the swept value (in TOML syntax) and solve.
-    assert!(rows
-        .iter()
-        .any(|r| r[col("solver")] == "lemke" && r[col("contact.friction")] == "0.2" && r[col("status")] == "solved"));
+    // Frictional lemke and pgs rows carry the swept value (in TOML syntax) and solve; no case is an error.
+    for solver in ["lemke", "pgs"] {
+        assert!(rows.iter().any(|r| r[col("solver")] == solver
+            && r[col("contact.friction")] == "0.2"
+            && r[col("status")] == "solved"));
+    }
+    assert!(rows.iter().all(|r| r[col("status")] != "error"));
+}
+
+/// Issue 31: a grid point whose named solver cannot take its scene (clarabel with friction) is bad input found when
+/// the grid is validated, before anything runs (it used to run, and write an `error` row for that case): the error
+/// names the case, `solvers.use` and why, and nothing is written.
+#[test]
+fn a_named_solver_that_cannot_take_a_case_refuses_the_sweep_before_it_runs() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = std::fs::read_to_string(small_spec(dir.path())).unwrap();
+    let spec =
+        write(dir.path(), "clarabel.toml", &text.replace("[[\"lemke\"], [\"pgs\"]]", "[[\"lemke\"], [\"clarabel\"]]"));
+    let out = dir.path().join("out.csv");
+    let e = run_sweep(&spec, None, &out, false).unwrap_err();
+    match &e {
+        Error::Invalid { field, message, .. } => {
+            assert_eq!(field, "solvers.use", "{e}");
+            assert!(message.contains("case 5 (") && message.contains("clarabel does not apply"), "{e}");
+            assert!(message.contains("with friction use normtang_qp"), "{e}");
+        }
+        other => panic!("expected Error::Invalid, got {other}"),
+    }
+    assert!(!out.exists() && !dir.path().join("out.csv.partial").exists());
 }
 
 #[test]
@@ -266,6 +291,15 @@ fn shards_merge_to_the_unsharded_sweep() {
     let (mh, mrows) = read_csv(&merged);
     assert_eq!(mh, header);
     assert_eq!(without_timing(&mh, &mrows), without_timing(&header, &rows));
+    // Issue 31: the results are the columns up to `message`, the provenance columns (the one documented mask) all
+    // come after it. Cut there, the merged shards are the serial CSV cell for cell; the provenance did differ
+    // (`setup`: a shard builds a model the serial run reused), so the cut is needed as well as sufficient.
+    let m = header.iter().position(|c| c == "message").unwrap();
+    assert_eq!(&header[m + 1..], PROVENANCE_COLUMNS);
+    let results = |rows: &[Vec<String>]| rows.iter().map(|r| r[..=m].to_vec()).collect::<Vec<_>>();
+    assert_eq!(results(&mrows), results(&rows));
+    let setup = header.iter().position(|c| c == "setup").unwrap();
+    assert!(mrows.iter().zip(&rows).any(|(a, b)| a[setup] != b[setup]), "no `setup` differs: a vacuous check");
 
     // The same shard twice is refused.
     let twice = [parts[0].clone(), parts[0].clone()];
@@ -375,9 +409,10 @@ fn merge_refuses_different_headers() {
     assert!(matches!(e, Error::Invalid { ref field, .. } if field == "header"), "{e}");
     assert!(!out.exists());
     assert_eq!(merge(&[c, a], &out).unwrap(), 3);
-    let (_, rows) = read_csv(&out);
+    let (h, rows) = read_csv(&out);
+    let solver = h.iter().position(|c| c == "solver").unwrap();
     assert_eq!(
-        rows.iter().map(|r| (r[0].as_str(), r[6].as_str())).collect::<Vec<_>>(),
+        rows.iter().map(|r| (r[0].as_str(), r[solver].as_str())).collect::<Vec<_>>(),
         [("0", "lemke"), ("1", "clarabel"), ("1", "lemke")]
     );
     assert!(merge(&[], &out).is_err());

@@ -1,7 +1,9 @@
 //! Streamed sweeps that are killed and resumed (issue 23): the real binary, SIGKILLed at random points of its run
-//! and resumed with `--resume`, always ends with the CSV of an uninterrupted run (timings masked), every case once;
-//! a cut last line and a case cut short are redone; a journal of another spec is refused; a finished output is not
-//! run again; `-` and FIFOs get the sorted CSV; the size guard; `sweep-merge --spec`.
+//! and resumed with `--resume`, always ends with the CSV of an uninterrupted run (provenance columns masked), every
+//! case once; a cut last line and a case cut short are redone; a journal or a finished output of other cases is
+//! refused, naming what changed — the base scene's key, the spec's name, a swept value, the shard, the version
+//! (issue 31); a finished output is not run again; `-` and FIFOs get the sorted CSV; the size guard;
+//! `sweep-merge --spec`, which also refuses a shard computed before the base scene was edited.
 
 #[path = "common/sweep_cli.rs"]
 mod common;
@@ -12,8 +14,13 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// 1024 cases on four small BEM meshes, two rows each (lemke, active_set), frictionless and frictional, and four
-/// cases whose named solver does not apply (one `error` row each): about a second on two cores.
+/// frictionless cases of clarabel alone (one row each): about a second on two cores.
 fn spec(dir: &Path, name: &str) -> PathBuf {
+    spec_on(dir, name, &format!("{}/reference/scenes/seed-fig6-constant.toml", env!("CARGO_MANIFEST_DIR")))
+}
+
+/// [`spec`] on another base scene.
+fn spec_on(dir: &Path, name: &str, base: &str) -> PathBuf {
     let loads: Vec<String> = (0..51).map(|i| format!("{:.1}", 90.0 + 4.0 * i as f64)).collect();
     write(
         dir,
@@ -21,7 +28,7 @@ fn spec(dir: &Path, name: &str) -> PathBuf {
         &format!(
             r#"
 name = "{name}"
-base = '{}/reference/scenes/seed-fig6-constant.toml'
+base = '{base}'
 
 [[grid]]
 "mesh.contact_elements" = [12, 16, 20, 24]
@@ -31,13 +38,29 @@ base = '{}/reference/scenes/seed-fig6-constant.toml'
 
 [[grid]]
 "mesh.contact_elements" = [12, 16, 20, 24]
-"contact.friction" = [0.2]
+"contact.friction" = [0.0]
 "solvers.use" = [["clarabel"]]
 "#,
-            env!("CARGO_MANIFEST_DIR"),
             loads.join(", ")
         ),
     )
+}
+
+/// The journal's first two lines (its marker and identity line, each with its line break), from a real run killed
+/// as soon as its journal exists.
+fn journal_head(spec: &Path, dir: &Path) -> String {
+    let out = dir.join("head.csv");
+    kill_at(bin().arg("sweep").arg(spec).arg("--out").arg(&out), &out, 1, 0);
+    let text = std::fs::read_to_string(partial(&out)).unwrap();
+    std::fs::remove_file(partial(&out)).unwrap();
+    let lines: Vec<&str> = text.split_inclusive('\n').take(2).collect();
+    assert!(lines[0].starts_with("# rollbem sweep journal") && lines[1].starts_with("# identity "), "{text}");
+    lines.concat()
+}
+
+/// The column of `name` in a masked CSV.
+fn col(csv: &(Vec<String>, Vec<Vec<String>>), name: &str) -> usize {
+    csv.0.iter().position(|h| h == name).unwrap()
 }
 
 /// A small deterministic generator (xorshift64*), so that the trials are the same on every run.
@@ -54,7 +77,7 @@ impl Rng {
 
 /// 24 trials: each kills a sweep with SIGKILL one to three times at random points (by the journal's size, or right
 /// after the start), after some kills also cuts the journal at a random byte (a write torn by a crash), then resumes
-/// it to the end; the CSV must equal the uninterrupted run's, row for row, timings masked.
+/// it to the end; the CSV must equal the uninterrupted run's, row for row, provenance columns masked.
 #[test]
 fn killed_and_resumed_sweeps_end_as_an_uninterrupted_one() {
     let dir = tempfile::tempdir().unwrap();
@@ -63,11 +86,12 @@ fn killed_and_resumed_sweeps_end_as_an_uninterrupted_one() {
     assert!(bin().arg("sweep").arg(&spec).arg("--out").arg(&whole).status().unwrap().success());
     let reference = masked(&whole);
     assert_eq!(reference.1.len(), 1020 * 2 + 4);
-    let mut pairs: Vec<(&str, &str)> = reference.1.iter().map(|r| (r[0].as_str(), r[9].as_str())).collect();
+    let solver = col(&reference, "solver");
+    let mut pairs: Vec<(&str, &str)> = reference.1.iter().map(|r| (r[0].as_str(), r[solver].as_str())).collect();
     pairs.dedup();
     assert_eq!(pairs.len(), reference.1.len(), "the reference has each (case, solver) once");
-    // The journal of a complete run is about as long as the CSV plus its first line.
-    let full = std::fs::metadata(&whole).unwrap().len() + MARKER.len() as u64 + 1;
+    // The journal of a complete run is as long as the CSV plus its first two lines.
+    let full = std::fs::metadata(&whole).unwrap().len() + journal_head(&spec, dir.path()).len() as u64;
     let mut rng = Rng(0x5eed_2023);
     let (mut kills, mut mid_run, mut cuts) = (0, 0, 0);
     for trial in 0..24 {
@@ -112,7 +136,7 @@ fn a_cut_line_and_a_case_cut_short_are_redone() {
     // Keep the header and the rows of cases 0..=9 (two rows each), then case 10's first row, then half a line.
     let out = dir.path().join("out.csv");
     let kept = lines[..1 + 20 + 1].join("\n");
-    let journal = format!("{MARKER}\n{kept}\n{}", &lines[22][..lines[22].len() / 2]);
+    let journal = format!("{}{kept}\n{}", journal_head(&spec, dir.path()), &lines[22][..lines[22].len() / 2]);
     std::fs::write(partial(&out), journal).unwrap();
     let o = bin().arg("sweep").arg(&spec).arg("--out").arg(&out).arg("--resume").output().unwrap();
     let err = String::from_utf8_lossy(&o.stderr);
@@ -122,7 +146,7 @@ fn a_cut_line_and_a_case_cut_short_are_redone() {
     assert_eq!(masked(&out), masked(&whole));
 }
 
-/// What `--resume` refuses: a journal of another spec (a value changed) or shard, standard output.
+/// What `--resume` refuses: a journal of other cases (a swept value changed) or of another shard, standard output.
 #[test]
 fn resume_refuses_what_is_not_this_sweeps() {
     let dir = tempfile::tempdir().unwrap();
@@ -131,25 +155,128 @@ fn resume_refuses_what_is_not_this_sweeps() {
     assert!(bin().arg("sweep").arg(&spec).arg("--out").arg(&whole).status().unwrap().success());
     let text = std::fs::read_to_string(&whole).unwrap();
     let out = dir.path().join("out.csv");
-    std::fs::write(partial(&out), format!("{MARKER}\n{text}")).unwrap();
-    // Another spec: a load changed, so case 4's parameters (the second load) are not the journal's.
+    std::fs::write(partial(&out), format!("{}{text}", journal_head(&spec, dir.path()))).unwrap();
+    // Another spec: a load changed (the spec's second load), named with its values.
     let changed = std::fs::read_to_string(&spec).unwrap().replace("[90.0, 94.0,", "[90.0, 95.0,");
     let other = write(dir.path(), "changed.toml", &changed);
     let o = bin().arg("sweep").arg(&other).arg("--out").arg(&out).arg("--resume").output().unwrap();
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
-    assert!(err.contains("`--resume`") && err.contains("case 4:") && err.contains("94.0"), "{err}");
+    assert!(err.contains("`--resume`") && err.contains("grid 1's swept values changed: `drive.normal_load`"), "{err}");
+    assert!(err.contains("[90.0,94.0,") && err.contains("[90.0,95.0,"), "{err}");
     assert!(!out.exists());
     // Another shard.
     let o = bin().arg("sweep").arg(&spec).args(["--shard", "2/3", "--out"]).arg(&out).arg("--resume").output().unwrap();
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
-    assert!(err.contains("not a case of shard 2/3"), "{err}");
+    assert!(err.contains("it was written for the whole sweep, this run is shard 2/3"), "{err}");
     // Standard output keeps no journal.
     let o = bin().arg("sweep").arg(&spec).args(["--out", "-", "--resume"]).output().unwrap();
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(err.contains("`--resume`") && o.stdout.is_empty(), "{err}");
+}
+
+/// Issue 31: a sweep killed mid-run whose base scene is then edited (ν 0.1 → 0.11, the spec's name and grid
+/// unchanged) is refused on resume, naming the base scene, the key and both values, and nothing is written; so is
+/// a renamed spec and a journal of another version. Put back as it was, the resume goes on and ends with the
+/// uninterrupted run's CSV. Before the identity (c0f3874) the edited resume was accepted and mixed both materials.
+#[test]
+fn a_resume_after_the_base_scene_or_the_spec_changed_is_refused_naming_the_change() {
+    let dir = tempfile::tempdir().unwrap();
+    let seed = format!("{}/reference/scenes/seed-fig6-constant.toml", env!("CARGO_MANIFEST_DIR"));
+    let original = std::fs::read_to_string(seed).unwrap();
+    let base = write(dir.path(), "base.toml", &original);
+    let spec = spec_on(dir.path(), "edited", base.to_str().unwrap());
+    let whole = dir.path().join("whole.csv");
+    assert!(bin().arg("sweep").arg(&spec).arg("--out").arg(&whole).status().unwrap().success());
+    let out = dir.path().join("out.csv");
+    let full = std::fs::metadata(&whole).unwrap().len();
+    assert!(kill_at(bin().arg("sweep").arg(&spec).arg("--out").arg(&out), &out, full / 3, 0), "killed mid-run");
+    let journal = std::fs::read(partial(&out)).unwrap();
+    let resume = |spec: &Path| bin().arg("sweep").arg(spec).arg("--out").arg(&out).arg("--resume").output().unwrap();
+    let refused = |o: std::process::Output, what: &[&str]| {
+        let err = String::from_utf8_lossy(&o.stderr).into_owned();
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        for w in what {
+            assert!(err.contains(w), "no {w:?} in: {err}");
+        }
+        assert!(!out.exists(), "nothing written");
+        assert_eq!(std::fs::read(partial(&out)).unwrap(), journal, "the journal is left as it was");
+    };
+    // The base scene's ν.
+    assert!(original.contains("poisson_ratio = 0.1\n"));
+    std::fs::write(&base, original.replace("poisson_ratio = 0.1\n", "poisson_ratio = 0.11\n")).unwrap();
+    let base_named = format!("the base scene {} changed: `wheel.poisson_ratio` 0.1 → 0.11", base.display());
+    refused(resume(&spec), &["`--resume`", &base_named]);
+    std::fs::write(&base, &original).unwrap();
+    // The spec's name.
+    let text = std::fs::read_to_string(&spec).unwrap();
+    let renamed = write(dir.path(), "renamed.toml", &text.replace("name = \"edited\"", "name = \"renamed\""));
+    refused(resume(&renamed), &["the spec's name was `edited`, it is `renamed` now"]);
+    // Another version of rollbem wrote it.
+    let version = format!("\"rollbem\":\"{}\"", env!("CARGO_PKG_VERSION"));
+    let text = String::from_utf8(journal.clone()).unwrap();
+    assert!(text.contains(&version), "the identity line records the version");
+    std::fs::write(partial(&out), text.replacen(&version, "\"rollbem\":\"0.0.1\"", 1)).unwrap();
+    let o = resume(&spec);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    let said = format!("it was written by rollbem 0.0.1, this is rollbem {}", env!("CARGO_PKG_VERSION"));
+    assert!(err.contains(&said), "{err}");
+    // The running digest over the resolved cases differs (what a change of rollbem's resolution without a new
+    // version number would do; here written into the identity line).
+    let resolved = text.find("\"resolved\":\"fnv1a64:").unwrap() + "\"resolved\":\"fnv1a64:".len();
+    let mut other = text.clone();
+    other.replace_range(resolved..resolved + 16, "0123456789abcdef");
+    std::fs::write(partial(&out), &other).unwrap();
+    let o = resume(&spec);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("its cases resolved to other scenes than they do now (digest fnv1a64:0123456789abcdef"),
+        "{err}"
+    );
+    // A row of a case done whose digest is not its case's (rows written for another scene, identity line intact).
+    let row = text.lines().nth(3).unwrap();
+    let digest = &row[row.find("fnv1a64:").unwrap()..][..24];
+    std::fs::write(partial(&out), text.replace(digest, "fnv1a64:0123456789abcdef")).unwrap();
+    let o = resume(&spec);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("cases were computed for other scenes than the spec's cases are now"), "{err}");
+    std::fs::write(partial(&out), &journal).unwrap();
+    // Unchanged: the resume goes on, and ends as the uninterrupted run.
+    let o = resume(&spec);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("already done"));
+    assert_eq!(masked(&out), masked(&whole));
+    // A finished output of the old ν is refused too (its rows carry their scenes' digests), and left alone.
+    let finished = std::fs::read(&out).unwrap();
+    std::fs::write(&base, original.replace("poisson_ratio = 0.1\n", "poisson_ratio = 0.11\n")).unwrap();
+    let o = resume(&spec);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("1024 of its 1024 cases were computed for other scenes") && err.contains("case 0 ("), "{err}");
+    assert_eq!(std::fs::read(&out).unwrap(), finished);
+}
+
+/// A finished output that lacks cases of the sweep (here: one case's rows removed) is refused on resume: a resume
+/// never adds cases to a finished CSV.
+#[test]
+fn a_finished_output_missing_a_case_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let spec = spec(dir.path(), "missing");
+    let out = dir.path().join("out.csv");
+    assert!(bin().arg("sweep").arg(&spec).arg("--out").arg(&out).status().unwrap().success());
+    let text = std::fs::read_to_string(&out).unwrap();
+    let kept: String = text.split_inclusive('\n').filter(|l| !l.starts_with("7,")).collect();
+    std::fs::write(&out, &kept).unwrap();
+    let o = bin().arg("sweep").arg(&spec).arg("--out").arg(&out).arg("--resume").output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(err.contains("it holds 1023 of the 1024 cases of this sweep (the first missing: case 7)"), "{err}");
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), kept);
 }
 
 /// Resuming a finished sweep runs nothing and leaves its CSV alone; a shard resumed from its finished CSV too.
@@ -262,4 +389,34 @@ fn merge_with_the_spec_finds_a_missing_shard() {
     let err = String::from_utf8_lossy(&o.stderr);
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(err.contains("--resume"), "{err}");
+}
+
+/// `sweep-merge --spec` refuses a shard computed before the base scene was edited (its rows' `scene_digest` are not
+/// the cases' now), naming the case and the file; without `--spec` nothing can tell.
+#[test]
+fn merge_with_the_spec_refuses_a_shard_of_an_edited_base_scene() {
+    let dir = tempfile::tempdir().unwrap();
+    let seed = format!("{}/reference/scenes/seed-fig6-constant.toml", env!("CARGO_MANIFEST_DIR"));
+    let original = std::fs::read_to_string(seed).unwrap();
+    let base = write(dir.path(), "base.toml", &original);
+    let spec = spec_on(dir.path(), "stale", base.to_str().unwrap());
+    let shard = |k: usize| {
+        let p = dir.path().join(format!("s{k}.csv"));
+        let o = bin().arg("sweep").arg(&spec).args(["--shard", &format!("{k}/2"), "--out"]).arg(&p).output().unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        p
+    };
+    let s1 = shard(1);
+    std::fs::write(&base, original.replace("poisson_ratio = 0.1\n", "poisson_ratio = 0.11\n")).unwrap();
+    let s2 = shard(2);
+    let merged = dir.path().join("merged.csv");
+    let o = bin().args(["sweep-merge", "--spec"]).arg(&spec).arg(&merged).arg(&s1).arg(&s2).output().unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    let named = format!(
+        "512 of its cases were computed for other scenes than the spec's cases are now (the first: case 0, in {})",
+        s1.display()
+    );
+    assert!(err.contains(&named), "{err}");
+    assert!(!merged.exists());
 }

@@ -1,7 +1,7 @@
 //! The soak of issue 23: a 10 000-case sweep on small meshes, run whole and in four shards, one shard SIGKILLed
-//! half-way and resumed; the merged shards must be the whole run's CSV (timings masked), every case once, and the
-//! peak memory of the 10 000-case run within twice that of a 100-case sweep on the same meshes (each run reports
-//! its peak, VmHWM, in its closing line). About 15 s on two cores (the 10 000 cases take about 6 s), so it is part
+//! half-way and resumed; the merged shards must be the whole run's CSV (provenance columns masked), every case
+//! once, and the peak memory of the 10 000-case run within twice that of a 100-case sweep on the same meshes (each
+//! run reports its peak, VmHWM, in its closing line). About 15 s on two cores (the 10 000 cases take about 6 s), so it is part
 //! of `cargo test`; the figures it prints (`--nocapture`) are in the README, "Sweeps at scale".
 
 #[path = "common/sweep_cli.rs"]

@@ -6,9 +6,10 @@
 # Task k (1..N) runs `rollbem sweep SPEC --shard k/N --out DIR/shard-k-of-N.csv --resume` (log DIR/shard-k.log);
 # the merge job runs `rollbem sweep-merge --spec SPEC DIR/merged.csv DIR/shard-*-of-N.csv` (log DIR/merge.log),
 # which checks that every case of the spec is there exactly once. Prints the two job ids: "ARRAY MERGE".
-# A task that was cancelled or failed is submitted again with `sbatch --array=k ... shard.sbatch ...` (the same
-# arguments): --resume makes it go on from its journal. Extra options (e.g. --partition=..., --time=...,
-# --account=...) go to both sbatch calls. The rollbem binary is $ROLLBEM, else `rollbem` on the PATH.
+# What was submitted (spec, N, binary, options, job ids) is recorded in DIR/jobs.env for
+# scripts/slurm/resubmit.sh, which submits failed or cancelled tasks again and re-chains the merge after every
+# task of the sweep (see there). Extra options (e.g. --partition=..., --time=..., --account=...) go to every sbatch
+# call, resubmit.sh's too. The rollbem binary is $ROLLBEM, else `rollbem` on the PATH.
 # DIR must be on a file system that the compute nodes share with this one.
 set -euo pipefail
 if [ $# -lt 3 ]; then
@@ -33,4 +34,13 @@ array=${array%%;*}
 merge=$(sbatch --parsable --job-name=rollbem-merge --dependency="afterok:$array" --output="$dir/merge.log" "$@" \
     "$here/merge.sbatch" "$rollbem" "$spec" "$n" "$dir")
 merge=${merge%%;*}
+# For resubmit.sh: every value quoted for the shell (`printf %q`).
+{
+    echo "# Written by scripts/slurm/submit.sh; read by scripts/slurm/resubmit.sh. Job ids are appended."
+    printf 'spec=%q\nn=%q\nrollbem=%q\n' "$spec" "$n" "$rollbem"
+    printf 'options=('
+    [ $# -gt 0 ] && printf ' %q' "$@"
+    printf ' )\n'
+    printf 'shard_jobs+=(%q)\nmerge_jobs+=(%q)\n' "$array" "$merge"
+} >"$dir/jobs.env"
 echo "$array $merge"

@@ -54,6 +54,38 @@ pub enum ProblemKind {
     },
 }
 
+impl ProblemKind {
+    /// The problem a drive poses under Coulomb's μ (see the module docs). It depends on ratios of the drive's loads
+    /// only, so a scene's drive in its own units ([`crate::scene::Scene::loading`]) poses the problem its
+    /// dimensionless drive does.
+    pub fn of(mu: f64, drive: &Drive) -> Result<ProblemKind, DriveIssue> {
+        if mu == 0.0 {
+            if let Dof::Load(q) = drive.tangential {
+                if q != 0.0 {
+                    return Err(DriveIssue::TangentialLoadWithoutFriction(q));
+                }
+            }
+            return Ok(ProblemKind::Frictionless);
+        }
+        Ok(match (drive.normal, drive.tangential) {
+            (Dof::Load(p), Dof::Load(q)) if q.abs() > mu * p * (1.0 + SLIDING_LIMIT_BAND) => {
+                ProblemKind::GrossSliding {
+                    message: format!(
+                        "gross sliding: the tangential load |Q| = {:.6e} exceeds the friction limit μP = {:.6e} \
+                         (μ = {mu}, P = {p:.6e}); no static solution exists",
+                        q.abs(),
+                        mu * p
+                    ),
+                }
+            }
+            (Dof::Load(p), Dof::Load(q)) if q.abs() >= mu * p * (1.0 - SLIDING_LIMIT_BAND) => {
+                ProblemKind::SlidingLimit { sigma: q.signum() }
+            }
+            _ => ProblemKind::Frictional,
+        })
+    }
+}
+
 /// The formulation's name in results: the seed's two approaches, or the frictionless problem.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -155,32 +187,7 @@ impl<'a> ContactProblem<'a> {
         drive: Drive,
         slip: SlipOperator,
     ) -> Result<ContactProblem<'a>, DriveIssue> {
-        let mu = law.friction;
-        let kind = if mu == 0.0 {
-            if let Dof::Load(q) = drive.tangential {
-                if q != 0.0 {
-                    return Err(DriveIssue::TangentialLoadWithoutFriction(q));
-                }
-            }
-            ProblemKind::Frictionless
-        } else {
-            match (drive.normal, drive.tangential) {
-                (Dof::Load(p), Dof::Load(q)) if q.abs() > mu * p * (1.0 + SLIDING_LIMIT_BAND) => {
-                    ProblemKind::GrossSliding {
-                        message: format!(
-                            "gross sliding: the tangential load |Q| = {:.6e} exceeds the friction limit μP = {:.6e} \
-                             (μ = {mu}, P = {p:.6e}); no static solution exists",
-                            q.abs(),
-                            mu * p
-                        ),
-                    }
-                }
-                (Dof::Load(p), Dof::Load(q)) if q.abs() >= mu * p * (1.0 - SLIDING_LIMIT_BAND) => {
-                    ProblemKind::SlidingLimit { sigma: q.signum() }
-                }
-                _ => ProblemKind::Frictional,
-            }
-        };
+        let kind = ProblemKind::of(law.friction, &drive)?;
         let dofs = drive::rigid_dofs(flex, &drive, &slip);
         let mut p =
             ContactProblem { flex, law, drive, kind, dofs, slip, normal: None, lcp_cache: std::sync::OnceLock::new() };

@@ -209,8 +209,8 @@ impl Model {
     pub fn check_result_count(&self, count: usize) -> Result<()> {
         let set = self.scene.solvers();
         let solvers = if set.all { crate::solvers::registry().len() } else { set.named.len().max(1) };
-        let bytes = count as u128 * solvers as u128 * self.built.flex.n() as u128
-            * crate::scene::PATH_BYTES_PER_NODE as u128;
+        let bytes =
+            count as u128 * solvers as u128 * self.built.flex.n() as u128 * crate::scene::PATH_BYTES_PER_NODE as u128;
         if bytes > u128::from(crate::scene::MAX_PATH_RESULT_BYTES) {
             return Err(Error::Invalid {
                 path: self.scene.origin().to_path_buf(),

@@ -8,13 +8,14 @@ use super::{
     MAX_PATH_RESULT_BYTES, MAX_PATH_SUBSTEPS, MAX_STRESS_POINTS, MIN_CONTACT_ELEMENT_ANGLE, PATH_BYTES_PER_NODE,
 };
 use crate::error::{Error, Result};
-use crate::formulation::{ContactLaw, Dof};
+use crate::formulation::{ContactLaw, Dof, ProblemKind};
+use crate::solvers::Facts;
 use std::path::Path;
 
 /// Validate a document and build the typed scene.
 pub(super) fn validate(document: SceneDocument, path: &Path) -> Result<Scene> {
     document.validate(path)?;
-    build(document, path)
+    solvers_apply(build(document, path)?)
 }
 
 /// Build the typed scene of a document without its range checks (a scene recorded in a result document by a version
@@ -96,6 +97,58 @@ pub(super) fn build(mut document: SceneDocument, path: &Path) -> Result<Scene> {
         document,
         recorded: None,
     })
+}
+
+/// What a valid scene's parts cannot pose together, refused when it is read rather than when it is run (issue 31):
+/// a tangential load on a frictionless contact (the rule the problem is built with, [`ProblemKind::of`]), and a
+/// solver named in `solvers.use` that cannot take the scene — its [`crate::solvers::Solver::admits`] of the scene's
+/// facts ([`scene_facts`]), the one rule the run applies to each problem through `applies`: clarabel with friction
+/// or a moment load, NORM-TANG with a moment load or at the sliding limit, normtang_qp in steady rolling with
+/// friction. Errors name the key and why. `all` is not checked: it runs the solvers that apply.
+fn solvers_apply(scene: Scene) -> Result<Scene> {
+    let invalid =
+        |field: String, message: String| Error::Invalid { path: scene.origin().to_path_buf(), field, message };
+    let mu = scene.law().friction;
+    let drives: Vec<(String, &crate::formulation::Drive)> = match scene.loading() {
+        Loading::Drive(d) => vec![("drive.tangential_load".into(), d)],
+        Loading::Path(steps) => {
+            steps.iter().enumerate().map(|(i, s)| (format!("steps[{i}].tangential_load"), &s.end)).collect()
+        }
+    };
+    for (key, drive) in drives {
+        if let Err(crate::formulation::DriveIssue::TangentialLoadWithoutFriction(q)) = ProblemKind::of(mu, drive) {
+            let why = format!("{q} on a frictionless contact (contact.friction = 0) has no static solution");
+            return Err(invalid(key, format!("{why}: use a zero tangential load or friction > 0")));
+        }
+    }
+    let facts = scene_facts(&scene);
+    let set = scene.solvers();
+    for id in &set.named {
+        if let Some(Err(why)) = id.build(&set.settings).map(|s| s.admits(&facts)) {
+            return Err(invalid("solvers.use".into(), format!("{} does not apply to this scene: {why}", id.name())));
+        }
+    }
+    Ok(scene)
+}
+
+/// What a scene says of the problems it poses ([`crate::solvers::Facts`]): friction, a moment load at any step, steady
+/// rolling, and the sliding limit of a one-step drive (by the rule the problem is built with,
+/// [`ProblemKind::of`], on the drive in the scene's units: it depends on ratios of loads only).
+fn scene_facts(scene: &Scene) -> Facts {
+    let mu = scene.law().friction;
+    let drives: Vec<&crate::formulation::Drive> = match scene.loading() {
+        Loading::Drive(d) => vec![d],
+        Loading::Path(steps) => steps.iter().map(|s| &s.end).collect(),
+    };
+    Facts {
+        friction: mu > 0.0,
+        moment_load: drives.iter().any(|d| matches!(d.rotational, Dof::Load(_))),
+        steady_rolling: matches!(scene.rolling(), Some(Rolling::Steady { .. })),
+        sliding_limit: match scene.loading() {
+            Loading::Drive(d) => matches!(ProblemKind::of(mu, d), Ok(ProblemKind::SlidingLimit { .. })),
+            Loading::Path(_) => false,
+        },
+    }
 }
 
 /// The contact zone of a mesh table (a validated one has exactly one of the two extents).

@@ -3,8 +3,8 @@
 //! ([`super::clarabel_qp`]). It applies to the frictionless problem without a prescribed moment.
 
 use super::clarabel_qp::{solve_frictionless_cancellable, QpSettings, QpStatus};
-use super::{settings_of, Entry, Figures, Outcome, SceneFacts, Solver, SolverId, Start, Termination, Work};
-use crate::formulation::{ContactProblem, Dof, DofKind, ProblemKind};
+use super::{settings_of, Entry, Facts, Figures, Outcome, Solver, SolverId, Start, Termination, Work};
+use crate::formulation::{ContactProblem, DofKind};
 
 /// clarabel on the frictionless QP.
 pub struct Clarabel {
@@ -35,27 +35,19 @@ pub const ENTRY: Entry = Entry::new::<QpSettings>(
     &["iterations"],
     |s| Box::new(Clarabel { settings: settings_of::<QpSettings>(s).cloned().unwrap_or_default() }),
     cost,
-)
-.restricted(|facts: &SceneFacts| {
-    if facts.frictional {
-        Err(FRICTIONAL.into())
-    } else if facts.moment_load {
-        Err(MOMENT.into())
-    } else {
-        Ok(())
-    }
-});
-
+);
 impl Solver for Clarabel {
     fn id(&self) -> SolverId {
         ID
     }
 
-    fn applies(&self, p: &ContactProblem) -> Result<(), String> {
-        match p.kind {
-            ProblemKind::Frictionless if matches!(p.drive.rotational, Dof::Load(_)) => Err(MOMENT.into()),
-            ProblemKind::Frictionless => Ok(()),
-            _ => Err(FRICTIONAL.into()),
+    fn admits(&self, f: &Facts) -> Result<(), String> {
+        if f.friction {
+            Err(FRICTIONAL.into())
+        } else if f.moment_load {
+            Err(MOMENT.into())
+        } else {
+            Ok(())
         }
     }
 

@@ -192,22 +192,6 @@ pub struct Entry {
     /// Its rough cost on m complementarity unknowns: (seconds, bytes), for a sweep's estimate
     /// ([`crate::sweep`]'s plan; a rough model, meant to tell minutes from days).
     pub cost: fn(f64) -> (f64, f64),
-    /// Scene-level facts that rule it out, known when a scene is read (no problem built): `Err` says why.
-    pub scene_applies: fn(&SceneFacts) -> Result<(), String>,
-}
-
-/// What a scene says that can rule a solver out before any problem is built ([`Entry::scene_applies`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SceneFacts {
-    /// Coulomb's μ > 0 (or rolling): the tangential problem exists.
-    pub frictional: bool,
-    /// A moment is prescribed (at some step).
-    pub moment_load: bool,
-}
-
-/// Any scene: no scene-level restriction ([`Entry::scene_applies`]).
-pub fn any_scene(_: &SceneFacts) -> Result<(), String> {
-    Ok(())
 }
 
 impl Entry {
@@ -233,13 +217,7 @@ impl Entry {
             defaults: || Arc::new(T::default()),
             build,
             cost,
-            scene_applies: any_scene,
         }
-    }
-
-    /// The same entry with a scene-level restriction ([`Entry::scene_applies`]).
-    pub const fn restricted(self, scene_applies: fn(&SceneFacts) -> Result<(), String>) -> Entry {
-        Entry { scene_applies, ..self }
     }
 
     /// Its name.
@@ -460,6 +438,34 @@ impl Start {
     }
 }
 
+/// The facts about a contact problem that decide whether a solver can take it ([`Solver::admits`]). Each is visible
+/// in the scene that poses the problem, so that a scene naming a solver that cannot take it is refused when it is
+/// read, by the rule the run applies.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Facts {
+    /// Coulomb friction, μ > 0.
+    pub friction: bool,
+    /// The drive prescribes a moment (the rotation is load-driven); of a scene: at some step of its load path.
+    pub moment_load: bool,
+    /// Steady rolling: the tangential operator is the steady-rolling one (its tangential DOF the creepage).
+    pub steady_rolling: bool,
+    /// Both loads prescribed with |Q| = μP: the sliding limit ([`crate::formulation::ProblemKind::SlidingLimit`]);
+    /// of a scene: its one-step drive (a load path's substeps are known only as it is walked).
+    pub sliding_limit: bool,
+}
+
+impl Facts {
+    /// The facts of a problem.
+    pub fn of(p: &ContactProblem) -> Facts {
+        Facts {
+            friction: p.law.friction > 0.0,
+            moment_load: matches!(p.drive.rotational, crate::formulation::Dof::Load(_)),
+            steady_rolling: p.slip.is_steady(),
+            sliding_limit: matches!(p.kind, crate::formulation::ProblemKind::SlidingLimit { .. }),
+        }
+    }
+}
+
 /// A contact solver (see the module docs).
 pub trait Solver: Send + Sync {
     /// Its identity.
@@ -470,8 +476,18 @@ pub trait Solver: Send + Sync {
         self.id().name()
     }
 
-    /// Whether it applies to a problem; `Err` says why not.
-    fn applies(&self, problem: &ContactProblem) -> Result<(), String>;
+    /// Whether it can take a problem of these facts ([`Facts`]: each visible in the scene that poses the problem);
+    /// `Err` says why not. The one rule of the solver's scene-level limits: a scene that names the solver is refused
+    /// by it when it is read (`solvers.use`), and a problem by it through [`Solver::applies`]. Default: every problem.
+    fn admits(&self, _facts: &Facts) -> Result<(), String> {
+        Ok(())
+    }
+
+    /// Whether it applies to a problem; `Err` says why not. Default: [`Solver::admits`] of the problem's
+    /// [`Facts`].
+    fn applies(&self, problem: &ContactProblem) -> Result<(), String> {
+        self.admits(&Facts::of(problem))
+    }
 
     /// Solve from a start (a nearby solution, its own state, a cancellation token). Called only when
     /// [`Solver::applies`] is `Ok` and the problem has a static solution to look for.

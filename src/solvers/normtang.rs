@@ -21,9 +21,9 @@
 
 use super::clarabel_box::solve_box;
 use super::clarabel_qp::{solve_frictionless, QpSettings};
-use super::{settings_of, Entry, Figures, Solver, SolverId, Start, Termination, Validate, Work};
+use super::{settings_of, Entry, Facts, Figures, Solver, SolverId, Start, Termination, Validate, Work};
 use crate::cancel::Cancel;
-use crate::formulation::{ContactProblem, Dof, DofKind, ProblemKind, Solution};
+use crate::formulation::{ContactProblem, Dof, DofKind, Solution};
 use faer::Mat;
 use serde::{Deserialize, Serialize};
 
@@ -742,15 +742,6 @@ pub const PGS_ID: SolverId = SolverId::new("pgs");
 /// NORM-TANG with clarabel QPs: its identity.
 pub const NORMTANG_QP_ID: SolverId = SolverId::new("normtang_qp");
 
-/// What rules NORM-TANG out from a scene alone: a prescribed moment.
-fn scene_applies(facts: &super::SceneFacts) -> Result<(), String> {
-    if facts.moment_load {
-        Err(NO_MOMENT.into())
-    } else {
-        Ok(())
-    }
-}
-
 /// Why NORM-TANG does not apply to a prescribed moment.
 const NO_MOMENT: &str = "the NORM-TANG split does not carry a prescribed moment (use lemke)";
 
@@ -763,8 +754,7 @@ pub const PGS_ENTRY: Entry = Entry::new::<PgsSettings>(
     |s| Box::new(Pgs { settings: settings_of::<PgsSettings>(s).copied().unwrap_or_default() }),
     // Up to m sweeps of m² each on the dense rows.
     |m| (5e-9 * m * m * m, 24.0 * m * m),
-)
-.restricted(scene_applies);
+);
 
 /// Registry entry of NORM-TANG with clarabel QPs.
 pub const NORMTANG_QP_ENTRY: Entry = Entry::new::<NormTangQpSettings>(
@@ -774,14 +764,14 @@ pub const NORMTANG_QP_ENTRY: Entry = Entry::new::<NormTangQpSettings>(
     &["iterations", "outer"],
     |s| Box::new(NormTangQp { settings: settings_of::<NormTangQpSettings>(s).cloned().unwrap_or_default() }),
     super::clarabel::cost,
-)
-.restricted(scene_applies);
+);
 
 /// Whether NORM-TANG applies: not with a prescribed moment, not at the sliding limit.
-fn applies(p: &ContactProblem) -> Result<(), String> {
-    if matches!(p.drive.rotational, Dof::Load(_)) {
+/// What the NORM-TANG split (both inner solvers) cannot take.
+fn admits(f: &Facts) -> Result<(), String> {
+    if f.moment_load {
         Err(NO_MOMENT.into())
-    } else if matches!(p.kind, ProblemKind::SlidingLimit { .. }) {
+    } else if f.sliding_limit {
         Err("at the sliding limit |Q| = μP the problem is solved as full slip by lemke".into())
     } else {
         Ok(())
@@ -812,8 +802,8 @@ impl Solver for Pgs {
     fn id(&self) -> SolverId {
         PGS_ID
     }
-    fn applies(&self, p: &ContactProblem) -> Result<(), String> {
-        applies(p)
+    fn admits(&self, f: &Facts) -> Result<(), String> {
+        admits(f)
     }
     fn tolerance(&self) -> Option<f64> {
         Some(self.settings.tolerance)
@@ -827,13 +817,13 @@ impl Solver for NormTangQp {
     fn id(&self) -> SolverId {
         NORMTANG_QP_ID
     }
-    fn applies(&self, p: &ContactProblem) -> Result<(), String> {
-        if p.slip.is_steady() && p.law.friction > 0.0 {
+    fn admits(&self, f: &Facts) -> Result<(), String> {
+        if f.steady_rolling && f.friction {
             return Err("the steady-rolling tangential operator D K_TT is far from symmetric, and the QP inner \
                         solver symmetrises it; use pgs or lemke"
                 .into());
         }
-        applies(p)
+        admits(f)
     }
     fn tolerance(&self) -> Option<f64> {
         Some(self.settings.tolerance)

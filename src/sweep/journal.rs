@@ -2,7 +2,8 @@
 //! the **sorted write** that turns a journal (or several shard CSVs: `sweep-merge`) into the sweep's CSV.
 //!
 //! A journal is the sweep's CSV in the order its cases finished, under a first line that says what it is
-//! ([`MARKER`]), beside the output (`OUT.partial`). Each case's rows go in one write of whole lines, sorted by solver;
+//! ([`MARKER`]) and a second that says which cases it is of ([`super::identity`]), beside the output
+//! (`OUT.partial`). Each case's rows go in one write of whole lines, sorted by solver;
 //! the file is never rewritten in place, only appended to, and synced to disk every few seconds, so a run killed at
 //! any point leaves the rows of every case it finished, then at most one case cut short — the last one written,
 //! possibly missing rows or ending in a cut line. `--resume` therefore drops the journal's last case (and a cut last
@@ -16,6 +17,7 @@
 //! follows the rules of [`crate::io`]: a regular file is written to a temporary file beside it and renamed over it,
 //! a FIFO or device is written through, `-` is standard output, a symbolic link is followed.
 
+use super::identity::IDENTITY_PREFIX;
 use super::row::{Header, RowStatus, SweepRow};
 use crate::error::{Error, Result};
 use std::fs::{File, OpenOptions};
@@ -58,10 +60,10 @@ pub struct Journal {
 }
 
 impl Journal {
-    /// A new journal (an old one at `path` is replaced): the marker, the header and, with `seed` (a finished sweep
-    /// CSV with the same header), its rows to go on from. Written to a temporary file renamed into place, so a
-    /// journal always has its header.
-    pub fn create(path: &Path, keys: &[String], seed: Option<&Path>) -> Result<Journal> {
+    /// A new journal (an old one at `path` is replaced): the marker, the sweep's identity line
+    /// ([`super::identity::Identity::line`]) and the header. Written to a temporary file renamed into place, so a
+    /// journal always has all three.
+    pub fn create(path: &Path, keys: &[String], identity: &str) -> Result<Journal> {
         let werr = write_err(path);
         let mut name = path.as_os_str().to_owned();
         name.push(format!(".tmp-{}", std::process::id()));
@@ -70,13 +72,9 @@ impl Journal {
             let mut file = File::create(&tmp).map_err(&werr)?;
             let mut w = csv::Writer::from_writer(Vec::new());
             w.write_record(super::row::header(keys)).expect("writing to memory");
-            let head = [format!("{MARKER}\n").into_bytes(), w.into_inner().expect("writing to memory")].concat();
+            let head =
+                [format!("{MARKER}\n{identity}").into_bytes(), w.into_inner().expect("writing to memory")].concat();
             file.write_all(&head).map_err(&werr)?;
-            if let Some(from) = seed {
-                let mut src = BufReader::new(File::open(from).map_err(read_err(from))?);
-                src.read_until(b'\n', &mut Vec::new()).map_err(read_err(from))?;
-                std::io::copy(&mut src, &mut file).map_err(&werr)?;
-            }
             file.sync_data().map_err(&werr)?;
             std::fs::rename(&tmp, path).map_err(&werr)
         })();
@@ -136,6 +134,22 @@ pub struct Scanned {
     pub cut: bool,
     /// Where the header ends (the first block's start, or the file's complete lines' end when it has no row).
     pub rows_start: u64,
+    /// A journal's identity line (without its line break), when it has one.
+    pub identity: Option<String>,
+}
+
+/// A journal's identity line (its second line, without the line break), or `None` when it has none (a journal of
+/// an older rollbem). Reads the first two lines only.
+pub fn read_identity(path: &Path) -> Result<Option<String>> {
+    let rerr = read_err(path);
+    let mut input = BufReader::new(File::open(path).map_err(&rerr)?);
+    let mut line = Vec::new();
+    for _ in 0..2 {
+        line.clear();
+        input.read_until(b'\n', &mut line).map_err(&rerr)?;
+    }
+    let text = String::from_utf8_lossy(&line);
+    Ok(text.strip_suffix('\n').filter(|l| l.starts_with(IDENTITY_PREFIX)).map(str::to_string))
 }
 
 /// The offset just after the last line break of a file of `len` bytes (0 without one).
@@ -176,8 +190,14 @@ pub fn scan(
     let mut first = Vec::new();
     let marked = input.fill_buf().map_err(&rerr)?.starts_with(b"# rollbem sweep journal");
     let mut offset = 0;
+    let mut identity = None;
     if marked {
         offset = input.read_until(b'\n', &mut first).map_err(&rerr)? as u64;
+        if input.fill_buf().map_err(&rerr)?.starts_with(IDENTITY_PREFIX.as_bytes()) {
+            let mut line = Vec::new();
+            offset += input.read_until(b'\n', &mut line).map_err(&rerr)? as u64;
+            identity = Some(String::from_utf8_lossy(&line).trim_end_matches('\n').to_string());
+        }
     }
     match (journal, marked) {
         (true, false) => return Err(bad("not a sweep journal: its first line is not the journal's".into())),
@@ -205,7 +225,7 @@ pub fn scan(
     let mut block = Block { case: 0, file: file_no, start: rows_start, end: rows_start };
     loop {
         let start = offset + rd.position().byte();
-        let line = rd.position().line() as usize + usize::from(marked);
+        let line = rd.position().line() as usize + usize::from(marked) + usize::from(identity.is_some());
         if !rd.read_record(&mut record).map_err(perr)? {
             break;
         }
@@ -224,7 +244,7 @@ pub fn scan(
     if !rows.is_empty() {
         each(block, &rows)?;
     }
-    Ok(Scanned { header, cut: complete < len, rows_start })
+    Ok(Scanned { header, cut: complete < len, rows_start, identity })
 }
 
 /// Where an output goes, by the rules of [`crate::io`].

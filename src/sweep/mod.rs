@@ -28,15 +28,16 @@
 //!   finite wheel with a hub beside a half-plane that refuses one).
 //!
 //! A sweep can be cut into shards (`k/n`: the cases with `index % n == k − 1`) that run on different machines;
-//! [`merge`] joins the shards' CSVs into the CSV the unsharded sweep writes (up to the [`TIMING_COLUMNS`]).
+//! [`merge`] joins the shards' CSVs into the CSV the unsharded sweep writes (up to the [`PROVENANCE_COLUMNS`]).
 
+pub mod identity;
 pub mod journal;
 pub mod plan;
 pub mod row;
 mod run;
 
 pub use plan::{Counts, Estimate, Plan, SweepOptions};
-pub use row::{RowStatus, SweepRow, TIMING_COLUMNS};
+pub use row::{RowStatus, SweepRow, PROVENANCE_COLUMNS};
 pub use run::{error_rows_in, merge, merge_checked, run_sweep, sweep_rows, Outcome, REPEAT_BELOW_S, TIMING_BATCH};
 
 use crate::error::{Error, Result};
@@ -627,6 +628,14 @@ impl Expansion {
             out.extend(keys.iter().map(|k| k.to_string()).zip(values));
         }
         out
+    }
+
+    /// The identity of the sweep's cases as the spec and its base scenes are now (`resolved` left empty: it needs
+    /// every case validated, [`identity`]).
+    pub fn identity(&self, spec: &SweepSpec, shard: Option<Shard>) -> identity::Identity {
+        let grids: Vec<identity::GridParts<'_>> =
+            self.grids.iter().map(|g| (g.base_name.display().to_string(), &g.base, g.entries.as_slice())).collect();
+        identity::Identity::new(spec, shard, &grids)
     }
 
     /// Whether `rows` (read from a sweep CSV) can be case `index`'s: the case is one of the spec's and every row

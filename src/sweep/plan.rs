@@ -3,14 +3,24 @@
 //! ([`Plan::summary`]). Nothing is written until [`Plan::run`].
 //!
 //! **Bounded memory.** Every case's scene is built and validated in one streaming pass, in blocks of
-//! [`SURVEY_BLOCK`] cases validated in parallel, and dropped: what the plan keeps is 4 bytes per case to run (its
-//! number, in its model's group) and a bit per case (done or not). A case's scene is built again when it runs.
+//! [`SURVEY_BLOCK`] cases validated in parallel, digested ([`super::identity::scene_digest`], folded into running
+//! digests as the pass goes) and dropped: what the plan keeps is 4 bytes per case to run (its number, in its model's
+//! group) and a bit per case (done or not). A case's scene is built again when it runs.
 //!
 //! **Resume.** With `--resume`, the rows already written count: the journal's (`OUT.partial`, the rows of a run that
-//! was stopped) or, without one, the output's (a finished sweep CSV). A row counts for its case only if its
-//! parameters are that case's in the spec, and every case of the file must belong to this sweep and shard: a file
-//! written for another spec, shard or version of rollbem is refused, never mixed in. A journal's last case is run
-//! again (its rows may be incomplete: [`super::journal`]), and a cut last line is dropped.
+//! was stopped) or, without one, the output's (a finished sweep CSV). Nothing of another sweep is ever mixed in:
+//! - a journal must carry this sweep's identity ([`super::identity`]): the same rollbem version, spec name, shard,
+//!   `warm_start`, `timing_repeats`, grids and base scenes (every key). It is compared before a row is read, and a
+//!   mismatch is refused naming what changed (a base scene's key with its old and new values, a swept key, the
+//!   name, the shard, the version); once every case is validated, its running digest over the resolved cases must
+//!   also be the sweep's now;
+//! - every case of the file must belong to this sweep and shard, once, with the case's parameters and the digest of
+//!   the case's resolved scene (`scene_digest`, summed over the cases done and compared with the spec's, so that a
+//!   finished output, which has no identity line, is checked case by case too);
+//! - a finished output must hold every case of the sweep (or shard): a resume never adds cases to it.
+//!
+//! A journal's last case is run again (its rows may be incomplete: [`super::journal`]), and a cut last line is
+//! dropped.
 //!
 //! **Estimate.** From the sizes of each case's dense matrices: a model's build costs about
 //! `k·N² + 2.5e-10·(2N)³` s and `24·(2N)²` bytes for a BEM wheel of N nodes (k = 2e-7 s for constant elements, 8e-7 s
@@ -22,6 +32,7 @@
 //! 0.6× and 1.0× the measured peak memory — and is meant to tell minutes from days and megabytes from the machine's
 //! memory.
 
+use super::identity::{mark, scene_digest, show_digest, Identity, Running};
 use super::journal::{self, Block, Target};
 use super::row::header;
 use super::{invalid, Expansion, Shard, SweepSpec, LARGE_SWEEP_CASES, REPEAT_BELOW_S};
@@ -124,6 +135,8 @@ pub struct Plan {
     pub(crate) units: Vec<Vec<u32>>,
     counts: Counts,
     estimate: Estimate,
+    /// What the sweep's journal is written for.
+    pub(crate) identity: Identity,
 }
 
 /// One bit per case.
@@ -182,10 +195,11 @@ impl Plan {
         let journal = journal_path(out, &target, &spec.name);
         let shard = options.shard;
         let mine = |i: usize| shard.is_none_or(|s| s.contains(i));
+        let mut identity = expansion.identity(&spec, shard);
         let mut done = Bits::new(cases);
         let mut counts = Counts { cases, mine: (0..cases).filter(|&i| mine(i)).count(), ..Counts::default() };
-        let start = if !options.resume {
-            Start::Fresh
+        let found = if !options.resume {
+            None
         } else if !matches!(target, Target::File(_)) {
             return Err(invalid(
                 out,
@@ -193,13 +207,19 @@ impl Plan {
                 "a sweep written to standard output or a FIFO keeps no journal to resume: give a file (--out)",
             ));
         } else {
-            let resumed = Resume { expansion: &expansion, keys: &keys, shard, done: &mut done };
-            let (start, n, redone) = resumed.read(&journal, out)?;
-            counts.done = n;
-            counts.redone = redone;
-            start
+            let resumed = Resume { expansion: &expansion, keys: &keys, shard, identity: &identity, done: &mut done };
+            let found = resumed.read(&journal, out)?;
+            counts.done = found.done;
+            counts.redone = found.redone;
+            Some(found)
         };
-        let survey = survey(&expansion, |i| mine(i) && !done.get(i), spec.timing_repeats)?;
+        let survey = survey(&expansion, |i| mine(i) && !done.get(i), |i| done.get(i), spec.timing_repeats)?;
+        identity.resolved = show_digest(survey.resolved);
+        if let Some(found) = &found {
+            let resume = Resume { expansion: &expansion, keys: &keys, shard, identity: &identity, done: &mut done };
+            resume.confirm(found, survey.done_marks, counts)?;
+        }
+        let start = found.map_or(Start::Fresh, |f| f.start);
         counts.to_run = survey.units.iter().map(Vec::len).sum();
         counts.models = survey.models;
         let serial = spec.timing_repeats > 1;
@@ -221,6 +241,7 @@ impl Plan {
             units: survey.units,
             counts,
             estimate,
+            identity,
         })
     }
 
@@ -296,63 +317,146 @@ struct Resume<'a> {
     expansion: &'a Expansion,
     keys: &'a [String],
     shard: Option<Shard>,
+    /// The sweep's identity as it is now (`resolved` set only once every case is validated).
+    identity: &'a Identity,
     done: &'a mut Bits,
+}
+
+/// What `--resume` found.
+#[derive(Debug)]
+struct Found {
+    start: Start,
+    /// The file the rows were read from.
+    from: PathBuf,
+    /// Cases done.
+    done: usize,
+    /// The journal's last case, run again.
+    redone: Option<usize>,
+    /// The journal's identity (none for a finished output).
+    written: Option<Identity>,
+    /// The sum of [`mark`] over the cases done, from their rows' `scene_digest`.
+    marks: u64,
+}
+
+/// `--resume` refused: `path` is not this sweep's, `why`.
+fn refuse(path: &Path, why: impl std::fmt::Display) -> crate::error::Error {
+    invalid(path, "--resume", format!("{why}: remove it, or run without --resume to start afresh"))
 }
 
 impl Resume<'_> {
     /// Mark the cases done by the journal (its last case excepted) or, without a journal, by the finished output.
-    /// Returns where to start, the number of cases done and the journal's last case (run again).
-    fn read(self, journal: &Path, out: &Path) -> Result<(Start, usize, Option<usize>)> {
+    /// A journal must be of this sweep's identity (all but `resolved`, which [`Resume::confirm`] checks once every
+    /// case is validated).
+    fn read(self, journal: &Path, out: &Path) -> Result<Found> {
+        let head = header(self.keys);
         if journal.exists() {
-            let mut last: Option<Block> = None;
-            let mut n = 0;
-            let head = header(self.keys);
+            let line = journal::read_identity(journal)?.ok_or_else(|| {
+                refuse(journal, "it has no identity line: an older rollbem wrote it, which did not record its cases")
+            })?;
+            let written = Identity::from_line(&line).map_err(|why| refuse(journal, why))?;
+            let changed = written.differences(self.identity);
+            if !changed.is_empty() {
+                return Err(refuse(journal, format!("it was written for other cases: {}", changed.join("; "))));
+            }
+            let (mut last, mut n, mut marks): (Option<(Block, u64)>, usize, u64) = (None, 0, 0);
             let scanned = journal::scan(journal, 0, true, Some(head.as_slice()), |b, rows| {
-                self.check(journal, b, rows, last.map(|l| l.case))?;
-                if let Some(l) = last.replace(b) {
+                let digest = self.check(journal, b, rows, last.map(|l| l.0.case))?;
+                if let Some((l, d)) = last.replace((b, digest)) {
                     self.done.set(l.case as usize);
+                    marks = marks.wrapping_add(mark(l.case as usize, d));
                     n += 1;
                 }
                 Ok(())
             })?;
-            let keep = last.map_or(scanned.rows_start, |l| l.start);
-            Ok((Start::Journal(keep), n, last.map(|l| l.case as usize)))
+            let keep = last.map_or(scanned.rows_start, |l| l.0.start);
+            let redone = last.map(|l| l.0.case as usize);
+            let from = journal.to_path_buf();
+            Ok(Found { start: Start::Journal(keep), from, done: n, redone, written: Some(written), marks })
         } else if out.exists() {
-            let mut n = 0;
-            let head = header(self.keys);
+            let (mut n, mut marks) = (0, 0u64);
             let scanned = journal::scan(out, 0, false, Some(head.as_slice()), |b, rows| {
-                self.check(out, b, rows, None)?;
+                let digest = self.check(out, b, rows, None)?;
                 self.done.set(b.case as usize);
+                marks = marks.wrapping_add(mark(b.case as usize, digest));
                 n += 1;
                 Ok(())
             })?;
             if scanned.cut {
-                return Err(invalid(out, "--resume", "it ends in a cut line: it is not a finished sweep CSV"));
+                return Err(refuse(out, "it ends in a cut line: it is not a finished sweep CSV"));
             }
-            Ok((Start::Output, n, None))
+            Ok(Found { start: Start::Output, from: out.to_path_buf(), done: n, redone: None, written: None, marks })
         } else {
-            Ok((Start::Fresh, 0, None))
+            Ok(Found { start: Start::Fresh, from: out.to_path_buf(), done: 0, redone: None, written: None, marks: 0 })
         }
     }
 
     /// A block of rows counts for its case only if the case is this sweep's and shard's, its parameters are the
-    /// case's, and the case has not been seen before (`pending`: the block before, not yet marked).
-    fn check(&self, path: &Path, b: Block, rows: &[super::SweepRow], pending: Option<u32>) -> Result<()> {
+    /// case's, the case has not been seen before (`pending`: the block before, not yet marked) and its rows carry
+    /// one scene digest, returned.
+    fn check(&self, path: &Path, b: Block, rows: &[super::SweepRow], pending: Option<u32>) -> Result<u64> {
         let case = b.case as usize;
-        let refuse = |why: String| {
-            invalid(
-                path,
-                "--resume",
-                format!("case {case}: {why}: the file was written for another sweep spec, shard or version; remove it or run without --resume"),
-            )
-        };
+        let refuse = |why: String| refuse(path, format!("case {case}: {why}: the file was written for other cases"));
         if self.shard.is_some_and(|s| !s.contains(case)) {
             return Err(refuse(format!("not a case of shard {}", self.shard.expect("checked"))));
         }
         if case < self.expansion.len() && (self.done.get(case) || pending == Some(b.case)) {
             return Err(refuse("its rows appear twice".into()));
         }
-        self.expansion.check_rows(case, rows).map_err(refuse)
+        self.expansion.check_rows(case, rows).map_err(refuse)?;
+        match rows.first().and_then(|r| r.scene_digest) {
+            Some(d) if rows.iter().all(|r| r.scene_digest == Some(d)) => Ok(d),
+            _ => Err(refuse("its rows do not carry one `scene_digest`".into())),
+        }
+    }
+
+    /// Once every case is validated: the rows kept were computed for the cases as they resolve now (`done_marks`,
+    /// the sum of [`mark`] over the cases done, from the spec), a journal's cases resolve as they did when it was
+    /// written, and a finished output holds every case of this sweep (a resume never adds cases to it).
+    fn confirm(self, found: &Found, done_marks: u64, counts: Counts) -> Result<()> {
+        if let Some(why) = found.written.as_ref().and_then(|w| w.resolved_differs(self.identity)) {
+            return Err(refuse(&found.from, why));
+        }
+        if found.marks != done_marks {
+            return Err(refuse(&found.from, self.changed_cases(found)?));
+        }
+        if found.start == Start::Output && counts.done < counts.mine {
+            let first = (0..counts.cases)
+                .find(|&i| self.shard.is_none_or(|s| s.contains(i)) && !self.done.get(i))
+                .expect("a case not done");
+            return Err(refuse(
+                &found.from,
+                format!(
+                    "it holds {} of the {} cases of this sweep{} (the first missing: case {first}): the spec has \
+                     cases it was not written for",
+                    counts.done,
+                    counts.mine,
+                    self.shard.map(|s| format!("'s shard {s}")).unwrap_or_default()
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Which of the file's cases were computed for other scenes than the spec's now, in words (a second pass over
+    /// the file, on the error path only).
+    fn changed_cases(&self, found: &Found) -> Result<String> {
+        let journal = matches!(found.start, Start::Journal(_));
+        let (mut n, mut total, mut first) = (0, 0, None);
+        journal::scan(&found.from, 0, journal, None, |b, rows| {
+            let case = b.case as usize;
+            total += 1;
+            let now = scene_digest(&self.expansion.case(case)?.scene);
+            if rows.first().and_then(|r| r.scene_digest) != Some(now) {
+                n += 1;
+                first.get_or_insert_with(|| super::describe(case, &self.expansion.params(case)));
+            }
+            Ok(())
+        })?;
+        Ok(format!(
+            "{n} of its {total} cases were computed for other scenes than the spec's cases are now (the first: {}): \
+             their base scene, swept values or solver settings changed since",
+            first.unwrap_or_else(|| "none found on a second reading: the file changed meanwhile?".into())
+        ))
     }
 }
 
@@ -419,12 +523,16 @@ fn solver_cost(id: SolverId, m: f64) -> (f64, f64) {
     id.entry().map_or((0.0, 0.0), |e| (e.cost)(m))
 }
 
-/// The cases to run, in units sharing a model, and the estimate's sums.
+/// The cases to run, in units sharing a model, the estimate's sums, and the digests of the cases.
 struct Survey {
     units: Vec<Vec<u32>>,
     models: usize,
     work_s: f64,
     unit_bytes: f64,
+    /// The running digest over every case's `scene_digest`, in case order ([`Identity::resolved`]).
+    resolved: u64,
+    /// The sum of [`mark`] over the cases done.
+    done_marks: u64,
 }
 
 /// The cases of one model key, in enumeration order.
@@ -435,40 +543,69 @@ struct Group {
     solve_bytes: f64,
 }
 
-/// The validation pass: build and validate every case's scene (all shards'), in blocks validated in parallel,
-/// keeping only the model key of the cases to run (`take`). The first case that does not validate, in enumeration
-/// order, is the error.
-fn survey(expansion: &Expansion, take: impl Fn(usize) -> bool + Sync, repeats: usize) -> Result<Survey> {
+/// Build and validate every case's scene (all shards'), in blocks of [`SURVEY_BLOCK`] built in parallel, hand
+/// `map` each case and give `fold` the results in case order; nothing is kept per case. The first case that does
+/// not validate, in enumeration order, is the error.
+pub(crate) fn each_case<T: Send>(
+    expansion: &Expansion,
+    map: impl Fn(usize, super::Case) -> T + Sync,
+    mut fold: impl FnMut(usize, T) -> Result<()>,
+) -> Result<()> {
     let n = expansion.len();
+    for start in (0..n).step_by(SURVEY_BLOCK) {
+        let end = (start + SURVEY_BLOCK).min(n);
+        let found: Vec<Result<T>> = (start..end).into_par_iter().map(|i| Ok(map(i, expansion.case(i)?))).collect();
+        for (i, f) in (start..end).zip(found) {
+            fold(i, f?)?;
+        }
+    }
+    Ok(())
+}
+
+/// The validation pass: every case's scene built and validated ([`each_case`]) and digested, keeping only the
+/// model key of the cases to run (`take`); the cases done (`done`) summed by [`mark`].
+fn survey(
+    expansion: &Expansion,
+    take: impl Fn(usize) -> bool + Sync,
+    done: impl Fn(usize) -> bool,
+    repeats: usize,
+) -> Result<Survey> {
     let mut index: HashMap<String, usize> = HashMap::new();
     let mut groups: Vec<Group> = Vec::new();
     let mut repeat_s = 0.0;
-    for start in (0..n).step_by(SURVEY_BLOCK) {
-        let end = (start + SURVEY_BLOCK).min(n);
-        let found: Vec<Result<Option<(String, Costs)>>> = (start..end)
-            .into_par_iter()
-            .map(|i| {
-                let case = expansion.case(i)?;
-                Ok(take(i).then(|| (model_key(&case.scene), costs(&case.scene))))
-            })
-            .collect();
-        for (i, f) in (start..end).zip(found) {
-            let Some((key, c)) = f? else { continue };
-            let g = *index.entry(key).or_insert_with(|| {
-                groups.push(Group { cases: Vec::new(), costs: c, solve_s: 0.0, solve_bytes: 0.0 });
-                groups.len() - 1
-            });
-            let g = &mut groups[g];
-            // A case number fits in 4 bytes: a spec has at most MAX_CASES < 2^32 cases.
-            g.cases.push(i as u32);
-            g.solve_s += c.solve_s;
-            g.solve_bytes = g.solve_bytes.max(c.solve_bytes);
-            if repeats > 1 && c.build_s + c.solve_s < REPEAT_BELOW_S {
-                repeat_s += repeats as f64 * (c.build_s + c.solve_s);
-            }
+    let (mut resolved, mut done_marks) = (Running::default(), 0u64);
+    let map = |i: usize, case: super::Case| {
+        let digest = scene_digest(&case.scene);
+        (digest, take(i).then(|| (model_key(&case.scene), costs(&case.scene))))
+    };
+    each_case(expansion, map, |i, (digest, kept)| {
+        resolved.add(digest);
+        if done(i) {
+            done_marks = done_marks.wrapping_add(mark(i, digest));
         }
-    }
-    let mut survey = Survey { units: Vec::new(), models: 0, work_s: repeat_s, unit_bytes: 0.0 };
+        let Some((key, c)) = kept else { return Ok(()) };
+        let g = *index.entry(key).or_insert_with(|| {
+            groups.push(Group { cases: Vec::new(), costs: c, solve_s: 0.0, solve_bytes: 0.0 });
+            groups.len() - 1
+        });
+        let g = &mut groups[g];
+        // A case number fits in 4 bytes: a spec has at most MAX_CASES < 2^32 cases.
+        g.cases.push(i as u32);
+        g.solve_s += c.solve_s;
+        g.solve_bytes = g.solve_bytes.max(c.solve_bytes);
+        if repeats > 1 && c.build_s + c.solve_s < REPEAT_BELOW_S {
+            repeat_s += repeats as f64 * (c.build_s + c.solve_s);
+        }
+        Ok(())
+    })?;
+    let mut survey = Survey {
+        units: Vec::new(),
+        models: 0,
+        work_s: repeat_s,
+        unit_bytes: 0.0,
+        resolved: resolved.digest(),
+        done_marks,
+    };
     for g in groups {
         let units = g.cases.chunks(UNIT_CASES).map(<[u32]>::to_vec).collect::<Vec<_>>();
         survey.models += units.len();

@@ -6,10 +6,18 @@
 //! scientific notation (`1.25e-3`), so a row read back is the row written, bit for bit.
 //!
 //! Columns, in order: `case`; the swept keys (one per key of the spec, empty where a case's grid does not set it);
-//! `scene, element, contact_elements, contact_nodes, solver, formulation, status, problem_size`; the registry's
-//! work counters ([`crate::solvers::work_columns`]); the figures of the run (resultants, fits, the errors against the
-//! references that apply, [`crate::references::Metrics`]), the pair and the rigid motion; the timings
-//! ([`TIMING_COLUMNS`], with `setup`: whether the case's model was built for it or reused); `message`. A cell is empty where a value does not apply.
+//! `scene, scene_digest, element, contact_elements, contact_nodes, solver, formulation, status, problem_size`; the
+//! registry's work counters ([`crate::solvers::work_columns`]); the figures of the run (resultants, fits, the errors
+//! against the references that apply, [`crate::references::Metrics`]), the pair and the rigid motion; `message`.
+//! Those are the **results**: the same cases give the same cells whichever run wrote them (serial, sharded and
+//! merged, resumed; with `warm_start` the work counters and the last bits of Lemke's answers aside). Last come the
+//! **provenance** columns, [`PROVENANCE_COLUMNS`]: how this run went (the timings, `timing_runs`, and `setup`:
+//! whether the case's model was built for it or reused from the case before it in the same run), which differ from
+//! run to run. Two runs of the same cases compare equal on every column before the first provenance column. A cell
+//! is empty where a value does not apply.
+//!
+//! A CSV of an older rollbem (without `scene_digest`, columns in another order) still reads: columns are found by
+//! name.
 
 use crate::error::{Error, Result};
 use crate::references::Metrics;
@@ -52,6 +60,9 @@ pub struct SweepRow {
     pub params: Vec<(String, String)>,
     /// The scene's name.
     pub scene: String,
+    /// The digest of the case's resolved scene ([`super::identity::scene_digest`]): equal in two rows only
+    /// if they were computed for the same scene. `None` in a CSV of a rollbem that did not write it.
+    pub scene_digest: Option<u64>,
     /// Element family.
     pub element: Option<ElementKind>,
     /// Contact elements.
@@ -137,6 +148,7 @@ impl SweepRow {
             case,
             params: Vec::new(),
             scene: String::new(),
+            scene_digest: None,
             element: None,
             contact_elements: None,
             contact_nodes: None,
@@ -249,8 +261,10 @@ impl SweepRow {
             .filter(|(k, _)| !get(1 + k).is_empty())
             .map(|(k, key)| (key.clone(), get(1 + k).to_string()))
             .collect();
-        for (c, &i) in COLUMNS.iter().zip(&header.columns) {
-            (c.set)(&mut row, get(i)).map_err(|why| bad(c.name, why))?;
+        for (c, i) in COLUMNS.iter().zip(&header.columns) {
+            if let Some(i) = *i {
+                (c.set)(&mut row, get(i)).map_err(|why| bad(c.name, why))?;
+            }
         }
         let mut work = Vec::new();
         for (name, i) in &header.work {
@@ -286,8 +300,8 @@ impl SweepRow {
 pub struct Header {
     /// The swept keys, in CSV order.
     pub keys: Vec<String>,
-    /// Index of each known column.
-    columns: Vec<usize>,
+    /// Index of each known column (`None`: an [`OPTIONAL`] one this CSV lacks).
+    columns: Vec<Option<usize>>,
     /// Work counters and their indices.
     work: Vec<(String, usize)>,
     /// The header as read.
@@ -295,6 +309,11 @@ pub struct Header {
 }
 
 impl Header {
+    /// Whether the CSV has a column of this name.
+    pub fn has(&self, name: &str) -> bool {
+        self.names.iter().any(|n| n == name)
+    }
+
     /// Locate the columns of a header written by [`header`]; an error names what is missing.
     pub fn parse(names: &[String], path: &Path) -> Result<Header> {
         let bad = |message: String| Error::Parse { path: path.to_path_buf(), message };
@@ -307,9 +326,10 @@ impl Header {
             .ok_or_else(|| bad(format!("not a sweep CSV of this version: no `{}` column", COLUMNS[0].name)))?;
         let mut columns = Vec::with_capacity(COLUMNS.len());
         for c in COLUMNS {
-            let i = names.iter().position(|n| n == c.name).ok_or_else(|| {
-                bad(format!("not a sweep CSV of this version: no `{}` column (rerun the sweep)", c.name))
-            })?;
+            let i = names.iter().position(|n| n == c.name);
+            if i.is_none() && !OPTIONAL.contains(&c.name) {
+                return Err(bad(format!("not a sweep CSV of this version: no `{}` column (rerun the sweep)", c.name)));
+            }
             columns.push(i);
         }
         let work_at = names.iter().position(|n| n == WORK_AFTER).map_or(first, |i| i + 1);
@@ -332,9 +352,12 @@ pub fn header(keys: &[String]) -> Vec<String> {
     h
 }
 
-/// The names of the timing columns of a sweep CSV: wall-clock times, which differ from run to run (exclude them
-/// when comparing CSVs).
-pub const TIMING_COLUMNS: &[&str] = &[
+/// The provenance columns of a sweep CSV, its last ones (after `message`): how the run that wrote a row went —
+/// wall-clock times, the number of timed repeats, and whether the case's model was built for it or reused (which
+/// depends on the cases run before it: a shard or a resumed run builds where a serial one reuses). They differ
+/// from run to run; every column before them is a result (module docs). Mask them, or drop them, to compare two
+/// runs.
+pub const PROVENANCE_COLUMNS: &[&str] = &[
     "t_assembly",
     "t_condensation",
     "t_formulation",
@@ -345,6 +368,9 @@ pub const TIMING_COLUMNS: &[&str] = &[
     "timing_runs",
     "setup",
 ];
+
+/// Columns a CSV of an older rollbem may lack (read as empty).
+const OPTIONAL: &[&str] = &["scene_digest"];
 
 /// A cell's value before formatting.
 enum Cell {
@@ -419,6 +445,17 @@ static COLUMNS: &[Column] = &[
         get: |r| Cell::Text(r.scene.clone()),
         set: |r, s| {
             r.scene = s.into();
+            Ok(())
+        },
+    },
+    Column {
+        name: "scene_digest",
+        get: |r| Cell::Text(r.scene_digest.map(super::identity::show_digest).unwrap_or_default()),
+        set: |r, s| {
+            r.scene_digest = match s {
+                "" => None,
+                s => Some(super::identity::parse_digest(s).ok_or(format!("`{s}` is not a scene digest"))?),
+            };
             Ok(())
         },
     },
@@ -499,6 +536,14 @@ static COLUMNS: &[Column] = &[
     num_col!("carter_c_over_a_exact", metrics.carter_c_over_a_exact),
     num_col!("carter_c_err_elements", metrics.carter_c_err_elements),
     num_col!("carter_shear_rms", metrics.carter_shear_rms),
+    Column {
+        name: "message",
+        get: |r| Cell::Text(r.message.clone()),
+        set: |r, s| {
+            r.message = s.into();
+            Ok(())
+        },
+    },
     num_col!("t_assembly", t_assembly),
     num_col!("t_condensation", t_condensation),
     num_col!("t_formulation", t_formulation),
@@ -518,14 +563,6 @@ static COLUMNS: &[Column] = &[
         },
         set: |r, s| {
             r.setup = named(s)?;
-            Ok(())
-        },
-    },
-    Column {
-        name: "message",
-        get: |r| Cell::Text(r.message.clone()),
-        set: |r, s| {
-            r.message = s.into();
             Ok(())
         },
     },

@@ -7,6 +7,7 @@
 //! What is in memory at any time: the plan (4 bytes per case to run), and per thread one model and one case; with
 //! `timing_repeats`, the rows of at most [`TIMING_BATCH`] cases waiting for their repeats. Never the grid's rows.
 
+use super::identity::{mark, scene_digest};
 use super::journal::{self, Block, Journal, Written};
 use super::plan::{Plan, Start, SweepOptions};
 use super::row::{RowStatus, SweepRow};
@@ -140,14 +141,19 @@ impl Shared {
             }
         }
         let solved = match (&self.built.as_ref().expect("built above").1, self.warm.as_mut()) {
-            (Ok(m), Some(w)) => m.solve_warm(s, w),
-            (Ok(m), None) => m.solve(s),
-            (Err(e), _) => return error_rows(case, e),
+            (Ok(m), Some(w)) => m.solve_warm(s, w).map_err(|e| error_rows(case, &e)),
+            (Ok(m), None) => m.solve(s).map_err(|e| error_rows(case, &e)),
+            (Err(e), _) => Err(error_rows(case, e)),
         };
-        match solved {
+        let mut rows = match solved {
             Ok(report) => case_rows(case, &report),
-            Err(e) => error_rows(case, &e),
+            Err(rows) => rows,
+        };
+        let digest = Some(scene_digest(s));
+        for r in &mut rows {
+            r.scene_digest = digest;
         }
+        rows
     }
 }
 
@@ -180,8 +186,9 @@ impl Plan {
     /// the runs are the parallel unit.
     pub fn run(self) -> Result<Outcome> {
         let to_run = self.counts().to_run;
-        if to_run == 0 && self.start == Start::Output {
-            // Every case is in the finished output already: leave it as it is.
+        if self.start == Start::Output {
+            // Every case is in the finished output already (a resume from an output that lacks one is refused when
+            // planned): leave it as it is.
             let mut n = Written::default();
             journal::scan(&self.out, 0, false, None, |_, rows| {
                 n.rows += rows.len();
@@ -191,9 +198,8 @@ impl Plan {
             return Ok(Outcome { rows: n.rows, errors: n.errors, ran: 0 });
         }
         let journal = match self.start {
-            Start::Fresh => Journal::create(&self.journal, &self.keys, None)?,
-            Start::Output => Journal::create(&self.journal, &self.keys, Some(&self.out))?,
             Start::Journal(keep) => Journal::reopen(&self.journal, &self.keys, keep)?,
+            Start::Fresh | Start::Output => Journal::create(&self.journal, &self.keys, &self.identity.line())?,
         };
         faer::set_global_parallelism(faer::Par::Seq);
         // The runs go in parallel: their stage spinners would draw over each other and over the bar below.
@@ -328,10 +334,10 @@ impl Plan {
 ///
 /// The spec and the base scene must read, and every variant of every grid (not only this shard's) must parse and
 /// validate as a scene: an unknown key, a value of the wrong type or out of range, an unknown solver stops the sweep
-/// before anything runs ([`Error::Parse`] or [`Error::Invalid`], naming the case and its keys). A valid variant
-/// that cannot run (e.g. a named solver that does not apply to it, [`Error::Unsupported`]) gets rows with status
-/// `error` and the message in the last column, `message` (which holds the solver's explanation for the runs that
-/// did run).
+/// before anything runs ([`Error::Parse`] or [`Error::Invalid`], naming the case and its keys); so does a named
+/// solver that cannot take a variant (validation refuses it). A valid variant that still cannot be built or run
+/// (e.g. its BEM system singular, [`Error::Numerical`]) gets rows with status `error` and the reason in the
+/// column `message` (which holds the solver's explanation for the runs that did run).
 pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progress: bool) -> Result<usize> {
     let options = SweepOptions { shard, progress, ..SweepOptions::default() };
     Ok(Plan::new(spec_path, out_csv, &options)?.run()?.rows)
@@ -369,7 +375,7 @@ pub fn error_rows_in(csv_path: &Path) -> usize {
 }
 
 /// Join shard CSVs (the same header required, else an error) into one CSV sorted by (case, solver) — identical to
-/// the unsharded sweep's CSV except for the [`super::TIMING_COLUMNS`]. A case present twice (the same shard given
+/// the unsharded sweep's CSV except for the [`super::PROVENANCE_COLUMNS`]. A case present twice (the same shard given
 /// twice) is an error, and so is a journal (a sweep that has not finished) or a file ending in a cut line. Returns
 /// the number of rows written. Reads the files block by block: memory is 24 bytes per case, not the rows.
 pub fn merge(inputs: &[PathBuf], out_csv: &Path) -> Result<usize> {
@@ -377,7 +383,10 @@ pub fn merge(inputs: &[PathBuf], out_csv: &Path) -> Result<usize> {
 }
 
 /// [`merge`], and with `spec` (a sweep spec's path) check that the inputs hold every case of that sweep, each with
-/// its parameters, and no other: nothing lost, nothing twice. Nothing is written when a check fails.
+/// its parameters, and no other, and that every case's rows were computed for the case's scene as the spec and its
+/// base scenes resolve it now (their `scene_digest`: a shard run before the base scene was edited is refused, never
+/// mixed with one run after): nothing lost, nothing twice, nothing stale. Checking the digests validates every case
+/// of the spec once, as a sweep does before it runs. Nothing is written when a check fails.
 pub fn merge_checked(inputs: &[PathBuf], out_csv: &Path, spec: Option<&Path>) -> Result<usize> {
     let Some(first) = inputs.first() else {
         return Err(invalid(out_csv, "inputs", "no shard CSV to merge"));
@@ -388,10 +397,11 @@ pub fn merge_checked(inputs: &[PathBuf], out_csv: &Path, spec: Option<&Path>) ->
     };
     let mut blocks: Vec<Block> = Vec::new();
     let mut head: Option<super::row::Header> = None;
+    let mut marks = 0u64;
     for (f, path) in inputs.iter().enumerate() {
         let scanned = journal::scan(path, f as u32, false, head.as_ref().map(|h| h.names.as_slice()), |b, rows| {
             if let Some(e) = &expansion {
-                check_case(e, path, b, rows)?;
+                marks = marks.wrapping_add(check_case(e, path, b, rows)?);
             }
             blocks.push(b);
             Ok(())
@@ -424,22 +434,61 @@ pub fn merge_checked(inputs: &[PathBuf], out_csv: &Path, spec: Option<&Path>) ->
             return Err(invalid(b, "case", format!("case {} appears {place}: is a shard given twice?", w[0].case)));
         }
     }
-    if let Some(e) = &expansion {
-        let missing = missing_cases(e.len(), &blocks);
-        if let Some(first) = missing.first() {
-            return Err(invalid(
-                spec.expect("with an expansion"),
-                "case",
-                format!(
-                    "{} of its cases are in none of the inputs (the first: case {first}): a shard missing or not \
-                     finished?",
-                    missing.len()
-                ),
-            ));
-        }
+    if let (Some(e), Some(spec)) = (&expansion, spec) {
+        check_spec(e, spec, inputs, &blocks, marks)?;
     }
     let header = head.expect("at least one input");
     Ok(journal::write_sorted(inputs, blocks, &header, out_csv)?.rows)
+}
+
+/// The blocks of a merge hold every case of the spec (none missing), each computed for the case's scene as it is
+/// now (`marks`, the sum of [`mark`] over the blocks, equals the spec's).
+fn check_spec(e: &super::Expansion, spec: &Path, inputs: &[PathBuf], blocks: &[Block], marks: u64) -> Result<()> {
+    let missing = missing_cases(e.len(), blocks);
+    if let Some(first) = missing.first() {
+        return Err(invalid(
+            spec,
+            "case",
+            format!(
+                "{} of its cases are in none of the inputs (the first: case {first}): a shard missing or not \
+                 finished?",
+                missing.len()
+            ),
+        ));
+    }
+    let mut now = 0u64;
+    super::plan::each_case(
+        e,
+        |_, case| scene_digest(&case.scene),
+        |i, d| {
+            now = now.wrapping_add(mark(i, d));
+            Ok(())
+        },
+    )?;
+    if now == marks {
+        return Ok(());
+    }
+    // Which case, in which input (a second pass, on the error path only).
+    let (mut n, mut first) = (0, None);
+    for path in inputs {
+        journal::scan(path, 0, false, None, |b, rows| {
+            let case = b.case as usize;
+            if rows[0].scene_digest != Some(scene_digest(&e.case(case)?.scene)) {
+                n += 1;
+                first.get_or_insert_with(|| format!("case {case}, in {}", path.display()));
+            }
+            Ok(())
+        })?;
+    }
+    Err(invalid(
+        spec,
+        "case",
+        format!(
+            "{n} of its cases were computed for other scenes than the spec's cases are now (the first: {}): their \
+             base scene, swept values or solver settings changed since that shard ran; run it again",
+            first.unwrap_or_else(|| "none found on a second reading: an input changed meanwhile?".into())
+        ),
+    ))
 }
 
 /// The cases below `n` that no block holds (blocks sorted by case).
@@ -453,7 +502,18 @@ fn missing_cases(n: usize, blocks: &[Block]) -> Vec<usize> {
         .collect()
 }
 
-/// A block of a merge's input belongs to the spec: its case is one of the spec's, with the case's parameters.
-fn check_case(e: &super::Expansion, path: &Path, b: Block, rows: &[SweepRow]) -> Result<()> {
-    e.check_rows(b.case as usize, rows).map_err(|why| invalid(path, "case", format!("case {}: {why}", b.case)))
+/// A block of a merge's input belongs to the spec: its case is one of the spec's, with the case's parameters, and
+/// its rows carry one scene digest; returns the case's [`mark`].
+fn check_case(e: &super::Expansion, path: &Path, b: Block, rows: &[SweepRow]) -> Result<u64> {
+    let bad = |why: String| invalid(path, "case", format!("case {}: {why}", b.case));
+    e.check_rows(b.case as usize, rows).map_err(bad)?;
+    match rows.first().and_then(|r| r.scene_digest) {
+        Some(d) if rows.iter().all(|r| r.scene_digest == Some(d)) => Ok(mark(b.case as usize, d)),
+        Some(_) => Err(bad("its rows carry different `scene_digest`s".into())),
+        None => Err(bad(
+            "its rows carry no `scene_digest` (an older rollbem wrote them): `--spec` cannot check that they were \
+             computed for the spec's cases as they are now; run that shard again, or merge without --spec"
+                .into(),
+        )),
+    }
 }

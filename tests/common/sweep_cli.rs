@@ -7,7 +7,7 @@
 #[path = "paired.rs"]
 mod paired;
 use paired::paired;
-use rollbem::sweep::TIMING_COLUMNS;
+use rollbem::sweep::PROVENANCE_COLUMNS;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::Duration;
@@ -36,7 +36,7 @@ pub fn masked(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
         .map(|x| {
             let x = x.unwrap();
             paired(x.iter().collect::<Vec<_>>(), &h)
-                .map(|(c, n)| if TIMING_COLUMNS.contains(&n.as_str()) { String::new() } else { c.to_string() })
+                .map(|(c, n)| if PROVENANCE_COLUMNS.contains(&n.as_str()) { String::new() } else { c.to_string() })
                 .collect()
         })
         .collect();
