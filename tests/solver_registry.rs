@@ -42,7 +42,7 @@ fn all_does_not_run_the_reference_engine_and_names_come_from_the_registry() {
     assert!(r.runs.iter().all(|x| x.solver != "lemke_dense"));
     // Every registered solver builds with its defaults and reports its own name.
     for e in registry() {
-        assert_eq!((e.build)((e.defaults)().as_ref()).name(), e.name());
+        assert_eq!((e.build)(e.id, (e.defaults)().as_ref()).name(), e.name());
     }
     // An unknown solver is refused at parse time, naming the key and the registry's names.
     let text = std::fs::read_to_string(&p).unwrap().replace("use = [\"all\"]", "use = [\"lemkee\"]");

@@ -11,7 +11,7 @@
 //! runs are consistent: a `solved` run has finite residuals, resultants and nodal values; an unsolved one has no
 //! residuals, no resultants and a message.
 
-use rollbem::pipeline::Model;
+use rollbem::pipeline::{Model, Warm};
 use rollbem::scene::{Body, Scene};
 use rollbem::status::Status;
 
@@ -113,13 +113,28 @@ pub fn run(scene: &Scene) -> Ran {
     if let Err(e) = model.lcp(&scene) {
         assert!(has_message(&e), "Model::lcp: an error without a message");
     }
-    let report = match model.solve(&scene) {
+    // Warm starts across two models (issue 31): a `Warm` written by another model's solve must be cleared, never
+    // trusted, and this model's must then serve the other model the same way; neither may panic.
+    let mut warm = Warm::default();
+    let other = other_model();
+    if let Some((m, s)) = other {
+        let _ = m.solve_warm(s, &mut warm);
+    }
+    let report = match model.solve_warm(&scene, &mut warm) {
         Ok(r) => r,
         Err(e) => {
             assert!(has_message(&e), "Model::solve: an error without a message");
             return Ran::SolveRefused;
         }
     };
+    if let Some((m, s)) = other {
+        let back = m.solve_warm(s, &mut warm).expect("the fixed scene solves after a foreign warm start");
+        assert!(back.runs.iter().all(|r| r.status == Status::Solved), "the fixed scene after a foreign Warm");
+    }
+    // And on this model again, from its own solutions (a second drive of a creep curve).
+    if let Err(e) = model.solve_warm(&scene, &mut warm) {
+        assert!(has_message(&e), "Model::solve_warm: an error without a message");
+    }
     assert!(!report.runs.is_empty(), "a report without runs");
     let mut solved = 0;
     for run in &report.runs {
@@ -146,4 +161,20 @@ pub fn run(scene: &Scene) -> Ran {
         }
     }
     Ran::Reported { runs: report.runs.len(), solved }
+}
+
+/// A second model, built once per process from a fixed frictional half-plane scene (every solver that applies), for
+/// the cross-model warm starts of [`run`]; `None` if it cannot be built (it always can: a test replays it).
+fn other_model() -> Option<&'static (Model, Scene)> {
+    static OTHER: std::sync::OnceLock<Option<(Model, Scene)>> = std::sync::OnceLock::new();
+    OTHER
+        .get_or_init(|| {
+            let text = "name = \"other\"\n[wheel]\nradius = 500.0\nyoungs_modulus = 210000.0\npoisson_ratio = 0.3\n\
+                        model = \"half_plane\"\n[mesh]\nelement = \"constant\"\ncontact_half_width = 3.0\n\
+                        contact_elements = 24\n[contact]\nfriction = 0.3\n[drive]\nnormal_load = 1000.0\n\
+                        tangential_shift = -0.0004\n[solvers]\nuse = [\"all\", \"lemke_dense\"]\n";
+            let scene = Scene::from_toml(text, std::path::Path::new("<other>")).ok()?;
+            Some((Model::build(&scene).ok()?, scene))
+        })
+        .as_ref()
 }

@@ -50,6 +50,7 @@ from ._core import (
     Step,
     Stresses,
     __version__,
+    register_solver,
     run,
 )
 from ._core import _sweep_rows
@@ -64,6 +65,7 @@ __all__ = [
     "Residuals",
     "Stresses",
     "run",
+    "register_solver",
     "sweep",
     "NODE_STATES",
     "SCHEMA_VERSION",

@@ -30,7 +30,7 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union, final
+from typing import Any, Callable, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union, final
 
 import numpy as np
 import numpy.typing as npt
@@ -50,6 +50,7 @@ __all__ = [
     "Residuals",
     "Stresses",
     "run",
+    "register_solver",
     "_rust_creep_curve",
     "_sweep_rows",
     "NODE_STATES",
@@ -499,6 +500,18 @@ class Report:
 
 def run(scene: Scene, *, check: bool = False) -> Report:
     """Build the scene's model and solve the scene once (``rollbem run``)."""
+
+def register_solver(
+    name: str,
+    solve: Callable[[npt.NDArray[np.float64], npt.NDArray[np.float64]], Sequence[float]],
+    *,
+    summary: Optional[str] = None,
+    frictional: bool = False,
+) -> None:
+    """Register ``solve(M, q) -> z``, a solver of the LCP ``w = M z + q >= 0, z >= 0, w.z = 0`` written in Python
+    (M of shape (m, m), dimensionless, the scene's formulation), under ``name``: scenes then name it in
+    ``solvers.use`` and every run of it is certified by rollbem's residuals. ``frictional=False`` refuses it for
+    frictional scenes. ``ValueError`` for a name taken or not valid, ``TypeError`` for ``solve`` not callable."""
 
 def _rust_creep_curve(scene: Scene, creepages: Sequence[float], on_worker: bool = False) -> Tuple[float, List[float]]:
     """Benchmark reference: the same creep curve through the Rust API alone: (time [s], Q per creepage

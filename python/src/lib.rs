@@ -16,6 +16,7 @@ mod convert;
 mod drive;
 mod errors;
 mod model;
+mod plugin;
 mod report;
 mod scene;
 mod stresses;
@@ -37,6 +38,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(model::run, m)?)?;
     m.add_function(wrap_pyfunction!(model::_rust_creep_curve, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::_sweep_rows, m)?)?;
+    m.add_function(wrap_pyfunction!(plugin::register_solver, m)?)?;
     m.add("NODE_STATES", report::NODE_STATES.to_vec())?;
     m.add("SCHEMA_VERSION", rollbem::results::SCHEMA_VERSION)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

@@ -678,7 +678,23 @@ impl Scene {
         match validate::validate(document.clone(), path) {
             Ok(scene) => Ok(scene),
             Err(refusal) => {
-                let mut scene = validate::build(document, path)?;
+                // Solvers this process does not have (a document of a program with a solver plugged in): the scene
+                // as recorded without them.
+                let mut known = document;
+                let unknown: Vec<String> = known
+                    .solvers
+                    .use_
+                    .iter()
+                    .chain(known.solvers.settings.keys())
+                    .filter(|n| *n != "all" && crate::solvers::SolverId::from_name(n).is_none())
+                    .cloned()
+                    .collect();
+                known.solvers.use_.retain(|n| !unknown.contains(n));
+                known.solvers.settings.retain(|n, _| !unknown.contains(n));
+                if known.solvers.use_.is_empty() {
+                    known.solvers.use_ = vec!["all".into()];
+                }
+                let mut scene = validate::build(known, path)?;
                 scene.recorded = Some(refusal.to_string());
                 Ok(scene)
             }

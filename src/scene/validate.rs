@@ -239,6 +239,12 @@ impl SceneDocument {
         self.validate_drive(&c)?;
         self.validate_stresses(&c)?;
         let ck = self.checks.clone().unwrap_or_default();
+        if let Some(id) = ck.solver_status.keys().find(|id| id.entry().is_none()) {
+            return Err(c.bad(
+                "checks.solver_status",
+                format!("unknown solver `{id}` (solvers are: {})", crate::solvers::names()),
+            ));
+        }
         for (field, v) in [
             ("checks.hertz", ck.hertz),
             ("checks.agreement", ck.agreement),

@@ -81,7 +81,7 @@ pub const ENTRY: Entry = Entry::new::<ActiveSetSettings>(
      every scene",
     true,
     &["iterations", "factorisations", "gmres", "pivots"],
-    |s| Box::new(ActiveSet { settings: settings_of::<ActiveSetSettings>(s).copied().unwrap_or_default() }),
+    |_, s| Box::new(ActiveSet { settings: settings_of::<ActiveSetSettings>(s).copied().unwrap_or_default() }),
     // O(m²) per iteration with the FFT products and bordered solves, a few factorisations of the active block.
     |m| (1e-7 * m * m, 8.0 * m * m),
 );

@@ -33,7 +33,7 @@ pub const ENTRY: Entry = Entry::new::<QpSettings>(
      moment load",
     true,
     &["iterations"],
-    |s| Box::new(Clarabel { settings: settings_of::<QpSettings>(s).cloned().unwrap_or_default() }),
+    |_, s| Box::new(Clarabel { settings: settings_of::<QpSettings>(s).cloned().unwrap_or_default() }),
     cost,
 );
 impl Solver for Clarabel {

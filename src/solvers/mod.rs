@@ -116,8 +116,8 @@ impl SolverId {
     pub fn build(self, settings: &SolverSettings) -> Option<Box<dyn Solver>> {
         let entry = self.entry()?;
         Some(match settings.get(self) {
-            Some(s) => (entry.build)(s),
-            None => (entry.build)((entry.defaults)().as_ref()),
+            Some(s) => (entry.build)(self, s),
+            None => (entry.build)(self, (entry.defaults)().as_ref()),
         })
     }
 }
@@ -159,16 +159,35 @@ impl Serialize for SolverId {
 }
 
 impl<'de> Deserialize<'de> for SolverId {
-    /// A registered solver's name (an unknown name is an error listing the registered ones).
+    /// A solver's name: a registered one, or any other (a result document written by a program with a solver of its
+    /// own plugged in is read by one without it; its runs keep their solver's name). A scene validates the names it
+    /// gives against the registry (`solvers.use`, `checks.solver_status`).
     fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<SolverId, D::Error> {
         let name = String::deserialize(d)?;
-        SolverId::from_name(&name)
-            .ok_or_else(|| serde::de::Error::custom(format!("unknown solver `{name}` (solvers are: {})", names())))
+        Ok(SolverId::from_name(&name).unwrap_or_else(|| SolverId::interned(&name)))
     }
 }
 
-/// Builds a solver from its own (validated) settings, as the registry hands them out.
-pub type Builder = fn(&dyn Settings) -> Box<dyn Solver>;
+impl SolverId {
+    /// The identity of a name that is not registered (read from a document): each distinct name is kept once for
+    /// the process's life, so that identities stay `Copy` and `'static`.
+    fn interned(name: &str) -> SolverId {
+        static NAMES: std::sync::Mutex<Vec<&'static str>> = std::sync::Mutex::new(Vec::new());
+        let mut names = NAMES.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+        match names.iter().find(|n| **n == name) {
+            Some(n) => SolverId(n),
+            None => {
+                let leaked: &'static str = Box::leak(name.to_string().into_boxed_str());
+                names.push(leaked);
+                SolverId(leaked)
+            }
+        }
+    }
+}
+
+/// Builds a solver from its identity and its own (validated) settings, as the registry hands them out (the
+/// identity lets one builder serve several entries, e.g. solvers registered at run time by name).
+pub type Builder = fn(SolverId, &dyn Settings) -> Box<dyn Solver>;
 
 /// Parses and validates a solver's settings table (its name for the messages; `None`: the defaults).
 pub type Parser = fn(&str, Option<&toml::Value>) -> Result<Arc<dyn Settings>, SettingsError>;

@@ -751,7 +751,7 @@ pub const PGS_ENTRY: Entry = Entry::new::<PgsSettings>(
     "NORM-TANG split (Kalker; González & Abascal) with projected Gauss–Seidel sweeps; no moment load",
     true,
     &["sweeps", "outer"],
-    |s| Box::new(Pgs { settings: settings_of::<PgsSettings>(s).copied().unwrap_or_default() }),
+    |_, s| Box::new(Pgs { settings: settings_of::<PgsSettings>(s).copied().unwrap_or_default() }),
     // Up to m sweeps of m² each on the dense rows.
     |m| (5e-9 * m * m * m, 24.0 * m * m),
 );
@@ -762,7 +762,7 @@ pub const NORMTANG_QP_ENTRY: Entry = Entry::new::<NormTangQpSettings>(
     "NORM-TANG with clarabel QPs as the inner solver; no moment load",
     true,
     &["iterations", "outer"],
-    |s| Box::new(NormTangQp { settings: settings_of::<NormTangQpSettings>(s).cloned().unwrap_or_default() }),
+    |_, s| Box::new(NormTangQp { settings: settings_of::<NormTangQpSettings>(s).cloned().unwrap_or_default() }),
     super::clarabel::cost,
 );
 

@@ -33,7 +33,7 @@ pub const ENTRY: Entry = Entry::new::<LemkeSettings>(
     "Lemke's method, dense reference engine (whole basis inverse); every scene; run by name only",
     false,
     &["pivots"],
-    |s| {
+    |_, s| {
         let settings = settings_of::<LemkeSettings>(s).copied().unwrap_or_default();
         Box::new(Lemke { id: ID, settings, engine: solve_dense_cancellable })
     },

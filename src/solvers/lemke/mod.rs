@@ -341,7 +341,7 @@ pub const ENTRY: Entry = Entry::new::<LemkeSettings>(
      every scene",
     true,
     &["pivots"],
-    |s| {
+    |_, s| {
         let settings = settings_of::<LemkeSettings>(s).copied().unwrap_or_default();
         Box::new(Lemke { id: ID, settings, engine: solve_cancellable })
     },
