@@ -1,6 +1,8 @@
 //! Cancellation: a flag that a caller raises (Ctrl-C in the CLI, `KeyboardInterrupt` in Python) and that the work
-//! it started checks at its natural steps — a load path before each substep, a list of drives before each drive,
-//! every solver at each of its iterations (a pivot, an active-set iteration, a sweep, an interior-point step). A
+//! it started checks at its natural steps — a load path before each substep, a sweep and a list of drives before
+//! each case, every solver at each of its iterations (a pivot, an active-set iteration, a Gauss–Seidel sweep or
+//! NORM-TANG outer iteration, clarabel's interior-point step). Not checked: a model's build (the BEM assembly and
+//! condensation), the frictional LCP's formulation, and NORM-TANG's inner QPs (its outer loop checks). A
 //! cancelled solve returns promptly with what it has (never a panic), and the pipeline then returns
 //! [`crate::Error::Cancelled`] instead of a result: a cancelled run has no answer to report.
 //!

@@ -471,8 +471,13 @@ pub fn main() -> ExitCode {
                 Some(s) => spec.with_extension(format!("shard-{}-of-{}.csv", s.k, s.n)),
                 None => spec.with_extension("csv"),
             });
-            let options =
-                crate::sweep::SweepOptions { shard, resume, allow_large: allow_large || dry_run, progress: !cli.quiet };
+            let options = crate::sweep::SweepOptions {
+                shard,
+                resume,
+                allow_large: allow_large || dry_run,
+                progress: !cli.quiet,
+                ..Default::default()
+            };
             sweep(&spec, &out, &options, dry_run)
         }
         Cmd::SweepMerge { out, inputs, spec } => match crate::sweep::merge_checked(&inputs, &out, spec.as_deref()) {

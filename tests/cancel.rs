@@ -9,6 +9,7 @@ use rollbem::scene::Scene;
 use rollbem::solvers::{registry, Start, Termination};
 use std::path::Path;
 use std::process::Command;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
 
 /// A fretting path on a frictional half-plane: `substeps` substeps of a tangential load cycle (long enough to be
@@ -24,21 +25,62 @@ fn long_path(substeps: usize) -> String {
     )
 }
 
+/// Solves counted by a plug-in solver that is Lemke underneath ([`COUNTING`]): how far a path got.
+static SOLVES: AtomicUsize = AtomicUsize::new(0);
+
+/// Lemke, counting its solves.
+struct Counting;
+
+impl rollbem::solvers::Solver for Counting {
+    fn id(&self) -> rollbem::solvers::SolverId {
+        COUNTING.id
+    }
+    fn uses_lcp(&self) -> bool {
+        true
+    }
+    fn solve_from(&self, p: &rollbem::formulation::ContactProblem, start: Start) -> rollbem::solvers::Outcome {
+        SOLVES.fetch_add(1, Ordering::Relaxed);
+        let lemke = rollbem::solvers::build("lemke").unwrap();
+        let mut out = lemke.solve_from(p, Start { state: None, ..start });
+        out.state = None;
+        out
+    }
+}
+
+static COUNTING: rollbem::solvers::Entry = rollbem::solvers::Entry::new::<rollbem::solvers::lemke::LemkeSettings>(
+    "counting_lemke",
+    "Lemke, counting its solves (tests/cancel.rs)",
+    false,
+    &["pivots"],
+    |_, _| Box::new(Counting),
+    |m| (1e-9 * m * m * m, 8.0 * m * m),
+);
+
 #[test]
 fn a_path_stops_when_its_token_is_raised() {
-    let scene = Scene::from_toml(&long_path(5000), Path::new("long.toml")).unwrap();
+    let _ = rollbem::solvers::register(&COUNTING);
+    let text = long_path(5000).replace("use = [\"lemke\", \"active_set\"]", "use = [\"counting_lemke\"]");
+    let scene = Scene::from_toml(&text, Path::new("long.toml")).unwrap();
+    let total = 1 + 2 * 5000;
     let model = Model::build(&scene).unwrap();
     let cancel = Cancel::new();
     let raiser = {
         let c = cancel.clone();
         std::thread::spawn(move || {
-            std::thread::sleep(Duration::from_millis(200));
+            // Once the walk is under way (a count, not a timer), raise the token.
+            while SOLVES.load(Ordering::Relaxed) < 20 {
+                std::thread::sleep(Duration::from_millis(1));
+            }
             c.cancel();
+            SOLVES.load(Ordering::Relaxed)
         })
     };
     let out = model.solve_with(&scene, &mut Warm::default(), &cancel);
-    raiser.join().unwrap();
+    let at_cancel = raiser.join().unwrap();
+    let done = SOLVES.load(Ordering::Relaxed);
     assert!(matches!(out, Err(rollbem::Error::Cancelled)), "{:?}", out.map(|r| r.steps.len()));
+    // The walk stops at the substep in progress: at most one solve after the token rose, of 10 001.
+    assert!(done <= at_cancel + 1 && done < total / 10, "{done} solves of {total} (token raised at {at_cancel})");
     assert_eq!(rollbem::Error::Cancelled.exit_code(), 130);
 }
 
@@ -82,7 +124,12 @@ fn every_solver_stops_at_its_first_iteration_on_a_raised_token() {
 fn ctrl_c_stops_the_cli_with_code_130_and_writes_nothing() {
     let dir = tempfile::tempdir().unwrap();
     let scene = dir.path().join("long.toml");
-    std::fs::write(&scene, long_path(20000)).unwrap();
+    // 800 000 substeps of 20 elements with Lemke alone: minutes of work run to the end, so a CLI that ignored Ctrl-C
+    // would still be running when the patience below runs out.
+    let text = long_path(400_000)
+        .replace("contact_elements = 200", "contact_elements = 20")
+        .replace("use = [\"lemke\", \"active_set\"]", "use = [\"lemke\"]");
+    std::fs::write(&scene, text).unwrap();
     let json = dir.path().join("out.json");
     let child = Command::new(env!("CARGO_BIN_EXE_rollbem"))
         .args(["run", "--quiet", "--json"])
@@ -97,7 +144,12 @@ fn ctrl_c_stops_the_cli_with_code_130_and_writes_nothing() {
     std::thread::sleep(Duration::from_millis(500));
     let st = Command::new("kill").args(["-INT", &child.id().to_string()]).status().unwrap();
     assert!(st.success());
-    let out = child.wait_with_output().unwrap();
+    // Patience: a cancelled run ends at its next substep; one run to its end would take minutes (see above).
+    let (tx, rx) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let _ = tx.send(child.wait_with_output());
+    });
+    let out = rx.recv_timeout(Duration::from_secs(60)).expect("the CLI stopped after Ctrl-C").unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(130), "{err}");
     assert!(err.contains("interrupted"), "{err}");

@@ -100,3 +100,19 @@ fn a_document_from_looser_checks_or_schema_2_is_read() {
     let e = Report::from_json(&v.to_string(), Path::new("v99.json")).unwrap_err().to_string();
     assert!(e.contains("schema 99"), "{e}");
 }
+
+/// A recorded scene cannot be made runnable by an edit, and solver settings a later version added or a tightened
+/// range are read as the defaults, marked (review of issue 31).
+#[test]
+fn a_recorded_scene_stays_not_runnable_and_its_settings_read_leniently() {
+    let s = Scene::from_file(&Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/scenes/half-plane-hertz.toml"))
+        .unwrap();
+    let report = run_scene(&s).unwrap();
+    let mut v = serde_json::to_value(&report).unwrap();
+    v["scene"]["solvers"]["lemke"]["future_key"] = serde_json::json!(3);
+    v["scene"]["solvers"]["clarabel"]["tolerance"] = serde_json::json!(7.0);
+    let read = Report::from_json(&v.to_string(), Path::new("future.json")).unwrap();
+    let why = read.scene.runnable().unwrap_err().to_string();
+    assert!(why.contains("solvers.lemke") && why.contains("solvers.clarabel"), "{why}");
+    assert!(read.scene.with_creepage(1e-3).is_err() && read.scene.edit(|_| {}).is_err());
+}

@@ -3,11 +3,12 @@
 //! (m, m)). rollbem builds the LCP (its formulation, with the scene's drive, friction and slip operator), calls the
 //! function on the worker thread with the GIL held, unpacks z into the physical unknowns and certifies the answer by
 //! its own residuals, as for a built-in solver; scenes name it in `[solvers] use`. What the function raises or
-//! returns wrongly (a wrong length, a non-finite value) is the run's `numerical_error`, with the message.
+//! returns wrongly (a wrong length, a non-finite value) is the run's `numerical_error`, with the message. A call into
+//! Python cannot be interrupted from here: Ctrl-C cancels the run when the function returns.
 
 use pyo3::prelude::*;
 use rollbem::formulation::ContactProblem;
-use rollbem::solvers::{Entry, Facts, Figures, Outcome, Solver, SolverId, Start, Termination, Validate, Work};
+use rollbem::solvers::{Entry, Facts, Outcome, Solver, SolverId, Start, Termination, Validate, Work};
 use std::sync::Mutex;
 
 /// The registered Python solvers: name → (the callable, whether it takes frictional problems).
@@ -83,14 +84,7 @@ impl Solver for PySolver {
                 return Outcome::failed(Termination::NumericalError, why, Work::default());
             }
         };
-        Outcome {
-            solution: Some(p.unpack(&z)),
-            status: Termination::Solved,
-            message: format!("the Python solver returned z ({m} unknowns)"),
-            work: Work::default(),
-            figures: Figures::default(),
-            state: None,
-        }
+        Outcome::solved(p.unpack(&z), format!("the Python solver returned z ({m} unknowns)"), Work::default())
     }
 }
 

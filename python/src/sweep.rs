@@ -4,7 +4,7 @@
 use crate::errors::{to_py, Failure};
 use crate::worker;
 use pyo3::prelude::*;
-use rollbem::sweep::{sweep_rows, Shard, SweepRow};
+use rollbem::sweep::{sweep_rows_with, Shard, SweepRow};
 use std::path::PathBuf;
 
 /// A CSV cell as a Python value: empty → `None`, an integer → int, a number → float, anything else → str.
@@ -44,7 +44,7 @@ pub fn _sweep_rows<'py>(py: Python<'py>, spec: PathBuf, shard: Option<String>) -
             to_py(py, Failure::Rollbem(error))
         })?),
     };
-    let (keys, rows) = worker::run(py, move |_| Ok(sweep_rows(&spec, shard, false)?))?;
+    let (keys, rows) = worker::run(py, move |cancel| Ok(sweep_rows_with(&spec, shard, false, cancel)?))?;
     let columns = rollbem::sweep::row::header(&keys);
     let mut out = Vec::with_capacity(rows.len());
     for row in &rows {

@@ -120,6 +120,10 @@ impl std::fmt::Display for FormulationName {
 pub enum DriveIssue {
     /// A nonzero tangential load with no friction: no static solution (user's units).
     TangentialLoadWithoutFriction(f64),
+    /// The law asks for normal–tangential coupling but the flexibility holds no cross blocks K_NT, K_TN (built
+    /// without them: `source::Blocks::Uncoupled`, e.g. for a pair whose cross flexibilities vanish; use the law the
+    /// pipeline simulates, `pipeline::Model::law`).
+    CouplingWithoutCrossBlocks,
 }
 
 /// The normal problem of a frictionless scene or of the sliding limit: `g = K f + Σ_m r_m ρ_m + q₀ ≥ 0 ⊥ f ≥ 0`
@@ -188,6 +192,9 @@ impl<'a> ContactProblem<'a> {
         slip: SlipOperator,
     ) -> Result<ContactProblem<'a>, DriveIssue> {
         let kind = ProblemKind::of(law.friction, &drive)?;
+        if law.coupling && flex.k_tt.is_some() && (flex.k_nt.is_none() || flex.k_tn.is_none()) {
+            return Err(DriveIssue::CouplingWithoutCrossBlocks);
+        }
         let dofs = drive::rigid_dofs(flex, &drive, &slip);
         let mut p =
             ContactProblem { flex, law, drive, kind, dofs, slip, normal: None, lcp_cache: std::sync::OnceLock::new() };

@@ -103,6 +103,13 @@ impl Model {
         &self.built
     }
 
+    /// The contact law the model simulates for `scene`: the scene's, without coupling where the pair's cross
+    /// flexibilities vanish ([`stages::simulated_law`]); what a caller posing its own `ContactProblem` on
+    /// [`Model::built`] must use.
+    pub fn law(&self, scene: &Scene) -> crate::formulation::ContactLaw {
+        stages::simulated_law(scene)
+    }
+
     /// The time the build took, per stage (seconds).
     pub fn timing(&self) -> SourceTiming {
         self.built.timing

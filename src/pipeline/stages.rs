@@ -63,8 +63,15 @@ pub fn build_problem<'a>(
     drive: Drive,
     slip: SlipOperator,
 ) -> Result<ContactProblem<'a>> {
-    ContactProblem::new(flex, simulated_law(scene), drive, slip)
-        .map_err(|DriveIssue::TangentialLoadWithoutFriction(_)| drive_error(scene))
+    ContactProblem::new(flex, simulated_law(scene), drive, slip).map_err(|issue| match issue {
+        DriveIssue::TangentialLoadWithoutFriction(_) => drive_error(scene),
+        DriveIssue::CouplingWithoutCrossBlocks => Error::Unsupported {
+            path: scene.origin().to_path_buf(),
+            message: "contact.coupling: the flexibility was built without the cross blocks the law asks for \
+                          (build it with `pipeline::stages::blocks_for` of the scene)"
+                .into(),
+        },
+    })
 }
 
 /// The contact problem of a one-step scene on a flexibility (its drive and slip operator); a load path has none
@@ -145,10 +152,12 @@ pub fn effects(scene: &Scene) -> (Vec<String>, Vec<EffectNote>) {
         "friction",
         mu > 0.0,
         mu > 0.0,
-        if mu > 0.0 {
-            format!("Coulomb friction, μ = {mu}")
-        } else {
-            "frictionless (μ = 0): the normal problem only, no tangential flexibility built".into()
+        match (mu > 0.0, scene.rolling().is_some()) {
+            (true, _) => format!("Coulomb friction, μ = {mu}"),
+            (false, false) => "frictionless (μ = 0): the normal problem only, no tangential flexibility built".into(),
+            (false, true) => "frictionless (μ = 0): no shear; the tangential flexibility is built for the rolling \
+                              slip velocity"
+                .into(),
         },
     );
     let blocks = blocks_for(scene);

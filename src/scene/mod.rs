@@ -600,8 +600,11 @@ impl Scene {
         validate::validate(document, path)
     }
 
-    /// A changed copy: `change` edits the document, which is validated again (errors name the scene's origin).
+    /// A changed copy: `change` edits the document, which is validated again (errors name the scene's origin). A
+    /// scene read back as recorded and not runnable ([`Scene::runnable`]) is refused: its document may have lost what
+    /// this version could not read, and an edit must not make it look runnable.
     pub fn edit(&self, change: impl FnOnce(&mut SceneDocument)) -> Result<Scene> {
+        self.runnable()?;
         let mut d = self.document.clone();
         change(&mut d);
         Scene::from_document(d, &self.origin)
@@ -694,8 +697,24 @@ impl Scene {
                 if known.solvers.use_.is_empty() {
                     known.solvers.use_ = vec!["all".into()];
                 }
+                // Settings tables this version refuses (a key added later, a range tightened): the defaults.
+                let mut dropped = Vec::new();
+                known.solvers.settings.retain(|n, table| {
+                    let keep = crate::solvers::entry(n).is_some_and(|e| (e.parse)(n, Some(table)).is_ok());
+                    if !keep {
+                        dropped.push(format!("solvers.{n}"));
+                    }
+                    keep
+                });
                 let mut scene = validate::build(known, path)?;
-                scene.recorded = Some(refusal.to_string());
+                let mut why = refusal.to_string();
+                if !dropped.is_empty() {
+                    why = format!(
+                        "{why}; settings this version refuses were read as the defaults: {}",
+                        dropped.join(", ")
+                    );
+                }
+                scene.recorded = Some(why);
                 Ok(scene)
             }
         }

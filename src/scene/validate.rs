@@ -673,13 +673,15 @@ impl SceneDocument {
             ));
         }
         let mut rolls = false;
+        let mut substeps = 0u128;
         for (k, st) in self.steps.iter().enumerate() {
             let prefix = format!("steps[{k}]");
             self.check_drive(c, &prefix, &st.drive())?;
             if st.substeps == Some(0) {
                 return Err(c.bad(&format!("{prefix}.substeps"), "must be at least 1".into()));
             }
-            self.check_path_size(c, k)?;
+            substeps += st.substeps.unwrap_or(1) as u128;
+            self.check_path_size(c, k, substeps)?;
             if let Some(r) = st.roll {
                 if !r.is_finite() || r < 0.0 {
                     return Err(c.bad(&format!("{prefix}.roll"), format!("must be a finite length ≥ 0 (got {r})")));
@@ -704,12 +706,11 @@ impl SceneDocument {
         }
     }
 
-    /// The size guard of a load path, checked at each step `k` on the substeps so far (so the message names the step
-    /// where the path grows too large): a path's result holds every substep's run, so its memory is estimated as
-    /// substeps × solvers × contact nodes × [`PATH_BYTES_PER_NODE`] and refused above [`MAX_PATH_RESULT_BYTES`], and
-    /// more than [`MAX_PATH_SUBSTEPS`] substeps are refused whatever the mesh — before anything is allocated.
-    fn check_path_size(&self, c: &Checker, k: usize) -> Result<()> {
-        let substeps = self.steps[..=k].iter().fold(0u128, |n, st| n + st.substeps.unwrap_or(1) as u128);
+    /// The size guard of a load path, checked at each step `k` on the `substeps` up to it (so the message names the
+    /// step where the path grows too large): a path's result holds every substep's run, so its memory is estimated
+    /// as substeps × solvers × contact nodes × [`PATH_BYTES_PER_NODE`] and refused above [`MAX_PATH_RESULT_BYTES`],
+    /// and more than [`MAX_PATH_SUBSTEPS`] substeps are refused whatever the mesh — before anything is allocated.
+    fn check_path_size(&self, c: &Checker, k: usize, substeps: u128) -> Result<()> {
         let nodes =
             self.mesh.contact_elements as u128 * if self.mesh.element == ElementKind::Quadratic { 3 } else { 1 };
         let all = self.solvers.use_.iter().any(|u| u == "all");

@@ -68,9 +68,10 @@ pub fn register(entry: &'static Entry) -> Result<(), String> {
     let name = entry.id.name();
     let valid = !name.is_empty()
         && name != "all"
+        && name != "use"
         && name.chars().all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
     if !valid {
-        return Err(format!("solver name `{name}`: lowercase letters, digits and `_`, not `all`"));
+        return Err(format!("solver name `{name}`: lowercase letters, digits and `_`, not `all` or `use`"));
     }
     let mut extra = REGISTERED.write().unwrap_or_else(std::sync::PoisonError::into_inner);
     if BUILT_IN.iter().chain(extra.iter()).any(|e| e.id.name() == name) {
@@ -106,9 +107,10 @@ impl SolverId {
         registry().into_iter().find(|e| e.id.0 == name).map(|e| e.id)
     }
 
-    /// Its place in the registry (unregistered identities last).
+    /// Its place among the built-in solvers (every other identity after them, by name): fixed for the process's
+    /// life, so an ordered map of identities stays ordered whatever is registered later.
     fn rank(self) -> usize {
-        registry().iter().position(|e| e.id == self).unwrap_or(usize::MAX)
+        BUILT_IN.iter().position(|e| e.id == self).unwrap_or(usize::MAX)
     }
 
     /// Build the solver with the given settings (validated settings of every registered solver; a solver with no
@@ -327,11 +329,13 @@ impl SolverSettings {
         self.0.get(&id).map(|s| &**s)
     }
 
-    /// The settings as tables keyed by solver name, for every registered solver, every default filled in (the
-    /// scene as parsed).
+    /// The settings as tables keyed by solver name, every default filled in (the scene as parsed): every built-in
+    /// solver's, and a solver registered at run time only when the scene gave its table (a scene that does not name
+    /// a plug-in writes no trace of it, and stays readable where it is not registered).
     pub fn tables(&self) -> BTreeMap<String, toml::Value> {
         registry()
             .into_iter()
+            .filter(|e| BUILT_IN.iter().any(|b| b.id == e.id) || self.0.contains_key(&e.id))
             .map(|e| {
                 let table = match self.get(e.id) {
                     Some(s) => s.table(),
@@ -422,7 +426,8 @@ pub struct Start {
     /// The solver's own state from its previous run (see [`Start::take_state`]).
     pub state: Option<SolverState>,
     /// The caller's cancellation token: a solver checks it at each iteration and returns promptly when it is
-    /// raised (its termination is then `not_converged`, and the pipeline reports the run as cancelled).
+    /// raised, with a termination other than `solved` (the pipeline then returns `Error::Cancelled` rather than a
+    /// run).
     pub cancel: Cancel,
 }
 
@@ -683,6 +688,19 @@ pub struct Outcome {
 }
 
 impl Outcome {
+    /// A solver's claimed solution (the harness still certifies it by its own residuals), with its message and work,
+    /// no figures and no state.
+    pub fn solved(solution: Solution, message: String, work: Work) -> Outcome {
+        Outcome {
+            solution: Some(solution),
+            status: Termination::Solved,
+            message,
+            work,
+            figures: Figures::default(),
+            state: None,
+        }
+    }
+
     /// An outcome with no solution (a failure, or a cancelled run), no figures and no state.
     pub fn failed(status: Termination, message: String, work: Work) -> Outcome {
         Outcome { solution: None, status, message, work, figures: Figures::default(), state: None }

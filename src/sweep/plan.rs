@@ -55,7 +55,7 @@ pub const UNIT_CASES: usize = 256;
 const BASE_BYTES: f64 = 10e6;
 
 /// How a sweep runs (the `sweep` command's flags).
-#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[derive(Debug, Clone, Default)]
 pub struct SweepOptions {
     /// Run only this shard's cases.
     pub shard: Option<Shard>,
@@ -66,6 +66,10 @@ pub struct SweepOptions {
     pub allow_large: bool,
     /// Show a progress bar (only when standard error is a terminal).
     pub progress: bool,
+    /// The caller's cancellation token: no case starts after it is raised, the cases in progress stop at their
+    /// solvers' next iteration, and the run returns [`crate::Error::Cancelled`] (the journal keeps every case that
+    /// finished: `--resume` goes on from there).
+    pub cancel: crate::cancel::Cancel,
 }
 
 /// Where a run starts from.
@@ -234,7 +238,7 @@ impl Plan {
             spec,
             expansion,
             keys,
-            options: *options,
+            options: options.clone(),
             out: out.to_path_buf(),
             journal,
             start,

@@ -127,11 +127,13 @@ fn error_rows(case: &Case, err: &Error) -> Vec<SweepRow> {
 struct Shared {
     built: Option<(Scene, Result<Model>)>,
     warm: Option<crate::pipeline::Warm>,
+    cancel: crate::cancel::Cancel,
 }
 
 impl Shared {
     /// The rows of a case, sorted by solver.
-    fn rows(&mut self, case: &Case) -> Vec<SweepRow> {
+    fn rows(&mut self, case: &Case) -> Result<Vec<SweepRow>> {
+        self.cancel.check()?;
         let s = &case.scene;
         let fits = |m: &Scene| Model::shares_source(m, s) && Model::needs(m) == Model::needs(s);
         if !self.built.as_ref().is_some_and(|(m, _)| fits(m)) {
@@ -140,11 +142,14 @@ impl Shared {
                 w.clear();
             }
         }
-        let solved = match (&self.built.as_ref().expect("built above").1, self.warm.as_mut()) {
-            (Ok(m), Some(w)) => m.solve_warm(s, w).map_err(|e| error_rows(case, &e)),
-            (Ok(m), None) => m.solve(s).map_err(|e| error_rows(case, &e)),
-            (Err(e), _) => Err(error_rows(case, e)),
+        let mut cold = crate::pipeline::Warm::default();
+        let solved = match (self.built.as_ref().map(|b| &b.1), self.warm.as_mut()) {
+            (Some(Ok(m)), w) => m.solve_with(s, w.unwrap_or(&mut cold), &self.cancel).map_err(|e| error_rows(case, &e)),
+            (Some(Err(e)), _) => Err(error_rows(case, e)),
+            (None, _) => return Err(Error::Cancelled),
         };
+        // A case cancelled in its solve has no rows: the run stops (its journal keeps the finished cases).
+        self.cancel.check()?;
         let mut rows = match solved {
             Ok(report) => case_rows(case, &report),
             Err(rows) => rows,
@@ -153,7 +158,7 @@ impl Shared {
         for r in &mut rows {
             r.scene_digest = digest;
         }
-        rows
+        Ok(rows)
     }
 }
 
@@ -210,9 +215,13 @@ impl Plan {
             self.run_timed(&journal, &bar)?;
         } else {
             self.units.par_iter().try_for_each(|unit| {
-                let mut model = Shared { warm: self.spec.warm_start.then(Default::default), ..Default::default() };
+                let mut model = Shared {
+                    warm: self.spec.warm_start.then(Default::default),
+                    cancel: self.options.cancel.clone(),
+                    ..Default::default()
+                };
                 for &i in unit {
-                    append(&journal, &model.rows(&self.expansion.case(i as usize)?))?;
+                    append(&journal, &model.rows(&self.expansion.case(i as usize)?)?)?;
                     bar.inc(1);
                 }
                 Ok::<(), Error>(())
@@ -266,12 +275,16 @@ impl Plan {
 
     /// The cases one at a time, timed repeatedly ([`retime`]) in batches of [`TIMING_BATCH`].
     fn run_timed(&self, journal: &Shelf, bar: &ProgressBar) -> Result<()> {
-        let mut model = Shared { warm: self.spec.warm_start.then(Default::default), ..Default::default() };
+        let mut model = Shared {
+            warm: self.spec.warm_start.then(Default::default),
+            cancel: self.options.cancel.clone(),
+            ..Default::default()
+        };
         let mut cases = self.units.iter().flatten().copied().peekable();
         while cases.peek().is_some() {
             let mut batch = Vec::with_capacity(TIMING_BATCH);
             for i in cases.by_ref().take(TIMING_BATCH) {
-                batch.push((i, model.rows(&self.expansion.case(i as usize)?)));
+                batch.push((i, model.rows(&self.expansion.case(i as usize)?)?));
                 bar.inc(1);
             }
             self.retime(&mut batch, bar)?;
@@ -349,13 +362,23 @@ pub fn run_sweep(spec_path: &Path, shard: Option<Shard>, out_csv: &Path, progres
 /// flight) into a private temporary folder, removed afterwards; the rows are then read back typed, so they are
 /// exactly the CSV's. Errors as [`run_sweep`]'s; a grid above the size guard is refused as it is by the CLI.
 pub fn sweep_rows(spec_path: &Path, shard: Option<Shard>, progress: bool) -> Result<(Vec<String>, Vec<SweepRow>)> {
+    sweep_rows_with(spec_path, shard, progress, &crate::cancel::Cancel::never())
+}
+
+/// [`sweep_rows`], stopped by `cancel` ([`SweepOptions::cancel`]): [`Error::Cancelled`] and no rows.
+pub fn sweep_rows_with(
+    spec_path: &Path,
+    shard: Option<Shard>,
+    progress: bool,
+    cancel: &crate::cancel::Cancel,
+) -> Result<(Vec<String>, Vec<SweepRow>)> {
     static SEQ: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
     let seq = SEQ.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let nanos = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.subsec_nanos());
     let dir = std::env::temp_dir().join(format!("rollbem-sweep-{}-{seq}-{nanos}", std::process::id()));
     std::fs::create_dir(&dir).map_err(|source| Error::Write { path: dir.clone(), source })?;
     let out = dir.join("rows.csv");
-    let options = SweepOptions { shard, progress, ..SweepOptions::default() };
+    let options = SweepOptions { shard, progress, cancel: cancel.clone(), ..SweepOptions::default() };
     let result =
         Plan::new(spec_path, &out, &options).and_then(|plan| plan.run()).and_then(|_| SweepRow::read_csv(&out));
     // The folder is ours alone; failing to remove it loses nothing.

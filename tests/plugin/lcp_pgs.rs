@@ -9,9 +9,7 @@
 //! examples/cli_with_plugin.rs). It is not part of the library.
 
 use rollbem::formulation::ContactProblem;
-use rollbem::solvers::{
-    settings_of, Entry, Facts, Figures, Outcome, Solver, SolverId, Start, Termination, Validate, Work,
-};
+use rollbem::solvers::{settings_of, Entry, Facts, Outcome, Solver, SolverId, Start, Termination, Validate, Work};
 use serde::{Deserialize, Serialize};
 
 /// `[solvers.lcp_pgs]`.
@@ -103,14 +101,8 @@ impl Solver for LcpPgs {
                 scale = scale.max(new);
             }
             if change <= self.settings.tolerance * scale {
-                return Outcome {
-                    solution: Some(p.unpack(&z)),
-                    status: Termination::Solved,
-                    message: format!("converged in {sweep} sweeps"),
-                    work: Work::one("sweeps", sweep as u64),
-                    figures: Figures::default(),
-                    state: None,
-                };
+                let work = Work::one("sweeps", sweep as u64);
+                return Outcome::solved(p.unpack(&z), format!("converged in {sweep} sweeps"), work);
             }
         }
         let n = self.settings.max_sweeps as u64;
