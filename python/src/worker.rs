@@ -3,9 +3,10 @@
 //! [`run`] hands the job to a worker thread and waits for it with the GIL released (`Python::detach`), waking every
 //! [`POLL`] to run Python's signal handlers (`check_signals`). On Ctrl-C the wait ends at once with
 //! `KeyboardInterrupt`, and the job's cancellation token ([`rollbem::cancel::Cancel`]) is raised: a list of drives
-//! stops before its next drive, a load path before its next substep, and every solver at its next iteration (a
-//! pivot, an active-set iteration, a sweep, an interior-point step), so the worker is idle again within an
-//! iteration and its partial work is dropped. A panic inside the job is caught on its thread and becomes
+//! or a sweep stops before its next drive or case, a load path before its next substep, and every solver at its
+//! next iteration (a pivot, an active-set iteration, a Gauss–Seidel sweep, an interior-point step), so the worker is
+//! idle again within an iteration and its partial work is dropped. Not interrupted: a model's build, and a call into
+//! a solver written in Python ([`crate::plugin`]). A panic inside the job is caught on its thread and becomes
 //! `InternalError`: no panic crosses into Python.
 //!
 //! The workers are kept between calls ([`Pool`]): a thread per call made a 50-point creep curve solved point by point
