@@ -28,6 +28,18 @@ pub enum NodeState {
     Separated,
 }
 
+impl NodeState {
+    /// Its name as written in results (`stick`, `slip`, `contact`, `separated`).
+    pub fn name(self) -> &'static str {
+        match self {
+            NodeState::Stick => "stick",
+            NodeState::Slip => "slip",
+            NodeState::Contact => "contact",
+            NodeState::Separated => "separated",
+        }
+    }
+}
+
 /// Results at one contact node (user's units).
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct NodeResult {
@@ -247,7 +259,7 @@ impl Evaluation {
             ("tangential rigid-body displacement", b.tangential),
             ("rigid-body rotation", Some(b.rotation)),
         ];
-        values.into_iter().find(|(_, v)| v.is_some_and(bad)).map(|(name, v)| format!("the {name} is {}", v.unwrap()))
+        values.into_iter().find_map(|(name, v)| v.filter(|v| bad(*v)).map(|v| format!("the {name} is {v}")))
     }
 }
 

@@ -64,7 +64,7 @@
 //! (`csv` names it; `rollbem run --json` writes it, [`StressResult::spill`]).
 
 use crate::bem::stress::{InteriorStress, StressError};
-use crate::error::Error;
+use crate::error::{ArgumentError, Error};
 use crate::halfplane::strip_stress;
 use crate::mesh::{Mesh, Shape};
 use crate::post::NodeResult;
@@ -513,12 +513,35 @@ impl<'a> StressEvaluator<'a> {
         }))
     }
 
+    /// The number of contact nodes of the source: the length of the `nodes` that [`StressEvaluator::evaluate`] takes.
+    pub fn contact_nodes(&self) -> usize {
+        match &self.body {
+            Body::HalfPlane { a, .. } => a.len(),
+            Body::Wheel { response, .. } => response.model.mesh.contact_nodes.len(),
+        }
+    }
+
+    /// `nodes` of one entry per contact node of the source, else the error naming them.
+    fn check_nodes(&self, function: &'static str, nodes: &[NodeResult]) -> Result<(), ArgumentError> {
+        if nodes.len() == self.contact_nodes() {
+            return Ok(());
+        }
+        Err(ArgumentError::new(
+            function,
+            "nodes",
+            format!(
+                "has {} entries, the source {} contact nodes: a run of another model?",
+                nodes.len(),
+                self.contact_nodes()
+            ),
+        ))
+    }
+
     /// The field of a solved run from its contact nodes' tractions (`pressure`, `shear`, user's units, in contact-node
-    /// order), evaluated in parallel over the grid points.
-    ///
-    /// # Panics
-    /// If `nodes` does not have one entry per contact node of the source.
-    pub fn evaluate(&self, nodes: &[NodeResult]) -> StressResult {
+    /// order), evaluated in parallel over the grid points. `nodes` without one entry per contact node of the source
+    /// ([`StressEvaluator::contact_nodes`]) are refused.
+    pub fn evaluate(&self, nodes: &[NodeResult]) -> Result<StressResult, ArgumentError> {
+        self.check_nodes("StressEvaluator::evaluate", nodes)?;
         let t0 = Instant::now();
         let (stress, surface) = match &self.body {
             Body::HalfPlane { a, b } => (half_plane_field(&self.grid, a, b, nodes), half_plane_surface(a, b, nodes)),
@@ -526,9 +549,9 @@ impl<'a> StressEvaluator<'a> {
                 let e = self.modulus;
                 let p: Vec<f64> = nodes.iter().map(|n| n.pressure / e).collect();
                 let q: Vec<f64> = nodes.iter().map(|n| n.shear / e).collect();
-                let (u, t) = response.boundary(&p, &q);
+                let (u, t) = response.boundary(&p, &q)?;
                 let model = &response.model;
-                let ev = InteriorStress::new(&model.mesh, &model.kelvin, &u, &t);
+                let ev = InteriorStress::new(&model.mesh, &model.kelvin, &u, &t)?;
                 let todo: Vec<usize> = (0..points.len()).filter(|&k| refused[k].is_none()).collect();
                 let sub: Vec<[f64; 2]> = todo.iter().map(|&k| points[k]).collect();
                 let mut out: Vec<Result<[f64; 3], PointError>> =
@@ -545,15 +568,24 @@ impl<'a> StressEvaluator<'a> {
             }
         };
         let field = StressField { grid: self.grid, nu: self.nu, stress, surface };
-        StressResult::of(self.model, self.quantities.clone(), field, t0.elapsed().as_secs_f64())
+        Ok(StressResult::of(self.model, self.quantities.clone(), field, t0.elapsed().as_secs_f64()))
     }
 
     /// The elastic counter-body's field from the same run (`None` for a rigid flat): the half-plane below the
     /// contact loaded by the opposite tractions, on the same grid with depth measured into the counter-body and x
     /// as on the wheel. Mirrored into the wheel's configuration the counter-body carries the pressure p and the
     /// shear −q, so its field is the half-plane formula with (p, −q) and its own ν; τ_xz is in its (x, depth) axes.
-    pub fn evaluate_counter_body(&self, nodes: &[NodeResult]) -> Option<StressResult> {
-        let (a, b, nu) = self.counter.as_ref()?;
+    /// Refused as [`StressEvaluator::evaluate`].
+    pub fn evaluate_counter_body(&self, nodes: &[NodeResult]) -> Result<Option<StressResult>, ArgumentError> {
+        let Some((a, b, nu)) = self.counter.as_ref() else { return Ok(None) };
+        self.check_nodes("StressEvaluator::evaluate_counter_body", nodes)?;
+        if a.len() != nodes.len() {
+            return Err(ArgumentError::new(
+                "StressEvaluator::evaluate_counter_body",
+                "nodes",
+                format!("has {} entries, the counter-body {} strips", nodes.len(), a.len()),
+            ));
+        }
         let t0 = Instant::now();
         let mirrored: Vec<NodeResult> = nodes.iter().map(|n| NodeResult { shear: -n.shear, ..n.clone() }).collect();
         let field = StressField {
@@ -564,7 +596,7 @@ impl<'a> StressEvaluator<'a> {
         };
         let mut r = StressResult::of(BodyModel::HalfPlane, self.quantities.clone(), field, t0.elapsed().as_secs_f64());
         r.body = "counter_body".into();
-        Some(r)
+        Ok(Some(r))
     }
 }
 
@@ -606,7 +638,10 @@ fn wheel_surface(
                 Shape::Straight { a, b } => 0.5 * (a[0] + b[0]) * l0,
                 Shape::Arc(arc) => arc.position(0.0)[0] * l0,
             };
+            // `u`, `t` are the response's own boundary solution on its mesh (checked when it was computed).
             let s = crate::bem::stress::boundary_stress(mesh, &model.kelvin, u, t, i, 0.0)
+                .ok()
+                .flatten()
                 .ok_or(PointError::Singular)
                 .and_then(|s| finite([s[0] * e, s[1] * e, s[2] * e]));
             (x, s)
@@ -635,7 +670,7 @@ fn half_plane_field(
     b: &[f64],
     nodes: &[NodeResult],
 ) -> Vec<Result<[f64; 3], PointError>> {
-    assert_eq!(nodes.len(), a.len(), "one contact node per half-plane strip");
+    debug_assert_eq!(nodes.len(), a.len(), "checked by the caller (StressEvaluator::check_nodes)");
     let loaded: Vec<(f64, f64, f64, f64)> = (0..a.len())
         .filter(|&j| nodes[j].pressure != 0.0 || nodes[j].shear != 0.0)
         .map(|j| (a[j], b[j], nodes[j].pressure, nodes[j].shear))
@@ -706,7 +741,7 @@ fn refused_grid(
         .iter()
         .map(|e| distance_to_element(&e.shape, p))
         .min_by(|a, b| a.0.total_cmp(&b.0))
-        .expect("a BEM mesh has elements");
+        .unwrap_or((f64::INFINITY, f64::NAN));
     let reach = match mesh.kind {
         ElementKind::Constant => STRESS_NEAR_BOUNDARY_CONSTANT,
         ElementKind::Quadratic => STRESS_NEAR_BOUNDARY_QUADRATIC,

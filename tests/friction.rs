@@ -466,7 +466,7 @@ fn block_and_dense_lemke_engines_agree() {
     ] {
         let fl = source::build(&s, Blocks::All).unwrap().flex;
         let p = rollbem::pipeline::stages::scene_problem(&s, &fl).unwrap();
-        let lcp = p.lcp();
+        let lcp = p.lcp().expect("an LCP below gross sliding");
         let (a, b) = (solve(lcp, &st), solve_dense(lcp, &st));
         assert_eq!(a.status, Termination::Solved, "{}", a.message);
         assert_eq!(b.status, Termination::Solved, "{}", b.message);

@@ -63,8 +63,13 @@ pub fn build_problem<'a>(
     drive: Drive,
     slip: SlipOperator,
 ) -> Result<ContactProblem<'a>> {
-    ContactProblem::new(flex, simulated_law(scene), drive, slip)
-        .map_err(|DriveIssue::TangentialLoadWithoutFriction(_)| drive_error(scene))
+    ContactProblem::new(flex, simulated_law(scene), drive, slip).map_err(|e| match e {
+        DriveIssue::TangentialLoadWithoutFriction(_) => drive_error(scene),
+        other => Error::Unsupported {
+            path: scene.origin().to_path_buf(),
+            message: format!("{other} (a flexibility built for another scene?)"),
+        },
+    })
 }
 
 /// The contact problem of a one-step scene on a flexibility (its drive and slip operator); a load path has none
@@ -185,12 +190,14 @@ pub fn effects(scene: &Scene) -> (Vec<String>, Vec<EffectNote>) {
     (names, notes)
 }
 
-/// Evaluate a solved run's subsurface stresses when the scene asks for them (`[stresses]`).
-pub fn add_stresses(run: &mut SolverRun, stresses: Option<&crate::stresses::StressEvaluator>) {
+/// Evaluate a solved run's subsurface stresses when the scene asks for them (`[stresses]`). A run of another model
+/// than the evaluator's (other contact nodes) is refused ([`crate::stresses::StressEvaluator::evaluate`]).
+pub fn add_stresses(run: &mut SolverRun, stresses: Option<&crate::stresses::StressEvaluator>) -> Result<()> {
     if let (Some(ev), Status::Solved) = (stresses, run.status) {
-        run.stresses = Some(ev.evaluate(&run.nodes));
-        run.counter_body_stresses = ev.evaluate_counter_body(&run.nodes);
+        run.stresses = Some(ev.evaluate(&run.nodes)?);
+        run.counter_body_stresses = ev.evaluate_counter_body(&run.nodes)?;
     }
+    Ok(())
 }
 
 /// The time to build the problem's LCP if the solver uses it (built once, before the solve: see

@@ -124,8 +124,9 @@ impl Field {
                 let n = crossed.iter().filter(|&&b| b).count();
                 if n == 2 {
                     let mut it = (0..4).filter(|&k| crossed[k]);
-                    let (a, b) = (it.next().expect("two"), it.next().expect("two"));
-                    segments.push((e[a], e[b]));
+                    if let (Some(a), Some(b)) = (it.next(), it.next()) {
+                        segments.push((e[a], e[b]));
+                    }
                 } else if n == 4 {
                     let centre_inside = (c[0] + c[1] + c[2] + c[3]) / 4.0 >= level;
                     if centre_inside == inside[0] {
@@ -184,7 +185,9 @@ fn chain(segments: &[(usize, usize)]) -> Vec<Vec<usize>> {
         let mut line = std::collections::VecDeque::from([segments[start].0, segments[start].1]);
         for forward in [true, false] {
             loop {
-                let end = if forward { *line.back().expect("two") } else { *line.front().expect("two") };
+                let end = if forward { line.back() } else { line.front() };
+                // The line starts with a segment's two ends and only grows.
+                let Some(&end) = end else { break };
                 let next = at[&end].iter().copied().find(|&s| !used[s]);
                 let Some(s) = next else { break };
                 used[s] = true;

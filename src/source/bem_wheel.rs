@@ -20,7 +20,7 @@
 
 use super::{Blocks, SourceTiming};
 use crate::bem::{assemble, kelvin::Kelvin, BlockSink};
-use crate::error::{Error, Result};
+use crate::error::{ArgumentError, Error, Result};
 use crate::flexibility::{Flexibility, ModeKind, RigidMode, Scales};
 use crate::mesh::{Bc, Mesh, MeshSpec};
 use crate::scene::{Support, Wheel};
@@ -43,25 +43,29 @@ pub struct Model {
 }
 
 impl Model {
-    /// The dimensionless model of a scene's BEM wheel (`None` for the half-plane model).
-    pub fn of_scene(scene: &crate::scene::Scene) -> Option<Model> {
-        crate::mesh::MeshSpec::of_scene(scene).map(|(support, spec)| Model::new(scene.wheel(), support, &spec))
+    /// The dimensionless model of a scene's BEM wheel (`None` for the half-plane model; `Err` as [`Model::new`], which
+    /// a validated scene never gives).
+    pub fn of_scene(scene: &crate::scene::Scene) -> std::result::Result<Option<Model>, ArgumentError> {
+        crate::mesh::MeshSpec::of_scene(scene)
+            .map(|(support, spec)| Model::new(scene.wheel(), support, &spec))
+            .transpose()
     }
 
-    /// Build the dimensionless model of a wheel with its support and mesh (lengths in the user's unit).
-    pub fn new(wheel: &Wheel, support: Support, spec: &MeshSpec) -> Model {
+    /// Build the dimensionless model of a wheel with its support and mesh (lengths in the user's unit). A wheel
+    /// [`Mesh::wheel`] cannot mesh is refused, naming the argument.
+    pub fn new(wheel: &Wheel, support: Support, spec: &MeshSpec) -> std::result::Result<Model, ArgumentError> {
         let length = 2.0 * wheel.radius;
         let support = match support {
             Support::Hub { radius } => Support::Hub { radius: radius / length },
             s @ Support::TopArc { .. } => s,
         };
         let spec = MeshSpec { zone: spec.zone.scaled(length), ..*spec };
-        Model {
-            mesh: Mesh::wheel(wheel.radius / length, support, &spec),
+        Ok(Model {
+            mesh: Mesh::wheel(wheel.radius / length, support, &spec)?,
             kelvin: Kelvin::new(1.0, wheel.material.poisson_ratio),
             length,
             modulus: wheel.material.youngs_modulus,
-        }
+        })
     }
 }
 
@@ -173,9 +177,11 @@ pub struct System {
     pub blocks: Blocks,
 }
 
-/// Assemble the rearranged system of `model` (the BEM assembly stage).
+/// Assemble the rearranged system of `model` (the BEM assembly stage). A mesh that does not hold together
+/// ([`Mesh::check`]) is refused.
 pub fn assemble_system(model: &Model, blocks: Blocks) -> Result<System> {
     let mesh = &model.mesh;
+    mesh.check()?;
     let nn = mesh.n_nodes();
     let nc = mesh.contact_nodes.len();
     let mut contact_index = vec![None; nn];
@@ -205,12 +211,36 @@ pub fn solve_system(model: &Model, sys: &System) -> Result<(Flexibility, BemHeal
 /// [`solve_system`], also returning the solution of every right-hand side (`A⁻¹ rhs`, 2N × columns of
 /// [`System::rhs`]): the whole boundary's response to unit contact tractions, kept for interior stresses
 /// ([`BoundaryResponse`]).
+///
+/// A system of another model (other sizes than `model`'s mesh gives) is refused, as is a mesh that does not hold
+/// together ([`Mesh::check`]).
 pub fn solve_system_with_response(model: &Model, sys: &System) -> Result<(Flexibility, BemHealth, Mat<f64>)> {
     let mesh = &model.mesh;
+    mesh.check()?;
     let nn = mesh.n_nodes();
     let nc = mesh.contact_nodes.len();
     let store_tx = sys.blocks != Blocks::Normal;
     let ncols = sys.rhs.ncols();
+    let expected = (2 * nn, if store_tx { 2 * nc } else { nc } + 3);
+    if (sys.a.nrows(), sys.a.ncols(), sys.rhs.nrows(), ncols) != (expected.0, expected.0, expected.0, expected.1) {
+        return Err(ArgumentError::new(
+            "solve_system",
+            "sys",
+            format!(
+                "is {}×{} with {}×{} right-hand sides; the model's mesh gives {}×{} and {}×{}: a system of another \
+                 model?",
+                sys.a.nrows(),
+                sys.a.ncols(),
+                sys.rhs.nrows(),
+                ncols,
+                expected.0,
+                expected.0,
+                expected.0,
+                expected.1
+            ),
+        )
+        .into());
+    }
     let lu = sys.a.partial_piv_lu();
     let u = lu.U();
     let (mut umax, mut umin) = (0.0_f64, f64::INFINITY);
@@ -260,7 +290,7 @@ pub fn solve_system_with_response(model: &Model, sys: &System) -> Result<(Flexib
         modes,
         x: mesh.contact_nodes.iter().map(|&i| mesh.nodes[i].pos[0]).collect(),
         y: mesh.contact_nodes.iter().map(|&i| mesh.nodes[i].pos[1]).collect(),
-        g0: mesh.contact_nodes.iter().map(|&i| mesh.initial_gap(i)).collect(),
+        g0: mesh.contact_nodes.iter().map(|&i| mesh.nodes[i].gap).collect(),
         weights,
         scales: Scales { length: model.length, modulus: model.modulus },
         id: Default::default(),
@@ -314,19 +344,51 @@ pub struct BoundaryResponse {
     pub tangential: bool,
 }
 
+/// Every node's displacement u and traction t, in node order ([`BoundaryResponse::boundary`]).
+pub type BoundarySolution = (Vec<[f64; 2]>, Vec<[f64; 2]>);
+
 impl BoundaryResponse {
     /// Every node's displacement u and traction t (dimensionless, in node order) for contact tractions `p` (= t_y)
     /// and `q` (= t_x) at the contact nodes (in [`Mesh::contact_nodes`] order, dimensionless: stress / E), with the
     /// support clamped in place.
     ///
-    /// # Panics
-    /// If `p` or `q` does not have one value per contact node, or if `q` is nonzero while the tangential columns
-    /// were not built.
-    pub fn boundary(&self, p: &[f64], q: &[f64]) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
+    /// Refused, naming the argument: `p` or `q` without one value per contact node, a nonzero `q` when the
+    /// tangential columns were not built, a matrix of another size than the mesh gives, a mesh that does not hold
+    /// together ([`Mesh::check`]).
+    pub fn boundary(&self, p: &[f64], q: &[f64]) -> std::result::Result<BoundarySolution, ArgumentError> {
+        const F: &str = "BoundaryResponse::boundary";
         let mesh = &self.model.mesh;
+        mesh.check()?;
         let nc = mesh.contact_nodes.len();
-        assert!(p.len() == nc && q.len() == nc, "one traction per contact node");
-        assert!(self.tangential || q.iter().all(|v| *v == 0.0), "shear without the tangential columns");
+        for (name, v) in [("p", p), ("q", q)] {
+            if v.len() != nc {
+                return Err(ArgumentError::new(
+                    F,
+                    name,
+                    format!("has {} values, the mesh {nc} contact nodes", v.len()),
+                ));
+            }
+        }
+        if !self.tangential && q.iter().any(|v| *v != 0.0) {
+            return Err(ArgumentError::new(
+                F,
+                "q",
+                "is nonzero, but the tangential columns were not built".to_string(),
+            ));
+        }
+        let columns = if self.tangential { 2 * nc } else { nc };
+        if self.matrix.nrows() != 2 * mesh.n_nodes() || self.matrix.ncols() < columns {
+            return Err(ArgumentError::new(
+                F,
+                "self.matrix",
+                format!(
+                    "is {}×{}; the mesh needs {}×{columns} at least",
+                    self.matrix.nrows(),
+                    self.matrix.ncols(),
+                    2 * mesh.n_nodes()
+                ),
+            ));
+        }
         let rows = self.matrix.nrows();
         let mut x = vec![0.0; rows];
         for c in 0..nc {
@@ -349,12 +411,13 @@ impl BoundaryResponse {
                 Bc::Support => t[i] = xi,
                 Bc::Free => u[i] = xi,
                 Bc::Contact => {
-                    let c = contact[i].expect("contact node has an index");
+                    // Every contact node is listed in contact_nodes (checked above).
+                    let c = contact[i].unwrap_or_default();
                     u[i] = xi;
                     t[i] = [q[c], p[c]];
                 }
             }
         }
-        (u, t)
+        Ok((u, t))
     }
 }

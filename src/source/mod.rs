@@ -76,9 +76,9 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
         let _stage = crate::progress::stage(|| format!("building the half-plane influence matrices ({n} elements)"));
         return half_plane::build(scene, blocks);
     };
-    let model = bem_wheel::Model::new(scene.wheel(), support, &spec);
+    let model = bem_wheel::Model::new(scene.wheel(), support, &spec)?;
     let (mut flex, health, t, response) = bem_wheel::condense_with_response(&model, blocks)?;
-    half_plane::add_counter_body(&mut flex, scene, &half_plane::Grid::of(scene));
+    half_plane::add_counter_body(&mut flex, scene, &half_plane::Grid::of(scene))?;
     let mesh = &model.mesh;
     let (elements, nodes, element) = (mesh.elements.len(), mesh.n_nodes(), mesh.kind);
     let boundary = scene.stresses().is_some().then(|| bem_wheel::BoundaryResponse {

@@ -30,12 +30,13 @@
 //! A sweep can be cut into shards (`k/n`: the cases with `index % n == k − 1`) that run on different machines;
 //! [`merge`] joins the shards' CSVs into the CSV the unsharded sweep writes (up to the [`PROVENANCE_COLUMNS`]).
 
-pub mod identity;
-pub mod journal;
-pub mod plan;
+mod identity;
+mod journal;
+mod plan;
 pub mod row;
 mod run;
 
+pub use journal::MARKER;
 pub use plan::{Counts, Estimate, Plan, SweepOptions};
 pub use row::{RowStatus, SweepRow, PROVENANCE_COLUMNS};
 pub use run::{error_rows_in, merge, merge_checked, run_sweep, sweep_rows, Outcome, REPEAT_BELOW_S, TIMING_BATCH};

@@ -385,11 +385,17 @@ impl Solver for Lemke {
     }
 
     fn solve_from(&self, p: &ContactProblem, mut start: Start) -> Outcome {
-        let lcp = p.lcp();
+        let Some(lcp) = p.lcp() else {
+            let why = match &p.kind {
+                ProblemKind::GrossSliding { message } => message.clone(),
+                _ => "the problem has no LCP".to_string(),
+            };
+            return Outcome::failed(Termination::Infeasible, why, Work::one("pivots", 0));
+        };
         let guess = start.take_state::<LemkeState>(self.id, p).map(|s| s.support);
         let attempt = Attempt { guess: guess.as_deref(), cancel: &start.cancel };
         let out = match p.kind {
-            ProblemKind::Frictional => self.frictional_from(p, &attempt).1,
+            ProblemKind::Frictional => self.frictional_from(p, lcp, &attempt).1,
             ProblemKind::SlidingLimit { .. } => {
                 let o = self.first_attempt(lcp, &attempt);
                 let message = format!(
@@ -404,7 +410,7 @@ impl Solver for Lemke {
         let (status, message) = classify_ray(out.status, out.message, p);
         let support = out.z.iter().map(|&v| v > 0.0).collect();
         Outcome {
-            solution: Some(p.unpack(&out.z)),
+            solution: p.unpack(&out.z),
             state: (status == Termination::Solved).then(|| SolverState::new(self.id, p, LemkeState { support })),
             status,
             message,
@@ -434,14 +440,15 @@ impl Lemke {
 
     /// Lemke on the frictional LCP with the default slack signs and, on a ray, with every other sign pattern of the
     /// load-driven DOFs (the same solution set; see [`crate::formulation::lcp`]). Returns the LCP that was solved
-    /// (when a retry solved it) and the outcome, with the pivots of all attempts summed.
-    pub fn frictional(&self, p: &ContactProblem) -> (Option<Lcp>, LemkeOutcome) {
-        self.frictional_from(p, &Attempt { guess: None, cancel: &Cancel::never() })
+    /// (when a retry solved it) and the outcome, with the pivots of all attempts summed; `None` for a problem that
+    /// is not frictional ([`ProblemKind::Frictional`]).
+    pub fn frictional(&self, p: &ContactProblem) -> Option<(Option<Lcp>, LemkeOutcome)> {
+        let lcp = p.lcp().filter(|_| p.kind == ProblemKind::Frictional)?;
+        Some(self.frictional_from(p, lcp, &Attempt { guess: None, cancel: &Cancel::never() }))
     }
 
-    /// [`Lemke::frictional`] from an attempt's start.
-    fn frictional_from(&self, p: &ContactProblem, a: &Attempt) -> (Option<Lcp>, LemkeOutcome) {
-        let lcp = p.lcp();
+    /// [`Lemke::frictional`] on the problem's default LCP `lcp` from an attempt's start.
+    fn frictional_from(&self, p: &ContactProblem, lcp: &Lcp, a: &Attempt) -> (Option<Lcp>, LemkeOutcome) {
         let mut out = self.first_attempt(lcp, a);
         let defaults: Vec<f64> = p.load_dofs().map(|d| d.default_sign()).collect();
         let loads = defaults.len();
@@ -455,7 +462,7 @@ impl Lemke {
             }
             let signs: Vec<f64> =
                 defaults.iter().enumerate().map(|(b, s)| if pattern & (1 << b) != 0 { -s } else { *s }).collect();
-            let alt = frictional_lcp(p, &signs).lcp;
+            let Some(alt) = frictional_lcp(p, &signs).map(|f| f.lcp) else { break };
             let o = (self.engine)(&alt, &self.settings, a.cancel);
             pivots += o.pivots;
             if o.status == Termination::Solved {
@@ -476,13 +483,9 @@ impl Lemke {
     /// The LCP this solver ends up solving for a problem (for `rollbem lcp export`): the default one, or the one
     /// with the slack signs of the attempt that succeeded. `None` beyond gross sliding (no static problem).
     pub fn solved_lcp(&self, p: &ContactProblem) -> Option<Lcp> {
-        match p.kind {
-            ProblemKind::GrossSliding { .. } => None,
-            ProblemKind::Frictional => {
-                let (solved_by, _) = self.frictional(p);
-                solved_by.or_else(|| Some(p.lcp().clone()))
-            }
-            _ => Some(p.lcp().clone()),
+        match self.frictional(p) {
+            Some((Some(solved_by), _)) => Some(solved_by),
+            _ => p.lcp().cloned(),
         }
     }
 }
