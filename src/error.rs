@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 /// Everything that stops rollbem before it can produce a result.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum Error {
     /// An input file (a scene, a sweep spec, an LCP file, a CSV to merge) could not be read.
     #[error("cannot read {path}: {source}")]

@@ -186,6 +186,7 @@ use std::f64::consts::{FRAC_2_PI, FRAC_PI_2, PI};
 /// A displacement `(u_x, u_z)` in the body's own axes (`u_z` positive INTO the body), relative to
 /// the datum point `(0, D)`. Units of length.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[non_exhaustive]
 pub struct Displacement {
     /// Displacement along `+x` (along the surface).
     pub ux: f64,
@@ -196,6 +197,7 @@ pub struct Displacement {
 /// The in-plane stress components `(σ_xx, σ_zz, τ_xz)` (plane strain; `σ_yy = ν(σ_xx + σ_zz)` is
 /// not returned), tension positive. Units of traction (e.g. Pa).
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[non_exhaustive]
 pub struct Stress {
     /// Normal stress along `x`.
     pub sxx: f64,
@@ -221,6 +223,7 @@ pub struct HalfPlane {
 
 /// A mesh of contiguous surface strips with their collocation points.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct StripMesh {
     /// Left ends `a_j` of the strips.
     pub a: Vec<f64>,
@@ -310,6 +313,7 @@ pub fn uniform_mesh(x0: f64, h: f64, n: usize) -> StripMesh {
 /// For a single body `(u_x, u_z)` are its own displacements relative to its datum; after adding
 /// a counter-body ([`pair_blocks`]) they are (slip, gap change) of the wheel relative to the flat.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct InfluenceBlocks {
     /// Number of collocation points (rows).
     pub rows: usize,

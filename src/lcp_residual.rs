@@ -30,6 +30,7 @@ use std::time::Instant;
 
 /// Residuals of (z, w) for an LCP, each dimensionless (see the module docs for the scale).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[non_exhaustive]
 pub struct LcpResiduals {
     /// The data scale s = max(‖q‖∞, ‖M‖∞ ‖z‖∞) the w-type residuals are divided by.
     pub scale: f64,
@@ -64,7 +65,7 @@ pub fn residuals(lcp: &Lcp, z: &[f64], w: &[f64]) -> Result<LcpResiduals, Argume
     // s = 0 only when q = 0 and M z = 0 term by term: then w = 0 exactly and any nonzero w is wrong whatever its size.
     let s = if scale > 0.0 { scale } else { f64::MIN_POSITIVE };
     let zs = if z_inf > 0.0 { z_inf } else { 1.0 };
-    let mz_q = lcp.w_of(z);
+    let mz_q = lcp.w_of_sized(z);
     let mut r = LcpResiduals {
         scale,
         negative_w: 0.0,
@@ -92,6 +93,7 @@ pub fn residuals(lcp: &Lcp, z: &[f64], w: &[f64]) -> Result<LcpResiduals, Argume
 
 /// A solve of an LCP: the solver's outcome, its residuals and the wall time of the solve.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct LcpSolve {
     /// What the solver returned.
     pub outcome: LcpOutcome,
@@ -208,13 +210,13 @@ mod tests {
         // z = (3, 0): w = (1, −3), w₁ z₁ = 3 ≠ 0 and w₂ < 0. s = max(6, 3 · 3) = 9; complementarity 3/(9·3) = 1/9,
         // negative w 3/9 = 1/3.
         let z = [3.0, 0.0];
-        let r = residuals(&p, &z, &p.w_of(&z)).unwrap();
+        let r = residuals(&p, &z, &p.w_of(&z).unwrap()).unwrap();
         assert!((r.negative_w - 1.0 / 3.0).abs() < 1e-15 && (r.complementarity - 1.0 / 9.0).abs() < 1e-15, "{r:?}");
         // A w that does not match z, and a negative z.
         // (w₁ z₁ = 4/3, s ‖z‖∞ = 7 · 7/3: complementarity 4/49; |w − (M z + q)| = 1: equation 1/7.)
         let r = residuals(&p, &[4.0 / 3.0, 7.0 / 3.0], &[1.0, 0.0]).unwrap();
         assert!((r.equation - 1.0 / 7.0).abs() < 1e-14 && (r.complementarity - 4.0 / 49.0).abs() < 1e-14, "{r:?}");
-        let r = residuals(&p, &[-1.0, 2.0], &p.w_of(&[-1.0, 2.0])).unwrap();
+        let r = residuals(&p, &[-1.0, 2.0], &p.w_of(&[-1.0, 2.0]).unwrap()).unwrap();
         assert!((r.negative_z - 0.5).abs() < 1e-15, "{r:?}");
         // Non-finite input is reported, not hidden.
         assert!(residuals(&p, &[f64::NAN, 0.0], &[0.0, 0.0]).unwrap().max.is_nan());

@@ -17,6 +17,7 @@ use serde::{Deserialize, Serialize};
 /// State of a contact node.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum NodeState {
     /// In contact, |q| < μp.
     Stick,
@@ -42,6 +43,7 @@ impl NodeState {
 
 /// Results at one contact node (user's units).
 #[derive(Debug, Clone, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct NodeResult {
     /// x of the node (undeformed).
     pub x: f64,
@@ -67,6 +69,7 @@ pub struct NodeResult {
 
 /// Resultants of the contact tractions on the wheel.
 #[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct Resultants {
     /// P = Σ f_y (force per unit thickness).
     pub normal: f64,
@@ -78,6 +81,7 @@ pub struct Resultants {
 
 /// The support's rigid motion.
 #[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct RigidBody {
     /// Approach d_N (length).
     pub normal: f64,
@@ -89,6 +93,7 @@ pub struct RigidBody {
 
 /// Contact extent and key figures.
 #[derive(Debug, Clone, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct ContactSummary {
     /// Smallest x of a loaded node (null if none).
     pub x_min: Option<f64>,
@@ -170,6 +175,7 @@ fn rolling_result(
 
 /// Solver-independent residuals, relative (see [`evaluate`]); null where a condition does not apply.
 #[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct Residuals {
     /// max |p_i g_i| / (p_max ℓ).
     pub complementarity: f64,
@@ -208,6 +214,7 @@ impl Residuals {
 
 /// Everything post-processing derives from one solution.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct Evaluation {
     /// Rolling figures (when the scene rolls).
     pub rolling: Option<RollingResult>,
@@ -265,6 +272,7 @@ impl Evaluation {
 
 /// The rolling a scene asks for, as post-processing sees it.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub enum RollingPost {
     /// The seed's formulation: a static solution, then the slip velocity of eq. 12 with this creepage and rolling
     /// direction (the same upwind operator as steady rolling, [`crate::formulation::slip::upwind`]).
@@ -288,6 +296,7 @@ pub enum RollingPost {
 
 /// What rolling adds to a run: the creepage, and how far the slip velocities are from Coulomb's law.
 #[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct RollingResult {
     /// `steady` or `seed`.
     pub mode: crate::scene::RollingMode,

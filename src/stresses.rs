@@ -54,7 +54,7 @@
 //! Only a scene with `[stresses]` computes anything ("simulate only the effects a scene calls for"). Every solved
 //! run gets its field ([`crate::pipeline::run_scene`]); a load path computes it at the end of each step (its last
 //! substep; the intermediate substeps of a step are increments towards that end and are not reported), so the
-//! path's final runs carry the field at the path's end ([`crate::pipeline::path`]).
+//! path's final runs carry the field at the path's end (`crate::pipeline::path`).
 //!
 //! # Output
 //! `runs[].stresses` of the result document ([`StressResult`]): the grid, the quantities, `maxima.<quantity> =
@@ -86,6 +86,7 @@ pub const MAX_INLINE_POINTS: usize = 20_000;
 /// Why a grid point has no value.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum PointError {
     /// Outside the wheel: below its undeformed surface, or in the hub's hole (BEM wheel; such a grid is refused
     /// as an input error by [`StressEvaluator::new`], so a result never holds it).
@@ -112,6 +113,7 @@ impl PointError {
 
 /// The regular grid of a `[stresses]` table (user's length unit; module docs).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct StressGrid {
     /// `[min, max]` of x.
     pub x: [f64; 2],
@@ -177,6 +179,7 @@ pub fn quantity(q: StressQuantity, s: [f64; 3], nu: f64) -> f64 {
 
 /// The largest-magnitude value of a quantity on the grid and where it is (user's units).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct Maximum {
     /// The value (sign kept).
     pub value: f64,
@@ -188,6 +191,7 @@ pub struct Maximum {
 
 /// The stress tensor at every grid point, or why a point has none (user's units).
 #[derive(Debug, Clone, PartialEq, Default)]
+#[non_exhaustive]
 pub struct StressField {
     /// The grid.
     pub grid: StressGrid,
@@ -259,6 +263,7 @@ impl StressField {
 /// deserialises as the document's keys; the stress tensor at every point ([`StressResult::field`]) is kept in memory
 /// after an evaluation and is not part of the document (its quantities' values are, in `field`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct StressResult {
     /// What body the field is in (`wheel`).
     #[serde(default = "wheel")]
@@ -296,6 +301,7 @@ fn wheel() -> String {
 /// The inline field of the document: node coordinates, one array per quantity (null where refused, row-major) and
 /// the reason per refused point.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct FieldValues {
     /// x of the grid's columns.
     pub x: Vec<f64>,
@@ -310,6 +316,7 @@ pub struct FieldValues {
 /// The surface values of the document: x of the contact elements' centres (depth 0) and, per quantity name, its
 /// value there (null where refused).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct SurfaceValues {
     /// x of the points.
     pub x: Vec<f64>,

@@ -2,7 +2,7 @@
 //!
 //! On a uniform grid the half-plane's influence matrices are Toeplitz up to one term: the entry (i, j) is a function
 //! of i − j (a strip's influence depends on the distance to the collocation point) plus the displacement of the datum
-//! point under strip j, which is the same for every row ([`crate::source::half_plane`]: displacements are relative to
+//! point under strip j, which is the same for every row (`crate::source::half_plane`: displacements are relative to
 //! a datum at depth D below the contact centre). So K = T + 1 cᵀ, also with an elastic counter-body on the same grid.
 //! A Toeplitz product is a convolution; embedded in a circulant of length L ≥ 2n − 1 it takes two real FFTs and an
 //! inverse (O(n log n)) instead of the dense product's 2n² operations, and 1 (cᵀx) adds O(n). The structure is
@@ -213,22 +213,6 @@ mod tests {
         assert!(Toeplitz::detect(&bent).is_none(), "one entry off its diagonal's value");
         let small = Mat::<f64>::from_fn(n - 1, n - 1, |i, j| 1.0 / (1.0 + (i as f64 - j as f64).abs()));
         assert!(Toeplitz::detect(&small).is_none(), "below FFT_ABOVE the dense product is used");
-    }
-
-    /// Lengths a Toeplitz matrix cannot have are refused, naming the argument, where they used to panic: an empty
-    /// column, a row of another length, a product with a vector of another length.
-    #[test]
-    fn bad_lengths_are_refused_not_panics() {
-        let err = Toeplitz::from_parts(&[], &[]).unwrap_err();
-        assert_eq!((err.function, err.argument), ("Toeplitz::from_parts", "col"));
-        let err = Toeplitz::from_parts(&[1.0, 2.0], &[1.0]).unwrap_err();
-        assert_eq!(err.argument, "row", "{err}");
-        let op = Toeplitz::from_parts(&[2.0, 1.0], &[2.0, 3.0]).unwrap();
-        let err = op.apply(&[1.0, 2.0, 3.0]).unwrap_err();
-        assert_eq!((err.function, err.argument), ("Toeplitz::apply", "x"));
-        // The 2 × 2 product [[2, 3], [1, 2]] (1, 1) = (5, 3), by hand.
-        let y = op.apply(&[1.0, 1.0]).unwrap();
-        assert!((y[0] - 5.0).abs() < 1e-14 && (y[1] - 3.0).abs() < 1e-14, "{y:?}");
     }
 
     #[test]

@@ -459,6 +459,7 @@ fn circle_mesh(n: usize, kind: ElementKind, radius: f64, start: f64) -> Mesh {
                 }
                 m.elements.push(Element { shape: Shape::Arc(arc), bc: Bc::Free, first_node: first, n_nodes: 3 });
             }
+            other => panic!("an element kind this test cannot mesh: {other:?}"),
         }
     }
     m

@@ -203,6 +203,7 @@ fn every_node_obeys_coulomb_and_its_state() {
                     assert!(n.shear.abs() <= 1e-12 * pmax);
                     assert!(n.gap >= -1e-12);
                 }
+                other => panic!("a state this test does not know: {other:?} (x = {})", n.x),
             }
         }
     }
@@ -492,7 +493,7 @@ fn block_and_dense_lemke_engines_agree() {
                 - k[j * n + i]
         });
         let q: Vec<f64> = (0..n).map(|_| rnd()).collect();
-        let lcp = Lcp { m, q };
+        let lcp = Lcp::new(m, q).unwrap();
         let (x, y) = (solve(&lcp, &st), solve_dense(&lcp, &st));
         assert_eq!(x.status, Termination::Solved, "case {case}");
         assert_eq!(y.status, Termination::Solved, "case {case}");

@@ -1,7 +1,7 @@
 //! The boundary element core: 2D plane-strain elastostatics with the Kelvin solution (seed eq. 13, `H u = G t`).
 //!
 //! Assembly visits every (source node, element) pair once and hands the 2×2 blocks of H and G to a
-//! [`BlockSink`], so a caller can build the full matrices (tests, small problems) or write directly into the
+//! `BlockSink`, so a caller can build the full matrices (tests, small problems) or write directly into the
 //! rearranged system of the condensation ([`crate::source::bem_wheel`]) without storing H and G.
 //!
 //! H's diagonal blocks come from the rigid-body condition: a rigid translation of a bounded body produces no

@@ -4,7 +4,7 @@
 //! displacements/tractions are interpolated by the Lagrange [`shape`] functions through them. Geometry is exact:
 //! an arc of a circle parametrised linearly in angle, so the Jacobian ds/dξ is constant.
 //!
-//! # Quadrature strategy ([`integrate`])
+//! # Quadrature strategy (`integrate`)
 //! * **Off-element source** (`self_node = None`): the integrands are analytic in ξ except where r² = 0 continued
 //!   to complex ξ. For an arc of centre c and radius R and a source at polar position (ρ_s, φ) about c, these
 //!   singularities are exactly θ* = φ ± i ln(ρ_s / R) (+ 2πk), i.e. ξ* = (θ* − θm)/h with h = (θ1 − θ0)/2. The
@@ -17,11 +17,11 @@
 //!   are analytic on each side (N_j vanishes at the source, r = 2R|sin(h(ξ − ξ_s)/2)| is analytic on each side);
 //!   h\[i\] is returned as zero (set by the caller from rigid-body motion). For g,
 //!   ln r = ln|ξ − ξ_s| + ln(r/|ξ − ξ_s|): the first part (times the polynomial N_j) is integrated exactly with the
-//!   logarithmic Gauss rule of [`crate::bem::quadrature::lg`], the smooth remainder with Gauss–Legendre (same
+//!   logarithmic Gauss rule of `crate::bem::quadrature::lg`, the smooth remainder with Gauss–Legendre (same
 //!   adaptive rule, singularities at the periodic images ξ_s ± 2π/h). Field-minus-source vectors are formed with
 //!   the chord formula, so no cancellation occurs near the source.
 //!
-//! No allocation happens in [`integrate`] (quadrature rules are cached statics).
+//! No allocation happens in `integrate` (quadrature rules are cached statics).
 
 use super::kelvin::Kelvin;
 use super::quadrature::{gl, lg};
@@ -47,7 +47,7 @@ pub fn shape(xi: f64) -> [f64; 3] {
 }
 
 /// Three 2×2 blocks, one per element node j: `blocks[j][l][k]` (l = load direction at the source, k = component at
-/// the field point), as returned by [`integrate`].
+/// the field point), as returned by `integrate`.
 pub type NodeBlocks = [[[f64; 2]; 2]; 3];
 
 /// Pieces are integrated without further halving once the Bernstein-ellipse parameter of the nearest integrand

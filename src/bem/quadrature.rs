@@ -1,7 +1,7 @@
 //! Quadrature rules: Gauss–Legendre on [−1, 1] and Gauss rules for the weight −ln(t) on [0, 1].
 //!
 //! Gauss–Legendre rules are computed at run time (Newton iteration on the Legendre polynomials) and cached
-//! by [`gl`]. The logarithmic rules are hard-coded tables for n = 1..=[`LOG_GAUSS_MAX`], generated to full
+//! by `gl`. The logarithmic rules are hard-coded tables for n = 1..=`LOG_GAUSS_MAX`, generated to full
 //! double precision by `reference/tools/log_gauss.py` (exact rational recurrence coefficients from the moments
 //! ∫₀¹ −ln(t) tᵏ dt = 1/(k+1)², Golub–Welsch eigen-decomposition at 80 digits with mpmath). To regenerate:
 //! `python3 reference/tools/log_gauss.py 20 > /tmp/t.rs` and paste the two tables over the
@@ -13,6 +13,7 @@ use std::sync::OnceLock;
 /// A quadrature rule: abscissae `points` and matching `weights` (same length), on the interval documented by the
 /// function that produced it.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct Rule {
     /// Abscissae, in increasing order.
     pub points: Vec<f64>,

@@ -82,6 +82,7 @@ use std::f64::consts::PI;
 
 /// Why no stress is returned at a point.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
 pub enum StressError {
     /// The point is outside the body, including inside a hole (winding number of the boundary ≠ 1).
     #[error("point outside the body (or in a hole)")]
@@ -352,6 +353,7 @@ struct CircleAt {
 /// evaluates any number of points ([`InteriorStress::at`], [`InteriorStress::evaluate`]). Units and signs as in
 /// the module docs.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct InteriorStress {
     c: Consts,
     els: Vec<El>,

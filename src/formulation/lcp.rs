@@ -46,26 +46,61 @@
 //! other patterns on a ray ([`crate::solvers::lemke`]).
 
 use super::ContactProblem;
+use crate::error::ArgumentError;
 use faer::linalg::solvers::Solve;
 use faer::Mat;
 
-/// A linear complementarity problem `w = M z + q`, `w ≥ 0`, `z ≥ 0`, `wᵀz = 0`.
+/// A linear complementarity problem `w = M z + q`, `w ≥ 0`, `z ≥ 0`, `wᵀz = 0`: M square and q of its size, by
+/// construction ([`Lcp::new`]; read-only outside the crate, so every solver can index it).
 #[derive(Debug, Clone)]
 pub struct Lcp {
     /// The square matrix M (m × m).
-    pub m: Mat<f64>,
+    pub(crate) m: Mat<f64>,
     /// The vector q (length m).
-    pub q: Vec<f64>,
+    pub(crate) q: Vec<f64>,
 }
 
 impl Lcp {
+    /// The LCP of M and q; refused, naming the argument, unless M is square and q has its size.
+    pub fn new(m: Mat<f64>, q: Vec<f64>) -> Result<Lcp, ArgumentError> {
+        if m.nrows() != m.ncols() {
+            return Err(ArgumentError::new("Lcp::new", "m", format!("is {}×{}, not square", m.nrows(), m.ncols())));
+        }
+        if q.len() != m.nrows() {
+            return Err(ArgumentError::new("Lcp::new", "q", format!("has {} entries, M {} rows", q.len(), m.nrows())));
+        }
+        Ok(Lcp { m, q })
+    }
+
+    /// The square matrix M (m × m).
+    pub fn m(&self) -> &Mat<f64> {
+        &self.m
+    }
+
+    /// The vector q (length m).
+    pub fn q(&self) -> &[f64] {
+        &self.q
+    }
+
     /// Problem size m.
     pub fn size(&self) -> usize {
         self.q.len()
     }
 
-    /// `w = M z + q` for a given `z`.
-    pub fn w_of(&self, z: &[f64]) -> Vec<f64> {
+    /// `w = M z + q` for a given `z` of the LCP's size (another size is refused).
+    pub fn w_of(&self, z: &[f64]) -> Result<Vec<f64>, ArgumentError> {
+        if z.len() != self.size() {
+            return Err(ArgumentError::new(
+                "Lcp::w_of",
+                "z",
+                format!("has {} entries, the LCP {}", z.len(), self.size()),
+            ));
+        }
+        Ok(self.w_of_sized(z))
+    }
+
+    /// [`Lcp::w_of`] for a `z` the caller knows to have the LCP's size.
+    pub(crate) fn w_of_sized(&self, z: &[f64]) -> Vec<f64> {
         let m = self.size();
         let mut w = self.q.clone();
         for (j, &zj) in z.iter().enumerate() {
@@ -130,6 +165,7 @@ pub(crate) fn normal_lcp(p: &ContactProblem, np: &super::NormalProblem) -> Lcp {
 
 /// The affine map of the tangential nodal forces of the frictional LCP: `h = h_0 + h_x x`, `x = [f; λ⁺; λ⁻; ρ_L]`.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct TangentialMap {
     /// n × (3n + L).
     pub h_x: Mat<f64>,
@@ -148,6 +184,7 @@ impl TangentialMap {
 
 /// The frictional LCP with the tangential forces eliminated, and their affine map.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct Frictional {
     /// The LCP, size 3n + 2L.
     pub lcp: Lcp,

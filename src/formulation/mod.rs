@@ -22,7 +22,7 @@
 //!
 //! All quantities are dimensionless ([`crate::flexibility`]): lengths / L0, forces / (E·L0), moments / (E·L0²).
 
-pub mod drive;
+mod drive;
 pub mod lcp;
 pub mod slip;
 
@@ -37,6 +37,7 @@ use serde::{Deserialize, Serialize};
 
 /// Which problem a scene poses (see the module docs).
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum ProblemKind {
     /// μ = 0: the normal problem only.
     Frictionless,
@@ -89,6 +90,7 @@ impl ProblemKind {
 /// The formulation's name in results: the seed's two approaches, or the frictionless problem.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum FormulationName {
     /// The normal problem of a frictionless scene.
     Frictionless,
@@ -132,6 +134,7 @@ pub enum DriveIssue {
 /// The normal problem of a frictionless scene or of the sliding limit: `g = K f + Σ_m r_m ρ_m + q₀ ≥ 0 ⊥ f ≥ 0`
 /// over the load-driven DOFs m.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct NormalProblem {
     /// K: gap change per unit nodal force (K_NN, or K_NN + σμ K_NT at the sliding limit).
     pub k: Mat<f64>,

@@ -1,6 +1,6 @@
 //! The stages every solve shares, one function each: which flexibility blocks a scene needs, its contact problem,
 //! its solvers, a timed solve, the harness's verdict on an outcome, and the result document. The one-step solve
-//! ([`super::single`]) and the load path ([`super::path`]) are built from these; neither calls the other.
+//! (`super::single`) and the load path (`super::path`) are built from these; neither calls the other.
 
 use crate::checks::{make_checks, ModelReference};
 use crate::diagnostics::{asymmetry, diagnose};
@@ -16,7 +16,7 @@ use crate::theory::Hertz2D;
 use std::time::Instant;
 
 /// The contact law the pipeline simulates: the scene's ([`Scene::law`]), without normal–tangential coupling where the
-/// pair's cross flexibilities vanish identically ([`crate::source::half_plane::cross_blocks_vanish`]: two half-planes
+/// pair's cross flexibilities vanish identically (`crate::source::half_plane::cross_blocks_vanish`: two half-planes
 /// of one material and datum depth, or a strip pair with Dundurs' β = 0). The coupled path would then build two more
 /// n × n blocks and iterate the normal and tangential problems jointly for the same answer; the uncoupled path solves
 /// the normal problem once and the stick–slip problem at fixed pressure. The run's `effect_notes` say so.
@@ -238,7 +238,7 @@ pub fn solve_timed(solver: &dyn Solver, problem: &ContactProblem, start: Start) 
 /// (K_NN p and (K_NN + u cᵀ) p differ by the uniform (cᵀp)u). So when the normal load is prescribed, the asymmetry is
 /// measured on the part that matters, P K_NN P with P = I − ûûᵀ the projector orthogonal to the approach's gap
 /// vector (P u cᵀ P = 0); with the approach prescribed the full K_NN is measured and the warning says what it is
-/// ([`crate::diagnostics::diagnose`]).
+/// (`crate::diagnostics::diagnose`).
 pub fn normal_asymmetry(problem: &ContactProblem, half_plane: bool) -> f64 {
     let k = &problem.flex.k_nn;
     let load_driven = matches!(problem.drive.normal, Dof::Load(_));
@@ -329,8 +329,8 @@ pub struct RunContext<'a, 'p> {
 
 /// Post-process a solver's outcome — evaluate a claimed solution by the solver-independent residuals and refuse
 /// it above the refusal bound (`numerical_error`); judge an accepted one by the range of the model
-/// ([`crate::validity::judge`]: linearised kinematics, candidate zone); decide a failed load-driven solve exactly
-/// ([`crate::validity::decide`]) — returning also the evaluation of an accepted solution (a load path carries its
+/// (`crate::validity::judge`: linearised kinematics, candidate zone); decide a failed load-driven solve exactly
+/// (`crate::validity::decide`) — returning also the evaluation of an accepted solution (a load path carries its
 /// state on). The solver's termination and message are kept as they are; the harness's conclusion is the run's
 /// `status`, with a [`Verdict`] when it is not simply the termination.
 pub fn evaluate_outcome(ctx: &RunContext, outcome: Outcome) -> (SolverRun, Option<Evaluation>) {

@@ -30,6 +30,7 @@ use faer::Mat;
 
 /// The scene's wheel in dimensionless form: mesh in units of `length`, Kelvin kernels with E = 1.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct Model {
     /// Boundary mesh, lengths divided by `length`.
     pub mesh: Mesh,
@@ -71,12 +72,13 @@ impl Model {
 
 /// Numerical health of the BEM condensation (what a BEM source adds to the flexibility).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct BemHealth {
     /// Size of the rearranged BEM system (2 × nodes).
     pub system_size: usize,
     /// Ratio of the largest to the smallest |U_ii| of A's LU factors: a cheap lower bound of A's condition number.
     pub pivot_ratio: f64,
-    /// Estimated 1-norm condition number of the rearranged BEM system A ([`crate::condition`]).
+    /// Estimated 1-norm condition number of the rearranged BEM system A (`crate::condition`).
     pub system_condition: f64,
 }
 
@@ -167,6 +169,7 @@ impl BlockSink for CondSink<'_> {
 }
 
 /// The rearranged BEM system `A x = rhs` before factorisation (see the module docs).
+#[non_exhaustive]
 pub struct System {
     /// A: −G columns for support DOFs, H columns otherwise (2N × 2N).
     pub a: Mat<f64>,
@@ -334,6 +337,7 @@ pub fn condense_with_response(
 /// stress-free, so the stresses do not depend on it (the translations are reproduced exactly by the discrete
 /// system, a rotation only to the discretisation error, which leaving it out avoids).
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct BoundaryResponse {
     /// The model the response belongs to.
     pub model: Model,

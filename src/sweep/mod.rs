@@ -83,6 +83,7 @@ pub struct SweepSpec {
 /// What a sweep is, as its spec says (`analysis = "..."`): what `rollbem report` makes of its rows. The report never
 /// infers it from the rows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[non_exhaustive]
 pub enum Analysis {
     /// `accuracy`: errors against theory and against each mesh's limit, against cost (a mesh refinement:
     /// `mesh.contact_elements` must be swept).
@@ -136,6 +137,7 @@ fn zipped_keys(key: &str) -> Vec<&str> {
 
 /// One variant of the base scene.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct Case {
     /// Position in the sweep's enumeration, from 0 (the `case` column of the CSV).
     pub index: usize,
@@ -562,6 +564,7 @@ struct GridCases {
 /// The variants of a sweep spec, built one at a time from their case numbers: what a sweep of any size holds in
 /// memory is the base scenes and the grids' values, never the list of its cases ([`SweepSpec::expand`]).
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct Expansion {
     grids: Vec<GridCases>,
     spec_path: PathBuf,
@@ -632,7 +635,7 @@ impl Expansion {
     }
 
     /// The identity of the sweep's cases as the spec and its base scenes are now (`resolved` left empty: it needs
-    /// every case validated, [`identity`]).
+    /// every case validated, `identity`).
     pub fn identity(&self, spec: &SweepSpec, shard: Option<Shard>) -> identity::Identity {
         let grids: Vec<identity::GridParts<'_>> =
             self.grids.iter().map(|g| (g.base_name.display().to_string(), &g.base, g.entries.as_slice())).collect();

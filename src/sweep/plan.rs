@@ -81,6 +81,7 @@ pub(crate) enum Start {
 
 /// The counts of a plan.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Counts {
     /// Cases of the whole sweep.
     pub cases: usize,
@@ -98,6 +99,7 @@ pub struct Counts {
 
 /// An estimate of a run's time and memory (see the module docs for the cost model).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
+#[non_exhaustive]
 pub struct Estimate {
     /// Seconds of work, summed over the model builds, solves and timing repeats.
     pub work_s: f64,
@@ -123,6 +125,7 @@ impl Estimate {
 
 /// A sweep ready to run: checked, validated, grouped, estimated.
 #[derive(Debug)]
+#[non_exhaustive]
 pub struct Plan {
     pub(crate) spec: SweepSpec,
     pub(crate) expansion: Expansion,

@@ -159,6 +159,7 @@ impl Shared {
 
 /// The counts of a finished sweep.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Outcome {
     /// Rows of the CSV.
     pub rows: usize,
