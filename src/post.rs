@@ -9,6 +9,7 @@
 //! Node states: `separated` when the pressure is zero; without friction `contact` (no friction law, so neither
 //! stick nor slip); with friction `slip` when |q| = μp, else `stick`.
 
+use crate::error::ArgumentError;
 use crate::flexibility::ModeKind;
 use crate::formulation::{ContactProblem, Dof, Solution};
 use crate::tolerances::{SEPARATED_PRESSURE, STICK_MARGIN};
@@ -323,7 +324,29 @@ pub struct RollingResult {
 /// sticking material |s|(μp − |q|)/(ℓ μ p_max) and slip along the friction force max(0, s q)/(ℓ μ p_max) (the slip
 /// terms only where the tangential rigid motion is known); `equilibrium` the worst relative error of a prescribed
 /// resultant (Q relative to max(|Q|, μP), M to max(|M|, P R)).
-pub fn evaluate(problem: &ContactProblem, sol: &Solution, rolling: Option<RollingPost>) -> Evaluation {
+///
+/// A solution of another shape than the problem's ([`Solution::fits`]: a solver's, or a plug-in's, answer is not
+/// trusted to have it) is refused, naming it.
+pub fn evaluate(
+    problem: &ContactProblem,
+    sol: &Solution,
+    rolling: Option<RollingPost>,
+) -> Result<Evaluation, ArgumentError> {
+    if !sol.fits(problem) {
+        return Err(ArgumentError::new(
+            "evaluate",
+            "sol",
+            format!(
+                "has {} normal forces, {} tangential and {} rigid values; the problem has {} contact nodes and {} \
+                 rigid DOFs",
+                sol.f.len(),
+                sol.h.as_ref().map_or(0, Vec::len),
+                sol.rigid.len(),
+                problem.n(),
+                problem.dofs.len()
+            ),
+        ));
+    }
     let flex = problem.flex;
     let n = flex.n();
     let (l0, e) = (flex.scales.length, flex.scales.modulus);
@@ -376,7 +399,7 @@ pub fn evaluate(problem: &ContactProblem, sol: &Solution, rolling: Option<Rollin
     let contact = summary(&nodes, pmax * e, pmax.max(k.ell) * e);
     let rolling = rolling.map(|r| rolling_result(problem, sol, r, &nodes, k.slip_scale));
     let rigid = |kind: ModeKind| problem.rigid_value(sol, kind);
-    Evaluation {
+    Ok(Evaluation {
         u_t: k.ux.clone(),
         slip: k.slip.clone(),
         rolling,
@@ -389,7 +412,7 @@ pub fn evaluate(problem: &ContactProblem, sol: &Solution, rolling: Option<Rollin
         },
         contact,
         residuals,
-    }
+    })
 }
 
 /// Tractions, displacements, gaps and slips of a solution at the contact nodes (dimensionless).

@@ -146,7 +146,8 @@ impl StressGrid {
 
     /// `(x, depth)` of point `k` (row-major).
     pub fn point(&self, k: usize) -> (f64, f64) {
-        let nx = self.points[0];
+        // A grid has at least one column (a validated scene's); `max(1)` keeps an edited one from dividing by 0.
+        let nx = self.points[0].max(1);
         (self.x_at(k % nx), self.depth_at(k / nx))
     }
 }
@@ -206,9 +207,9 @@ pub struct StressField {
 }
 
 impl StressField {
-    /// The value of `q` at point `k`, if the point has one.
+    /// The value of `q` at point `k`, if the grid has that point and the point has a value.
     pub fn value(&self, q: StressQuantity, k: usize) -> Option<f64> {
-        self.stress[k].ok().map(|s| quantity(q, s, self.nu))
+        self.stress.get(k)?.ok().map(|s| quantity(q, s, self.nu))
     }
 
     /// The maximum of `q` (largest magnitude, first in row-major order on ties), if any point has a value.

@@ -65,7 +65,8 @@ fn lemke_discrete(s: &Scene) -> (Status, rollbem::post::Evaluation) {
     assert_eq!(out.status, Termination::Solved, "{}", out.message);
     (
         status,
-        rollbem::post::evaluate(&problem, out.solution.as_ref().unwrap(), rollbem::pipeline::stages::rolling_post(s)),
+        rollbem::post::evaluate(&problem, out.solution.as_ref().unwrap(), rollbem::pipeline::stages::rolling_post(s))
+            .unwrap(),
     )
 }
 

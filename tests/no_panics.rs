@@ -369,3 +369,57 @@ fn solvers_with_settings_outside_their_ranges_end_with_a_termination() {
         }
     }
 }
+
+/// A sweep's case by a number beyond its cases: an error naming `case` (a panic before, "a case number below
+/// len()"), and no parameters.
+#[test]
+fn a_sweep_case_beyond_the_sweep_is_refused() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/sweeps/hertz-accuracy.toml");
+    let spec = rollbem::sweep::SweepSpec::from_file(&path).unwrap();
+    let e = spec.expand(&path, &path).unwrap();
+    let n = e.len();
+    assert!(n > 0 && e.params(n - 1).is_some() && e.case(n - 1).is_ok());
+    assert!(e.params(n).is_none());
+    match e.case(n) {
+        Err(rollbem::Error::Invalid { field, message, .. }) => assert_eq!(field, "case", "{message}"),
+        other => panic!("case {n} of {n}: {:?}", other.map(|c| c.index)),
+    }
+    assert!(e.check_rows(n, &[]).is_err());
+}
+
+/// A solver (a plug-in, say) that claims a solution of another shape than the problem's: the evaluation refuses it
+/// and the harness reports the run `numerical_error` with the reason, where it used to index out of bounds.
+#[test]
+fn a_claimed_solution_of_another_shape_is_refused_by_the_harness() {
+    use rollbem::formulation::Solution;
+    use rollbem::results::{Setup, Timing};
+    use rollbem::solvers::{Outcome, Work};
+    use rollbem::status::{Status, VerdictReason};
+    let s = half_plane("normal_load = 1000.0\ntangential_load = 100.0");
+    let built = source::build(&s, stages::blocks_for(&s)).unwrap();
+    let p = stages::scene_problem(&s, &built.flex).unwrap();
+    let n = p.n();
+    let wrong = Solution {
+        f: vec![0.0; n - 1],
+        h: Some(vec![0.0; n]),
+        rigid: vec![0.0; p.dofs().len()],
+        tangential_known: true,
+    };
+    assert!(!wrong.fits(&p));
+    assert_eq!(named(rollbem::post::evaluate(&p, &wrong, None).unwrap_err()), ("evaluate", "sol"));
+    let ctx = stages::RunContext {
+        scene: &s,
+        problem: &p,
+        solver: rollbem::solvers::SolverId::new("a_plugin"),
+        timing: Timing::of(&built.timing, 0.0, 0.0, Setup::Built),
+        refuse: 1e-6,
+        rolling: None,
+    };
+    let outcome = Outcome::new(Some(wrong), Termination::Solved, "done".into(), Work::default());
+    let (run, ev) = stages::evaluate_outcome(&ctx, outcome);
+    assert!(ev.is_none());
+    assert_eq!(run.status, Status::NumericalError);
+    let verdict = run.verdict.expect("a verdict saying why");
+    assert_eq!(verdict.reason, VerdictReason::ResidualTooLarge);
+    assert!(verdict.message.contains("cannot be evaluated"), "{}", verdict.message);
+}

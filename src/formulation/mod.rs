@@ -225,7 +225,8 @@ struct LcpBuild {
     seconds: f64,
 }
 
-/// A solver's answer in the problem's dimensionless unknowns: the one solution shape of every solver.
+/// A solver's answer in the problem's dimensionless unknowns: the one solution shape of every solver (a solver, a
+/// plug-in's included, builds it; [`Solution::fits`] says whether it has a problem's shape).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Solution {
     /// Normal nodal forces f.
@@ -237,6 +238,14 @@ pub struct Solution {
     pub rigid: Vec<f64>,
     /// False when the tangential rigid motion is indeterminate (at the sliding limit).
     pub tangential_known: bool,
+}
+
+impl Solution {
+    /// Whether it has the shape of a solution of `p`: f of n nodes, h of n nodes or none, one value per rigid DOF.
+    pub fn fits(&self, p: &ContactProblem) -> bool {
+        let n = p.n();
+        self.f.len() == n && self.rigid.len() == p.dofs.len() && self.h.as_ref().is_none_or(|h| h.len() == n)
+    }
 }
 
 impl<'a> ContactProblem<'a> {

@@ -336,12 +336,23 @@ pub struct RunContext<'a, 'p> {
 pub fn evaluate_outcome(ctx: &RunContext, outcome: Outcome) -> (SolverRun, Option<Evaluation>) {
     let RunContext { scene, problem, solver, .. } = *ctx;
     let Outcome { solution, status: termination, message, work, figures, state: _ } = outcome;
-    let ev = match (&solution, termination) {
-        (Some(sol), Termination::Solved) => Some(evaluate(problem, sol, ctx.rolling)),
-        _ => None,
-    };
     let mut status = Status::from(termination);
     let mut verdict = None;
+    let ev = match (&solution, termination) {
+        (Some(sol), Termination::Solved) => match evaluate(problem, sol, ctx.rolling) {
+            Ok(ev) => Some(ev),
+            Err(e) => {
+                // A solver (a plug-in's, say) that claims a solution of another shape than the problem's.
+                status = Status::NumericalError;
+                verdict = Some(Verdict {
+                    reason: VerdictReason::ResidualTooLarge,
+                    message: format!("the solver reported success but its solution cannot be evaluated: {e}"),
+                });
+                None
+            }
+        },
+        _ => None,
+    };
     if let Some(ev) = &ev {
         let worst = ev.residuals.max();
         if let Some(what) = ev.first_non_finite() {

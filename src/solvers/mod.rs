@@ -421,13 +421,9 @@ impl Start {
     /// The nearby solution, if it has the problem's shape: f of n nodes, h of n nodes or none, one value per rigid
     /// DOF, every value finite. A solution of another shape is ignored (a cold start), never indexed.
     pub fn solution_for(&self, p: &ContactProblem) -> Option<&Solution> {
-        let n = p.n();
-        self.solution.as_ref().filter(|w| {
-            w.f.len() == n
-                && w.rigid.len() == p.dofs.len()
-                && w.h.as_ref().is_none_or(|h| h.len() == n)
-                && w.f.iter().chain(w.h.iter().flatten()).chain(&w.rigid).all(|v| v.is_finite())
-        })
+        self.solution
+            .as_ref()
+            .filter(|w| w.fits(p) && w.f.iter().chain(w.h.iter().flatten()).chain(&w.rigid).all(|v| v.is_finite()))
     }
 
     /// Take the solver's own state, typed, if it was left by `solver` on a problem of `p`'s layout and is a `T`;

@@ -599,22 +599,22 @@ impl Expansion {
         self.len() == 0
     }
 
-    /// The grid of case `index` and the case's position in it. Panics beyond [`Expansion::len`].
-    fn locate(&self, index: usize) -> (&GridCases, usize) {
-        let g = self.grids.iter().find(|g| index < g.start + g.len).expect("a case number below len()");
-        (g, index - g.start)
+    /// The grid of case `index` and the case's position in it; `None` beyond [`Expansion::len`].
+    fn locate(&self, index: usize) -> Option<(&GridCases, usize)> {
+        let g = self.grids.iter().find(|g| index < g.start + g.len)?;
+        Some((g, index - g.start))
     }
 
     /// The swept keys of case `index` with their values (strings bare, other values in TOML syntax), in sorted key
-    /// order: what its CSV rows carry. Cheap: no scene is built.
-    pub fn params(&self, index: usize) -> Vec<(String, String)> {
-        self.values(index).into_iter().map(|(k, v)| (k, show(&v))).collect()
+    /// order: what its CSV rows carry. Cheap: no scene is built. `None` beyond [`Expansion::len`].
+    pub fn params(&self, index: usize) -> Option<Vec<(String, String)>> {
+        Some(self.values(index)?.into_iter().map(|(k, v)| (k, show(&v))).collect())
     }
 
     /// The swept keys of case `index` with their values: mixed-radix digits of its position in its grid, the last
-    /// key varying fastest.
-    fn values(&self, index: usize) -> Vec<(String, Value)> {
-        let (g, m) = self.locate(index);
+    /// key varying fastest. `None` beyond [`Expansion::len`].
+    fn values(&self, index: usize) -> Option<Vec<(String, Value)>> {
+        let (g, m) = self.locate(index)?;
         let mut picks = vec![0; g.entries.len()];
         let mut rest = m;
         for (j, (_, a)) in g.entries.iter().enumerate().rev() {
@@ -631,7 +631,7 @@ impl Expansion {
             };
             out.extend(keys.iter().map(|k| k.to_string()).zip(values));
         }
-        out
+        Some(out)
     }
 
     /// The identity of the sweep's cases as the spec and its base scenes are now (`resolved` left empty: it needs
@@ -645,10 +645,9 @@ impl Expansion {
     /// Whether `rows` (read from a sweep CSV) can be case `index`'s: the case is one of the spec's and every row
     /// carries its parameters (empty values are not written). `Err` says why not.
     pub fn check_rows(&self, index: usize, rows: &[SweepRow]) -> std::result::Result<(), String> {
-        if index >= self.len() {
+        let Some(mut want) = self.params(index) else {
             return Err(format!("the spec has {} cases", self.len()));
-        }
-        let mut want = self.params(index);
+        };
         want.retain(|(_, v)| !v.is_empty());
         match rows.iter().find(|r| r.params != want) {
             None => Ok(()),
@@ -664,7 +663,7 @@ impl Expansion {
     }
 
     /// Case `index`: its parameters and its scene, parsed and validated. An error names the spec file, the case's
-    /// parameters and the offending field. Panics beyond [`Expansion::len`].
+    /// parameters and the offending field; an index beyond [`Expansion::len`] is an error naming `case`.
     pub fn case(&self, index: usize) -> Result<Case> {
         // A variant's error names the spec by `label` in the case's words; the spec's error names its file.
         let readdress = |e: Error| match e {
@@ -676,8 +675,9 @@ impl Expansion {
     }
 
     fn build(&self, index: usize) -> Result<Case> {
-        let (g, _) = self.locate(index);
-        let values = self.values(index);
+        let (Some((g, _)), Some(values)) = (self.locate(index), self.values(index)) else {
+            return Err(invalid(&self.label, "case", format!("case {index}: the sweep has {} cases", self.len())));
+        };
         let mut doc = g.base.clone();
         let mut params = Vec::with_capacity(values.len());
         let mut set_err = None;

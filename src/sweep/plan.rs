@@ -451,7 +451,7 @@ impl Resume<'_> {
             let now = scene_digest(&self.expansion.case(case)?.scene);
             if rows.first().and_then(|r| r.scene_digest) != Some(now) {
                 n += 1;
-                first.get_or_insert_with(|| super::describe(case, &self.expansion.params(case)));
+                first.get_or_insert_with(|| super::describe(case, &self.expansion.params(case).unwrap_or_default()));
             }
             Ok(())
         })?;
