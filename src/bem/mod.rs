@@ -1,8 +1,8 @@
 //! The boundary element core: 2D plane-strain elastostatics with the Kelvin solution (seed eq. 13, `H u = G t`).
 //!
-//! Assembly visits every (source node, element) pair once and hands the 2×2 blocks of H and G to a
-//! `BlockSink`, so a caller can build the full matrices (tests, small problems) or write directly into the
-//! rearranged system of the condensation ([`crate::source::bem_wheel`]) without storing H and G.
+//! Assembly visits every (source node, element) pair once and hands the 2×2 blocks of H and G to a sink (the
+//! crate's `BlockSink`), so that [`assemble_full`] builds the full matrices (tests, small problems) and the
+//! condensation ([`crate::source::bem_wheel`]) writes directly into its rearranged system without storing H and G.
 //!
 //! H's diagonal blocks come from the rigid-body condition: a rigid translation of a bounded body produces no
 //! traction, so each block row of H sums to zero: `H_ii = −Σ_{j≠i} H_ij` (Brebbia & Dominguez §5). This absorbs
