@@ -45,10 +45,10 @@ fn half_plane_group(c: &mut Criterion) {
     let s = half_plane(1000, "[drive]\nnormal_load = 20000.0\ntangential_load = 3000.0", r#"["active_set"]"#);
     g.bench_function(BenchmarkId::new("end_to_end/active_set", 1000), |b| b.iter(|| black_box(run_scene(&s).unwrap())));
     for n in [250usize, 1000] {
-        let hp = HalfPlane::new(210000.0, 0.3, 460.0);
+        let hp = HalfPlane::new(210000.0, 0.3, 460.0).unwrap();
         let h = 18.0 / n as f64;
         g.bench_with_input(BenchmarkId::new("influence", n), &n, |b, &n| {
-            b.iter(|| black_box(hp.influence_blocks_uniform(-9.0, h, n)))
+            b.iter(|| black_box(hp.influence_blocks_uniform(-9.0, h, n).unwrap()))
         });
         g.bench_with_input(BenchmarkId::new("n2_write", n), &n, |b, &n| {
             // Four row-major n×n blocks written once each, the layout of `InfluenceBlocks`.
@@ -127,7 +127,7 @@ fn toeplitz_group(c: &mut Criterion) {
         let col: Vec<f64> = (0..n).map(|i| t(i as i64)).collect();
         let row: Vec<f64> = (0..n).map(|j| t(-(j as i64))).collect();
         let dense = faer::Mat::<f64>::from_fn(n, n, |i, j| t(i as i64 - j as i64));
-        let op = Toeplitz::from_parts(&col, &row);
+        let op = Toeplitz::from_parts(&col, &row).unwrap();
         let x = faer::Col::<f64>::from_fn(n, |i| (i as f64 * 0.37).sin());
         let xs: Vec<f64> = x.iter().copied().collect();
         g.bench_with_input(BenchmarkId::new("fft", n), &n, |b, _| b.iter(|| black_box(op.apply(&xs))));

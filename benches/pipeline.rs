@@ -73,7 +73,7 @@ fn assembly(c: &mut Criterion) {
             if kind == ElementKind::Quadratic && n > 1000 {
                 continue;
             }
-            let model = Model::of_scene(&scene_with(n, kind)).unwrap();
+            let model = Model::of_scene(&scene_with(n, kind)).unwrap().unwrap();
             g.bench_with_input(BenchmarkId::new(kind.name(), n), &model, |b, m| {
                 b.iter(|| black_box(assemble_system(m, Blocks::Normal).unwrap()))
             });
@@ -87,7 +87,7 @@ fn condensation(c: &mut Criterion) {
     let mut g = c.benchmark_group("condensation");
     g.sample_size(10);
     for n in [56, 250, 500, 1000, 2000] {
-        let model = Model::of_scene(&scene_with(n, ElementKind::Constant)).unwrap();
+        let model = Model::of_scene(&scene_with(n, ElementKind::Constant)).unwrap().unwrap();
         let sys = assemble_system(&model, Blocks::Normal).unwrap();
         g.bench_with_input(BenchmarkId::new("constant", n), &sys, |b, sys| {
             b.iter(|| black_box(solve_system(&model, sys).unwrap()))
@@ -104,14 +104,14 @@ fn frictionless_solve(c: &mut Criterion) {
     g.sample_size(10);
     for n in [56, 250, 1000] {
         let s = scene_with(n, ElementKind::Constant);
-        let (flex, _, _) = condense(&Model::of_scene(&s).unwrap(), Blocks::Normal).unwrap();
+        let (flex, _, _) = condense(&Model::of_scene(&s).unwrap().unwrap(), Blocks::Normal).unwrap();
         let prob = scene_problem(&s, &flex).unwrap();
         let nc = flex.n();
-        let lcp = prob.lcp().clone();
+        let lcp = prob.lcp().expect("an LCP below gross sliding").clone();
         g.bench_with_input(BenchmarkId::new("lemke", nc), &lcp, |b, l| {
             b.iter(|| black_box(lemke::solve(l, &LemkeSettings::default())))
         });
-        let np = prob.normal.as_ref().unwrap();
+        let np = prob.normal().unwrap();
         let kcol: Vec<f64> = (0..nc * nc).map(|i| np.k[(i % nc, i / nc)]).collect();
         let ones = vec![1.0; nc];
         let load = prob.load_dofs().next().unwrap().drive.load().unwrap();
@@ -145,8 +145,8 @@ fn lemke_frictional(c: &mut Criterion) {
                 d.drive.rotation = Some(0.0);
             })
             .unwrap();
-        let (flex, _, _) = condense(&Model::of_scene(&s).unwrap(), Blocks::All).unwrap();
-        let lcp = scene_problem(&s, &flex).unwrap().lcp().clone();
+        let (flex, _, _) = condense(&Model::of_scene(&s).unwrap().unwrap(), Blocks::All).unwrap();
+        let lcp = scene_problem(&s, &flex).unwrap().lcp().expect("an LCP below gross sliding").clone();
         let m = lcp.size();
         let probe = lemke::solve(&lcp, &LemkeSettings::default());
         eprintln!("lemke_frictional/block/{m}: {} pivots, {:?}", probe.pivots, probe.status);
@@ -156,7 +156,7 @@ fn lemke_frictional(c: &mut Criterion) {
         // Warm start from the previous load step (tangential load 10 % lower): its solution's support.
         let mut prev = s.clone();
         prev = prev.edit(|d| d.drive.tangential_load = Some(0.9 * 18.742)).unwrap();
-        let prev_lcp = scene_problem(&prev, &flex).unwrap().lcp().clone();
+        let prev_lcp = scene_problem(&prev, &flex).unwrap().lcp().expect("an LCP below gross sliding").clone();
         let guess: Vec<bool> = lemke::solve(&prev_lcp, &LemkeSettings::default()).z.iter().map(|&v| v > 0.0).collect();
         let warm = lemke::solve_warm(&lcp, &LemkeSettings::default(), &guess);
         eprintln!("lemke_frictional/warm/{m}: {} pivots, {:?}", warm.pivots, warm.status);
@@ -188,7 +188,7 @@ fn formulation_and_normtang(c: &mut Criterion) {
                 d.mesh.contact_elements = n;
             })
             .unwrap();
-        let (flex, _, _) = condense(&Model::of_scene(&s).unwrap(), Blocks::All).unwrap();
+        let (flex, _, _) = condense(&Model::of_scene(&s).unwrap().unwrap(), Blocks::All).unwrap();
         let prob = scene_problem(&s, &flex).unwrap();
         let signs: Vec<f64> = prob.load_dofs().map(|d| d.default_sign()).collect();
         g.bench_with_input(BenchmarkId::new("frictional_lcp", n), &prob, |b, p| {
@@ -222,7 +222,7 @@ fn scale(c: &mut Criterion) {
             d.mesh.contact_elements = 3300;
         })
         .unwrap();
-    let model = Model::of_scene(&s).unwrap();
+    let model = Model::of_scene(&s).unwrap().unwrap();
     g.bench_function(BenchmarkId::new("condensation", 3300), |b| {
         b.iter(|| black_box(condense(&model, Blocks::All).unwrap()))
     });

@@ -28,6 +28,7 @@ use clarabel::solver::{
 /// A verified Farkas certificate: the virtual rigid motion that every admissible contact force resists and the
 /// prescribed loads drive.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct Certificate {
     /// The virtual motion per load-driven DOF (dimensionless, normalised to max |δ| = 1), in the problem's DOF
     /// order.

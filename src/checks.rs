@@ -11,6 +11,7 @@ use crate::tolerances as tol;
 
 /// How two solvers' answers differ.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct Comparison {
     /// max(|Δp|, |Δq|) over the nodes, divided by `a`'s pressure scale (its peak pressure, floored: see
     /// [`crate::post::ContactSummary::pressure_scale`]).

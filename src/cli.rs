@@ -411,14 +411,14 @@ fn plot(
     out: Option<&Path>,
     analysis: Option<String>,
     scene: Option<PathBuf>,
-) -> crate::Result<crate::plot_result::Plotted> {
+) -> crate::Result<crate::report::Plotted> {
     if input.extension().is_some_and(|e| e == "csv") {
         let analysis = analysis.map(|a| crate::sweep::Analysis::from_name(&a, input)).transpose()?;
         let scene = scene.map(|p| Scene::from_file(&p)).transpose()?;
         let dir = input.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-        return crate::plot_csv::plot_csv(input, out.unwrap_or(dir), analysis, scene.as_ref());
+        return crate::report::plot_csv(input, out.unwrap_or(dir), analysis, scene.as_ref());
     }
-    crate::plot_result::plot_result(input, out)
+    crate::report::plot_result(input, out)
 }
 
 /// The process's peak resident memory in kB (`VmHWM` of /proc/self/status; `None` where there is none): a sweep

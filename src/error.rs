@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 /// Everything that stops rollbem before it can produce a result.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum Error {
     /// An input file (a scene, a sweep spec, an LCP file, a CSV to merge) could not be read.
     #[error("cannot read {path}: {source}")]
@@ -86,3 +87,38 @@ impl Error {
 
 /// Result alias.
 pub type Result<T> = std::result::Result<T, Error>;
+
+/// A value a caller passed to a library function outside that function's domain (a negative modulus, vectors of
+/// different lengths, an empty mesh): the function refuses it with this error, naming the function, the argument and
+/// what it must be, instead of panicking. Scenes never produce one: they are validated when read, with errors naming
+/// their keys ([`Error::Invalid`]).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("{function}: `{argument}` {message}")]
+#[non_exhaustive]
+pub struct ArgumentError {
+    /// The function (or constructor) that refused it, e.g. `HalfPlane::new`.
+    pub function: &'static str,
+    /// The argument, e.g. `nu`.
+    pub argument: &'static str,
+    /// What is wrong and what is expected, with the value given.
+    pub message: String,
+}
+
+impl ArgumentError {
+    /// The error of `function` refusing `argument`: `message` says what it must be and what it was.
+    pub fn new(function: &'static str, argument: &'static str, message: impl Into<String>) -> ArgumentError {
+        ArgumentError { function, argument, message: message.into() }
+    }
+}
+
+/// An argument error met while running a scene (a library function refusing a value derived from it) is bad input:
+/// [`Error::Invalid`], with the function and the argument as its field.
+impl From<ArgumentError> for Error {
+    fn from(e: ArgumentError) -> Error {
+        Error::Invalid {
+            path: PathBuf::from("<argument>"),
+            field: format!("{}({})", e.function, e.argument),
+            message: e.message,
+        }
+    }
+}

@@ -30,6 +30,7 @@ pub enum ModeKind {
 
 /// The contact nodes' response to one unit rigid mode.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct RigidMode {
     /// Which rigid motion.
     pub kind: ModeKind,
@@ -68,6 +69,7 @@ impl Scales {
 
 /// The contact flexibility and the contact nodes' data, dimensionless (see the module docs).
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct Flexibility {
     /// K_NN: u_N per unit normal nodal force (n × n).
     pub k_nn: Mat<f64>,

@@ -179,12 +179,14 @@
 //! direct blocks double. The surviving coupling, `∝ (1−2ν1)/G1 − (1−2ν2)/G2`, is what Dundurs'
 //! `β` measures ([`crate::material::dundurs_beta`] of [`HalfPlane::material`]s; body 1 = wheel).
 
+use crate::error::ArgumentError;
 use crate::material::Material;
 use std::f64::consts::{FRAC_2_PI, FRAC_PI_2, PI};
 
 /// A displacement `(u_x, u_z)` in the body's own axes (`u_z` positive INTO the body), relative to
 /// the datum point `(0, D)`. Units of length.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[non_exhaustive]
 pub struct Displacement {
     /// Displacement along `+x` (along the surface).
     pub ux: f64,
@@ -195,6 +197,7 @@ pub struct Displacement {
 /// The in-plane stress components `(σ_xx, σ_zz, τ_xz)` (plane strain; `σ_yy = ν(σ_xx + σ_zz)` is
 /// not returned), tension positive. Units of traction (e.g. Pa).
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[non_exhaustive]
 pub struct Stress {
     /// Normal stress along `x`.
     pub sxx: f64,
@@ -206,8 +209,9 @@ pub struct Stress {
 
 /// An isotropic elastic half-plane in plane strain with its displacement datum.
 ///
-/// Invariants (checked by [`HalfPlane::new`]): `E > 0` (`E = +∞` is allowed and models a RIGID
-/// body: all its displacements are zero), `0 ≤ ν ≤ 0.5`, `0 < D < ∞`.
+/// Invariants (checked by [`HalfPlane::new`], which refuses other values): `E > 0` (`E = +∞` is allowed and models
+/// a RIGID body: all its displacements are zero), `0 ≤ ν ≤ 0.5`, `0 < D < ∞`; on a strip ([`HalfPlane::strip`]) a
+/// finite width `> 0`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HalfPlane {
     e: f64,
@@ -219,6 +223,7 @@ pub struct HalfPlane {
 
 /// A mesh of contiguous surface strips with their collocation points.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct StripMesh {
     /// Left ends `a_j` of the strips.
     pub a: Vec<f64>,
@@ -229,8 +234,49 @@ pub struct StripMesh {
 }
 
 /// The signs with which a counter-body's blocks (cxx, cxz, czx, czz) add to the wheel's
-/// ([`InfluenceBlocks::into_counter_body`]).
+/// ([`InfluenceBlocks::into_counter_body`]); index it with [`Block::index`].
 pub const COUNTER_BODY_SIGN: [f64; 4] = [1.0, -1.0, -1.0, 1.0];
+
+/// One of the four influence blocks ([`InfluenceBlocks`]), for [`HalfPlane::influence_block_uniform`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Block {
+    /// `u_x` per unit shear (`cxx`).
+    Xx,
+    /// `u_x` per unit pressure (`cxz`).
+    Xz,
+    /// `u_z` per unit shear (`czx`).
+    Zx,
+    /// `u_z` per unit pressure (`czz`).
+    Zz,
+}
+
+impl Block {
+    /// Its place in the order cxx, cxz, czx, czz (0..4), e.g. in [`COUNTER_BODY_SIGN`].
+    pub fn index(self) -> usize {
+        match self {
+            Block::Xx => 0,
+            Block::Xz => 1,
+            Block::Zx => 2,
+            Block::Zz => 3,
+        }
+    }
+}
+
+/// `n · n` entries of an n × n block, refused when the count overflows (no such block fits in memory).
+fn block_entries(function: &'static str, rows: usize, cols: usize) -> Result<usize, ArgumentError> {
+    rows.checked_mul(cols)
+        .filter(|&e| e <= isize::MAX as usize / std::mem::size_of::<f64>())
+        .ok_or_else(|| ArgumentError::new(function, "n", format!("{rows} × {cols} entries do not fit in memory")))
+}
+
+/// The element width of a uniform mesh: finite and `> 0`.
+fn check_width(function: &'static str, h: f64) -> Result<(), ArgumentError> {
+    if h > 0.0 && h.is_finite() {
+        Ok(())
+    } else {
+        Err(ArgumentError::new(function, "h", format!("(the element width) must be finite and > 0, got {h}")))
+    }
+}
 
 /// A row-major n × n block with entries t[n−1−i+j] + d[j], written into `dst` (overwritten in place when it has the
 /// size already, so a repeated assembly allocates nothing).
@@ -267,6 +313,7 @@ pub fn uniform_mesh(x0: f64, h: f64, n: usize) -> StripMesh {
 /// For a single body `(u_x, u_z)` are its own displacements relative to its datum; after adding
 /// a counter-body ([`pair_blocks`]) they are (slip, gap change) of the wheel relative to the flat.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct InfluenceBlocks {
     /// Number of collocation points (rows).
     pub rows: usize,
@@ -297,11 +344,35 @@ impl InfluenceBlocks {
         self
     }
 
+    /// Whether the four blocks hold `rows × cols` entries each (their fields are public: a caller can break it).
+    fn check_shape(&self, function: &'static str) -> Result<(), ArgumentError> {
+        let entries = block_entries(function, self.rows, self.cols)?;
+        let blocks = [&self.cxx, &self.cxz, &self.czx, &self.czz];
+        match blocks.iter().find(|b| b.len() != entries) {
+            None => Ok(()),
+            Some(b) => Err(ArgumentError::new(
+                function,
+                "blocks",
+                format!("hold {} entries where rows × cols = {} × {} = {entries}", b.len(), self.rows, self.cols),
+            )),
+        }
+    }
+
     /// Matrix-vector product: `(u_x, u_z)` at the collocation points for element tractions
-    /// `q` (shear) and `p` (pressure), each of length `cols`.
-    pub fn apply(&self, q: &[f64], p: &[f64]) -> (Vec<f64>, Vec<f64>) {
-        assert_eq!(q.len(), self.cols, "q has the wrong length");
-        assert_eq!(p.len(), self.cols, "p has the wrong length");
+    /// `q` (shear) and `p` (pressure), each of length `cols`. Refused when `q` or `p` has another length, or the
+    /// blocks do not hold `rows × cols` entries each.
+    pub fn apply(&self, q: &[f64], p: &[f64]) -> Result<(Vec<f64>, Vec<f64>), ArgumentError> {
+        const F: &str = "InfluenceBlocks::apply";
+        self.check_shape(F)?;
+        for (name, v) in [("q", q), ("p", p)] {
+            if v.len() != self.cols {
+                return Err(ArgumentError::new(
+                    F,
+                    name,
+                    format!("has {} entries, the blocks {} columns", v.len(), self.cols),
+                ));
+            }
+        }
         let dot = |row: &[f64], v: &[f64]| row.iter().zip(v).map(|(a, b)| a * b).sum::<f64>();
         let (mut ux, mut uz) = (Vec::with_capacity(self.rows), Vec::with_capacity(self.rows));
         for i in 0..self.rows {
@@ -309,19 +380,28 @@ impl InfluenceBlocks {
             ux.push(dot(&self.cxx[r.clone()], q) + dot(&self.cxz[r.clone()], p));
             uz.push(dot(&self.czx[r.clone()], q) + dot(&self.czz[r], p));
         }
-        (ux, uz)
+        Ok((ux, uz))
     }
-}
 
-impl std::ops::AddAssign<&InfluenceBlocks> for InfluenceBlocks {
-    /// Entry-wise sum (shapes must agree).
-    fn add_assign(&mut self, other: &InfluenceBlocks) {
-        assert!(self.rows == other.rows && self.cols == other.cols, "block shapes differ");
+    /// Add `other`'s blocks entry by entry (a counter-body's to a wheel's: [`pair_blocks`]). Refused, and `self`
+    /// left as it was, when the two do not have the same shape.
+    pub fn add_blocks(&mut self, other: &InfluenceBlocks) -> Result<(), ArgumentError> {
+        const F: &str = "InfluenceBlocks::add_blocks";
+        self.check_shape(F)?;
+        other.check_shape(F)?;
+        if (self.rows, self.cols) != (other.rows, other.cols) {
+            return Err(ArgumentError::new(
+                F,
+                "other",
+                format!("is {} × {}, the blocks {} × {}", other.rows, other.cols, self.rows, self.cols),
+            ));
+        }
         let add = |a: &mut Vec<f64>, b: &Vec<f64>| a.iter_mut().zip(b).for_each(|(x, y)| *x += y);
         add(&mut self.cxx, &other.cxx);
         add(&mut self.cxz, &other.cxz);
         add(&mut self.czx, &other.czx);
         add(&mut self.czz, &other.czz);
+        Ok(())
     }
 }
 
@@ -445,21 +525,35 @@ fn combine(t: &[f64; 4], d: &[f64; 4]) -> [f64; 4] {
 impl HalfPlane {
     /// A half-plane with Young's modulus `e` (`> 0`; `f64::INFINITY` = rigid), Poisson ratio
     /// `nu ∈ [0, 0.5]` and datum depth `datum_depth = D ∈ (0, ∞)` (same length unit as all
-    /// coordinates). Panics on invalid input.
-    pub fn new(e: f64, nu: f64, datum_depth: f64) -> Self {
-        assert!(e > 0.0, "Young's modulus must be > 0 (may be +inf for a rigid body), got {e}");
-        assert!((0.0..=0.5).contains(&nu), "Poisson ratio must lie in [0, 0.5], got {nu}");
-        assert!(datum_depth > 0.0 && datum_depth.is_finite(), "datum depth must be finite and > 0, got {datum_depth}");
-        Self { e, nu, datum_depth, strip_width: None }
+    /// coordinates). Another value (NaN included) is refused, naming the argument.
+    pub fn new(e: f64, nu: f64, datum_depth: f64) -> Result<Self, ArgumentError> {
+        const F: &str = "HalfPlane::new";
+        if e.is_nan() || e <= 0.0 {
+            return Err(ArgumentError::new(F, "e", format!("(Young's modulus) must be > 0 (+inf: rigid), got {e}")));
+        }
+        if !(0.0..=0.5).contains(&nu) {
+            return Err(ArgumentError::new(F, "nu", format!("(Poisson's ratio) must lie in [0, 0.5], got {nu}")));
+        }
+        if !(datum_depth > 0.0 && datum_depth.is_finite()) {
+            return Err(ArgumentError::new(F, "datum_depth", format!("must be finite and > 0, got {datum_depth}")));
+        }
+        Ok(Self { e, nu, datum_depth, strip_width: None })
     }
 
     /// The same material as a strip of `width` (`> 0`, finite, the unit of all coordinates) across the rolling
     /// direction on an elastic half-SPACE: CONTACT's model of a 2D case (one row of rectangular elements, length ×
     /// `width`, displacements at the strip's centre line; module docs, "Strip of half-spaces"). Its surface
-    /// displacements are absolute (they vanish far away), so the datum plays no part. Panics on an invalid width.
-    pub fn strip(self, width: f64) -> Self {
-        assert!(width > 0.0 && width.is_finite(), "strip width must be finite and > 0, got {width}");
-        Self { strip_width: Some(width), ..self }
+    /// displacements are absolute (they vanish far away), so the datum plays no part. Another width (NaN included)
+    /// is refused, naming the argument.
+    pub fn strip(self, width: f64) -> Result<Self, ArgumentError> {
+        if !(width > 0.0 && width.is_finite()) {
+            return Err(ArgumentError::new(
+                "HalfPlane::strip",
+                "width",
+                format!("must be finite and > 0, got {width}"),
+            ));
+        }
+        Ok(Self { strip_width: Some(width), ..self })
     }
 
     /// The strip's width ([`HalfPlane::strip`]), `None` in plane strain.
@@ -572,9 +666,13 @@ impl HalfPlane {
     /// on the strip `[x1, x2]` (`x1 < x2`), relative to the datum `(0, D)`. Closed form, finite
     /// and continuous everywhere including the strip's centre and edges. Equal (bitwise) to the
     /// corresponding influence-block entries times the tractions. On a strip ([`HalfPlane::strip`]): the rectangle
-    /// `[x1, x2] × [−w/2, w/2]` of half-spaces, at `(x, 0)`, absolute.
+    /// `[x1, x2] × [−w/2, w/2]` of half-spaces, at `(x, 0)`, absolute. Ends given the other way round (`x1 > x2`)
+    /// give the integral taken the other way: the negative of the strip `[x2, x1]`'s.
     pub fn strip_surface_displacement(&self, x1: f64, x2: f64, p: f64, q: f64, x: f64) -> Displacement {
-        debug_assert!(x1 <= x2, "strip ends out of order");
+        if x1 > x2 {
+            let d = self.strip_surface_displacement(x2, x1, p, q, x);
+            return Displacement { ux: -d.ux, uz: -d.uz };
+        }
         let kern = self.kernel();
         let c = combine(&kern.toeplitz(x - x1, x - x2), &kern.datum(x1, x2));
         Displacement { ux: c[0] * q + c[1] * p, uz: c[2] * q + c[3] * p }
@@ -582,9 +680,14 @@ impl HalfPlane {
 
     /// General influence blocks for strips `[a_j, b_j]` (`a.len() == b.len()` = columns) at
     /// collocation points `xc` (rows; any points on the surface, typically the midpoints). Per
-    /// unit traction, relative to this body's datum. Cost: two logarithms per entry.
-    pub fn influence_blocks(&self, a: &[f64], b: &[f64], xc: &[f64]) -> InfluenceBlocks {
-        assert_eq!(a.len(), b.len(), "a and b must have the same length");
+    /// unit traction, relative to this body's datum. Cost: two logarithms per entry. Refused when `a` and `b` differ
+    /// in length.
+    pub fn influence_blocks(&self, a: &[f64], b: &[f64], xc: &[f64]) -> Result<InfluenceBlocks, ArgumentError> {
+        const F: &str = "HalfPlane::influence_blocks";
+        if a.len() != b.len() {
+            return Err(ArgumentError::new(F, "b", format!("has {} entries, `a` {}", b.len(), a.len())));
+        }
+        block_entries(F, xc.len(), a.len())?;
         let kern = self.kernel();
         let datum: Vec<[f64; 4]> = a.iter().zip(b).map(|(&aj, &bj)| kern.datum(aj, bj)).collect();
         let (rows, cols) = (xc.len(), a.len());
@@ -605,36 +708,38 @@ impl HalfPlane {
                 out.czz.push(c[3]);
             }
         }
-        out
+        Ok(out)
     }
 
     /// Fast path for the uniform mesh [`uniform_mesh`]`(x0, h, n)` (collocation at midpoints):
     /// `C_ij = T(i−j) + d(j)`, computing `2n−1` Toeplitz values and `n` datum values, then filling.
     /// Bit-identical to [`HalfPlane::influence_blocks`] on the same mesh when `x0` and `h` are
     /// dyadic (coordinates exact); otherwise equal up to the rounding of the general path's input
-    /// coordinates (see module docs).
-    pub fn influence_blocks_uniform(&self, x0: f64, h: f64, n: usize) -> InfluenceBlocks {
+    /// coordinates (see module docs). Refused when `h` is not finite and `> 0` or `n × n` entries cannot exist.
+    pub fn influence_blocks_uniform(&self, x0: f64, h: f64, n: usize) -> Result<InfluenceBlocks, ArgumentError> {
         let mut out =
             InfluenceBlocks { rows: 0, cols: 0, cxx: Vec::new(), cxz: Vec::new(), czx: Vec::new(), czz: Vec::new() };
-        self.influence_blocks_uniform_into(x0, h, n, &mut out);
-        out
+        self.influence_blocks_uniform_into(x0, h, n, &mut out)?;
+        Ok(out)
     }
 
     /// One block of [`HalfPlane::influence_blocks_uniform`], row-major, computed alone (the same entries bit for
-    /// bit): `which` is 0 for `cxx`, 1 `cxz`, 2 `czx`, 3 `czz`. A flexibility that needs two of the four blocks then
-    /// never holds the other two.
-    pub fn influence_block_uniform(&self, x0: f64, h: f64, n: usize, which: usize) -> Vec<f64> {
-        assert!(which < 4, "a block index is 0..4");
+    /// bit). A flexibility that needs two of the four blocks then never holds the other two. Refused as
+    /// [`HalfPlane::influence_blocks_uniform`].
+    pub fn influence_block_uniform(&self, x0: f64, h: f64, n: usize, which: Block) -> Result<Vec<f64>, ArgumentError> {
+        const F: &str = "HalfPlane::influence_block_uniform";
+        check_width(F, h)?;
+        block_entries(F, n, n)?;
         let (d, t) = self.uniform_parts(x0, h, n);
         let mut out = Vec::new();
-        fill_toeplitz(&mut out, &t[which], &d[which], n);
-        out
+        fill_toeplitz(&mut out, &t[which.index()], &d[which.index()], n);
+        Ok(out)
     }
 
     /// The datum columns and the Toeplitz sequences (per block: cxx, cxz, czx, czz) of the uniform mesh's blocks.
-    /// Offsets are stored reversed: index m = (n−1) − (i−j), so row i reads m = n−1−i .. 2n−2−i.
+    /// Offsets are stored reversed: index m = (n−1) − (i−j), so row i reads m = n−1−i .. 2n−2−i. The callers have
+    /// checked `h` ([`check_width`]) and `n` ([`block_entries`]).
     fn uniform_parts(&self, x0: f64, h: f64, n: usize) -> ([Vec<f64>; 4], [Vec<f64>; 4]) {
-        assert!(h > 0.0 && h.is_finite(), "element width must be finite and > 0");
         let kern = self.kernel();
         let mesh = uniform_mesh(x0, h, n);
         let mut d: [Vec<f64>; 4] = std::array::from_fn(|_| Vec::with_capacity(n));
@@ -653,27 +758,40 @@ impl HalfPlane {
     }
 
     /// As [`HalfPlane::influence_blocks_uniform`], but refilling `out` in place (its vectors are
-    /// cleared and reused, so a repeated assembly allocates nothing and does not page-fault).
-    pub fn influence_blocks_uniform_into(&self, x0: f64, h: f64, n: usize, out: &mut InfluenceBlocks) {
+    /// cleared and reused, so a repeated assembly allocates nothing and does not page-fault). Refused as
+    /// [`HalfPlane::influence_blocks_uniform`], `out` then untouched.
+    pub fn influence_blocks_uniform_into(
+        &self,
+        x0: f64,
+        h: f64,
+        n: usize,
+        out: &mut InfluenceBlocks,
+    ) -> Result<(), ArgumentError> {
+        const F: &str = "HalfPlane::influence_blocks_uniform";
+        check_width(F, h)?;
+        block_entries(F, n, n)?;
         let (d, t) = self.uniform_parts(x0, h, n);
         out.rows = n;
         out.cols = n;
         for (which, dst) in [&mut out.cxx, &mut out.cxz, &mut out.czx, &mut out.czz].into_iter().enumerate() {
             fill_toeplitz(dst, &t[which], &d[which], n);
         }
+        Ok(())
     }
 
     /// This half-plane used as the FLAT counter-body (below the contact line, mirrored frame,
     /// loaded by the reactions): the blocks to ADD to the wheel's blocks so that the sum maps the
     /// wheel's tractions `(q, p)` to (slip, gap change). Equals
-    /// `self.influence_blocks(a, b, xc).into_counter_body()`; see the module docs for the mapping.
-    pub fn counter_body_blocks(&self, a: &[f64], b: &[f64], xc: &[f64]) -> InfluenceBlocks {
-        self.influence_blocks(a, b, xc).into_counter_body()
+    /// `self.influence_blocks(a, b, xc).into_counter_body()`; see the module docs for the mapping. Refused as
+    /// [`HalfPlane::influence_blocks`].
+    pub fn counter_body_blocks(&self, a: &[f64], b: &[f64], xc: &[f64]) -> Result<InfluenceBlocks, ArgumentError> {
+        Ok(self.influence_blocks(a, b, xc)?.into_counter_body())
     }
 
-    /// Uniform-mesh fast path of [`HalfPlane::counter_body_blocks`].
-    pub fn counter_body_blocks_uniform(&self, x0: f64, h: f64, n: usize) -> InfluenceBlocks {
-        self.influence_blocks_uniform(x0, h, n).into_counter_body()
+    /// Uniform-mesh fast path of [`HalfPlane::counter_body_blocks`]. Refused as
+    /// [`HalfPlane::influence_blocks_uniform`].
+    pub fn counter_body_blocks_uniform(&self, x0: f64, h: f64, n: usize) -> Result<InfluenceBlocks, ArgumentError> {
+        Ok(self.influence_blocks_uniform(x0, h, n)?.into_counter_body())
     }
 }
 
@@ -690,9 +808,17 @@ pub fn line_load_stress(s: f64, p: f64, q: f64, x: f64, z: f64) -> Stress {
 /// Stress at `(x, z)`, `z ≥ 0`, due to uniform pressure `p` and shear `q` on the surface strip
 /// `[x1, x2]` (`x1 < x2`), closed form (module docs). At `z = 0` returns the limit `z → 0⁺` at fixed
 /// `x` (inside: `σ_zz = −p`, `τ_xz = −q`). The only non-finite value is `σ_xx = ±∞` of a
-/// nonzero shear exactly at a strip edge on the surface (a true log singularity).
+/// nonzero shear exactly at a strip edge on the surface (a true log singularity). Ends given the other way round
+/// (`x1 > x2`) give the negative of the strip `[x2, x1]`'s stress; a point outside the body (`z < 0`) has none
+/// (every component NaN).
 pub fn strip_stress(x1: f64, x2: f64, p: f64, q: f64, x: f64, z: f64) -> Stress {
-    debug_assert!(x1 <= x2 && z >= 0.0, "strip ends out of order or point outside the body");
+    if z < 0.0 {
+        return Stress { sxx: f64::NAN, szz: f64::NAN, txz: f64::NAN };
+    }
+    if x1 > x2 {
+        let s = strip_stress(x2, x1, p, q, x, z);
+        return Stress { sxx: -s.sxx, szz: -s.szz, txz: -s.txz };
+    }
     let z = if z == 0.0 { 0.0 } else { z }; // normalise −0.0
     let w = x2 - x1;
     let (e1, e2) = (x - x1, x - x2);
@@ -748,18 +874,31 @@ pub fn strip_stress(x1: f64, x2: f64, p: f64, q: f64, x: f64, z: f64) -> Stress 
 
 /// Blocks of the wheel–flat pair: the wheel's own blocks plus the flat's counter-body blocks.
 /// Maps the wheel's element tractions `(q, p)` to (slip `u_x,wheel − u_x,flat`, gap change
-/// `u_z,wheel + u'_z,flat`) at the collocation points.
-pub fn pair_blocks(wheel: &HalfPlane, flat: &HalfPlane, a: &[f64], b: &[f64], xc: &[f64]) -> InfluenceBlocks {
-    let mut blocks = wheel.influence_blocks(a, b, xc);
-    blocks += &flat.counter_body_blocks(a, b, xc);
-    blocks
+/// `u_z,wheel + u'_z,flat`) at the collocation points. Refused as [`HalfPlane::influence_blocks`].
+pub fn pair_blocks(
+    wheel: &HalfPlane,
+    flat: &HalfPlane,
+    a: &[f64],
+    b: &[f64],
+    xc: &[f64],
+) -> Result<InfluenceBlocks, ArgumentError> {
+    let mut blocks = wheel.influence_blocks(a, b, xc)?;
+    blocks.add_blocks(&flat.counter_body_blocks(a, b, xc)?)?;
+    Ok(blocks)
 }
 
-/// Uniform-mesh fast path of [`pair_blocks`] (mesh [`uniform_mesh`]`(x0, h, n)`).
-pub fn pair_blocks_uniform(wheel: &HalfPlane, flat: &HalfPlane, x0: f64, h: f64, n: usize) -> InfluenceBlocks {
-    let mut blocks = wheel.influence_blocks_uniform(x0, h, n);
-    blocks += &flat.counter_body_blocks_uniform(x0, h, n);
-    blocks
+/// Uniform-mesh fast path of [`pair_blocks`] (mesh [`uniform_mesh`]`(x0, h, n)`). Refused as
+/// [`HalfPlane::influence_blocks_uniform`].
+pub fn pair_blocks_uniform(
+    wheel: &HalfPlane,
+    flat: &HalfPlane,
+    x0: f64,
+    h: f64,
+    n: usize,
+) -> Result<InfluenceBlocks, ArgumentError> {
+    let mut blocks = wheel.influence_blocks_uniform(x0, h, n)?;
+    blocks.add_blocks(&flat.counter_body_blocks_uniform(x0, h, n)?)?;
+    Ok(blocks)
 }
 
 #[cfg(test)]
@@ -875,7 +1014,7 @@ mod tests {
         let mut worst = 0.0_f64;
         // (x1, x2, width)
         for &(x1, x2, width) in &[(-0.4, 0.6, 0.5), (-0.02, 0.02, 200.0), (0.3, 1.3, 3.0), (0.0, 1.0, 1e-3)] {
-            let hp = HalfPlane::new(e, nu, 1.0).strip(width);
+            let hp = HalfPlane::new(e, nu, 1.0).unwrap().strip(width).unwrap();
             let hw = 0.5 * width;
             for t in [0.5, 0.3, 0.0, 1.0, -0.5, 3.0, -20.0] {
                 let x = x1 + t * (x2 - x1);
@@ -908,7 +1047,7 @@ mod tests {
     #[test]
     fn extreme_strips_are_finite() {
         for width in [1e-12, 1e-8, 1.0, 1e12, 1e300] {
-            let hp = HalfPlane::new(1.0, 0.3, 1.0).strip(width);
+            let hp = HalfPlane::new(1.0, 0.3, 1.0).unwrap().strip(width).unwrap();
             for x in [0.0, 1e-9, 0.5, 1.0, 1.0 + 1e-12, -3.0, 1e-300] {
                 let u = hp.strip_surface_displacement(0.0, 1.0, 1.0, 1.0, x);
                 assert!(u.ux.is_finite() && u.uz.is_finite(), "w = {width:e}, x = {x:e}: {u:?}");
@@ -925,8 +1064,9 @@ mod tests {
         // Largest row difference of (strip − plane strain) over the direct blocks (xx, zz) and the coupling
         // blocks (xz, zx), in units of K·h.
         let deviation = |nu: f64, width: f64| {
-            let plane = HalfPlane::new(1.0, nu, 3.0).influence_blocks_uniform(x0, h, n);
-            let strip = HalfPlane::new(1.0, nu, 3.0).strip(width).influence_blocks_uniform(x0, h, n);
+            let plane = HalfPlane::new(1.0, nu, 3.0).unwrap().influence_blocks_uniform(x0, h, n).unwrap();
+            let strip =
+                HalfPlane::new(1.0, nu, 3.0).unwrap().strip(width).unwrap().influence_blocks_uniform(x0, h, n).unwrap();
             let k = (1.0 + nu) / PI;
             let worst = |a: &[f64], b: &[f64]| {
                 let mut m = 0.0_f64;
@@ -958,10 +1098,18 @@ mod tests {
     fn a_strip_elements_centre_is_loves() {
         let (e, nu, a, b): (f64, f64, f64, f64) = (2.0, 0.3, 0.02, 100.0);
         let love = 4.0 * (1.0 - nu * nu) / (PI * e) * (a * (b / a).asinh() + b * (a / b).asinh());
-        let u = HalfPlane::new(e, nu, 1.0).strip(2.0 * b).strip_surface_displacement(-a, a, 1.0, 0.0, 0.0);
+        let u = HalfPlane::new(e, nu, 1.0)
+            .unwrap()
+            .strip(2.0 * b)
+            .unwrap()
+            .strip_surface_displacement(-a, a, 1.0, 0.0, 0.0);
         assert!((u.uz - love).abs() <= 1e-14 * love, "{} vs {love}", u.uz);
         assert_eq!(u.ux, 0.0);
-        let square = HalfPlane::new(e, nu, 1.0).strip(2.0 * a).strip_surface_displacement(-a, a, 1.0, 0.0, 0.0);
+        let square = HalfPlane::new(e, nu, 1.0)
+            .unwrap()
+            .strip(2.0 * a)
+            .unwrap()
+            .strip_surface_displacement(-a, a, 1.0, 0.0, 0.0);
         let textbook = 2.24 * (1.0 - nu * nu) * a / e;
         assert!((square.uz - textbook).abs() < 0.005 * textbook, "{} vs {textbook}", square.uz);
     }
@@ -975,7 +1123,7 @@ mod tests {
         let cases = [(0.3, 5.0, -0.4, 0.6), (0.0, 100.0, 0.3, 1.3), (0.5, 2.0, -1.0, -0.2), (0.25, 1e6, 2.0, 2.5)];
         let (mut worst_rel, mut worst_floor) = (0.0_f64, 0.0_f64);
         for &(nu, d, x1, x2) in &cases {
-            let hp = HalfPlane::new(2.0e3, nu, d);
+            let hp = HalfPlane::new(2.0e3, nu, d).unwrap();
             let w = x2 - x1;
             let k = (1.0 + nu) / (PI * 2.0e3);
             let scale = k * w * (1.0 + 2.0 * (1.0 - nu) * (d / w).ln().abs());
@@ -1052,7 +1200,7 @@ mod tests {
         let mut worst = 0.0_f64;
         for nu in [0.0, 0.3, 0.5] {
             let e = 2.1;
-            let hp = HalfPlane::new(e, nu, 4.0);
+            let hp = HalfPlane::new(e, nu, 4.0).unwrap();
             let (s, pp, qq) = (0.25_f64, 1.3, -0.7);
             for &(x, z) in &[(0.7, 0.4), (-1.3, 2.0), (0.3, 0.02), (3.0, 0.5), (-0.4, 5.0), (40.0, 3.0)] {
                 let r = ((x - s) * (x - s) + z * z).sqrt();
@@ -1106,7 +1254,7 @@ mod tests {
     /// axis of a normal load; and zero displacement at the datum for any load position.
     #[test]
     fn line_load_symmetry_and_datum() {
-        let hp = HalfPlane::new(3.0, 0.27, 2.5);
+        let hp = HalfPlane::new(3.0, 0.27, 2.5).unwrap();
         for &(x, z) in &[(0.3, 0.2), (1.7, 0.0), (4.0, 9.0), (0.01, 3.0)] {
             let (pp, pm) =
                 (hp.line_load_displacement(0.0, 1.0, 0.0, x, z), hp.line_load_displacement(0.0, 1.0, 0.0, -x, z));
@@ -1136,7 +1284,7 @@ mod tests {
     fn line_load_surface_matches_johnson() {
         for nu in [0.0, 0.3, 0.5] {
             let e = 7.0;
-            let hp = HalfPlane::new(e, nu, 3.0);
+            let hp = HalfPlane::new(e, nu, 3.0).unwrap();
             let jump = (1.0 - 2.0 * nu) * (1.0 + nu) / (2.0 * e); // Johnson 2.19a / 2.22b coefficient
             let slope = 2.0 * (1.0 - nu * nu) / (PI * e); // Johnson 2.19b / 2.22a coefficient
             let (pp, qq) = (1.7, -0.6);
@@ -1196,7 +1344,7 @@ mod tests {
     /// decreasing with N.
     #[test]
     fn hertz_pressure_gives_parabolic_displacement() {
-        let hp = HalfPlane::new(1.0, 0.3, 10.0);
+        let hp = HalfPlane::new(1.0, 0.3, 10.0).unwrap();
         let (a, p0) = (1.0_f64, 1.0);
         let es = hp.plane_strain_modulus();
         let prim =
@@ -1206,8 +1354,8 @@ mod tests {
             let h = 2.0 * a / n as f64;
             let mesh = uniform_mesh(-a, h, n);
             let pbar: Vec<f64> = mesh.a.iter().zip(&mesh.b).map(|(&l, &r)| (prim(r) - prim(l)) / (r - l)).collect();
-            let blocks = hp.influence_blocks_uniform(-a, h, n);
-            let (_, uz) = blocks.apply(&vec![0.0; n], &pbar);
+            let blocks = hp.influence_blocks_uniform(-a, h, n).unwrap();
+            let (_, uz) = blocks.apply(&vec![0.0; n], &pbar).unwrap();
             let u0: f64 = mesh
                 .a
                 .iter()
@@ -1237,22 +1385,23 @@ mod tests {
     fn uniform_fast_path_matches_general() {
         let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
         for nu in [0.0, 0.3, 0.5] {
-            let hp = HalfPlane::new(5.0, nu, 16.0);
+            let hp = HalfPlane::new(5.0, nu, 16.0).unwrap();
             let (x0, h, n) = (-4.0, 0.125, 64);
             let m = uniform_mesh(x0, h, n);
-            let (f, g) = (hp.influence_blocks_uniform(x0, h, n), hp.influence_blocks(&m.a, &m.b, &m.xc));
+            let (f, g) =
+                (hp.influence_blocks_uniform(x0, h, n).unwrap(), hp.influence_blocks(&m.a, &m.b, &m.xc).unwrap());
             for (a, b) in [(&f.cxx, &g.cxx), (&f.cxz, &g.cxz), (&f.czx, &g.czx), (&f.czz, &g.czz)] {
                 assert_eq!(bits(a), bits(b), "dyadic mesh: fast path not bit-identical (nu={nu})");
             }
         }
         // the in-place refill (both its branches: reallocation and overwrite) gives the same bits
-        let hp = HalfPlane::new(5.0, 0.3, 3.3);
-        let fresh = hp.influence_blocks_uniform(-1.2345, 0.0371, 40);
-        let mut reused = hp.influence_blocks_uniform(0.0, 1.0, 7);
-        hp.influence_blocks_uniform_into(-1.2345, 0.0371, 40, &mut reused);
+        let hp = HalfPlane::new(5.0, 0.3, 3.3).unwrap();
+        let fresh = hp.influence_blocks_uniform(-1.2345, 0.0371, 40).unwrap();
+        let mut reused = hp.influence_blocks_uniform(0.0, 1.0, 7).unwrap();
+        hp.influence_blocks_uniform_into(-1.2345, 0.0371, 40, &mut reused).unwrap();
         assert_eq!(bits(&reused.czz), bits(&fresh.czz));
-        let mut again = hp.influence_blocks_uniform(3.0, 0.5, 40);
-        hp.influence_blocks_uniform_into(-1.2345, 0.0371, 40, &mut again);
+        let mut again = hp.influence_blocks_uniform(3.0, 0.5, 40).unwrap();
+        hp.influence_blocks_uniform_into(-1.2345, 0.0371, 40, &mut again).unwrap();
         for (a, b) in
             [(&again.cxx, &fresh.cxx), (&again.cxz, &fresh.cxz), (&again.czx, &fresh.czx), (&again.czz, &fresh.czz)]
         {
@@ -1261,7 +1410,8 @@ mod tests {
         for (x0, h) in [(-1.2345, 0.0371), (10.1, 0.0371)] {
             let n = 64;
             let m = uniform_mesh(x0, h, n);
-            let (f, g) = (hp.influence_blocks_uniform(x0, h, n), hp.influence_blocks(&m.a, &m.b, &m.xc));
+            let (f, g) =
+                (hp.influence_blocks_uniform(x0, h, n).unwrap(), hp.influence_blocks(&m.a, &m.b, &m.xc).unwrap());
             let xmax = max_abs(&m.b).max(max_abs(&m.a));
             for (name, a, b) in
                 [("cxx", &f.cxx, &g.cxx), ("cxz", &f.cxz, &g.cxz), ("czx", &f.czx, &g.czx), ("czz", &f.czz, &g.czz)]
@@ -1280,10 +1430,10 @@ mod tests {
     /// Block entries are exactly the strip function (same arithmetic).
     #[test]
     fn blocks_equal_strip_function() {
-        let hp = HalfPlane::new(1.5, 0.22, 6.0);
+        let hp = HalfPlane::new(1.5, 0.22, 6.0).unwrap();
         let (a, b) = (vec![-1.0, -0.3, 0.05, 0.9], vec![-0.3, 0.05, 0.9, 1.0]);
         let xc = vec![-0.65, -0.3, 0.47, 0.95, 3.0];
-        let bl = hp.influence_blocks(&a, &b, &xc);
+        let bl = hp.influence_blocks(&a, &b, &xc).unwrap();
         for (i, &x) in xc.iter().enumerate() {
             for j in 0..a.len() {
                 let up = hp.strip_surface_displacement(a[j], b[j], 1.0, 0.0, x);
@@ -1298,12 +1448,15 @@ mod tests {
     /// blocks exactly double.
     #[test]
     fn counter_body_identical_materials() {
-        let hp = HalfPlane::new(210e9, 0.3, 0.05);
+        let hp = HalfPlane::new(210e9, 0.3, 0.05).unwrap();
         let (a, b) = (vec![-1e-3, -4e-4, 1e-4, 7e-4], vec![-4e-4, 1e-4, 7e-4, 1.3e-3]);
         let xc = vec![-7e-4, -1.5e-4, 4e-4, 1e-3, -4e-4];
-        let w = hp.influence_blocks(&a, &b, &xc);
-        for pair in [pair_blocks(&hp, &hp, &a, &b, &xc), pair_blocks_uniform(&hp, &hp, -1e-3, 1e-4, 20)] {
-            let w = if pair.cols == a.len() { w.clone() } else { hp.influence_blocks_uniform(-1e-3, 1e-4, 20) };
+        let w = hp.influence_blocks(&a, &b, &xc).unwrap();
+        for pair in
+            [pair_blocks(&hp, &hp, &a, &b, &xc).unwrap(), pair_blocks_uniform(&hp, &hp, -1e-3, 1e-4, 20).unwrap()]
+        {
+            let w =
+                if pair.cols == a.len() { w.clone() } else { hp.influence_blocks_uniform(-1e-3, 1e-4, 20).unwrap() };
             assert!(pair.cxz.iter().chain(&pair.czx).all(|v| v.to_bits() == 0), "coupling not exactly +0");
             for (s, o) in [(&pair.cxx, &w.cxx), (&pair.czz, &w.czz)] {
                 assert!(s.iter().zip(o.iter()).all(|(x, y)| x.to_bits() == (2.0 * y).to_bits()), "direct not doubled");
@@ -1316,12 +1469,12 @@ mod tests {
     /// explicitly from the strip function.
     #[test]
     fn counter_body_mapping_matches_explicit_reactions() {
-        let wheel = HalfPlane::new(1.0, 0.29, 3.0);
-        let flat = HalfPlane::new(0.4, 0.45, 1.7);
+        let wheel = HalfPlane::new(1.0, 0.29, 3.0).unwrap();
+        let flat = HalfPlane::new(0.4, 0.45, 1.7).unwrap();
         let m = uniform_mesh(-0.9, 0.15, 12);
         let q: Vec<f64> = (0..12).map(|j| 0.3 * (j as f64).sin()).collect();
         let p: Vec<f64> = (0..12).map(|j| 1.0 + 0.1 * j as f64).collect();
-        let (slip, gap) = pair_blocks(&wheel, &flat, &m.a, &m.b, &m.xc).apply(&q, &p);
+        let (slip, gap) = pair_blocks(&wheel, &flat, &m.a, &m.b, &m.xc).unwrap().apply(&q, &p).unwrap();
         for (i, &x) in m.xc.iter().enumerate() {
             let (mut uw, mut uf) = (Displacement::default(), Displacement::default());
             for j in 0..12 {
@@ -1358,10 +1511,10 @@ mod tests {
         for (e1, n1, e2, n2) in
             [(1.0, 0.2, 3.0, 0.4), (70.0, 0.33, 210.0, 0.3), (1.0, 0.1, inf, 0.3), (5.0, 0.5, 1.0, 0.0)]
         {
-            let (wheel, flat) = (HalfPlane::new(e1, n1, 5.0), HalfPlane::new(e2, n2, 2.0));
+            let (wheel, flat) = (HalfPlane::new(e1, n1, 5.0).unwrap(), HalfPlane::new(e2, n2, 2.0).unwrap());
             let w = 1e-3;
             let (a, b) = ([-0.5 * w], [0.5 * w]);
-            let bl = pair_blocks(&wheel, &flat, &a, &b, &[1.0, -1.0, 2.0]);
+            let bl = pair_blocks(&wheel, &flat, &a, &b, &[1.0, -1.0, 2.0]).unwrap();
             let jump = (bl.cxz[0] - bl.cxz[1]) / w;
             let logc = (bl.czz[0] - bl.czz[2]) / (w * 0.5_f64.ln());
             let beta = jump / (PI * logc);
@@ -1377,7 +1530,7 @@ mod tests {
         let (x1, x2) = (-0.2, 0.3);
         for nu in [0.0, 0.5] {
             for d in [1.0, 0.5e6] {
-                let hp = HalfPlane::new(1.0, nu, d);
+                let hp = HalfPlane::new(1.0, nu, d).unwrap();
                 for x in [x1, x2, 0.05] {
                     let u0 = hp.strip_surface_displacement(x1, x2, 1.0, 1.0, x);
                     assert!(u0.ux.is_finite() && u0.uz.is_finite());
@@ -1390,9 +1543,9 @@ mod tests {
                 let m = uniform_mesh(-0.5, 0.1, 10);
                 let mut xs = m.xc.clone();
                 xs.extend_from_slice(&m.a); // collocation exactly on element edges
-                let bl = hp.influence_blocks(&m.a, &m.b, &xs);
+                let bl = hp.influence_blocks(&m.a, &m.b, &xs).unwrap();
                 assert!(bl.cxx.iter().chain(&bl.cxz).chain(&bl.czx).chain(&bl.czz).all(|v| v.is_finite()));
-                let bu = hp.influence_blocks_uniform(-0.5, 0.1, 10);
+                let bu = hp.influence_blocks_uniform(-0.5, 0.1, 10).unwrap();
                 assert!(bu.cxx.iter().chain(&bu.cxz).chain(&bu.czx).chain(&bu.czz).all(|v| v.is_finite()));
                 if nu == 0.5 {
                     // incompressible: no normal–tangential coupling apart from the datum column term
@@ -1428,7 +1581,7 @@ mod tests {
         let nan_free = strip_stress(x1, x2, 1.0, 0.0, x2, 0.0); // q = 0: no 0·∞
         assert!(nan_free.sxx.is_finite() && nan_free.szz.is_finite() && nan_free.txz.is_finite());
         // rigid counter-body: zero blocks
-        let rigid = HalfPlane::new(f64::INFINITY, 0.3, 1.0).influence_blocks_uniform(-0.5, 0.1, 10);
+        let rigid = HalfPlane::new(f64::INFINITY, 0.3, 1.0).unwrap().influence_blocks_uniform(-0.5, 0.1, 10).unwrap();
         assert!(rigid.cxx.iter().chain(&rigid.cxz).chain(&rigid.czx).chain(&rigid.czz).all(|&v| v == 0.0));
     }
 
@@ -1440,7 +1593,7 @@ mod tests {
         use std::hint::black_box;
         use std::time::Instant;
         let n = 1000;
-        let hp = HalfPlane::new(210e9, 0.3, 0.05);
+        let hp = HalfPlane::new(210e9, 0.3, 0.05).unwrap();
         let (x0, h) = (-1e-3, 2e-6);
         let m = uniform_mesh(x0, h, n);
         let time = |f: &dyn Fn()| {
@@ -1465,10 +1618,10 @@ mod tests {
             black_box(v);
         });
         let fast = time(&|| {
-            black_box(hp.influence_blocks_uniform(black_box(x0), h, n));
+            black_box(hp.influence_blocks_uniform(black_box(x0), h, n).unwrap());
         });
         let general = time(&|| {
-            black_box(hp.influence_blocks(black_box(&m.a), &m.b, &m.xc));
+            black_box(hp.influence_blocks(black_box(&m.a), &m.b, &m.xc).unwrap());
         });
         // Reused (already faulted-in) buffers: the plain write vs the fast-path refill.
         let bufs = std::cell::RefCell::new(vec![vec![0.0_f64; n * n]; 4]);
@@ -1479,9 +1632,9 @@ mod tests {
             }
             black_box(&bufs);
         });
-        let out = std::cell::RefCell::new(hp.influence_blocks_uniform(x0, h, n));
+        let out = std::cell::RefCell::new(hp.influence_blocks_uniform(x0, h, n).unwrap());
         let fast_reuse = time(&|| {
-            hp.influence_blocks_uniform_into(black_box(x0), h, n, &mut out.borrow_mut());
+            hp.influence_blocks_uniform_into(black_box(x0), h, n, &mut out.borrow_mut()).unwrap();
             black_box(&out);
         });
         println!("N={n}: fresh allocation: write 4·N² f64 min {:.2} / median {:.2} ms", write.0, write.1);
@@ -1500,34 +1653,50 @@ mod tests {
     fn cross_influence_cancels_exactly_when_the_pair_blocks_vanish() {
         let m = StripMesh { a: vec![-0.31, -0.2, -0.05, 0.07, 0.2], b: vec![-0.2, -0.05, 0.07, 0.2, 0.29], xc: vec![] };
         let xc: Vec<f64> = m.a.iter().zip(&m.b).map(|(a, b)| 0.5 * (a + b)).collect();
-        let rigid = HalfPlane::new(f64::INFINITY, 0.3, 0.5);
+        let rigid = HalfPlane::new(f64::INFINITY, 0.3, 0.5).unwrap();
         let cases: Vec<(&str, HalfPlane, HalfPlane)> = vec![
-            ("same material and datum", HalfPlane::new(1.0, 0.28, 0.5), HalfPlane::new(1.0, 0.28, 0.5)),
-            ("same material, other datum", HalfPlane::new(1.0, 0.28, 0.5), HalfPlane::new(1.0, 0.28, 0.7)),
-            ("other material", HalfPlane::new(1.0, 0.28, 0.5), HalfPlane::new(0.4, 0.35, 0.5)),
-            ("nu = 0.5 on rigid, plane strain", HalfPlane::new(1.0, 0.5, 0.5), rigid),
+            (
+                "same material and datum",
+                HalfPlane::new(1.0, 0.28, 0.5).unwrap(),
+                HalfPlane::new(1.0, 0.28, 0.5).unwrap(),
+            ),
+            (
+                "same material, other datum",
+                HalfPlane::new(1.0, 0.28, 0.5).unwrap(),
+                HalfPlane::new(1.0, 0.28, 0.7).unwrap(),
+            ),
+            ("other material", HalfPlane::new(1.0, 0.28, 0.5).unwrap(), HalfPlane::new(0.4, 0.35, 0.5).unwrap()),
+            ("nu = 0.5 on rigid, plane strain", HalfPlane::new(1.0, 0.5, 0.5).unwrap(), rigid),
             (
                 "strip, same material",
-                HalfPlane::new(1.0, 0.28, 0.5).strip(0.3),
-                HalfPlane::new(1.0, 0.28, 0.9).strip(0.3),
+                HalfPlane::new(1.0, 0.28, 0.5).unwrap().strip(0.3).unwrap(),
+                HalfPlane::new(1.0, 0.28, 0.9).unwrap().strip(0.3).unwrap(),
             ),
             // Dundurs' β = 0 with another material ([`beta_zero_partner`]).
             (
                 "strip, beta = 0, other material",
-                HalfPlane::new(1.0, 0.2, 0.5).strip(0.3),
-                beta_zero_partner().strip(0.3),
+                HalfPlane::new(1.0, 0.2, 0.5).unwrap().strip(0.3).unwrap(),
+                beta_zero_partner().strip(0.3).unwrap(),
             ),
             (
                 "strip, other material",
-                HalfPlane::new(1.0, 0.28, 0.5).strip(0.3),
-                HalfPlane::new(0.4, 0.35, 0.5).strip(0.3),
+                HalfPlane::new(1.0, 0.28, 0.5).unwrap().strip(0.3).unwrap(),
+                HalfPlane::new(0.4, 0.35, 0.5).unwrap().strip(0.3).unwrap(),
             ),
-            ("strip, nu = 0.5 on rigid", HalfPlane::new(1.0, 0.5, 0.5).strip(0.3), rigid.strip(0.3)),
-            ("strip, nu = 0.3 on rigid", HalfPlane::new(1.0, 0.3, 0.5).strip(0.3), rigid.strip(0.3)),
+            (
+                "strip, nu = 0.5 on rigid",
+                HalfPlane::new(1.0, 0.5, 0.5).unwrap().strip(0.3).unwrap(),
+                rigid.strip(0.3).unwrap(),
+            ),
+            (
+                "strip, nu = 0.3 on rigid",
+                HalfPlane::new(1.0, 0.3, 0.5).unwrap().strip(0.3).unwrap(),
+                rigid.strip(0.3).unwrap(),
+            ),
         ];
         let expect = [true, false, false, false, true, true, false, true, false];
         for ((name, wheel, flat), want) in cases.iter().zip(expect) {
-            let pair = pair_blocks(wheel, flat, &m.a, &m.b, &xc);
+            let pair = pair_blocks(wheel, flat, &m.a, &m.b, &xc).unwrap();
             let direct = pair.czz.iter().map(|v| v.abs()).fold(0.0, f64::max);
             let cross = pair.cxz.iter().chain(&pair.czx).map(|v| v.abs()).fold(0.0, f64::max);
             let counter = flat.youngs_modulus().is_finite().then_some(flat);
@@ -1543,6 +1712,6 @@ mod tests {
     /// A material of ν = 0.35 whose (1−2ν)(1+ν)/E equals that of (E = 1, ν = 0.2): Dundurs' β = 0 with another
     /// material (0.6·1.2 = 0.72 = 0.3·1.35/E → E = 0.5625).
     fn beta_zero_partner() -> HalfPlane {
-        HalfPlane::new(0.5625, 0.35, 0.5)
+        HalfPlane::new(0.5625, 0.35, 0.5).unwrap()
     }
 }

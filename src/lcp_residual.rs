@@ -23,12 +23,14 @@
 //! dimensionless whatever the units of z and w. For comparison with Siconos, [`LcpResiduals::siconos_error`] is
 //! Siconos' own measure, ‖z − max(0, z − w)‖₂ / ‖q‖₂ with w = M z + q (divided by 1 when ‖q‖₂ ≤ ε, as Siconos does).
 
+use crate::error::ArgumentError;
 use crate::solvers::{Lcp, LcpOutcome, LcpSolver};
 use serde::Serialize;
 use std::time::Instant;
 
 /// Residuals of (z, w) for an LCP, each dimensionless (see the module docs for the scale).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[non_exhaustive]
 pub struct LcpResiduals {
     /// The data scale s = max(‖q‖∞, ‖M‖∞ ‖z‖∞) the w-type residuals are divided by.
     pub scale: f64,
@@ -47,13 +49,15 @@ pub struct LcpResiduals {
 }
 
 /// Residuals of a candidate solution (z, w) of `lcp` (w as reported by the solver; it is also checked against
-/// M z + q). Non-finite entries give non-finite residuals.
-///
-/// # Panics
-/// If z or w does not have the size of the LCP.
-pub fn residuals(lcp: &Lcp, z: &[f64], w: &[f64]) -> LcpResiduals {
+/// M z + q). Non-finite entries give non-finite residuals. A z or w of another size than the LCP's is refused,
+/// naming it.
+pub fn residuals(lcp: &Lcp, z: &[f64], w: &[f64]) -> Result<LcpResiduals, ArgumentError> {
     let n = lcp.size();
-    assert!(z.len() == n && w.len() == n, "z and w must have the size of the LCP ({n})");
+    for (name, v) in [("z", z), ("w", w)] {
+        if v.len() != n {
+            return Err(ArgumentError::new("residuals", name, format!("has {} entries, the LCP {n}", v.len())));
+        }
+    }
     let inf = |v: &[f64]| v.iter().fold(0.0_f64, |a, x| a.max(x.abs()));
     let m_inf = (0..n).map(|i| (0..n).map(|j| lcp.m[(i, j)].abs()).sum::<f64>()).fold(0.0_f64, f64::max);
     let (q_inf, z_inf) = (inf(&lcp.q), inf(z));
@@ -61,7 +65,7 @@ pub fn residuals(lcp: &Lcp, z: &[f64], w: &[f64]) -> LcpResiduals {
     // s = 0 only when q = 0 and M z = 0 term by term: then w = 0 exactly and any nonzero w is wrong whatever its size.
     let s = if scale > 0.0 { scale } else { f64::MIN_POSITIVE };
     let zs = if z_inf > 0.0 { z_inf } else { 1.0 };
-    let mz_q = lcp.w_of(z);
+    let mz_q = lcp.w_of_sized(z);
     let mut r = LcpResiduals {
         scale,
         negative_w: 0.0,
@@ -84,11 +88,12 @@ pub fn residuals(lcp: &Lcp, z: &[f64], w: &[f64]) -> LcpResiduals {
     let q2 = lcp.q.iter().map(|v| v * v).sum::<f64>().sqrt();
     r.siconos_error = natural.sqrt() / if q2 > f64::EPSILON { q2 } else { 1.0 };
     r.max = [r.negative_w, r.negative_z, r.complementarity, r.equation].into_iter().fold(0.0, nan_max);
-    r
+    Ok(r)
 }
 
 /// A solve of an LCP: the solver's outcome, its residuals and the wall time of the solve.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct LcpSolve {
     /// What the solver returned.
     pub outcome: LcpOutcome,
@@ -99,16 +104,18 @@ pub struct LcpSolve {
 }
 
 /// Solve `lcp` with a solver of bare LCPs ([`crate::solvers::Solver::lcp_solver`]), timing the solver call alone,
-/// and compute the residuals of its answer.
-pub fn solve_timed(lcp: &Lcp, solver: &dyn LcpSolver) -> LcpSolve {
+/// and compute the residuals of its answer. A solver's answer of another size than the LCP's is refused
+/// ([`residuals`]).
+pub fn solve_timed(lcp: &Lcp, solver: &dyn LcpSolver) -> Result<LcpSolve, ArgumentError> {
     let start = Instant::now();
     let outcome = solver.solve_lcp(lcp);
     let solve_time_s = start.elapsed().as_secs_f64();
-    let residuals = residuals(lcp, &outcome.z, &outcome.w);
-    LcpSolve { outcome, residuals, solve_time_s }
+    let residuals = residuals(lcp, &outcome.z, &outcome.w)?;
+    Ok(LcpSolve { outcome, residuals, solve_time_s })
 }
 
-/// Solve `lcp` with a registered solver of bare LCPs by name; `Err` says which names solve LCP files.
+/// Solve `lcp` with a registered solver of bare LCPs by name; `Err` says which names solve LCP files (or what is
+/// wrong with a solver's answer, [`solve_timed`]).
 pub fn solve_named(lcp: &Lcp, name: &str) -> Result<LcpSolve, String> {
     let lcp_solvers: Vec<Box<dyn crate::solvers::Solver>> = crate::solvers::registry()
         .into_iter()
@@ -119,7 +126,7 @@ pub fn solve_named(lcp: &Lcp, name: &str) -> Result<LcpSolve, String> {
     let bad = || format!("`{name}` does not solve LCP files (expected one of: {})", names.join(", "));
     let solver = lcp_solvers.iter().find(|s| s.name() == name).ok_or_else(bad)?;
     let lcp_solver = solver.lcp_solver().ok_or_else(bad)?;
-    Ok(solve_timed(lcp, lcp_solver))
+    solve_timed(lcp, lcp_solver).map_err(|e| format!("`{name}`'s answer: {e}"))
 }
 
 impl LcpSolve {
@@ -154,7 +161,8 @@ impl LcpSolve {
         for (k, v) in &out.work.0 {
             doc[k.as_str()] = serde_json::json!(v);
         }
-        serde_json::to_string_pretty(&doc).expect("a JSON value serialises")
+        // A JSON value's pretty text (what `serde_json::to_string_pretty` writes: two-space indent).
+        format!("{doc:#}")
     }
 }
 
@@ -180,13 +188,13 @@ mod tests {
         // that is round-off but not zero (the old max|w| scaling printed this answer as 0.57 and 1.0).
         let p = deudeu();
         let lemke = crate::solvers::build("lemke").unwrap();
-        let solved = solve_timed(&p, lemke.lcp_solver().unwrap());
+        let solved = solve_timed(&p, lemke.lcp_solver().unwrap()).unwrap();
         let (z, w) = (&solved.outcome.z, &solved.outcome.w);
         assert_eq!(solved.outcome.termination, Termination::Solved);
         assert!((z[0] - 4.0 / 3.0).abs() < 1e-15 && (z[1] - 7.0 / 3.0).abs() < 1e-15, "z = {z:?}");
         assert!(w.iter().any(|&v| v != 0.0) && w.iter().all(|v| v.abs() < 1e-14), "w = {w:?}");
         let r = solved.residuals;
-        assert_eq!(r, residuals(&p, z, w));
+        assert_eq!(r, residuals(&p, z, w).unwrap());
         // s = max(‖q‖∞ = 6, ‖M‖∞ ‖z‖∞ = 3 · 7/3 = 7) = 7 (by hand).
         assert!((r.scale - 7.0).abs() < 1e-14);
         assert!(r.max < 4.0 * f64::EPSILON && r.siconos_error < 4.0 * f64::EPSILON, "{r:?}");
@@ -197,21 +205,21 @@ mod tests {
     fn wrong_solutions_read_as_order_one() {
         let p = deudeu();
         // z = 0 is feasible but w = q = (−5, −6): max(0, −w)/s = 6/6 = 1 (s = ‖q‖∞ = 6 as z = 0).
-        let r = residuals(&p, &[0.0, 0.0], &p.q);
+        let r = residuals(&p, &[0.0, 0.0], &p.q).unwrap();
         assert!((r.negative_w - 1.0).abs() < 1e-15 && r.max == r.negative_w, "{r:?}");
         // z = (3, 0): w = (1, −3), w₁ z₁ = 3 ≠ 0 and w₂ < 0. s = max(6, 3 · 3) = 9; complementarity 3/(9·3) = 1/9,
         // negative w 3/9 = 1/3.
         let z = [3.0, 0.0];
-        let r = residuals(&p, &z, &p.w_of(&z));
+        let r = residuals(&p, &z, &p.w_of(&z).unwrap()).unwrap();
         assert!((r.negative_w - 1.0 / 3.0).abs() < 1e-15 && (r.complementarity - 1.0 / 9.0).abs() < 1e-15, "{r:?}");
         // A w that does not match z, and a negative z.
         // (w₁ z₁ = 4/3, s ‖z‖∞ = 7 · 7/3: complementarity 4/49; |w − (M z + q)| = 1: equation 1/7.)
-        let r = residuals(&p, &[4.0 / 3.0, 7.0 / 3.0], &[1.0, 0.0]);
+        let r = residuals(&p, &[4.0 / 3.0, 7.0 / 3.0], &[1.0, 0.0]).unwrap();
         assert!((r.equation - 1.0 / 7.0).abs() < 1e-14 && (r.complementarity - 4.0 / 49.0).abs() < 1e-14, "{r:?}");
-        let r = residuals(&p, &[-1.0, 2.0], &p.w_of(&[-1.0, 2.0]));
+        let r = residuals(&p, &[-1.0, 2.0], &p.w_of(&[-1.0, 2.0]).unwrap()).unwrap();
         assert!((r.negative_z - 0.5).abs() < 1e-15, "{r:?}");
         // Non-finite input is reported, not hidden.
-        assert!(residuals(&p, &[f64::NAN, 0.0], &[0.0, 0.0]).max.is_nan());
+        assert!(residuals(&p, &[f64::NAN, 0.0], &[0.0, 0.0]).unwrap().max.is_nan());
     }
 
     #[test]
@@ -223,7 +231,7 @@ mod tests {
         let d = 1e-8;
         let p = lcp(&[&[1.0, -1.0], &[-1.0, 1.0 + d]], &[-1.0, 1.0 - d * 1e6]);
         let dense = crate::solvers::build("lemke_dense").unwrap();
-        let out = solve_timed(&p, dense.lcp_solver().unwrap());
+        let out = solve_timed(&p, dense.lcp_solver().unwrap()).unwrap();
         assert_eq!(out.outcome.termination, Termination::Solved, "{}", out.outcome.message);
         // z itself is only as accurate as the conditioning (κ ≈ 4e8) allows.
         assert!((out.outcome.z[1] - 1e6).abs() < 1e-6 * 1e6, "z = {:?}", out.outcome.z);
@@ -237,7 +245,7 @@ mod tests {
         let p = deudeu();
         for name in ["lemke", "lemke_dense"] {
             let s = crate::solvers::build(name).unwrap();
-            let solved = solve_timed(&p, s.lcp_solver().expect("a solver of bare LCPs"));
+            let solved = solve_timed(&p, s.lcp_solver().expect("a solver of bare LCPs")).unwrap();
             assert_eq!(solved.outcome.termination, Termination::Solved, "{name}");
         }
         for name in ["pgs", "active_set", "clarabel", "normtang_qp"] {

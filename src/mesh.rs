@@ -11,7 +11,8 @@
 //! chord's midpoint. Quadratic elements follow the exact circular arc, with three nodes at ξ = −2/3, 0, 2/3
 //! ([`crate::bem::quadratic`]).
 
-use crate::scene::{ContactZone, ElementKind, Support, ZoneExtent};
+use crate::error::ArgumentError;
+use crate::scene::{ContactZone, ElementKind, Support, ZoneExtent, MAX_NODES, MIN_CONTACT_ELEMENT_ANGLE};
 use std::f64::consts::PI;
 
 /// Collocation points in the element's intrinsic coordinate ξ ∈ [−1, 1] (discontinuous quadratic element: the
@@ -247,10 +248,79 @@ pub fn contact_vertex_angles(radius: f64, zone: &ContactZone) -> Vec<f64> {
     }
 }
 
+/// The domain of [`Mesh::wheel`]: a wheel it can mesh, with the bounds a scene's validation applies to the same
+/// quantities (`crate::scene`, with errors naming the scene's keys).
+fn check_wheel(radius: f64, support: Support, spec: &MeshSpec) -> Result<(), ArgumentError> {
+    let bad = |argument, message: String| Err(ArgumentError::new("Mesh::wheel", argument, message));
+    if !(radius > 0.0 && radius.is_finite()) {
+        return bad("radius", format!("must be finite and > 0, got {radius}"));
+    }
+    let nc = spec.zone.elements;
+    if nc == 0 {
+        return bad("spec.zone.elements", "must be at least 1 (the contact zone's elements)".into());
+    }
+    if spec.other_elements < 4 {
+        return bad("spec.other_elements", format!("must be at least 4, got {}", spec.other_elements));
+    }
+    let per = match spec.element {
+        ElementKind::Constant => 1,
+        ElementKind::Quadratic => 3,
+    };
+    if nc.saturating_add(spec.other_elements).saturating_mul(per) > MAX_NODES {
+        return bad(
+            "spec",
+            format!("{} + {} elements: more than the {MAX_NODES} nodes a BEM wheel may have", nc, spec.other_elements),
+        );
+    }
+    match spec.zone.extent {
+        ZoneExtent::Arc { degrees } if !(degrees > 0.0 && degrees < 180.0) => {
+            return bad("spec.zone", format!("a contact arc must lie in (0, 180) degrees, got {degrees}"));
+        }
+        ZoneExtent::HalfWidth { half_width } if !(half_width > 0.0 && half_width < radius) => {
+            return bad(
+                "spec.zone",
+                format!("a contact half-width must lie in (0, radius = {radius}), got {half_width}"),
+            );
+        }
+        ZoneExtent::Span { .. } => {
+            return bad(
+                "spec.zone",
+                "a zone placed off-centre is for the half-plane model; the wheel's is centred".into(),
+            );
+        }
+        _ => {}
+    }
+    let per_element = spec.zone.arc_rad(radius) / nc as f64;
+    if per_element.is_nan() || per_element < MIN_CONTACT_ELEMENT_ANGLE {
+        return bad(
+            "spec.zone",
+            format!("its {nc} elements subtend {per_element:.1e} rad each, below {MIN_CONTACT_ELEMENT_ANGLE:e}"),
+        );
+    }
+    let alpha = spec.zone.arc_rad(radius);
+    match support {
+        Support::Hub { radius: rh } if !(rh > 0.0 && rh < radius) => {
+            bad("support", format!("a hub's radius must lie in (0, radius = {radius}), got {rh}"))
+        }
+        Support::TopArc { angle_deg } if !(angle_deg > 0.0 && angle_deg < 180.0) => {
+            bad("support", format!("a top arc must lie in (0, 180) degrees, got {angle_deg}"))
+        }
+        Support::TopArc { angle_deg } if alpha.to_degrees() + angle_deg >= 300.0 => {
+            bad("support", "the clamped top arc and the contact arc overlap or leave no free boundary".into())
+        }
+        _ => Ok(()),
+    }
+}
+
 impl Mesh {
     /// Mesh a wheel of outer radius `radius` with the given support (its lengths, and `spec`'s contact half-width,
-    /// in the same unit as `radius`).
-    pub fn wheel(radius: f64, support: Support, spec: &MeshSpec) -> Mesh {
+    /// in the same unit as `radius`). A wheel it cannot mesh is refused, naming the argument: a radius not finite
+    /// and > 0, no contact element, fewer than 4 other elements, more than [`MAX_NODES`] nodes, a contact arc outside
+    /// (0°, 180°) or a half-width outside (0, radius), an off-centre zone, contact elements of less than
+    /// [`MIN_CONTACT_ELEMENT_ANGLE`] each, a hub outside the wheel, a top arc outside (0°, 180°) or overlapping the
+    /// contact zone (the bounds a scene's validation applies).
+    pub fn wheel(radius: f64, support: Support, spec: &MeshSpec) -> Result<Mesh, ArgumentError> {
+        check_wheel(radius, support, spec)?;
         let alpha = spec.zone.arc_rad(radius);
         let nc = spec.zone.elements;
         let start = -PI / 2.0 - alpha / 2.0;
@@ -270,7 +340,7 @@ impl Mesh {
                 let span = PI - alpha / 2.0;
                 let right = graded_sizes(h0, span, nr);
                 let left = graded_sizes(h0, span, nl);
-                let mut a = *angles.last().unwrap();
+                let mut a = angles[nc];
                 for h in right.iter().chain(left.iter().rev()) {
                     a += h;
                     angles.push(a);
@@ -288,7 +358,7 @@ impl Mesh {
                     if nl == 0 {
                         continue;
                     }
-                    let last = *graded_sizes(h0, span, nr).last().unwrap();
+                    let Some(&last) = graded_sizes(h0, span, nr).last() else { continue };
                     let mismatch = ((beta / ntop as f64) / last).ln().abs();
                     if best.is_none_or(|(m, _)| mismatch < m) {
                         best = Some((mismatch, ntop));
@@ -299,7 +369,7 @@ impl Mesh {
                 let nl = no - ntop - nr;
                 let right = graded_sizes(h0, span, nr);
                 let left = graded_sizes(h0, span, nl);
-                let mut a = *angles.last().unwrap();
+                let mut a = angles[nc];
                 for h in &right {
                     a += h;
                     angles.push(a);
@@ -318,7 +388,9 @@ impl Mesh {
             }
         }
         // Close the circle exactly.
-        *angles.last_mut().unwrap() = start + 2.0 * PI;
+        if let Some(last) = angles.last_mut() {
+            *last = start + 2.0 * PI;
+        }
 
         let mut mesh =
             Mesh { kind: spec.element, radius, elements: Vec::new(), nodes: Vec::new(), contact_nodes: Vec::new() };
@@ -337,7 +409,7 @@ impl Mesh {
         }
         mesh.contact_nodes = (0..mesh.nodes.len()).filter(|&i| mesh.nodes[i].bc == Bc::Contact).collect();
         mesh.contact_nodes.sort_by(|&a, &b| mesh.nodes[a].pos[0].total_cmp(&mesh.nodes[b].pos[0]));
-        mesh
+        Ok(mesh)
     }
 
     fn push_element(&mut self, rho: f64, t0: f64, t1: f64, bc: Bc) {
@@ -383,6 +455,55 @@ impl Mesh {
         }
     }
 
+    /// Whether the mesh holds together as the boundary element code reads it (its fields are public, so a mesh built
+    /// or edited by hand may not): each element has the node count of its shape (1 straight, 3 arc) at consecutive
+    /// indices from `first_node` within [`Mesh::nodes`], each node names the element that holds it, and
+    /// [`Mesh::contact_nodes`] lists each node of class [`Bc::Contact`] once and no other. `Err` names the first
+    /// element or node that breaks it; every public function that reads a mesh checks this first.
+    pub fn check(&self) -> Result<(), ArgumentError> {
+        let bad = |message: String| Err(ArgumentError::new("Mesh::check", "mesh", message));
+        for (e, el) in self.elements.iter().enumerate() {
+            let per = match el.shape {
+                Shape::Straight { .. } => 1,
+                Shape::Arc(_) => 3,
+            };
+            if el.n_nodes != per {
+                return bad(format!("element {e} has {} nodes, its shape {per}", el.n_nodes));
+            }
+            let end = el.first_node.checked_add(per).filter(|&end| end <= self.nodes.len());
+            let Some(end) = end else {
+                return bad(format!(
+                    "element {e}'s nodes {}.. lie beyond the {} nodes",
+                    el.first_node,
+                    self.nodes.len()
+                ));
+            };
+            if let Some(i) = (el.first_node..end).find(|&i| self.nodes[i].element != e) {
+                return bad(format!("node {i} lies in element {e} but names element {}", self.nodes[i].element));
+            }
+        }
+        for (i, node) in self.nodes.iter().enumerate() {
+            let held = self
+                .elements
+                .get(node.element)
+                .is_some_and(|el| (el.first_node..el.first_node + el.n_nodes).contains(&i));
+            if !held {
+                return bad(format!("node {i} names element {}, which does not hold it", node.element));
+            }
+        }
+        let mut listed = vec![false; self.nodes.len()];
+        for &i in &self.contact_nodes {
+            match listed.get_mut(i) {
+                Some(seen) if !*seen && self.nodes[i].bc == Bc::Contact => *seen = true,
+                _ => return bad(format!("contact_nodes lists node {i} twice, or one that is not a contact node")),
+            }
+        }
+        if let Some(i) = (0..self.nodes.len()).find(|&i| self.nodes[i].bc == Bc::Contact && !listed[i]) {
+            return bad(format!("contact node {i} is missing from contact_nodes"));
+        }
+        Ok(())
+    }
+
     /// Number of nodes.
     pub fn n_nodes(&self) -> usize {
         self.nodes.len()
@@ -394,9 +515,10 @@ impl Mesh {
     /// On the outer circle it is evaluated as R·2 sin²(φ/2), φ = θ + π/2 the angle from the contact point (the
     /// mean of its two vertices' for a constant element's chord midpoint), not as `y_i + R`: the difference of two
     /// numbers of size R loses the gap's relative precision as ε/φ², which made the contact pressure of a contact
-    /// half-angle of 1e-7 rad wrong by 30 % of p0 (`tests/mesh_precision.rs`).
-    pub fn initial_gap(&self, i: usize) -> f64 {
-        self.nodes[i].gap
+    /// half-angle of 1e-7 rad wrong by 30 % of p0 (`tests/mesh_precision.rs`). `None` for a node the mesh does
+    /// not have.
+    pub fn initial_gap(&self, i: usize) -> Option<f64> {
+        self.nodes.get(i).map(|n| n.gap)
     }
 }
 
@@ -411,7 +533,7 @@ mod tests {
     #[test]
     fn seed_mesh_counts_and_closure() {
         // The seed's Fig. 5/6 mesh: 56 elements, 24 of them on 1/12 of the contour.
-        let m = Mesh::wheel(1.0, Support::TopArc { angle_deg: 30.0 }, &spec(ElementKind::Constant));
+        let m = Mesh::wheel(1.0, Support::TopArc { angle_deg: 30.0 }, &spec(ElementKind::Constant)).unwrap();
         assert_eq!(m.elements.len(), 56);
         assert_eq!(m.contact_nodes.len(), 24);
         // Closed polygon inscribed in the circle: consecutive elements share vertices, every vertex lies on the
@@ -436,7 +558,7 @@ mod tests {
 
     #[test]
     fn hub_mesh_normals_point_out_of_the_annulus() {
-        let m = Mesh::wheel(2.0, Support::Hub { radius: 0.5 }, &spec(ElementKind::Quadratic));
+        let m = Mesh::wheel(2.0, Support::Hub { radius: 0.5 }, &spec(ElementKind::Quadratic)).unwrap();
         for n in &m.nodes {
             let r = n.pos[0].hypot(n.pos[1]);
             let radial = (n.normal[0] * n.pos[0] + n.normal[1] * n.pos[1]) / r;

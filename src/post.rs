@@ -9,6 +9,7 @@
 //! Node states: `separated` when the pressure is zero; without friction `contact` (no friction law, so neither
 //! stick nor slip); with friction `slip` when |q| = μp, else `stick`.
 
+use crate::error::ArgumentError;
 use crate::flexibility::ModeKind;
 use crate::formulation::{ContactProblem, Dof, Solution};
 use crate::tolerances::{SEPARATED_PRESSURE, STICK_MARGIN};
@@ -17,6 +18,7 @@ use serde::{Deserialize, Serialize};
 /// State of a contact node.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum NodeState {
     /// In contact, |q| < μp.
     Stick,
@@ -28,8 +30,21 @@ pub enum NodeState {
     Separated,
 }
 
+impl NodeState {
+    /// Its name as written in results (`stick`, `slip`, `contact`, `separated`).
+    pub fn name(self) -> &'static str {
+        match self {
+            NodeState::Stick => "stick",
+            NodeState::Slip => "slip",
+            NodeState::Contact => "contact",
+            NodeState::Separated => "separated",
+        }
+    }
+}
+
 /// Results at one contact node (user's units).
 #[derive(Debug, Clone, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct NodeResult {
     /// x of the node (undeformed).
     pub x: f64,
@@ -55,6 +70,7 @@ pub struct NodeResult {
 
 /// Resultants of the contact tractions on the wheel.
 #[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct Resultants {
     /// P = Σ f_y (force per unit thickness).
     pub normal: f64,
@@ -66,6 +82,7 @@ pub struct Resultants {
 
 /// The support's rigid motion.
 #[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct RigidBody {
     /// Approach d_N (length).
     pub normal: f64,
@@ -77,6 +94,7 @@ pub struct RigidBody {
 
 /// Contact extent and key figures.
 #[derive(Debug, Clone, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct ContactSummary {
     /// Smallest x of a loaded node (null if none).
     pub x_min: Option<f64>,
@@ -158,6 +176,7 @@ fn rolling_result(
 
 /// Solver-independent residuals, relative (see [`evaluate`]); null where a condition does not apply.
 #[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct Residuals {
     /// max |p_i g_i| / (p_max ℓ).
     pub complementarity: f64,
@@ -196,6 +215,7 @@ impl Residuals {
 
 /// Everything post-processing derives from one solution.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct Evaluation {
     /// Rolling figures (when the scene rolls).
     pub rolling: Option<RollingResult>,
@@ -247,12 +267,13 @@ impl Evaluation {
             ("tangential rigid-body displacement", b.tangential),
             ("rigid-body rotation", Some(b.rotation)),
         ];
-        values.into_iter().find(|(_, v)| v.is_some_and(bad)).map(|(name, v)| format!("the {name} is {}", v.unwrap()))
+        values.into_iter().find_map(|(name, v)| v.filter(|v| bad(*v)).map(|v| format!("the {name} is {v}")))
     }
 }
 
 /// The rolling a scene asks for, as post-processing sees it.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub enum RollingPost {
     /// The seed's formulation: a static solution, then the slip velocity of eq. 12 with this creepage and rolling
     /// direction (the same upwind operator as steady rolling, [`crate::formulation::slip::upwind`]).
@@ -276,6 +297,7 @@ pub enum RollingPost {
 
 /// What rolling adds to a run: the creepage, and how far the slip velocities are from Coulomb's law.
 #[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct RollingResult {
     /// `steady` or `seed`.
     pub mode: crate::scene::RollingMode,
@@ -302,7 +324,29 @@ pub struct RollingResult {
 /// sticking material |s|(μp − |q|)/(ℓ μ p_max) and slip along the friction force max(0, s q)/(ℓ μ p_max) (the slip
 /// terms only where the tangential rigid motion is known); `equilibrium` the worst relative error of a prescribed
 /// resultant (Q relative to max(|Q|, μP), M to max(|M|, P R)).
-pub fn evaluate(problem: &ContactProblem, sol: &Solution, rolling: Option<RollingPost>) -> Evaluation {
+///
+/// A solution of another shape than the problem's ([`Solution::fits`]: a solver's, or a plug-in's, answer is not
+/// trusted to have it) is refused, naming it.
+pub fn evaluate(
+    problem: &ContactProblem,
+    sol: &Solution,
+    rolling: Option<RollingPost>,
+) -> Result<Evaluation, ArgumentError> {
+    if !sol.fits(problem) {
+        return Err(ArgumentError::new(
+            "evaluate",
+            "sol",
+            format!(
+                "has {} normal forces, {} tangential and {} rigid values; the problem has {} contact nodes and {} \
+                 rigid DOFs",
+                sol.f.len(),
+                sol.h.as_ref().map_or(0, Vec::len),
+                sol.rigid.len(),
+                problem.n(),
+                problem.dofs.len()
+            ),
+        ));
+    }
     let flex = problem.flex;
     let n = flex.n();
     let (l0, e) = (flex.scales.length, flex.scales.modulus);
@@ -355,7 +399,7 @@ pub fn evaluate(problem: &ContactProblem, sol: &Solution, rolling: Option<Rollin
     let contact = summary(&nodes, pmax * e, pmax.max(k.ell) * e);
     let rolling = rolling.map(|r| rolling_result(problem, sol, r, &nodes, k.slip_scale));
     let rigid = |kind: ModeKind| problem.rigid_value(sol, kind);
-    Evaluation {
+    Ok(Evaluation {
         u_t: k.ux.clone(),
         slip: k.slip.clone(),
         rolling,
@@ -368,7 +412,7 @@ pub fn evaluate(problem: &ContactProblem, sol: &Solution, rolling: Option<Rollin
         },
         contact,
         residuals,
-    }
+    })
 }
 
 /// Tractions, displacements, gaps and slips of a solution at the contact nodes (dimensionless).

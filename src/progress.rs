@@ -61,14 +61,3 @@ impl Drop for Suppressed {
         SUPPRESSED.fetch_sub(1, Ordering::Relaxed);
     }
 }
-
-/// A bar of `len` items for a sweep (hidden when progress is off).
-pub fn bar(len: u64, template: &str) -> ProgressBar {
-    let bar = if enabled() {
-        ProgressBar::with_draw_target(Some(len), ProgressDrawTarget::stderr())
-    } else {
-        ProgressBar::hidden()
-    };
-    bar.set_style(ProgressStyle::with_template(template).expect("valid template"));
-    bar
-}

@@ -30,6 +30,7 @@ use serde::Serialize;
 
 /// Error figures of one run against the references that apply (null where one does not apply).
 #[derive(Debug, Clone, Copy, Default, Serialize, PartialEq)]
+#[non_exhaustive]
 pub struct Metrics {
     /// |a_fit − a_H| / a_H.
     pub hertz_a_err: Option<f64>,
@@ -76,6 +77,7 @@ pub fn hertz_at(scene: &Scene, p: f64) -> Hertz2D {
 
 /// Where a half-space theory of the decoupled problem (Cattaneo–Mindlin, Carter) stands for a scene.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Domain {
     /// Its assumptions hold: the half-plane model of the wheel, with the normal and tangential problems decoupled
     /// (Dundurs' β of the pair zero, or `coupling = false`). Checked against the theory within a tolerance.

@@ -3,7 +3,7 @@
 //! - [`Termination`]: what the **solver** says of its own run (solved, a secondary ray, the iteration limit, a
 //!   proven infeasibility, a numerical failure). Every solver returns one; nothing else writes it.
 //! - [`Status`] with its [`Verdict`]: what the **harness** concludes about the physical problem after checking
-//!   the answer independently of the solver ([`crate::post`] residuals, [`crate::validity`]): it adopts the
+//!   the answer independently of the solver ([`crate::post`] residuals, `crate::validity`): it adopts the
 //!   termination, or overrides it with a reason (a `solved` claim refused on its residuals, an answer cut off by
 //!   the candidate zone, a ray that the equilibrium LP proves to be infeasibility).
 
@@ -12,6 +12,7 @@ use serde::{Deserialize, Serialize};
 /// How a solver ended its own run (before the harness checks the answer).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum Termination {
     /// The solver claims a solution (the harness still checks it).
     Solved,
@@ -53,6 +54,7 @@ impl From<Termination> for Status {
 /// Why the harness's [`Status`] of a run is not simply the solver's [`Termination`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum VerdictReason {
     /// The solver claimed a solution whose solver-independent residual is above the refusal bound, or cannot be
     /// evaluated because the solution has a non-finite value (→ `numerical_error`).
@@ -69,6 +71,7 @@ pub enum VerdictReason {
 /// The harness's conclusion about one run: the final [`Status`], and when it differs from the solver's termination
 /// (or qualifies it), the reason and the explanation.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct Verdict {
     /// Why the harness's status is not the solver's own.
     pub reason: VerdictReason,
@@ -77,15 +80,16 @@ pub struct Verdict {
 }
 
 /// The status of a run as the harness concludes it (after the solver-independent residual check of
-/// [`crate::post`] and the model-range checks of [`crate::validity`]).
+/// [`crate::post`] and the model-range checks of `crate::validity`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum Status {
     /// A solution was found and its solver-independent residuals are small.
     Solved,
     /// Lemke's algorithm ended on a secondary ray. For a copositive-plus LCP (the frictionless ones) this proves
     /// infeasibility and is reported as [`Status::Infeasible`]; the frictional LCPs are not copositive-plus, so on a
-    /// load-driven one the equilibrium LP decides ([`crate::validity::decide`]): no admissible contact forces →
+    /// load-driven one the equilibrium LP decides (`crate::validity::decide`): no admissible contact forces →
     /// `infeasible` with the certificate; admissible forces exist → this status, the elastic problem undecided
     /// (Lemke's failure, not a diagnosis).
     RayTermination,
@@ -97,12 +101,12 @@ pub enum Status {
     NumericalError,
     /// The solution's contact reaches the edge of the candidate zone (its outermost node is loaded): the contact is
     /// cut off by the mesh, not by the physics, and its pressures are not the wheel's. The message says how wide the
-    /// zone must be ([`crate::validity`]).
+    /// zone must be (`crate::validity`).
     ContactAtZoneEdge,
     /// The solution uses the linearised (small-rotation) kinematics far outside their range: the wheel's rigid
     /// rotation φ moves its contact points by φR, more than [`crate::tolerances::ROTATION_ARC_MAX`] contact
     /// half-widths, so the gaps and the lever arms of the moment equilibrium are not the wheel's. Typical of a wheel
-    /// free to turn (moment prescribed) under a tangential load ([`crate::validity`]).
+    /// free to turn (moment prescribed) under a tangential load (`crate::validity`).
     KinematicsOutOfRange,
 }
 

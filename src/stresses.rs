@@ -54,7 +54,7 @@
 //! Only a scene with `[stresses]` computes anything ("simulate only the effects a scene calls for"). Every solved
 //! run gets its field ([`crate::pipeline::run_scene`]); a load path computes it at the end of each step (its last
 //! substep; the intermediate substeps of a step are increments towards that end and are not reported), so the
-//! path's final runs carry the field at the path's end ([`crate::pipeline::path`]).
+//! path's final runs carry the field at the path's end (`crate::pipeline::path`).
 //!
 //! # Output
 //! `runs[].stresses` of the result document ([`StressResult`]): the grid, the quantities, `maxima.<quantity> =
@@ -64,7 +64,7 @@
 //! (`csv` names it; `rollbem run --json` writes it, [`StressResult::spill`]).
 
 use crate::bem::stress::{InteriorStress, StressError};
-use crate::error::Error;
+use crate::error::{ArgumentError, Error};
 use crate::halfplane::strip_stress;
 use crate::mesh::{Mesh, Shape};
 use crate::post::NodeResult;
@@ -86,6 +86,7 @@ pub const MAX_INLINE_POINTS: usize = 20_000;
 /// Why a grid point has no value.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum PointError {
     /// Outside the wheel: below its undeformed surface, or in the hub's hole (BEM wheel; such a grid is refused
     /// as an input error by [`StressEvaluator::new`], so a result never holds it).
@@ -112,6 +113,7 @@ impl PointError {
 
 /// The regular grid of a `[stresses]` table (user's length unit; module docs).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct StressGrid {
     /// `[min, max]` of x.
     pub x: [f64; 2],
@@ -144,7 +146,8 @@ impl StressGrid {
 
     /// `(x, depth)` of point `k` (row-major).
     pub fn point(&self, k: usize) -> (f64, f64) {
-        let nx = self.points[0];
+        // A grid has at least one column (a validated scene's); `max(1)` keeps an edited one from dividing by 0.
+        let nx = self.points[0].max(1);
         (self.x_at(k % nx), self.depth_at(k / nx))
     }
 }
@@ -177,6 +180,7 @@ pub fn quantity(q: StressQuantity, s: [f64; 3], nu: f64) -> f64 {
 
 /// The largest-magnitude value of a quantity on the grid and where it is (user's units).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct Maximum {
     /// The value (sign kept).
     pub value: f64,
@@ -188,6 +192,7 @@ pub struct Maximum {
 
 /// The stress tensor at every grid point, or why a point has none (user's units).
 #[derive(Debug, Clone, PartialEq, Default)]
+#[non_exhaustive]
 pub struct StressField {
     /// The grid.
     pub grid: StressGrid,
@@ -202,9 +207,9 @@ pub struct StressField {
 }
 
 impl StressField {
-    /// The value of `q` at point `k`, if the point has one.
+    /// The value of `q` at point `k`, if the grid has that point and the point has a value.
     pub fn value(&self, q: StressQuantity, k: usize) -> Option<f64> {
-        self.stress[k].ok().map(|s| quantity(q, s, self.nu))
+        self.stress.get(k)?.ok().map(|s| quantity(q, s, self.nu))
     }
 
     /// The maximum of `q` (largest magnitude, first in row-major order on ties), if any point has a value.
@@ -259,6 +264,7 @@ impl StressField {
 /// deserialises as the document's keys; the stress tensor at every point ([`StressResult::field`]) is kept in memory
 /// after an evaluation and is not part of the document (its quantities' values are, in `field`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct StressResult {
     /// What body the field is in (`wheel`).
     #[serde(default = "wheel")]
@@ -296,6 +302,7 @@ fn wheel() -> String {
 /// The inline field of the document: node coordinates, one array per quantity (null where refused, row-major) and
 /// the reason per refused point.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct FieldValues {
     /// x of the grid's columns.
     pub x: Vec<f64>,
@@ -310,6 +317,7 @@ pub struct FieldValues {
 /// The surface values of the document: x of the contact elements' centres (depth 0) and, per quantity name, its
 /// value there (null where refused).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct SurfaceValues {
     /// x of the points.
     pub x: Vec<f64>,
@@ -513,12 +521,35 @@ impl<'a> StressEvaluator<'a> {
         }))
     }
 
+    /// The number of contact nodes of the source: the length of the `nodes` that [`StressEvaluator::evaluate`] takes.
+    pub fn contact_nodes(&self) -> usize {
+        match &self.body {
+            Body::HalfPlane { a, .. } => a.len(),
+            Body::Wheel { response, .. } => response.model.mesh.contact_nodes.len(),
+        }
+    }
+
+    /// `nodes` of one entry per contact node of the source, else the error naming them.
+    fn check_nodes(&self, function: &'static str, nodes: &[NodeResult]) -> Result<(), ArgumentError> {
+        if nodes.len() == self.contact_nodes() {
+            return Ok(());
+        }
+        Err(ArgumentError::new(
+            function,
+            "nodes",
+            format!(
+                "has {} entries, the source {} contact nodes: a run of another model?",
+                nodes.len(),
+                self.contact_nodes()
+            ),
+        ))
+    }
+
     /// The field of a solved run from its contact nodes' tractions (`pressure`, `shear`, user's units, in contact-node
-    /// order), evaluated in parallel over the grid points.
-    ///
-    /// # Panics
-    /// If `nodes` does not have one entry per contact node of the source.
-    pub fn evaluate(&self, nodes: &[NodeResult]) -> StressResult {
+    /// order), evaluated in parallel over the grid points. `nodes` without one entry per contact node of the source
+    /// ([`StressEvaluator::contact_nodes`]) are refused.
+    pub fn evaluate(&self, nodes: &[NodeResult]) -> Result<StressResult, ArgumentError> {
+        self.check_nodes("StressEvaluator::evaluate", nodes)?;
         let t0 = Instant::now();
         let (stress, surface) = match &self.body {
             Body::HalfPlane { a, b } => (half_plane_field(&self.grid, a, b, nodes), half_plane_surface(a, b, nodes)),
@@ -526,9 +557,9 @@ impl<'a> StressEvaluator<'a> {
                 let e = self.modulus;
                 let p: Vec<f64> = nodes.iter().map(|n| n.pressure / e).collect();
                 let q: Vec<f64> = nodes.iter().map(|n| n.shear / e).collect();
-                let (u, t) = response.boundary(&p, &q);
+                let (u, t) = response.boundary(&p, &q)?;
                 let model = &response.model;
-                let ev = InteriorStress::new(&model.mesh, &model.kelvin, &u, &t);
+                let ev = InteriorStress::new(&model.mesh, &model.kelvin, &u, &t)?;
                 let todo: Vec<usize> = (0..points.len()).filter(|&k| refused[k].is_none()).collect();
                 let sub: Vec<[f64; 2]> = todo.iter().map(|&k| points[k]).collect();
                 let mut out: Vec<Result<[f64; 3], PointError>> =
@@ -545,15 +576,24 @@ impl<'a> StressEvaluator<'a> {
             }
         };
         let field = StressField { grid: self.grid, nu: self.nu, stress, surface };
-        StressResult::of(self.model, self.quantities.clone(), field, t0.elapsed().as_secs_f64())
+        Ok(StressResult::of(self.model, self.quantities.clone(), field, t0.elapsed().as_secs_f64()))
     }
 
     /// The elastic counter-body's field from the same run (`None` for a rigid flat): the half-plane below the
     /// contact loaded by the opposite tractions, on the same grid with depth measured into the counter-body and x
     /// as on the wheel. Mirrored into the wheel's configuration the counter-body carries the pressure p and the
     /// shear −q, so its field is the half-plane formula with (p, −q) and its own ν; τ_xz is in its (x, depth) axes.
-    pub fn evaluate_counter_body(&self, nodes: &[NodeResult]) -> Option<StressResult> {
-        let (a, b, nu) = self.counter.as_ref()?;
+    /// Refused as [`StressEvaluator::evaluate`].
+    pub fn evaluate_counter_body(&self, nodes: &[NodeResult]) -> Result<Option<StressResult>, ArgumentError> {
+        let Some((a, b, nu)) = self.counter.as_ref() else { return Ok(None) };
+        self.check_nodes("StressEvaluator::evaluate_counter_body", nodes)?;
+        if a.len() != nodes.len() {
+            return Err(ArgumentError::new(
+                "StressEvaluator::evaluate_counter_body",
+                "nodes",
+                format!("has {} entries, the counter-body {} strips", nodes.len(), a.len()),
+            ));
+        }
         let t0 = Instant::now();
         let mirrored: Vec<NodeResult> = nodes.iter().map(|n| NodeResult { shear: -n.shear, ..n.clone() }).collect();
         let field = StressField {
@@ -564,7 +604,7 @@ impl<'a> StressEvaluator<'a> {
         };
         let mut r = StressResult::of(BodyModel::HalfPlane, self.quantities.clone(), field, t0.elapsed().as_secs_f64());
         r.body = "counter_body".into();
-        Some(r)
+        Ok(Some(r))
     }
 }
 
@@ -606,7 +646,10 @@ fn wheel_surface(
                 Shape::Straight { a, b } => 0.5 * (a[0] + b[0]) * l0,
                 Shape::Arc(arc) => arc.position(0.0)[0] * l0,
             };
+            // `u`, `t` are the response's own boundary solution on its mesh (checked when it was computed).
             let s = crate::bem::stress::boundary_stress(mesh, &model.kelvin, u, t, i, 0.0)
+                .ok()
+                .flatten()
                 .ok_or(PointError::Singular)
                 .and_then(|s| finite([s[0] * e, s[1] * e, s[2] * e]));
             (x, s)
@@ -635,7 +678,7 @@ fn half_plane_field(
     b: &[f64],
     nodes: &[NodeResult],
 ) -> Vec<Result<[f64; 3], PointError>> {
-    assert_eq!(nodes.len(), a.len(), "one contact node per half-plane strip");
+    debug_assert_eq!(nodes.len(), a.len(), "checked by the caller (StressEvaluator::check_nodes)");
     let loaded: Vec<(f64, f64, f64, f64)> = (0..a.len())
         .filter(|&j| nodes[j].pressure != 0.0 || nodes[j].shear != 0.0)
         .map(|j| (a[j], b[j], nodes[j].pressure, nodes[j].shear))
@@ -706,7 +749,7 @@ fn refused_grid(
         .iter()
         .map(|e| distance_to_element(&e.shape, p))
         .min_by(|a, b| a.0.total_cmp(&b.0))
-        .expect("a BEM mesh has elements");
+        .unwrap_or((f64::INFINITY, f64::NAN));
     let reach = match mesh.kind {
         ElementKind::Constant => STRESS_NEAR_BOUNDARY_CONSTANT,
         ElementKind::Quadratic => STRESS_NEAR_BOUNDARY_QUADRATIC,

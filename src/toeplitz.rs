@@ -2,7 +2,7 @@
 //!
 //! On a uniform grid the half-plane's influence matrices are Toeplitz up to one term: the entry (i, j) is a function
 //! of i − j (a strip's influence depends on the distance to the collocation point) plus the displacement of the datum
-//! point under strip j, which is the same for every row ([`crate::source::half_plane`]: displacements are relative to
+//! point under strip j, which is the same for every row (`crate::source::half_plane`: displacements are relative to
 //! a datum at depth D below the contact centre). So K = T + 1 cᵀ, also with an elastic counter-body on the same grid.
 //! A Toeplitz product is a convolution; embedded in a circulant of length L ≥ 2n − 1 it takes two real FFTs and an
 //! inverse (O(n log n)) instead of the dense product's 2n² operations, and 1 (cᵀx) adds O(n). The structure is
@@ -27,6 +27,7 @@
 //! not entry by entry: they serve the iterations (GMRES applies, the active sets' gaps and slips); every final answer
 //! is solved by a factorisation and certified by the dense residuals.
 
+use crate::error::ArgumentError;
 use faer::Mat;
 use realfft::num_complex::Complex;
 use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
@@ -73,13 +74,29 @@ fn fast_length(min: usize) -> usize {
     best
 }
 
+/// The outcome of a transform whose buffers the same plan made (`make_output_vec`, or a vector of the plan's length):
+/// realfft checks only their lengths and, for the inverse, that the imaginary parts at 0 and len/2 are zero, which
+/// [`Toeplitz::apply`] sets just before. No input reaches a failure; one would be a bug in this file, never a wrong
+/// product returned.
+fn transformed(result: Result<(), realfft::FftError>) {
+    result.expect("a realfft transform on buffers made by its own plan");
+}
+
 impl Toeplitz {
     /// The Toeplitz matrix with first column `col` (T[k, 0]) and first row `row` (T[0, k]); `col[0]` is the diagonal
-    /// (`row[0]` is ignored). Both of length n ≥ 1.
-    pub fn from_parts(col: &[f64], row: &[f64]) -> Toeplitz {
+    /// (`row[0]` is ignored). Both of length n ≥ 1: other lengths are refused, naming the argument.
+    pub fn from_parts(col: &[f64], row: &[f64]) -> Result<Toeplitz, ArgumentError> {
+        const F: &str = "Toeplitz::from_parts";
         let n = col.len();
-        assert!(n >= 1 && row.len() == n, "Toeplitz::from_parts: column and row of the same length n ≥ 1");
-        let len = fast_length(2 * n);
+        if n == 0 {
+            return Err(ArgumentError::new(F, "col", "is empty: a Toeplitz matrix has n ≥ 1 rows"));
+        }
+        if row.len() != n {
+            return Err(ArgumentError::new(F, "row", format!("has {} entries, `col` {n}", row.len())));
+        }
+        let Some(len) = n.checked_mul(2).map(fast_length) else {
+            return Err(ArgumentError::new(F, "col", format!("{n} rows: the FFT length 2n overflows")));
+        };
         let mut planner = RealFftPlanner::<f64>::new();
         let forward = planner.plan_fft_forward(len);
         let inverse = planner.plan_fft_inverse(len);
@@ -89,10 +106,10 @@ impl Toeplitz {
             c[len - k] = row[k];
         }
         let mut spectrum = forward.make_output_vec();
-        forward.process(&mut c, &mut spectrum).expect("FFT lengths from the plan");
+        transformed(forward.process(&mut c, &mut spectrum));
         let scale = 1.0 / len as f64;
         spectrum.iter_mut().for_each(|v| *v *= scale);
-        Toeplitz { n, column_shift: None, len, spectrum, forward, inverse }
+        Ok(Toeplitz { n, column_shift: None, len, spectrum, forward, inverse })
     }
 
     /// `Some` when `m` is square, has at least [`FFT_ABOVE`] rows and is T + 1 cᵀ (T Toeplitz, c a constant per
@@ -118,7 +135,7 @@ impl Toeplitz {
         if !fits || !scale.is_finite() {
             return None;
         }
-        let mut op = Toeplitz::from_parts(&col, &row);
+        let mut op = Toeplitz::from_parts(&col, &row).ok()?;
         op.column_shift = c.iter().any(|v| *v != 0.0).then_some(c);
         Some(op)
     }
@@ -128,26 +145,32 @@ impl Toeplitz {
         self.n
     }
 
-    /// T x.
-    pub fn apply(&self, x: &[f64]) -> Vec<f64> {
-        assert_eq!(x.len(), self.n, "Toeplitz::apply: x must have n entries");
+    /// T x (plus 1 cᵀx with a column constant); `x` of another length than n is refused.
+    pub fn apply(&self, x: &[f64]) -> Result<Vec<f64>, ArgumentError> {
+        if x.len() != self.n {
+            return Err(ArgumentError::new(
+                "Toeplitz::apply",
+                "x",
+                format!("has {} entries, the matrix {}", x.len(), self.n),
+            ));
+        }
         let mut buf = vec![0.0; self.len];
         buf[..self.n].copy_from_slice(x);
         let mut spec = self.forward.make_output_vec();
-        self.forward.process(&mut buf, &mut spec).expect("FFT lengths from the plan");
+        transformed(self.forward.process(&mut buf, &mut spec));
         spec.iter_mut().zip(&self.spectrum).for_each(|(a, b)| *a *= b);
         // The inverse of a real signal's spectrum: the imaginary parts at 0 and len/2 are round-off.
         spec[0].im = 0.0;
         if self.len % 2 == 0 {
             spec[self.len / 2].im = 0.0;
         }
-        self.inverse.process(&mut spec, &mut buf).expect("FFT lengths from the plan");
+        transformed(self.inverse.process(&mut spec, &mut buf));
         buf.truncate(self.n);
         if let Some(c) = &self.column_shift {
             let cx: f64 = c.iter().zip(x).map(|(a, b)| a * b).sum();
             buf.iter_mut().for_each(|v| *v += cx);
         }
-        buf
+        Ok(buf)
     }
 }
 
@@ -164,11 +187,11 @@ mod tests {
             let m = Mat::<f64>::from_fn(n, n, |i, j| t(i as i64 - j as i64));
             let col: Vec<f64> = (0..n).map(|i| m[(i, 0)]).collect();
             let row: Vec<f64> = (0..n).map(|j| m[(0, j)]).collect();
-            let op = Toeplitz::from_parts(&col, &row);
+            let op = Toeplitz::from_parts(&col, &row).unwrap();
             let x: Vec<f64> = (0..n).map(|i| (i as f64 * 0.37).sin() + 0.1).collect();
             let dense: Vec<f64> = (0..n).map(|i| (0..n).map(|j| m[(i, j)] * x[j]).sum()).collect();
             let scale = dense.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
-            for (a, b) in dense.iter().zip(op.apply(&x)) {
+            for (a, b) in dense.iter().zip(op.apply(&x).unwrap()) {
                 assert!((a - b).abs() <= 1e-13 * scale, "n = {n}: {a} vs {b}");
             }
         }
@@ -182,7 +205,7 @@ mod tests {
         let x: Vec<f64> = (0..n).map(|i| (i as f64 * 0.21).cos()).collect();
         let dense: Vec<f64> = (0..n).map(|i| (0..n).map(|j| m[(i, j)] * x[j]).sum()).collect();
         let scale = dense.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
-        for (a, b) in dense.iter().zip(op.apply(&x)) {
+        for (a, b) in dense.iter().zip(op.apply(&x).unwrap()) {
             assert!((a - b).abs() <= 1e-13 * scale);
         }
         let mut bent = m.clone();

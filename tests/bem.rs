@@ -18,7 +18,7 @@ use rollbem::scene::{ElementKind, Support};
 /// Uniform-ish mesh of `n` elements (the contact arc gets n/12, the rest is graded from the same size).
 fn mesh(n: usize, kind: ElementKind, support: Support) -> Mesh {
     let spec = MeshSpec::arc(kind, 30.0, n / 12, n - n / 12);
-    Mesh::wheel(1.0, support, &spec)
+    Mesh::wheel(1.0, support, &spec).unwrap()
 }
 
 /// Solve the mixed problem: displacements `u_of(x)` prescribed on Support nodes, tractions `t_of(x, n)` on the rest.
@@ -29,7 +29,7 @@ fn solve_mixed(
     u_of: &dyn Fn([f64; 2]) -> [f64; 2],
     t_of: &dyn Fn([f64; 2], [f64; 2]) -> [f64; 2],
 ) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
-    let sys = assemble_full(m, k);
+    let sys = assemble_full(m, k).unwrap();
     let nd = 2 * m.n_nodes();
     let mut a = Mat::<f64>::zeros(nd, nd);
     let mut b = Mat::<f64>::zeros(nd, 1);

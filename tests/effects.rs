@@ -54,7 +54,7 @@ fn coupled_path_q(scene: &Scene) -> f64 {
     let problem = ContactProblem::new(flex, law, *scene.drive().unwrap(), stages::slip_operator(scene, flex)).unwrap();
     let out = rollbem::solvers::build("active_set").unwrap().solve(&problem);
     assert_eq!(out.status, Termination::Solved, "{}", out.message);
-    let ev = rollbem::post::evaluate(&problem, out.solution.as_ref().unwrap(), stages::rolling_post(scene));
+    let ev = rollbem::post::evaluate(&problem, out.solution.as_ref().unwrap(), stages::rolling_post(scene)).unwrap();
     ev.resultants.tangential
 }
 

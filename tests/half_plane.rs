@@ -248,7 +248,7 @@ fn influence_coefficients_match_quadrature_of_the_line_load_solution() {
     );
     let fl = source::build(&s, Blocks::All).unwrap().flex;
     let n = fl.n();
-    let hp = HalfPlane::new(1.0, 0.3, 300.0 / 920.0);
+    let hp = HalfPlane::new(1.0, 0.3, 300.0 / 920.0).unwrap();
     let edges: Vec<f64> =
         (0..n).map(|j| fl.x[j] - 0.5 * fl.weights[j]).chain([fl.x[n - 1] + 0.5 * fl.weights[n - 1]]).collect();
     let kmax = fl.k_nn.col_iter().flat_map(|c| c.iter().map(|v| v.abs()).collect::<Vec<_>>()).fold(0.0, f64::max);

@@ -29,7 +29,7 @@ use std::path::{Path, PathBuf};
 fn lcp(rows: &[&[f64]], q: &[f64]) -> Lcp {
     let n = q.len();
     assert!(rows.len() == n && rows.iter().all(|r| r.len() == n), "M must be {n} × {n}");
-    Lcp { m: Mat::from_fn(n, n, |i, j| rows[i][j]), q: q.to_vec() }
+    Lcp::new(Mat::from_fn(n, n, |i, j| rows[i][j]), q.to_vec()).unwrap()
 }
 
 /// The LCP conditions for Lemke's answer, on the original data: z ≥ 0, w = Mz + q ≥ 0, z_i w_i = 0.
@@ -38,7 +38,7 @@ fn assert_solves(p: &Lcp, out: &LemkeOutcome, what: &str) {
     let s = scale(p);
     let zs = out.z.iter().fold(1.0_f64, |m, v| m.max(v.abs()));
     let tol = 1e-10 * s * zs;
-    let w = p.w_of(&out.z);
+    let w = p.w_of(&out.z).unwrap();
     for i in 0..p.size() {
         assert!(out.z[i] >= 0.0, "{what}: z[{i}] = {}", out.z[i]);
         assert!(w[i] >= -tol, "{what}: w[{i}] = {}", w[i]);
@@ -72,13 +72,13 @@ fn textbook_lemke(p: &Lcp, d: &[f64]) -> (bool, Vec<f64>, usize) {
     for i in 0..n {
         t[i][i] = 1.0;
         for j in 0..n {
-            t[i][n + j] = -p.m[(i, j)];
+            t[i][n + j] = -p.m()[(i, j)];
         }
         t[i][2 * n] = -d[i];
-        t[i][cols] = p.q[i];
+        t[i][cols] = p.q()[i];
     }
     let mut basis: Vec<usize> = (0..n).collect();
-    if p.q.iter().all(|&v| v >= 0.0) {
+    if p.q().iter().all(|&v| v >= 0.0) {
         return (true, vec![0.0; n], 0);
     }
     let pivot = |t: &mut Vec<Vec<f64>>, r: usize, c: usize| {
@@ -195,7 +195,7 @@ fn murty(n: usize) -> Lcp {
         std::cmp::Ordering::Less => 0.0,
     });
     let q = (0..n).map(|i| -((n - i)..=n).map(|k| 2f64.powi(k as i32)).sum::<f64>()).collect();
-    Lcp { m, q }
+    Lcp::new(m, q).unwrap()
 }
 
 #[test]
@@ -235,7 +235,7 @@ fn murty_exponential_example() {
         // Both engines follow the same pivot path (src/solvers/lemke/block.rs docs), and that path is the textbook
         // one for the covering vector D_r⁻¹e of their row equilibration (replicated by `ruiz_rows`).
         assert_eq!(blk.pivots, dns.pivots, "Murty n={n}: engines disagree on the pivot path");
-        let d: Vec<f64> = ruiz_rows(&p.m).iter().map(|r| 1.0 / r).collect();
+        let d: Vec<f64> = ruiz_rows(p.m()).iter().map(|r| 1.0 / r).collect();
         let (ok_d, _, tb_d) = textbook_lemke(&p, &d);
         assert!(ok_d);
         assert_eq!(blk.pivots, tb_d, "Murty n={n}: engines vs textbook Lemke with covering vector D_r⁻¹e");
@@ -281,7 +281,7 @@ fn murty_upper_triangular_with_q_minus_e() {
                 0.0
             }
         });
-        let p = Lcp { m, q: vec![-1.0; n] };
+        let p = Lcp::new(m, vec![-1.0; n]).unwrap();
         let sols = enumerate(&p);
         assert_eq!(sols.len(), 1);
         for (name, out) in both(&p) {
@@ -358,10 +358,10 @@ fn random_degenerate_integer_problems() {
         let psd = if case % 2 == 0 { 1.0 } else { 0.0 };
         let m = Mat::from_fn(n, n, |i, j| psd * (0..n).map(|k| a[k][i] * a[k][j]).sum::<f64>() + s[i][j] - s[j][i]);
         let q: Vec<f64> = (0..n).map(|_| rng.int(-3, 1)).collect();
-        let p = Lcp { m, q };
+        let p = Lcp::new(m, q).unwrap();
         let sols = enumerate(&p);
         for (engine, out) in both(&p) {
-            let what = format!("case {case} ({engine}): M = {:?}, q = {:?}", p.m, p.q);
+            let what = format!("case {case} ({engine}): M = {:?}, q = {:?}", p.m(), p.q());
             if sols.is_empty() {
                 assert_eq!(out.status, Termination::RayTermination, "{what}: infeasible by enumeration");
             } else {
@@ -482,8 +482,8 @@ fn random_p_matrices_have_one_solution_that_lemke_finds() {
             }
         };
         let q: Vec<f64> = (0..n).map(|_| rng.uniform()).collect();
-        let p = Lcp { m, q };
-        assert!(is_p_matrix(&p.m), "case {case}: not a P-matrix");
+        let p = Lcp::new(m, q).unwrap();
+        assert!(is_p_matrix(p.m()), "case {case}: not a P-matrix");
         let sols = enumerate(&p);
         assert_eq!(sols.len(), 1, "case {case}: a P-matrix LCP has exactly one solution");
         for (engine, out) in both(&p) {
@@ -508,10 +508,13 @@ fn write_then_read_is_identical_and_solves_identically() {
     problems.push(murty(7));
     for _ in 0..5 {
         let n = 6;
-        problems.push(Lcp {
-            m: Mat::from_fn(n, n, |i, j| rng.uniform() + if i == j { 4.0 } else { 0.0 }),
-            q: (0..n).map(|_| rng.uniform() / 3.0).collect(),
-        });
+        problems.push(
+            Lcp::new(
+                Mat::from_fn(n, n, |i, j| rng.uniform() + if i == j { 4.0 } else { 0.0 }),
+                (0..n).map(|_| rng.uniform() / 3.0).collect(),
+            )
+            .unwrap(),
+        );
     }
     for (k, p) in problems.iter().enumerate() {
         let path = dir.path().join(format!("p{k}.dat"));
@@ -521,10 +524,10 @@ fn write_then_read_is_identical_and_solves_identically() {
         assert_eq!(back.size(), n);
         for j in 0..n {
             for i in 0..n {
-                assert_eq!(back.m[(i, j)].to_bits(), p.m[(i, j)].to_bits(), "problem {k}: M[{i},{j}]");
+                assert_eq!(back.m()[(i, j)].to_bits(), p.m()[(i, j)].to_bits(), "problem {k}: M[{i},{j}]");
             }
         }
-        assert!(paired(&back.q, &p.q).all(|(a, b)| a.to_bits() == b.to_bits()), "problem {k}: q");
+        assert!(paired(back.q(), p.q()).all(|(a, b)| a.to_bits() == b.to_bits()), "problem {k}: q");
         for solve in [lemke::solve, rollbem::solvers::lemke::dense::solve_dense] {
             let s = LemkeSettings::default();
             let (a, b) = (solve(p, &s), solve(&back, &s));
@@ -545,14 +548,14 @@ fn siconos_layout_is_column_major() {
     // is verified here.
     let text = "4\n0\n4\n4\n4\t4\n11 0 10 1\n0 11 10 1\n10 10 21 1\n-1 -1 -1 0\n50 50 10 -6\n";
     let p = lcp_io::parse(text, Path::new("cps4.dat")).expect("parse");
-    assert_eq!((p.m[(3, 0)], p.m[(0, 3)]), (1.0, -1.0));
+    assert_eq!((p.m()[(3, 0)], p.m()[(0, 3)]), (1.0, -1.0));
     let sols = enumerate(&p);
     assert!(!sols.is_empty(), "column-major reading gives a solvable LCP");
     for (engine, out) in both(&p) {
         assert_solves(&p, &out, engine);
         assert_is_enumerated(&out, &sols, engine);
     }
-    let transposed = Lcp { m: Mat::from_fn(4, 4, |i, j| p.m[(j, i)]), q: p.q.clone() };
+    let transposed = Lcp::new(Mat::from_fn(4, 4, |i, j| p.m()[(j, i)]), p.q().to_vec()).unwrap();
     assert!(enumerate(&transposed).is_empty(), "the row-major reading would be infeasible");
 }
 
@@ -618,7 +621,7 @@ fn reference_files_load_and_lemke_matches_the_enumeration() {
         let (back, rem) = lcp_io::parse_with_remark(&on_disk, &path).expect("parse");
         assert!(rem.starts_with("# "), "{file}: remark kept");
         let loaded = lcp_io::read(&path).expect("read");
-        assert_eq!(loaded.q, back.q);
+        assert_eq!(loaded.q(), back.q());
         let sols = enumerate(&loaded);
         for (engine, out) in both(&loaded) {
             assert_eq!(out.status, expected, "{file} ({engine}): {}", out.message);

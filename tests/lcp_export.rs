@@ -27,10 +27,10 @@ fn exported_solved_from_file_and_solved_directly_are_identical() {
         let file = dir.path().join("x.dat");
         lcp_io::write(&lcp, &file).unwrap();
         let back = lcp_io::read(&file).unwrap();
-        assert_eq!(back.q, lcp.q, "{name}: q");
+        assert_eq!(back.q(), lcp.q(), "{name}: q");
         for j in 0..lcp.size() {
             for i in 0..lcp.size() {
-                assert_eq!(back.m[(i, j)].to_bits(), lcp.m[(i, j)].to_bits(), "{name}: M[{i},{j}]");
+                assert_eq!(back.m()[(i, j)].to_bits(), lcp.m()[(i, j)].to_bits(), "{name}: M[{i},{j}]");
             }
         }
         let direct = solve(&lcp, &LemkeSettings::default());

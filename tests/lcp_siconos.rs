@@ -119,10 +119,10 @@ fn block_files_hold_the_lcp_of_their_dense_twins() {
         assert_eq!(block.size(), n, "{twin}");
         for j in 0..n {
             for i in 0..n {
-                assert_eq!(block.m[(i, j)].to_bits(), dense.m[(i, j)].to_bits(), "{twin}: M[{i}, {j}]");
+                assert_eq!(block.m()[(i, j)].to_bits(), dense.m()[(i, j)].to_bits(), "{twin}: M[{i}, {j}]");
             }
         }
-        assert_eq!(block.q, dense.q, "{twin}: q");
+        assert_eq!(block.q(), dense.q(), "{twin}: q");
     }
 }
 
@@ -140,7 +140,7 @@ fn lemke_solves_every_solvable_file_to_round_off_and_agrees_with_siconos() {
         // The dense reference engine takes the same path.
         let dense = lemke::dense::solve_dense(&lcp, &st);
         assert_eq!((dense.status, dense.pivots), (out.status, out.pivots), "{name}: dense engine");
-        let r = residuals(&lcp, &out.z, &out.w);
+        let r = residuals(&lcp, &out.z, &out.w).unwrap();
         // The enumeration for small files: every vertex solution, independent of Lemke.
         let sols = (n <= 10).then(|| enumerate(&lcp));
         if let Some(&(solvable, why)) = failures.get(name.as_str()) {
@@ -155,14 +155,14 @@ fn lemke_solves_every_solvable_file_to_round_off_and_agrees_with_siconos() {
         // Siconos solves the same files, and its answer passes rollbem's residuals (to a looser bound: Siconos'
         // tableau accumulates round-off over its pivots; the largest here is tobenna's, 126 iterations).
         assert!(sic.solved, "{name}: Siconos' Lemke reported error {:.1e}", sic.error);
-        let rs = residuals(&lcp, &sic.z, &lcp.w_of(&sic.z));
+        let rs = residuals(&lcp, &sic.z, &lcp.w_of(&sic.z).unwrap()).unwrap();
         assert!(rs.max <= 1e-12, "{name}: Siconos' z has residuals {rs:?}");
         let zs = out.z.iter().fold(1.0_f64, |a, v| a.max(v.abs()));
         let same_z = |other: &[f64]| paired(&out.z, other).all(|(a, b)| (a - b).abs() <= 1e-9 * zs);
         if let Some(sols) = &sols {
             assert!(same_z_any(&out.z, sols, zs), "{name}: z = {:?} is not an enumerated solution {sols:?}", out.z);
             // One solution for every q (P-matrix): Siconos must have found the same one.
-            if is_p_matrix(&lcp.m) {
+            if is_p_matrix(lcp.m()) {
                 assert_eq!(sols.len(), 1, "{name}: a P-matrix LCP has one solution");
                 assert!(same_z(&sic.z), "{name}: rollbem z = {:?}, Siconos z = {:?}", out.z, sic.z);
             }
@@ -181,7 +181,7 @@ fn same_z_any(z: &[f64], sols: &[Vec<f64>], zs: f64) -> bool {
 /// M symmetric and its Cholesky factorisation succeeds (all pivots positive).
 fn is_spd(lcp: &Lcp) -> bool {
     let n = lcp.size();
-    let m = &lcp.m;
+    let m = lcp.m();
     if (0..n).any(|i| (0..n).any(|j| m[(i, j)] != m[(j, i)])) {
         return false;
     }
@@ -212,7 +212,7 @@ fn the_data_scale_reads_round_off_where_max_w_and_norm_q_did_not() {
         let out = lemke::solve(&lcp, &LemkeSettings::default());
         let wmax = out.w.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
         assert!(wmax < 1e-13, "{name}: w is round-off ({wmax:e})");
-        assert!(residuals(&lcp, &out.z, &out.w).max <= ROUND_OFF, "{name}");
+        assert!(residuals(&lcp, &out.z, &out.w).unwrap().max <= ROUND_OFF, "{name}");
     }
     // lcp_tobenna: z reaches 570 with |q| ≤ 1. Siconos' own answer reports lcp_compute_error 3.5e-12 (scaled by
     // ‖q‖₂, from siconos_lemke.tsv); the same z on the data scale is ≈ 1e-16: the ‖q‖ scaling reads the round-off
@@ -220,7 +220,7 @@ fn the_data_scale_reads_round_off_where_max_w_and_norm_q_did_not() {
     let lcp = read("lcp_tobenna.dat");
     let sic = &siconos_answers()["lcp_tobenna.dat"];
     assert!(sic.error > 1e-12, "Siconos reported {:e}", sic.error);
-    let r = residuals(&lcp, &sic.z, &lcp.w_of(&sic.z));
+    let r = residuals(&lcp, &sic.z, &lcp.w_of(&sic.z).unwrap()).unwrap();
     assert!(r.max < 1e-15, "{r:?}");
     assert!((r.siconos_error / sic.error - 1.0).abs() < 0.5, "rollbem recomputes Siconos' measure: {r:?}");
     // Both solvers' answers are solutions, and different ones (tobenna's M is not a P-matrix).

@@ -29,7 +29,7 @@ fn assert_solves(p: &Lcp, out: &LemkeOutcome, what: &str) {
     let s = scale(p);
     let zs = out.z.iter().fold(1.0_f64, |m, v| m.max(v.abs()));
     let tol = 1e-10 * s * zs;
-    let w = p.w_of(&out.z);
+    let w = p.w_of(&out.z).unwrap();
     for i in 0..p.size() {
         assert!(out.z[i] >= 0.0, "{what}: z[{i}] = {}", out.z[i]);
         assert!(w[i] >= -tol, "{what}: w[{i}] = {}", w[i]);
@@ -85,8 +85,8 @@ fn reference_lcps() -> Vec<(String, Lcp, usize)> {
     for (name, s) in scenes {
         let fl = source::build(&s, Blocks::All).unwrap().flex;
         let Ok(p) = rollbem::pipeline::stages::scene_problem(&s, &fl) else { continue };
-        if !matches!(p.kind, rollbem::formulation::ProblemKind::GrossSliding { .. }) {
-            out.push((name, p.lcp().clone(), fl.n()));
+        if !matches!(p.kind(), rollbem::formulation::ProblemKind::GrossSliding { .. }) {
+            out.push((name, p.lcp().expect("an LCP below gross sliding").clone(), fl.n()));
         }
     }
     assert!(out.len() >= 10, "the reference scenes give frictional LCPs ({} found)", out.len());
@@ -136,7 +136,7 @@ fn warm_start_on_the_frictional_lcps_of_the_reference_scenes() {
 
 #[test]
 fn a_guess_of_the_wrong_length_falls_back_to_the_cold_start() {
-    let lcp = Lcp { m: Mat::from_fn(2, 2, |i, j| if i == j { 2.0 } else { 1.0 }), q: vec![-5.0, -6.0] };
+    let lcp = Lcp::new(Mat::from_fn(2, 2, |i, j| if i == j { 2.0 } else { 1.0 }), vec![-5.0, -6.0]).unwrap();
     let st = LemkeSettings::default();
     let w = lemke::solve_warm(&lcp, &st, &[true]);
     let cold = lemke::solve(&lcp, &st);
@@ -153,7 +153,7 @@ fn murty(n: usize) -> Lcp {
         std::cmp::Ordering::Less => 0.0,
     });
     let q = (0..n).map(|i| -((n - i)..=n).map(|k| 2f64.powi(k as i32)).sum::<f64>()).collect();
-    Lcp { m, q }
+    Lcp::new(m, q).unwrap()
 }
 
 struct Rng(u64);
@@ -178,11 +178,11 @@ fn warm_start_on_murty_and_random_p_matrices_finds_the_unique_solution() {
             (0..n).map(|l| b[l][i] * b[l][j]).sum::<f64>() + if i == j { 0.1 } else { 0.0 } + k[i][j] - k[j][i]
         });
         let q: Vec<f64> = (0..n).map(|_| rng.uniform()).collect();
-        problems.push((format!("random P case {case}"), Lcp { m, q }));
+        problems.push((format!("random P case {case}"), Lcp::new(m, q).unwrap()));
     }
     let mut pivots = (0, 0);
     for (name, p) in problems {
-        assert!(is_p_matrix(&p.m), "{name}");
+        assert!(is_p_matrix(p.m()), "{name}");
         let n = p.size();
         let cold = lemke::solve(&p, &st);
         assert_solves(&p, &cold, &name);
@@ -221,7 +221,7 @@ fn warm_start_on_degenerate_and_infeasible_classics() {
     let st = LemkeSettings::default();
     let lcp = |rows: &[&[f64]], q: &[f64]| {
         let n = q.len();
-        Lcp { m: Mat::from_fn(n, n, |i, j| rows[i][j]), q: q.to_vec() }
+        Lcp::new(Mat::from_fn(n, n, |i, j| rows[i][j]), q.to_vec()).unwrap()
     };
     let degenerate = [
         lcp(&[&[1., 1., 1.], &[1., 1., 1.], &[1., 1., 2.]], &[-1., -1., -1.]),
@@ -290,7 +290,7 @@ fn warm_start_from_the_previous_load_step() {
         s = s.edit(|d| d.drive.tangential_load = Some(0.1 * step as f64 * mu * p_load)).unwrap();
         let fl = source::build(&s, Blocks::All).unwrap().flex;
         let p = rollbem::pipeline::stages::scene_problem(&s, &fl).unwrap();
-        let lcp = p.lcp().clone();
+        let lcp = p.lcp().expect("an LCP below gross sliding").clone();
         let cold = lemke::solve(&lcp, &st);
         assert_solves(&lcp, &cold, &format!("step {step}, cold"));
         if let Some(g) = &guess {

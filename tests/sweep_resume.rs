@@ -9,7 +9,7 @@
 mod common;
 
 use common::{bin, kill_at, masked, partial, write};
-use rollbem::sweep::journal::MARKER;
+use rollbem::sweep::MARKER;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 

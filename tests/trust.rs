@@ -327,7 +327,7 @@ fn item4_a_free_wheel_under_a_tangential_load_is_never_solved() {
     }
     // The converse, also from statics: with the moment the tangential load needs (M = R̄Q: centre at 0, inside the
     // zone, and Q = 0.1P < μP), contact forces exist and the LP says so.
-    let depth = -problem.flex.y.iter().sum::<f64>() / problem.n() as f64 * problem.flex.scales.length;
+    let depth = -problem.flex().y.iter().sum::<f64>() / problem.n() as f64 * problem.flex().scales.length;
     let held = STEEL_FREE.replace("moment = 0.0", &format!("moment = {:?}", depth * 1e6));
     let (s, _) = scene_of(dir.path(), "steel-held.toml", &held);
     let built = rollbem::source::build(&s, rollbem::pipeline::stages::blocks_for(&s)).unwrap();

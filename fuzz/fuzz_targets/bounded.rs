@@ -51,6 +51,8 @@ pub fn elements(scene: &Scene) -> usize {
     let other = match scene.body() {
         Body::Bem { other_elements, .. } => *other_elements,
         Body::HalfPlane { .. } => 0,
+        // A body model added later: counted as too large to run until this bound knows it.
+        _ => usize::MAX,
     };
     scene.zone().elements.saturating_add(other)
 }

@@ -101,6 +101,13 @@ pub fn to_py(py: Python<'_>, failure: Failure) -> PyErr {
         // Only a Ctrl-C cancels a job, and the caller has then raised KeyboardInterrupt already; should a cancelled
         // job's error reach Python anyway, it is that.
         Error::Cancelled => pyo3::exceptions::PyKeyboardInterrupt::new_err(message),
+        // `rollbem::Error` is `#[non_exhaustive]`: a kind added after this binding was written has no class here yet.
+        _ => raise(
+            py,
+            "InternalError",
+            format!("{message} (an error kind this binding does not know: please report it)"),
+            &[],
+        ),
     }
 }
 

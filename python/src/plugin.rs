@@ -54,7 +54,13 @@ impl Solver for PySolver {
     }
 
     fn solve_from(&self, p: &ContactProblem, start: Start) -> Outcome {
-        let lcp = p.lcp();
+        let Some(lcp) = p.lcp() else {
+            return Outcome::failed(
+                Termination::Infeasible,
+                "no static problem (gross sliding)".into(),
+                Work::default(),
+            );
+        };
         let m = lcp.size();
         let call = Python::attach(|py| -> PyResult<Vec<f64>> {
             let f = {
@@ -64,9 +70,9 @@ impl Solver for PySolver {
                 };
                 f.clone_ref(py)
             };
-            let rows: Vec<Vec<f64>> = (0..m).map(|i| (0..m).map(|j| lcp.m[(i, j)]).collect()).collect();
+            let rows: Vec<Vec<f64>> = (0..m).map(|i| (0..m).map(|j| lcp.m()[(i, j)]).collect()).collect();
             let mm = numpy::PyArray2::from_vec2(py, &rows)?;
-            let q = numpy::PyArray1::from_vec(py, lcp.q.clone());
+            let q = numpy::PyArray1::from_vec(py, lcp.q().to_vec());
             f.call1(py, (mm, q))?.extract::<Vec<f64>>(py)
         });
         if start.cancel.is_cancelled() {
@@ -84,7 +90,10 @@ impl Solver for PySolver {
                 return Outcome::failed(Termination::NumericalError, why, Work::default());
             }
         };
-        Outcome::solved(p.unpack(&z), format!("the Python solver returned z ({m} unknowns)"), Work::default())
+        match p.unpack(&z) {
+            Some(s) => Outcome::solved(s, format!("the Python solver returned z ({m} unknowns)"), Work::default()),
+            None => Outcome::failed(Termination::NumericalError, "z of another size".into(), Work::default()),
+        }
     }
 }
 

@@ -41,6 +41,8 @@ fn state_code(s: NodeState) -> i8 {
         NodeState::Slip => 1,
         NodeState::Contact => 2,
         NodeState::Separated => 3,
+        // `NodeState` is `#[non_exhaustive]`: a state added after this binding was written.
+        _ => -1,
     }
 }
 
@@ -127,7 +129,7 @@ impl NodeArrays {
             u_y: col(&|n| n.u_y)?,
             slip_velocity: col(&|n| n.slip_velocity.unwrap_or(nan))?,
             state: read_only(PyArray1::from_vec(py, nodes.iter().map(|n| state_code(n.state)).collect()))?.unbind(),
-            state_names: PyTuple::new(py, nodes.iter().map(|n| NODE_STATES[state_code(n.state) as usize]))?.unbind(),
+            state_names: PyTuple::new(py, nodes.iter().map(|n| n.state.name()))?.unbind(),
         })
     }
 }

@@ -7,7 +7,7 @@ use crate::errors::{keyed, to_py, Failure};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rollbem::scene::document::SceneDocument;
-use rollbem::scene::{Rolling, Scene};
+use rollbem::scene::Scene;
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
@@ -246,11 +246,7 @@ impl PyScene {
     /// The rolling formulation (`"steady"`, `"seed"`, `"transient"`), or `None` for a scene that does not roll.
     #[getter]
     fn rolling(&self) -> Option<&'static str> {
-        self.inner.rolling().map(|r| match r {
-            Rolling::Steady { .. } => "steady",
-            Rolling::Seed { .. } => "seed",
-            Rolling::Transient { .. } => "transient",
-        })
+        self.inner.rolling().map(|r| r.mode().name())
     }
 
     /// The prescribed creepage ξ (dimensionless, ξ > 0 braking), or `None`.

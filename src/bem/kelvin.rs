@@ -20,6 +20,7 @@ use crate::material::Material;
 
 /// Material constants of the Kelvin kernels, dimensionless (Young's modulus scaled to 1 by the caller or not).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct Kelvin {
     /// Poisson's ratio ν, 0 ≤ ν ≤ 0.5.
     pub nu: f64,

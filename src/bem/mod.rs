@@ -1,25 +1,26 @@
 //! The boundary element core: 2D plane-strain elastostatics with the Kelvin solution (seed eq. 13, `H u = G t`).
 //!
-//! Assembly visits every (source node, element) pair once and hands the 2×2 blocks of H and G to a
-//! [`BlockSink`], so a caller can build the full matrices (tests, small problems) or write directly into the
-//! rearranged system of the condensation ([`crate::source::bem_wheel`]) without storing H and G.
+//! Assembly visits every (source node, element) pair once and hands the 2×2 blocks of H and G to a sink (the
+//! crate's `BlockSink`), so that [`assemble_full`] builds the full matrices (tests, small problems) and the
+//! condensation ([`crate::source::bem_wheel`]) writes directly into its rearranged system without storing H and G.
 //!
 //! H's diagonal blocks come from the rigid-body condition: a rigid translation of a bounded body produces no
 //! traction, so each block row of H sums to zero: `H_ii = −Σ_{j≠i} H_ij` (Brebbia & Dominguez §5). This absorbs
 //! the free term c_ij and the principal value of the singular T* integral.
 
-pub mod constant;
+pub(crate) mod constant;
 pub mod kelvin;
 pub mod quadratic;
 pub mod quadrature;
 pub mod stress;
 
+use crate::error::ArgumentError;
 use crate::mesh::{Mesh, Shape};
 use kelvin::Kelvin;
 
 /// Receiver of assembled blocks: `h[l][k]` and `g[l][k]` are added to rows `2·row + l`, columns `2·col + k` of H and
 /// G. The same (row, col) pair may be delivered more than once (contributions add up).
-pub trait BlockSink {
+pub(crate) trait BlockSink {
     /// Add one pair of 2×2 blocks.
     fn add(&mut self, row: usize, col: usize, h: &[[f64; 2]; 2], g: &[[f64; 2]; 2]);
 
@@ -33,10 +34,11 @@ pub trait BlockSink {
 }
 
 /// A pair of 2×2 blocks (h, g).
-pub type Block = ([[f64; 2]; 2], [[f64; 2]; 2]);
+pub(crate) type Block = ([[f64; 2]; 2], [[f64; 2]; 2]);
 
-/// Assemble H and G of `mesh` for the material `k` (in the mesh's units), delivering blocks to `sink`.
-pub fn assemble<S: BlockSink>(mesh: &Mesh, k: &Kelvin, sink: &mut S) {
+/// Assemble H and G of `mesh` for the material `k` (in the mesh's units), delivering blocks to `sink`. The mesh must
+/// hold together ([`Mesh::check`]); the public entry points check it first.
+pub(crate) fn assemble<S: BlockSink>(mesh: &Mesh, k: &Kelvin, sink: &mut S) {
     if mesh.elements.iter().all(|e| matches!(e.shape, Shape::Straight { .. })) {
         assemble_straight(mesh, k, sink);
         return;
@@ -130,7 +132,9 @@ fn acc(sum: &mut [[f64; 2]; 2], h: &[[f64; 2]; 2]) {
     }
 }
 
-/// Full H and G matrices (2N × 2N, row-major `Vec`s are avoided: faer column-major matrices).
+/// Full H and G matrices (2N × 2N, row-major `Vec`s are avoided: faer column-major matrices), as
+/// [`assemble_full`] makes them.
+#[non_exhaustive]
 pub struct FullSystem {
     /// H: displacement influence matrix.
     pub h: faer::Mat<f64>,
@@ -150,9 +154,11 @@ impl BlockSink for FullSystem {
 }
 
 /// Assemble the full H and G (for tests and small problems; the contact pipeline uses [`crate::source::bem_wheel`]).
-pub fn assemble_full(mesh: &Mesh, k: &Kelvin) -> FullSystem {
+/// A mesh that does not hold together ([`Mesh::check`]) is refused.
+pub fn assemble_full(mesh: &Mesh, k: &Kelvin) -> Result<FullSystem, ArgumentError> {
+    mesh.check()?;
     let n = 2 * mesh.n_nodes();
     let mut s = FullSystem { h: faer::Mat::zeros(n, n), g: faer::Mat::zeros(n, n) };
     assemble(mesh, k, &mut s);
-    s
+    Ok(s)
 }

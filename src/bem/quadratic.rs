@@ -4,7 +4,7 @@
 //! displacements/tractions are interpolated by the Lagrange [`shape`] functions through them. Geometry is exact:
 //! an arc of a circle parametrised linearly in angle, so the Jacobian ds/dξ is constant.
 //!
-//! # Quadrature strategy ([`integrate`])
+//! # Quadrature strategy (`integrate`)
 //! * **Off-element source** (`self_node = None`): the integrands are analytic in ξ except where r² = 0 continued
 //!   to complex ξ. For an arc of centre c and radius R and a source at polar position (ρ_s, φ) about c, these
 //!   singularities are exactly θ* = φ ± i ln(ρ_s / R) (+ 2πk), i.e. ξ* = (θ* − θm)/h with h = (θ1 − θ0)/2. The
@@ -17,11 +17,11 @@
 //!   are analytic on each side (N_j vanishes at the source, r = 2R|sin(h(ξ − ξ_s)/2)| is analytic on each side);
 //!   h\[i\] is returned as zero (set by the caller from rigid-body motion). For g,
 //!   ln r = ln|ξ − ξ_s| + ln(r/|ξ − ξ_s|): the first part (times the polynomial N_j) is integrated exactly with the
-//!   logarithmic Gauss rule of [`crate::bem::quadrature::lg`], the smooth remainder with Gauss–Legendre (same
+//!   logarithmic Gauss rule of `crate::bem::quadrature::lg`, the smooth remainder with Gauss–Legendre (same
 //!   adaptive rule, singularities at the periodic images ξ_s ± 2π/h). Field-minus-source vectors are formed with
 //!   the chord formula, so no cancellation occurs near the source.
 //!
-//! No allocation happens in [`integrate`] (quadrature rules are cached statics).
+//! No allocation happens in `integrate` (quadrature rules are cached statics).
 
 use super::kelvin::Kelvin;
 use super::quadrature::{gl, lg};
@@ -47,7 +47,7 @@ pub fn shape(xi: f64) -> [f64; 3] {
 }
 
 /// Three 2×2 blocks, one per element node j: `blocks[j][l][k]` (l = load direction at the source, k = component at
-/// the field point), as returned by [`integrate`].
+/// the field point), as returned by `integrate`.
 pub type NodeBlocks = [[[f64; 2]; 2]; 3];
 
 /// Pieces are integrated without further halving once the Bernstein-ellipse parameter of the nearest integrand
@@ -78,9 +78,14 @@ const MAX_DEPTH: u32 = 40;
 /// * `self_node = None`: the source is off the element (it must not lie on it); near sources are handled by
 ///   adaptive subdivision, accuracy ~1e-13 relative to the largest entry of the block set.
 ///
-/// # Panics
-/// If `self_node = Some(i)` with i ≥ 3.
-pub fn integrate(el: &ArcElement, source: [f64; 2], self_node: Option<usize>, k: &Kelvin) -> (NodeBlocks, NodeBlocks) {
+/// An internal kernel of the assembly, which passes `self_node = Some(i)` only with i < 3 and a source at that node
+/// (another would panic).
+pub(crate) fn integrate(
+    el: &ArcElement,
+    source: [f64; 2],
+    self_node: Option<usize>,
+    k: &Kelvin,
+) -> (NodeBlocks, NodeBlocks) {
     let mut h = [[[0.0; 2]; 2]; 3];
     let mut g = [[[0.0; 2]; 2]; 3];
     match self_node {
@@ -277,7 +282,7 @@ mod tests {
     /// Brute force: composite Gauss rule, `pieces` equal sub-intervals of ξ ∈ [−1, 1] × `npts` points, kernels
     /// evaluated directly from `el.position`/`el.normal` and `Kelvin::{t, u}` at the given source.
     fn brute(el: &ArcElement, src: [f64; 2], k: &Kelvin, pieces: usize, npts: usize) -> (NodeBlocks, NodeBlocks) {
-        let rule = gauss_legendre(npts);
+        let rule = gauss_legendre(npts).unwrap();
         let mut h = [[[0.0; 2]; 2]; 3];
         let mut g = [[[0.0; 2]; 2]; 3];
         let len = 2.0 / pieces as f64;
@@ -340,7 +345,7 @@ mod tests {
         let arc = 2.5 * 0.4;
         assert!((w.iter().sum::<f64>() - arc).abs() < 1e-15);
         let mut direct = [0.0; 3];
-        for (t, wq) in gauss_legendre(3).iter() {
+        for (t, wq) in gauss_legendre(3).unwrap().iter() {
             let n = shape(t);
             for j in 0..3 {
                 direct[j] += wq * n[j] * el.jacobian();
@@ -443,7 +448,7 @@ mod tests {
     fn self_case_vs_substitution_reference() {
         let k = kel();
         let els = [el8(), ArcElement { centre: [0.4, 0.1], radius: 2.0, theta0: 1.0, theta1: 0.2 }];
-        let rule = gauss_legendre(20);
+        let rule = gauss_legendre(20).unwrap();
         let pieces = 200;
         for el in els {
             for i in 0..3 {

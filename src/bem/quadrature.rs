@@ -1,17 +1,19 @@
 //! Quadrature rules: Gauss–Legendre on [−1, 1] and Gauss rules for the weight −ln(t) on [0, 1].
 //!
 //! Gauss–Legendre rules are computed at run time (Newton iteration on the Legendre polynomials) and cached
-//! by [`gl`]. The logarithmic rules are hard-coded tables for n = 1..=[`LOG_GAUSS_MAX`], generated to full
+//! by `gl`. The logarithmic rules are hard-coded tables for n = 1..=`LOG_GAUSS_MAX`, generated to full
 //! double precision by `reference/tools/log_gauss.py` (exact rational recurrence coefficients from the moments
 //! ∫₀¹ −ln(t) tᵏ dt = 1/(k+1)², Golub–Welsch eigen-decomposition at 80 digits with mpmath). To regenerate:
 //! `python3 reference/tools/log_gauss.py 20 > /tmp/t.rs` and paste the two tables over the
 //! `LOG_GAUSS_NODES` / `LOG_GAUSS_WEIGHTS` constants in this file (then `rustfmt --edition 2021` it).
 
+use crate::error::ArgumentError;
 use std::sync::OnceLock;
 
 /// A quadrature rule: abscissae `points` and matching `weights` (same length), on the interval documented by the
 /// function that produced it.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct Rule {
     /// Abscissae, in increasing order.
     pub points: Vec<f64>,
@@ -36,15 +38,19 @@ impl Rule {
     }
 }
 
-/// n-point Gauss–Legendre rule on [−1, 1] (exact for polynomials of degree < 2n), any n ≥ 1.
+/// n-point Gauss–Legendre rule on [−1, 1] (exact for polynomials of degree < 2n), any n ≥ 1 (`n = 0` is refused).
 ///
 /// Nodes by Newton iteration on Pₙ from Tricomi's initial guesses, weights 2 / ((1 − x²) Pₙ′(x)²); accurate to
-/// a few ulp. Allocates: in hot loops use the cached [`gl`].
-///
-/// # Panics
-/// If `n == 0`.
-pub fn gauss_legendre(n: usize) -> Rule {
-    assert!(n >= 1, "gauss_legendre: n must be >= 1");
+/// a few ulp. Allocates (the crate's hot loops use a cache of these rules).
+pub fn gauss_legendre(n: usize) -> Result<Rule, ArgumentError> {
+    if n == 0 {
+        return Err(ArgumentError::new("gauss_legendre", "n", "must be at least 1 (the number of points)"));
+    }
+    Ok(legendre_rule(n))
+}
+
+/// [`gauss_legendre`] for n ≥ 1.
+fn legendre_rule(n: usize) -> Rule {
     let nf = n as f64;
     let mut points = vec![0.0; n];
     let mut weights = vec![0.0; n];
@@ -150,38 +156,32 @@ impl Dd {
 }
 
 /// Largest n of the tabulated logarithmic rules ([`log_gauss`], [`lg`]).
-pub const LOG_GAUSS_MAX: usize = 20;
+pub(crate) const LOG_GAUSS_MAX: usize = 20;
 
 /// n-point Gauss rule for the weight −ln(t) on [0, 1]: ∫₀¹ −ln(t) f(t) dt ≈ Σ wᵢ f(tᵢ), exact for polynomials of
 /// degree < 2n. Tabulated for 1 ≤ n ≤ [`LOG_GAUSS_MAX`]. Allocates: in hot loops use the cached [`lg`].
 ///
-/// # Panics
-/// If `n == 0` or `n > LOG_GAUSS_MAX`.
-pub fn log_gauss(n: usize) -> Rule {
+/// An internal rule: the crate asks only for tabulated orders (`n == 0` or `n > LOG_GAUSS_MAX` would panic).
+pub(crate) fn log_gauss(n: usize) -> Rule {
     assert!((1..=LOG_GAUSS_MAX).contains(&n), "log_gauss: n = {n} outside the tabulated range 1..={LOG_GAUSS_MAX}");
     Rule { points: LOG_GAUSS_NODES[n - 1].to_vec(), weights: LOG_GAUSS_WEIGHTS[n - 1].to_vec() }
 }
 
 /// Largest n cached by [`gl`].
-pub const GL_CACHE_MAX: usize = 64;
+pub(crate) const GL_CACHE_MAX: usize = 64;
 
 static GL_CACHE: [OnceLock<Rule>; GL_CACHE_MAX] = [const { OnceLock::new() }; GL_CACHE_MAX];
 static LG_CACHE: [OnceLock<Rule>; LOG_GAUSS_MAX] = [const { OnceLock::new() }; LOG_GAUSS_MAX];
 
-/// Cached n-point Gauss–Legendre rule on [−1, 1] (see [`gauss_legendre`]); computed once per n, thread-safe.
-///
-/// # Panics
-/// If `n == 0` or `n > GL_CACHE_MAX`.
-pub fn gl(n: usize) -> &'static Rule {
+/// Cached n-point Gauss–Legendre rule on [−1, 1] (see [`gauss_legendre`]); computed once per n, thread-safe. An
+/// internal cache: the crate asks only for orders 1..=[`GL_CACHE_MAX`] (another would panic).
+pub(crate) fn gl(n: usize) -> &'static Rule {
     assert!((1..=GL_CACHE_MAX).contains(&n), "gl: n = {n} outside 1..={GL_CACHE_MAX}");
-    GL_CACHE[n - 1].get_or_init(|| gauss_legendre(n))
+    GL_CACHE[n - 1].get_or_init(|| legendre_rule(n))
 }
 
-/// Cached n-point logarithmic Gauss rule on [0, 1] (see [`log_gauss`]).
-///
-/// # Panics
-/// If `n == 0` or `n > LOG_GAUSS_MAX`.
-pub fn lg(n: usize) -> &'static Rule {
+/// Cached n-point logarithmic Gauss rule on [0, 1] (see [`log_gauss`]); internal as [`gl`].
+pub(crate) fn lg(n: usize) -> &'static Rule {
     assert!((1..=LOG_GAUSS_MAX).contains(&n), "lg: n = {n} outside 1..={LOG_GAUSS_MAX}");
     LG_CACHE[n - 1].get_or_init(|| log_gauss(n))
 }
@@ -663,7 +663,7 @@ mod tests {
     fn gauss_legendre_exact_for_monomials() {
         let mut worst: f64 = 0.0;
         for n in 1..=40 {
-            let r = gauss_legendre(n);
+            let r = gauss_legendre(n).unwrap();
             assert_eq!(r.len(), n);
             for k in 0..2 * n {
                 let exact = if k % 2 == 0 { 2.0 / (k as f64 + 1.0) } else { 0.0 };
@@ -689,7 +689,7 @@ mod tests {
     #[test]
     fn gauss_legendre_large_n() {
         for n in [50, 64, 100] {
-            let s: f64 = gauss_legendre(n).iter().map(|(x, w)| w * x.exp()).sum();
+            let s: f64 = gauss_legendre(n).unwrap().iter().map(|(x, w)| w * x.exp()).sum();
             let exact = std::f64::consts::E - 1.0 / std::f64::consts::E;
             assert!((s - exact).abs() < 1e-14 * exact, "n={n}");
         }
@@ -717,7 +717,8 @@ mod tests {
     /// The cached accessors return the same rules as the constructors.
     #[test]
     fn caches_match() {
-        assert_eq!(*gl(7), gauss_legendre(7));
+        assert_eq!(*gl(7), gauss_legendre(7).unwrap());
+        assert_eq!(gauss_legendre(0).unwrap_err().argument, "n", "refused, not a panic");
         assert_eq!(*lg(9), log_gauss(9));
         assert!(std::ptr::eq(gl(7), gl(7)));
     }

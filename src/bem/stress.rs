@@ -75,12 +75,14 @@
 use super::kelvin::Kelvin;
 use super::quadratic::{shape, ArcElement, XI_NODES};
 use super::quadrature::gl;
+use crate::error::ArgumentError;
 use crate::mesh::{Mesh, Shape};
 use rayon::prelude::*;
 use std::f64::consts::PI;
 
 /// Why no stress is returned at a point.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
 pub enum StressError {
     /// The point is outside the body, including inside a hole (winding number of the boundary ≠ 1).
     #[error("point outside the body (or in a hole)")]
@@ -351,6 +353,7 @@ struct CircleAt {
 /// evaluates any number of points ([`InteriorStress::at`], [`InteriorStress::evaluate`]). Units and signs as in
 /// the module docs.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct InteriorStress {
     c: Consts,
     els: Vec<El>,
@@ -375,14 +378,11 @@ fn tri(n: usize) -> usize {
 
 impl InteriorStress {
     /// Prepare the evaluation for `mesh`, material `k` and the boundary solution `u`, `t` (one value per node of
-    /// the mesh, in node order; units in the module docs).
-    ///
-    /// # Panics
-    /// If `u` or `t` does not have one entry per node, or an element's node count does not match its shape
-    /// (1 for straight, 3 for arc elements).
-    pub fn new(mesh: &Mesh, k: &Kelvin, u: &[[f64; 2]], t: &[[f64; 2]]) -> InteriorStress {
-        assert_eq!(u.len(), mesh.n_nodes(), "interior stress: one displacement per node");
-        assert_eq!(t.len(), mesh.n_nodes(), "interior stress: one traction per node");
+    /// the mesh, in node order; units in the module docs). Refused, naming the argument, when `u` or `t` does not
+    /// have one entry per node or the mesh does not hold together ([`Mesh::check`]: e.g. an element whose node
+    /// count does not match its shape).
+    pub fn new(mesh: &Mesh, k: &Kelvin, u: &[[f64; 2]], t: &[[f64; 2]]) -> Result<InteriorStress, ArgumentError> {
+        check_solution("InteriorStress::new", mesh, u, t)?;
         let nu = k.nu;
         let c = Consts { cd: k.ct, cs: 2.0 * k.shear_modulus * k.ct, nu, b12: k.b12, b14: 1.0 - 4.0 * nu };
         let mut circles: Vec<([f64; 2], f64)> = Vec::new();
@@ -397,7 +397,6 @@ impl InteriorStress {
             }
             let (geom, len) = match e.shape {
                 Shape::Straight { a, b } => {
-                    assert_eq!(e.n_nodes, 1, "a straight element carries one node");
                     let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
                     let len = dx.hypot(dy);
                     let tan = [dx / len, dy / len];
@@ -406,7 +405,6 @@ impl InteriorStress {
                     (Geom::Straight { mid, tan, n: [tan[1], -tan[0]], half: 0.5 * len }, len)
                 }
                 Shape::Arc(arc) => {
-                    assert_eq!(e.n_nodes, 3, "an arc element carries three nodes");
                     let key = (arc.centre, arc.radius);
                     let circle = match circles.iter().position(|c| *c == key) {
                         Some(i) => i,
@@ -447,7 +445,7 @@ impl InteriorStress {
                 }
             }
         }
-        InteriorStress {
+        Ok(InteriorStress {
             c,
             els,
             node_pos: mesh.nodes.iter().map(|n| n.pos).collect(),
@@ -457,7 +455,7 @@ impl InteriorStress {
             far_off,
             wind: snap(wind),
             orders: OrderTable::new(),
-        }
+        })
     }
 
     /// Singularities (re, im) of element `el`'s integrands in its ξ coordinate for the point `p` (entries with
@@ -678,18 +676,31 @@ fn adaptive<F: FnMut(f64, f64)>(a: f64, b: f64, sing: &[[f64; 2]], depth: u32, f
 /// positive. Each point gets its own result: [`StressError::OutsideBody`] (also in a hole),
 /// [`StressError::OnBoundary`] within [`ON_BOUNDARY_TOL`] element lengths of the boundary (use
 /// [`boundary_stress`] there), [`StressError::NotFinite`]. Single-threaded; see [`InteriorStress`] to reuse the
-/// precomputation or evaluate in parallel.
-///
-/// # Panics
-/// As [`InteriorStress::new`].
+/// precomputation or evaluate in parallel. Refused as [`InteriorStress::new`].
 pub fn interior_stress(
     mesh: &Mesh,
     k: &Kelvin,
     u: &[[f64; 2]],
     t: &[[f64; 2]],
     points: &[[f64; 2]],
-) -> Vec<Result<[f64; 3], StressError>> {
-    InteriorStress::new(mesh, k, u, t).evaluate(points)
+) -> Result<Vec<Result<[f64; 3], StressError>>, ArgumentError> {
+    Ok(InteriorStress::new(mesh, k, u, t)?.evaluate(points))
+}
+
+/// A boundary solution `u`, `t` of one value per node of a mesh that holds together ([`Mesh::check`]), else the
+/// error naming what does not fit.
+fn check_solution(function: &'static str, mesh: &Mesh, u: &[[f64; 2]], t: &[[f64; 2]]) -> Result<(), ArgumentError> {
+    mesh.check()?;
+    for (name, v) in [("u", u.len()), ("t", t.len())] {
+        if v != mesh.n_nodes() {
+            return Err(ArgumentError::new(
+                function,
+                name,
+                format!("has {v} entries, the mesh {} nodes", mesh.n_nodes()),
+            ));
+        }
+    }
+    Ok(())
 }
 
 /// Derivatives dN_j/dξ of the quadratic shape functions of [`super::quadratic::shape`].
@@ -714,10 +725,9 @@ fn shape_derivative(xi: f64) -> [f64; 3] {
 /// the derivative at the node of the parabola through the previous, own and next nodes (neighbours found by shared
 /// vertices), so it is only as good as that finite difference. Units and signs as [`interior_stress`].
 ///
-/// Returns `None` if a straight element has no neighbour at one of its ends (open boundary).
-///
-/// # Panics
-/// If `element` is out of range or `u`, `t` do not have one entry per node.
+/// Returns `Ok(None)` if a straight element has no neighbour at one of its ends (open boundary). Refused, naming
+/// the argument, when `element` is out of range, `u` or `t` does not have one entry per node, or the mesh does not
+/// hold together ([`Mesh::check`]).
 pub fn boundary_stress(
     mesh: &Mesh,
     k: &Kelvin,
@@ -725,9 +735,27 @@ pub fn boundary_stress(
     t: &[[f64; 2]],
     element: usize,
     xi: f64,
+) -> Result<Option<[f64; 3]>, ArgumentError> {
+    check_solution("boundary_stress", mesh, u, t)?;
+    let Some(e) = mesh.elements.get(element) else {
+        return Err(ArgumentError::new(
+            "boundary_stress",
+            "element",
+            format!("is {element}, the mesh has {} elements", mesh.elements.len()),
+        ));
+    };
+    Ok(boundary_stress_of(mesh, k, u, t, e, xi))
+}
+
+/// [`boundary_stress`] of element `e` of a checked mesh and solution.
+fn boundary_stress_of(
+    mesh: &Mesh,
+    k: &Kelvin,
+    u: &[[f64; 2]],
+    t: &[[f64; 2]],
+    e: &crate::mesh::Element,
+    xi: f64,
 ) -> Option<[f64; 3]> {
-    assert!(u.len() == mesh.n_nodes() && t.len() == mesh.n_nodes(), "boundary stress: one value per node");
-    let e = &mesh.elements[element];
     let (n, tr, dudx) = match e.shape {
         Shape::Arc(arc) => {
             let nn = shape(xi);

@@ -49,6 +49,7 @@ pub struct ContactLaw {
 /// What a degree of freedom of the contact problem is: a rigid mode of the body's support (or datum), or the
 /// creepage of steady rolling, which takes the place of the shift as the tangential DOF there.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum DofKind {
     /// The tangential shift d_T (a rigid mode).
     Shift,
@@ -80,6 +81,7 @@ impl DofKind {
 
 /// One rigid degree of freedom of the contact problem, in dimensionless units ([`crate::flexibility`]).
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct RigidDof {
     /// Which degree of freedom.
     pub kind: DofKind,
@@ -120,7 +122,7 @@ impl RigidDof {
 /// loading LCPs follow it). A mode the source does not offer gets no DOF. With the steady-rolling slip operator the
 /// tangential DOF is the creepage (slip response 1 at every node, no gap response: [`super::slip`]) and the
 /// rotation is no DOF (the wheel turns continuously; its rate is in the creepage).
-pub fn rigid_dofs(flex: &Flexibility, drive: &Drive, slip: &SlipOperator) -> Vec<RigidDof> {
+pub(crate) fn rigid_dofs(flex: &Flexibility, drive: &Drive, slip: &SlipOperator) -> Vec<RigidDof> {
     let sc = flex.scales;
     let n = flex.n();
     let scaled = |d: Dof, length: f64, load: f64| match d {

@@ -45,27 +45,62 @@
 //! the defaults ([`super::RigidDof::default_sign`]) are those that solved every case tried, and Lemke retries the
 //! other patterns on a ray ([`crate::solvers::lemke`]).
 
-use super::{ContactProblem, Dof};
+use super::ContactProblem;
+use crate::error::ArgumentError;
 use faer::linalg::solvers::Solve;
 use faer::Mat;
 
-/// A linear complementarity problem `w = M z + q`, `w ≥ 0`, `z ≥ 0`, `wᵀz = 0`.
+/// A linear complementarity problem `w = M z + q`, `w ≥ 0`, `z ≥ 0`, `wᵀz = 0`: M square and q of its size, by
+/// construction ([`Lcp::new`]; read-only outside the crate, so every solver can index it).
 #[derive(Debug, Clone)]
 pub struct Lcp {
     /// The square matrix M (m × m).
-    pub m: Mat<f64>,
+    pub(crate) m: Mat<f64>,
     /// The vector q (length m).
-    pub q: Vec<f64>,
+    pub(crate) q: Vec<f64>,
 }
 
 impl Lcp {
+    /// The LCP of M and q; refused, naming the argument, unless M is square and q has its size.
+    pub fn new(m: Mat<f64>, q: Vec<f64>) -> Result<Lcp, ArgumentError> {
+        if m.nrows() != m.ncols() {
+            return Err(ArgumentError::new("Lcp::new", "m", format!("is {}×{}, not square", m.nrows(), m.ncols())));
+        }
+        if q.len() != m.nrows() {
+            return Err(ArgumentError::new("Lcp::new", "q", format!("has {} entries, M {} rows", q.len(), m.nrows())));
+        }
+        Ok(Lcp { m, q })
+    }
+
+    /// The square matrix M (m × m).
+    pub fn m(&self) -> &Mat<f64> {
+        &self.m
+    }
+
+    /// The vector q (length m).
+    pub fn q(&self) -> &[f64] {
+        &self.q
+    }
+
     /// Problem size m.
     pub fn size(&self) -> usize {
         self.q.len()
     }
 
-    /// `w = M z + q` for a given `z`.
-    pub fn w_of(&self, z: &[f64]) -> Vec<f64> {
+    /// `w = M z + q` for a given `z` of the LCP's size (another size is refused).
+    pub fn w_of(&self, z: &[f64]) -> Result<Vec<f64>, ArgumentError> {
+        if z.len() != self.size() {
+            return Err(ArgumentError::new(
+                "Lcp::w_of",
+                "z",
+                format!("has {} entries, the LCP {}", z.len(), self.size()),
+            ));
+        }
+        Ok(self.w_of_sized(z))
+    }
+
+    /// [`Lcp::w_of`] for a `z` the caller knows to have the LCP's size.
+    pub(crate) fn w_of_sized(&self, z: &[f64]) -> Vec<f64> {
         let m = self.size();
         let mut w = self.q.clone();
         for (j, &zj) in z.iter().enumerate() {
@@ -80,7 +115,7 @@ impl Lcp {
 }
 
 /// The normal problem (frictionless, or the sliding limit): K and q₀. See the module docs.
-pub fn normal_problem(p: &ContactProblem) -> super::NormalProblem {
+pub(crate) fn normal_problem(p: &ContactProblem) -> super::NormalProblem {
     let flex = p.flex;
     let n = flex.n();
     let smu = p.limit_factor();
@@ -95,12 +130,13 @@ pub fn normal_problem(p: &ContactProblem) -> super::NormalProblem {
 }
 
 /// The LCP of the normal problem. See the module docs.
-pub fn normal_lcp(p: &ContactProblem, np: &super::NormalProblem) -> Lcp {
+pub(crate) fn normal_lcp(p: &ContactProblem, np: &super::NormalProblem) -> Lcp {
     let n = p.n();
     let smu = p.limit_factor();
     let (k, q0) = (&np.k, &np.q0);
+    // Every DOF of `load_dofs` is load-driven.
     let loads: Vec<(&super::RigidDof, f64, f64)> =
-        p.load_dofs().map(|d| (d, d.default_sign(), d.drive.load().expect("load-driven"))).collect();
+        p.load_dofs().filter_map(|d| d.drive.load().map(|l| (d, d.default_sign(), l))).collect();
     let size = n + 2 * loads.len();
     let mut m = Mat::<f64>::zeros(size, size);
     let mut q = vec![0.0; size];
@@ -129,6 +165,7 @@ pub fn normal_lcp(p: &ContactProblem, np: &super::NormalProblem) -> Lcp {
 
 /// The affine map of the tangential nodal forces of the frictional LCP: `h = h_0 + h_x x`, `x = [f; λ⁺; λ⁻; ρ_L]`.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct TangentialMap {
     /// n × (3n + L).
     pub h_x: Mat<f64>,
@@ -147,6 +184,7 @@ impl TangentialMap {
 
 /// The frictional LCP with the tangential forces eliminated, and their affine map.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct Frictional {
     /// The LCP, size 3n + 2L.
     pub lcp: Lcp,
@@ -155,12 +193,19 @@ pub struct Frictional {
 }
 
 /// Build the frictional LCP with slack signs `signs` (one per load-driven DOF, in [`ContactProblem::load_dofs`]
-/// order). The flexibility must hold the tangential blocks; with `coupling = false` the cross blocks are dropped
-/// (K_NT = K_TN = 0). See the module docs.
-pub fn frictional_lcp(p: &ContactProblem, signs: &[f64]) -> Frictional {
+/// order); with `coupling = false` the cross blocks are dropped (K_NT = K_TN = 0). See the module docs. `None`
+/// unless the problem is frictional ([`super::ProblemKind::Frictional`]: [`ContactProblem::new`] then checked that
+/// the flexibility holds the blocks it needs) and `signs` has one sign per load-driven DOF.
+pub fn frictional_lcp(p: &ContactProblem, signs: &[f64]) -> Option<Frictional> {
+    if p.kind != super::ProblemKind::Frictional || signs.len() != p.load_dofs().count() {
+        return None;
+    }
     let flex = p.flex;
     let n = flex.n();
-    let k_nt = if p.law.coupling { flex.k_nt.clone().expect("K_NT") } else { Mat::zeros(n, n) };
+    let k_nt = match (&flex.k_nt, p.law.coupling) {
+        (Some(k), true) => k.clone(),
+        _ => Mat::zeros(n, n),
+    };
     let nd = p.dofs.len();
     let r_n = Mat::from_fn(n, nd, |i, m| p.dofs[m].gap[i]);
     let given = p.given();
@@ -187,7 +232,7 @@ pub fn frictional_lcp(p: &ContactProblem, signs: &[f64]) -> Frictional {
         rows.push(((0..nx).map(|c| -sg * e_x[(b, c)]).collect(), -sg * e_0[b]));
         rows.push(((0..nx).map(|c| sg * e_x[(b, c)]).collect(), sg * e_0[b]));
     }
-    Frictional { lcp: assemble_split_columns(n, &rows), map }
+    Some(Frictional { lcp: assemble_split_columns(n, &rows), map })
 }
 
 /// A load-driven rigid DOF as the frictional LCP uses it.
@@ -211,9 +256,10 @@ fn load_rows<'r>(p: &'r ContactProblem, signs: &[f64]) -> Vec<LoadRow<'r>> {
         .enumerate()
         .filter(|(_, d)| p.is_unknown(d))
         .zip(signs)
-        .map(|((k, d), &s)| {
-            let Dof::Load(l) = d.drive else { unreachable!("load-driven") };
-            LoadRow { dof: k, row_n: d.row_n.as_slice(), row_t: d.row_t.as_slice(), sign: s, load: l }
+        // An unknown DOF is load-driven.
+        .filter_map(|((k, d), &s)| {
+            let l = d.drive.load()?;
+            Some(LoadRow { dof: k, row_n: d.row_n.as_slice(), row_t: d.row_t.as_slice(), sign: s, load: l })
         })
         .collect()
 }

@@ -22,7 +22,7 @@
 //!
 //! All quantities are dimensionless ([`crate::flexibility`]): lengths / L0, forces / (E·L0), moments / (E·L0²).
 
-pub mod drive;
+mod drive;
 pub mod lcp;
 pub mod slip;
 
@@ -37,6 +37,7 @@ use serde::{Deserialize, Serialize};
 
 /// Which problem a scene poses (see the module docs).
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum ProblemKind {
     /// μ = 0: the normal problem only.
     Frictionless,
@@ -89,6 +90,7 @@ impl ProblemKind {
 /// The formulation's name in results: the seed's two approaches, or the frictionless problem.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum FormulationName {
     /// The normal problem of a frictionless scene.
     Frictionless,
@@ -115,20 +117,24 @@ impl std::fmt::Display for FormulationName {
     }
 }
 
-/// Why a drive cannot be formulated.
-#[derive(Debug, Clone, PartialEq)]
+/// Why a drive cannot be formulated on a flexibility ([`ContactProblem::new`]).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum DriveIssue {
     /// A nonzero tangential load with no friction: no static solution (user's units).
+    #[error("a tangential load {0} without friction: no static solution (gross sliding)")]
     TangentialLoadWithoutFriction(f64),
-    /// The law asks for normal–tangential coupling but the flexibility holds no cross blocks K_NT, K_TN (built
-    /// without them: `source::Blocks::Uncoupled`, e.g. for a pair whose cross flexibilities vanish; use the law the
-    /// pipeline simulates, `pipeline::Model::law`).
-    CouplingWithoutCrossBlocks,
+    /// The flexibility does not fit the problem (its fields are public: one built or edited by hand may not): blocks
+    /// or node vectors of other sizes than its contact nodes, the tangential blocks (and, with coupling, the cross
+    /// blocks) missing for a frictional problem, or a slip operator of another grid. The message says which.
+    #[error("the flexibility does not fit the problem: {0}")]
+    Flexibility(String),
 }
 
 /// The normal problem of a frictionless scene or of the sliding limit: `g = K f + Σ_m r_m ρ_m + q₀ ≥ 0 ⊥ f ≥ 0`
 /// over the load-driven DOFs m.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct NormalProblem {
     /// K: gap change per unit nodal force (K_NN, or K_NN + σμ K_NT at the sliding limit).
     pub k: Mat<f64>,
@@ -136,26 +142,77 @@ pub struct NormalProblem {
     pub q0: Vec<f64>,
 }
 
-/// The contact problem, built once and consumed by every solver.
+/// The contact problem, built once ([`ContactProblem::new`], which checks that its parts fit) and consumed by every
+/// solver. Read-only outside the crate (its accessors): the LCP it builds on first use stays the LCP of its parts.
 #[derive(Debug, Clone)]
 pub struct ContactProblem<'a> {
     /// The flexibility it is built on.
-    pub flex: &'a Flexibility,
+    pub(crate) flex: &'a Flexibility,
     /// Friction and coupling.
-    pub law: ContactLaw,
+    pub(crate) law: ContactLaw,
     /// The drive in the user's units.
-    pub drive: Drive,
+    pub(crate) drive: Drive,
     /// Which problem.
-    pub kind: ProblemKind,
+    pub(crate) kind: ProblemKind,
     /// The rigid DOFs (tangential, normal, rotational; those the source offers).
-    pub dofs: Vec<RigidDof>,
+    pub(crate) dofs: Vec<RigidDof>,
     /// The tangential kinematics.
-    pub slip: SlipOperator,
+    pub(crate) slip: SlipOperator,
     /// The normal problem (frictionless and sliding limit).
-    pub normal: Option<NormalProblem>,
+    pub(crate) normal: Option<NormalProblem>,
     /// The LCP with the default slack signs, built on first use ([`ContactProblem::lcp`]): a solver that works on the
-    /// physical unknowns never pays for it (the frictional LCP costs several n³ and (3n)² memory).
-    lcp_cache: std::sync::OnceLock<LcpBuild>,
+    /// physical unknowns never pays for it (the frictional LCP costs several n³ and (3n)² memory). `None` beyond
+    /// gross sliding.
+    lcp_cache: std::sync::OnceLock<Option<LcpBuild>>,
+}
+
+/// Whether a flexibility, a contact law and a slip operator fit one problem of kind `kind` (see
+/// [`ContactProblem::new`]); `Err` says what does not.
+fn fits(flex: &Flexibility, law: &ContactLaw, kind: &ProblemKind, slip: &SlipOperator) -> Result<(), String> {
+    let n = flex.n();
+    let square = |name: &str, m: &Mat<f64>| {
+        if (m.nrows(), m.ncols()) == (n, n) {
+            Ok(())
+        } else {
+            Err(format!("{name} is {}×{}, not {n}×{n} ({n} contact nodes)", m.nrows(), m.ncols()))
+        }
+    };
+    let vector =
+        |name: &str, len: usize| if len == n { Ok(()) } else { Err(format!("{name} has {len} entries, not {n}")) };
+    square("K_NN", &flex.k_nn)?;
+    for (name, m) in [("K_NT", &flex.k_nt), ("K_TN", &flex.k_tn), ("K_TT", &flex.k_tt)] {
+        if let Some(m) = m {
+            square(name, m)?;
+        }
+    }
+    vector("y", flex.y.len())?;
+    vector("g0", flex.g0.len())?;
+    vector("weights", flex.weights.len())?;
+    for m in &flex.modes {
+        vector("a rigid mode's normal response", m.normal.len())?;
+        if let Some(t) = &m.tangential {
+            vector("a rigid mode's tangential response", t.len())?;
+        }
+    }
+    if *kind == ProblemKind::Frictional {
+        if flex.k_tt.is_none() || flex.modes.iter().any(|m| m.tangential.is_none()) {
+            return Err("friction needs the tangential blocks (build the flexibility with them)".into());
+        }
+        if law.coupling && (flex.k_nt.is_none() || flex.k_tn.is_none()) {
+            return Err("coupling needs the cross blocks K_NT and K_TN (or `coupling = false`)".into());
+        }
+    }
+    if let Some(d) = &slip.d {
+        vector("the slip operator's diagonal", d.diag.len())?;
+        vector("the slip operator's second diagonal", d.off.len())?;
+        if d.off.iter().flatten().any(|&(j, _)| j >= n) {
+            return Err(format!("the slip operator refers to a node beyond the {n} contact nodes"));
+        }
+    }
+    if let Some(c) = &slip.offset {
+        vector("the slip operator's offset", c.len())?;
+    }
+    Ok(())
 }
 
 /// The LCP of a problem, built once.
@@ -168,7 +225,8 @@ struct LcpBuild {
     seconds: f64,
 }
 
-/// A solver's answer in the problem's dimensionless unknowns: the one solution shape of every solver.
+/// A solver's answer in the problem's dimensionless unknowns: the one solution shape of every solver (a solver, a
+/// plug-in's included, builds it; [`Solution::fits`] says whether it has a problem's shape).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Solution {
     /// Normal nodal forces f.
@@ -182,9 +240,19 @@ pub struct Solution {
     pub tangential_known: bool,
 }
 
+impl Solution {
+    /// Whether it has the shape of a solution of `p`: f of n nodes, h of n nodes or none, one value per rigid DOF.
+    pub fn fits(&self, p: &ContactProblem) -> bool {
+        let n = p.n();
+        self.f.len() == n && self.rigid.len() == p.dofs.len() && self.h.as_ref().is_none_or(|h| h.len() == n)
+    }
+}
+
 impl<'a> ContactProblem<'a> {
-    /// Build the problem a drive poses on a flexibility with the given slip operator. The flexibility must hold the
-    /// tangential blocks when μ > 0.
+    /// Build the problem a drive poses on a flexibility with the given slip operator. Refused
+    /// ([`DriveIssue::Flexibility`]) when the parts do not fit: the flexibility's blocks and node vectors must have
+    /// its n contact nodes, a frictional problem needs the tangential blocks and every rigid mode's tangential
+    /// response (and with coupling K_NT and K_TN), and the slip operator must be of the same n nodes.
     pub fn new(
         flex: &'a Flexibility,
         law: ContactLaw,
@@ -192,9 +260,7 @@ impl<'a> ContactProblem<'a> {
         slip: SlipOperator,
     ) -> Result<ContactProblem<'a>, DriveIssue> {
         let kind = ProblemKind::of(law.friction, &drive)?;
-        if law.coupling && flex.k_tt.is_some() && (flex.k_nt.is_none() || flex.k_tn.is_none()) {
-            return Err(DriveIssue::CouplingWithoutCrossBlocks);
-        }
+        fits(flex, &law, &kind, &slip).map_err(DriveIssue::Flexibility)?;
         let dofs = drive::rigid_dofs(flex, &drive, &slip);
         let mut p =
             ContactProblem { flex, law, drive, kind, dofs, slip, normal: None, lcp_cache: std::sync::OnceLock::new() };
@@ -204,17 +270,51 @@ impl<'a> ContactProblem<'a> {
         Ok(p)
     }
 
-    /// The LCP with the default slack signs (built on the first call).
-    ///
-    /// # Panics
-    /// Beyond gross sliding (no static problem, no LCP).
-    pub fn lcp(&self) -> &Lcp {
-        &self.lcp_build().lcp
+    /// The flexibility it is built on.
+    pub fn flex(&self) -> &'a Flexibility {
+        self.flex
+    }
+
+    /// Friction and coupling.
+    pub fn law(&self) -> ContactLaw {
+        self.law
+    }
+
+    /// The drive in the user's units.
+    pub fn drive(&self) -> Drive {
+        self.drive
+    }
+
+    /// Which problem.
+    pub fn kind(&self) -> &ProblemKind {
+        &self.kind
+    }
+
+    /// The rigid DOFs (tangential, normal, rotational; those the source offers), in the order of
+    /// [`Solution::rigid`].
+    pub fn dofs(&self) -> &[RigidDof] {
+        &self.dofs
+    }
+
+    /// The tangential kinematics.
+    pub fn slip(&self) -> &SlipOperator {
+        &self.slip
+    }
+
+    /// The normal problem (frictionless and sliding limit; `None` otherwise).
+    pub fn normal(&self) -> Option<&NormalProblem> {
+        self.normal.as_ref()
+    }
+
+    /// The LCP with the default slack signs (built on the first call); `None` beyond gross sliding (no static
+    /// problem, no LCP).
+    pub fn lcp(&self) -> Option<&Lcp> {
+        self.lcp_build().map(|b| &b.lcp)
     }
 
     /// Seconds the LCP took to build, once built.
     pub fn lcp_build_time(&self) -> Option<f64> {
-        self.lcp_cache.get().map(|b| b.seconds)
+        self.lcp_cache.get().and_then(|b| b.as_ref()).map(|b| b.seconds)
     }
 
     /// The number of LCP unknowns (without building it): n + 2L for the normal problem, 3n + 2L frictional, 0
@@ -228,22 +328,26 @@ impl<'a> ContactProblem<'a> {
         }
     }
 
-    fn lcp_build(&self) -> &LcpBuild {
-        self.lcp_cache.get_or_init(|| {
-            let t0 = std::time::Instant::now();
-            let (lcp, tangential) = match self.kind {
-                ProblemKind::Frictionless | ProblemKind::SlidingLimit { .. } => {
-                    (lcp::normal_lcp(self, self.normal.as_ref().expect("the normal problem")), None)
-                }
-                ProblemKind::Frictional => {
-                    let signs: Vec<f64> = self.load_dofs().map(|d| d.default_sign()).collect();
-                    let fr = lcp::frictional_lcp(self, &signs);
-                    (fr.lcp, Some(fr.map))
-                }
-                ProblemKind::GrossSliding { .. } => panic!("no LCP beyond gross sliding"),
-            };
-            LcpBuild { lcp, tangential, seconds: t0.elapsed().as_secs_f64() }
-        })
+    /// The LCP, built on the first call (`None` beyond gross sliding).
+    fn lcp_build(&self) -> Option<&LcpBuild> {
+        self.lcp_cache
+            .get_or_init(|| {
+                let t0 = std::time::Instant::now();
+                let (lcp, tangential) = match self.kind {
+                    // `normal` is set by `new` for these kinds.
+                    ProblemKind::Frictionless | ProblemKind::SlidingLimit { .. } => {
+                        (lcp::normal_lcp(self, self.normal.as_ref()?), None)
+                    }
+                    ProblemKind::Frictional => {
+                        let signs: Vec<f64> = self.load_dofs().map(|d| d.default_sign()).collect();
+                        let fr = lcp::frictional_lcp(self, &signs)?;
+                        (fr.lcp, Some(fr.map))
+                    }
+                    ProblemKind::GrossSliding { .. } => return None,
+                };
+                Some(LcpBuild { lcp, tangential, seconds: t0.elapsed().as_secs_f64() })
+            })
+            .as_ref()
     }
 
     /// Number of contact nodes.
@@ -296,8 +400,12 @@ impl<'a> ContactProblem<'a> {
     }
 
     /// Unpack an LCP solution z (of the default LCP or of one built with other slack signs: they share unknowns)
-    /// into the one solution shape.
-    pub fn unpack(&self, z: &[f64]) -> Solution {
+    /// into the one solution shape; `None` when z is not of the LCP's size ([`ContactProblem::lcp_size`]; there is
+    /// none beyond gross sliding).
+    pub fn unpack(&self, z: &[f64]) -> Option<Solution> {
+        if matches!(self.kind, ProblemKind::GrossSliding { .. }) || z.len() != self.lcp_size() {
+            return None;
+        }
         let n = self.n();
         let mut rigid = self.given();
         let base = if self.kind == ProblemKind::Frictional { 3 * n } else { n };
@@ -312,12 +420,14 @@ impl<'a> ContactProblem<'a> {
         }
         let f = z[..n].to_vec();
         let h = match &self.kind {
-            ProblemKind::Frictional => self.lcp_build().tangential.as_ref().map(|map| map.h(&z[..3 * n], &load_values)),
+            ProblemKind::Frictional => {
+                self.lcp_build()?.tangential.as_ref().map(|map| map.h(&z[..3 * n], &load_values))
+            }
             ProblemKind::SlidingLimit { .. } => Some(f.iter().map(|v| self.limit_factor() * v).collect()),
             _ => None,
         };
         let tangential_known = !matches!(self.kind, ProblemKind::SlidingLimit { .. });
-        Solution { f, h, rigid, tangential_known }
+        Some(Solution { f, h, rigid, tangential_known })
     }
 
     /// The value of a DOF in a solution (0 when the problem has no DOF of that kind).

@@ -28,7 +28,7 @@
 //!   increase, and Carter's theory confirms it: the stick zone comes out at the leading edge (`tests/rolling.rs`).
 //!   ξ > 0 is braking (the wheel's surface slower than the ground): the slip is positive and the friction on the
 //!   wheel, q = −μp, negative.
-//! - **Load step** (quasi-static history, [`crate::pipeline::path`]): s = Δu_T = u_T − u_T,prev, the slip increment since the
+//! - **Load step** (quasi-static history, `crate::pipeline::path`): s = Δu_T = u_T − u_T,prev, the slip increment since the
 //!   previous step: D = I, c = −u_T,prev (material-tracked: when the contact rolls by d during the step, node i
 //!   holds the material that was at x_i + dir·d, and the rigid creep ξ d adds to c). Coulomb's law on the increment
 //!   is the incremental law of Mindlin–Deresiewicz and Spence: friction remembers the path.
@@ -41,6 +41,7 @@ use faer::Mat;
 
 /// Which kinematics the operator describes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum SlipKind {
     /// s = u_T: static contact (seed §4).
     Static,

@@ -3,7 +3,7 @@
 //! caller has: a creep curve, a family of loads, a load path, every case of a sweep that shares bodies and mesh.
 //!
 //! Its files are its stages: [`stages`] (what every solve shares: the problem, the solvers, a timed solve, the
-//! verdict, the document), [`single`] (one step from rest) and [`path`] (a load path with memory). A solve returns
+//! verdict, the document), `single` (one step from rest) and `path` (a load path with memory). A solve returns
 //! the result document ([`crate::results::Report`]); a problem without a solution is a status in it, never an
 //! error, and no entry point panics on a validated scene.
 //!
@@ -55,8 +55,8 @@
 //! assert_eq!(model.solves(), 3);
 //! ```
 
-pub mod path;
-pub mod single;
+mod path;
+mod single;
 pub mod stages;
 
 use crate::cancel::Cancel;

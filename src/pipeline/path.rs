@@ -253,7 +253,7 @@ fn walk<'a>(
             state.u_t = ev.u_t.clone().unwrap_or_else(|| vec![0.0; problem.n()]);
             state.solution = Some(sol);
             if sub.substep == sub.substeps {
-                add_stresses(&mut run, ctx.stresses);
+                add_stresses(&mut run, ctx.stresses)?;
             }
         }
         steps[k].runs.push(run.clone());

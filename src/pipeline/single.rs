@@ -55,7 +55,7 @@ pub(super) fn solve(
             rolling: rolling_post(scene),
         };
         let (mut run, _) = super::stages::evaluate_outcome(&ctx, outcome);
-        add_stresses(&mut run, stresses.as_ref());
+        add_stresses(&mut run, stresses.as_ref())?;
         runs.push(run);
         bounds.push(check_bound);
     }

@@ -1,6 +1,6 @@
 //! The stages every solve shares, one function each: which flexibility blocks a scene needs, its contact problem,
 //! its solvers, a timed solve, the harness's verdict on an outcome, and the result document. The one-step solve
-//! ([`super::single`]) and the load path ([`super::path`]) are built from these; neither calls the other.
+//! (`super::single`) and the load path (`super::path`) are built from these; neither calls the other.
 
 use crate::checks::{make_checks, ModelReference};
 use crate::diagnostics::{asymmetry, diagnose};
@@ -16,7 +16,7 @@ use crate::theory::Hertz2D;
 use std::time::Instant;
 
 /// The contact law the pipeline simulates: the scene's ([`Scene::law`]), without normal–tangential coupling where the
-/// pair's cross flexibilities vanish identically ([`crate::source::half_plane::cross_blocks_vanish`]: two half-planes
+/// pair's cross flexibilities vanish identically (`crate::source::half_plane::cross_blocks_vanish`: two half-planes
 /// of one material and datum depth, or a strip pair with Dundurs' β = 0). The coupled path would then build two more
 /// n × n blocks and iterate the normal and tangential problems jointly for the same answer; the uncoupled path solves
 /// the normal problem once and the stick–slip problem at fixed pressure. The run's `effect_notes` say so.
@@ -63,13 +63,11 @@ pub fn build_problem<'a>(
     drive: Drive,
     slip: SlipOperator,
 ) -> Result<ContactProblem<'a>> {
-    ContactProblem::new(flex, simulated_law(scene), drive, slip).map_err(|issue| match issue {
+    ContactProblem::new(flex, simulated_law(scene), drive, slip).map_err(|e| match e {
         DriveIssue::TangentialLoadWithoutFriction(_) => drive_error(scene),
-        DriveIssue::CouplingWithoutCrossBlocks => Error::Unsupported {
+        other => Error::Unsupported {
             path: scene.origin().to_path_buf(),
-            message: "contact.coupling: the flexibility was built without the cross blocks the law asks for \
-                          (build it with `pipeline::stages::blocks_for` of the scene)"
-                .into(),
+            message: format!("{other} (a flexibility built for another scene?)"),
         },
     })
 }
@@ -194,12 +192,14 @@ pub fn effects(scene: &Scene) -> (Vec<String>, Vec<EffectNote>) {
     (names, notes)
 }
 
-/// Evaluate a solved run's subsurface stresses when the scene asks for them (`[stresses]`).
-pub fn add_stresses(run: &mut SolverRun, stresses: Option<&crate::stresses::StressEvaluator>) {
+/// Evaluate a solved run's subsurface stresses when the scene asks for them (`[stresses]`). A run of another model
+/// than the evaluator's (other contact nodes) is refused ([`crate::stresses::StressEvaluator::evaluate`]).
+pub fn add_stresses(run: &mut SolverRun, stresses: Option<&crate::stresses::StressEvaluator>) -> Result<()> {
     if let (Some(ev), Status::Solved) = (stresses, run.status) {
-        run.stresses = Some(ev.evaluate(&run.nodes));
-        run.counter_body_stresses = ev.evaluate_counter_body(&run.nodes);
+        run.stresses = Some(ev.evaluate(&run.nodes)?);
+        run.counter_body_stresses = ev.evaluate_counter_body(&run.nodes)?;
     }
+    Ok(())
 }
 
 /// The time to build the problem's LCP if the solver uses it (built once, before the solve: see
@@ -240,7 +240,7 @@ pub fn solve_timed(solver: &dyn Solver, problem: &ContactProblem, start: Start) 
 /// (K_NN p and (K_NN + u cᵀ) p differ by the uniform (cᵀp)u). So when the normal load is prescribed, the asymmetry is
 /// measured on the part that matters, P K_NN P with P = I − ûûᵀ the projector orthogonal to the approach's gap
 /// vector (P u cᵀ P = 0); with the approach prescribed the full K_NN is measured and the warning says what it is
-/// ([`crate::diagnostics::diagnose`]).
+/// (`crate::diagnostics::diagnose`).
 pub fn normal_asymmetry(problem: &ContactProblem, half_plane: bool) -> f64 {
     let k = &problem.flex.k_nn;
     let load_driven = matches!(problem.drive.normal, Dof::Load(_));
@@ -331,19 +331,30 @@ pub struct RunContext<'a, 'p> {
 
 /// Post-process a solver's outcome — evaluate a claimed solution by the solver-independent residuals and refuse
 /// it above the refusal bound (`numerical_error`); judge an accepted one by the range of the model
-/// ([`crate::validity::judge`]: linearised kinematics, candidate zone); decide a failed load-driven solve exactly
-/// ([`crate::validity::decide`]) — returning also the evaluation of an accepted solution (a load path carries its
+/// (`crate::validity::judge`: linearised kinematics, candidate zone); decide a failed load-driven solve exactly
+/// (`crate::validity::decide`) — returning also the evaluation of an accepted solution (a load path carries its
 /// state on). The solver's termination and message are kept as they are; the harness's conclusion is the run's
 /// `status`, with a [`Verdict`] when it is not simply the termination.
 pub fn evaluate_outcome(ctx: &RunContext, outcome: Outcome) -> (SolverRun, Option<Evaluation>) {
     let RunContext { scene, problem, solver, .. } = *ctx;
     let Outcome { solution, status: termination, message, work, figures, state: _ } = outcome;
-    let ev = match (&solution, termination) {
-        (Some(sol), Termination::Solved) => Some(evaluate(problem, sol, ctx.rolling)),
-        _ => None,
-    };
     let mut status = Status::from(termination);
     let mut verdict = None;
+    let ev = match (&solution, termination) {
+        (Some(sol), Termination::Solved) => match evaluate(problem, sol, ctx.rolling) {
+            Ok(ev) => Some(ev),
+            Err(e) => {
+                // A solver (a plug-in's, say) that claims a solution of another shape than the problem's.
+                status = Status::NumericalError;
+                verdict = Some(Verdict {
+                    reason: VerdictReason::ResidualTooLarge,
+                    message: format!("the solver reported success but its solution cannot be evaluated: {e}"),
+                });
+                None
+            }
+        },
+        _ => None,
+    };
     if let Some(ev) = &ev {
         let worst = ev.residuals.max();
         if let Some(what) = ev.first_non_finite() {

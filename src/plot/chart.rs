@@ -41,6 +41,7 @@ impl Series {
 
 /// Axis scale.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Scale {
     /// Linear axis.
     Linear,

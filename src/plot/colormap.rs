@@ -4,6 +4,7 @@ use super::style::Rgb;
 
 /// A perceptually uniform colour map (the 256-entry tables of matplotlib).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum ColorMap {
     /// Viridis (dark blue-violet → green → yellow).
     Viridis,

@@ -56,15 +56,23 @@ impl Field {
         lerp_node(self.depth_range, iz, self.nz)
     }
 
-    /// Value at node `(ix, iz)`.
-    pub fn value(&self, ix: usize, iz: usize) -> f64 {
+    /// Value at node `(ix, iz)`; `None` for a node the grid does not have.
+    pub fn value(&self, ix: usize, iz: usize) -> Option<f64> {
+        if ix >= self.nx || iz >= self.nz {
+            return None;
+        }
+        self.values.get(iz.checked_mul(self.nx)?.checked_add(ix)?).copied()
+    }
+
+    /// Value at node `(ix, iz)` of a checked field ([`Field::check`]), inside it.
+    fn at(&self, ix: usize, iz: usize) -> f64 {
         self.values[iz * self.nx + ix]
     }
 
-    /// Values at the corners of cell `(ix, iz)`, clockwise on the map from its top left: nodes `(ix, iz)`,
-    /// `(ix + 1, iz)`, `(ix + 1, iz + 1)`, `(ix, iz + 1)`.
+    /// Values at the corners of cell `(ix, iz)` of a checked field, clockwise on the map from its top left: nodes
+    /// `(ix, iz)`, `(ix + 1, iz)`, `(ix + 1, iz + 1)`, `(ix, iz + 1)`.
     pub(super) fn cell(&self, ix: usize, iz: usize) -> [f64; 4] {
-        [self.value(ix, iz), self.value(ix + 1, iz), self.value(ix + 1, iz + 1), self.value(ix, iz + 1)]
+        [self.at(ix, iz), self.at(ix + 1, iz), self.at(ix + 1, iz + 1), self.at(ix, iz + 1)]
     }
 
     /// Why the field cannot be drawn, if it cannot.
@@ -124,8 +132,9 @@ impl Field {
                 let n = crossed.iter().filter(|&&b| b).count();
                 if n == 2 {
                     let mut it = (0..4).filter(|&k| crossed[k]);
-                    let (a, b) = (it.next().expect("two"), it.next().expect("two"));
-                    segments.push((e[a], e[b]));
+                    if let (Some(a), Some(b)) = (it.next(), it.next()) {
+                        segments.push((e[a], e[b]));
+                    }
                 } else if n == 4 {
                     let centre_inside = (c[0] + c[1] + c[2] + c[3]) / 4.0 >= level;
                     if centre_inside == inside[0] {
@@ -148,7 +157,7 @@ impl Field {
                 let (iz, ix) = ((id - h_edges) / nx, (id - h_edges) % nx);
                 ((ix, iz), (ix, iz + 1))
             };
-            let (va, vb) = (self.value(a.0, a.1), self.value(b.0, b.1));
+            let (va, vb) = (self.at(a.0, a.1), self.at(b.0, b.1));
             let t = ((level - va) / (vb - va)).clamp(0.0, 1.0);
             let (pa, pb) = ((self.x(a.0), self.depth(a.1)), (self.x(b.0), self.depth(b.1)));
             (pa.0 + t * (pb.0 - pa.0), pa.1 + t * (pb.1 - pa.1))
@@ -184,7 +193,9 @@ fn chain(segments: &[(usize, usize)]) -> Vec<Vec<usize>> {
         let mut line = std::collections::VecDeque::from([segments[start].0, segments[start].1]);
         for forward in [true, false] {
             loop {
-                let end = if forward { *line.back().expect("two") } else { *line.front().expect("two") };
+                let end = if forward { line.back() } else { line.front() };
+                // The line starts with a segment's two ends and only grows.
+                let Some(&end) = end else { break };
                 let next = at[&end].iter().copied().find(|&s| !used[s]);
                 let Some(s) = next else { break };
                 used[s] = true;
@@ -254,7 +265,8 @@ mod tests {
     fn field_layout_is_row_major_with_depth_rows() {
         let f = Field::from_fn(3, 2, (0.0, 2.0), (0.0, 10.0), |x, z| x + 100.0 * z);
         assert_eq!(f.values, vec![0.0, 1.0, 2.0, 1000.0, 1001.0, 1002.0]);
-        assert_eq!((f.x(2), f.depth(1), f.value(1, 1)), (2.0, 10.0, 1001.0));
+        assert_eq!((f.x(2), f.depth(1), f.value(1, 1)), (2.0, 10.0, Some(1001.0)));
+        assert_eq!((f.value(3, 0), f.value(0, 9)), (None, None), "nodes the grid does not have");
         assert_eq!(f.max(), Some((2.0, 10.0, 1002.0)));
         assert!(Field::new(3, 2, vec![0.0; 5], (0.0, 1.0), (0.0, 1.0)).check().is_err());
         assert!(Field::new(1, 2, vec![0.0; 2], (0.0, 1.0), (0.0, 1.0)).check().is_err());

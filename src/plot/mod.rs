@@ -73,6 +73,7 @@ pub use style::{Appearance, Dash, Marker, Rgb, Style, PALETTE};
 
 /// Why a chart could not be rendered or written.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum PlotError {
     /// No series has a single finite point (or a field has no finite value).
     #[error("chart {title:?}: no finite data to plot")]

@@ -28,6 +28,7 @@ pub const PALETTE: [Rgb; 7] = [
 
 /// Marker shape drawn at each data point.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[non_exhaustive]
 pub enum Marker {
     /// Filled circle.
     Circle,
@@ -78,6 +79,7 @@ impl Marker {
 
 /// Dash pattern of a series' line.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[non_exhaustive]
 pub enum Dash {
     /// Unbroken line.
     Solid,
@@ -144,6 +146,7 @@ impl Appearance {
 
 /// How a series is drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Style {
     /// A polyline through the points (solid, or the series' dash pattern).
     Line,

@@ -27,12 +27,14 @@ use std::path::{Path, PathBuf};
 mod accuracy;
 mod paths;
 mod physics;
-pub mod plot_csv;
-pub mod plot_result;
+mod plot_csv;
+mod plot_result;
 mod rolling;
 mod table;
 
 pub use paths::{md_curve, md_pattern, md_shift, path_figures};
+pub use plot_csv::plot_csv;
+pub use plot_result::{plot_result, Plotted};
 pub use table::Units;
 
 /// A sweep's rows read from its CSV, drawn as its analysis draws them (what `rollbem plot SWEEP.csv` does).

@@ -28,6 +28,7 @@ use std::path::{Path, PathBuf};
 
 /// What `plot` wrote, and what it could not draw (and why).
 #[derive(Debug, Clone, Default, PartialEq)]
+#[non_exhaustive]
 pub struct Plotted {
     /// Files written.
     pub files: Vec<PathBuf>,

@@ -25,6 +25,7 @@ pub const OLDEST_READABLE_SCHEMA: u32 = 2;
 /// ([`crate::pipeline::Model`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum Setup {
     /// Built for this solve: its assembly and condensation times were spent here.
     #[default]
@@ -36,6 +37,7 @@ pub enum Setup {
 /// Which contact problem a run solved (how the drive and the friction limit posed it).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum ProblemClass {
     /// μ = 0: the normal problem only.
     Frictionless,
@@ -68,6 +70,7 @@ impl PartialEq<&str> for FormulationName {
 /// Wall-clock time per stage, seconds. Assembly and condensation are shared by all solvers of a scene, and by every
 /// solve on one model ([`Timing::setup`] says whether they were spent for this run).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct Timing {
     /// Flexibility assembly (BEM: H and G).
     pub assembly: f64,
@@ -100,6 +103,7 @@ impl Timing {
 
 /// One solver's run on the scene.
 #[derive(Debug, Clone, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct SolverRun {
     /// Solver name.
     pub solver: SolverId,
@@ -183,6 +187,7 @@ impl SolverRun {
 /// The frictional dissipation of a load step (energy per unit thickness, user's units): Σ −h_i Δs_i with the
 /// step's end forces (backward Euler; converges with the substeps).
 #[derive(Debug, Clone, Copy, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct StepEnergy {
     /// Dissipated in this (sub)step.
     pub dissipated: f64,
@@ -192,6 +197,7 @@ pub struct StepEnergy {
 
 /// One (sub)step of a load path: where it is on the path and every solver's run at its end.
 #[derive(Debug, Clone, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct StepResult {
     /// Step index (from 0, as in `[[steps]]`).
     pub step: usize,
@@ -209,6 +215,7 @@ pub struct StepResult {
 
 /// Mesh facts.
 #[derive(Debug, Clone, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct MeshInfo {
     /// The wheel's model: `bem` (the finite wheel) or `half_plane`.
     pub model: BodyModel,
@@ -228,6 +235,7 @@ pub struct MeshInfo {
 
 /// Numerical health of the flexibility source and of the contact flexibility.
 #[derive(Debug, Clone, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct Diagnostics {
     /// Largest/smallest |U_ii| of the BEM system's LU (a lower bound of its condition number; null without BEM).
     pub bem_pivot_ratio: Option<f64>,
@@ -245,6 +253,7 @@ pub struct Diagnostics {
 
 /// Analytic references that apply to the scene.
 #[derive(Debug, Clone, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct References {
     /// Hertz at the run's load (frictionless scenes in plane strain: none on a strip of half-spaces), from the first
     /// solved run's P when displacement-driven, with the pair's contact modulus E*.
@@ -257,6 +266,7 @@ pub struct References {
 /// What a check compares.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum CheckKind {
     /// A measured figure against a reference within a tolerance (the numbers mean what they say).
     Figure,
@@ -274,6 +284,7 @@ pub enum CheckKind {
 
 /// One check: a measured figure against a reference.
 #[derive(Debug, Clone, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct Check {
     /// What is checked.
     pub name: String,
@@ -305,6 +316,7 @@ pub struct Check {
 
 /// Whether an effect is simulated, and why ([`Report::effect_notes`]).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct EffectNote {
     /// The effect: `friction`, `coupling`, `rolling`, `counter_body`, `history` or `stresses`.
     pub effect: String,
@@ -318,6 +330,7 @@ pub struct EffectNote {
 
 /// The JSON document of one scene run (`DESIGN.md`, "Result files").
 #[derive(Debug, Clone, Serialize, Deserialize)]
+#[non_exhaustive]
 pub struct Report {
     /// The layout version of this document ([`SCHEMA_VERSION`]).
     pub schema: u32,

@@ -35,7 +35,7 @@ pub struct SceneDocument {
     /// Absent when the scene gives a load path (`[[steps]]`).
     #[serde(default)]
     pub drive: DriveTable,
-    /// A load path: quasi-static steps with memory ([`crate::pipeline::path`]), instead of `[drive]`.
+    /// A load path: quasi-static steps with memory (`crate::pipeline::path`), instead of `[drive]`.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub steps: Vec<StepTable>,
     /// Optional rolling: steady-state rolling, or the seed's slip velocity after a static solve.
@@ -83,6 +83,7 @@ pub struct WheelTable {
 /// The counter-body the wheel meets.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+#[non_exhaustive]
 pub enum CounterBodyTable {
     /// A rigid flat (the seed's problem).
     #[default]

@@ -110,6 +110,7 @@ pub struct Wheel {
 
 /// How the wheel is modelled, with what each model needs.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub enum Body {
     /// The finite wheel by the boundary element method: held by its support, meshed all round.
     Bem {
@@ -163,6 +164,7 @@ pub struct ContactZone {
 /// The extent of the potential contact zone: centred on the bottom point, or (half-plane model) a span placed by the
 /// user.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub enum ZoneExtent {
     /// An arc of the wheel of this many degrees, in (0, 180): elements uniform in angle.
     Arc {
@@ -232,6 +234,7 @@ impl ContactZone {
 
 /// The counter-body the wheel meets.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub enum CounterBody {
     /// A rigid flat (the seed's problem).
     Rigid,
@@ -256,6 +259,7 @@ impl CounterBody {
 
 /// How the support is driven.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum Loading {
     /// One step from rest to this drive (`[drive]`). In steady rolling the tangential DOF is the creepage ξ
     /// (`Displacement`) or the tangential load Q (`Load`).
@@ -279,6 +283,7 @@ pub struct PathStep {
 /// Rolling (seed eqs. 6–12), each formulation with its own data. `direction` is +1 for rolling towards +x (the
 /// leading edge at +x), −1 towards −x.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub enum Rolling {
     /// Steady-state rolling: the slip velocity is the unknown of Coulomb's law; the creepage ξ (or the tangential
     /// load Q, and ξ is computed) is the drive's tangential DOF.
@@ -343,6 +348,7 @@ impl SolverSet {
 /// The model of the wheel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum BodyModel {
     /// The finite wheel, by the boundary element method.
     #[default]
@@ -364,6 +370,7 @@ impl BodyModel {
 /// The initial gap profile of the half-plane model.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum Profile {
     /// The wheel's circle: g₀ = R − √(R² − x²).
     Circle,
@@ -374,6 +381,7 @@ pub enum Profile {
 /// The wheel's support, which moves rigidly with the drive.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+#[non_exhaustive]
 pub enum Support {
     /// An annulus whose inner circle (radius `radius` < R) is clamped to a rigid axle: the physical wheel.
     Hub {
@@ -390,6 +398,7 @@ pub enum Support {
 /// Boundary element family.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum ElementKind {
     /// Straight elements, constant displacement and traction, collocation at the midpoint.
     Constant,
@@ -413,14 +422,26 @@ impl ElementKind {
 /// The rolling formulation.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum RollingMode {
     /// Steady-state rolling: the slip velocity is the unknown of Coulomb's law.
     Steady,
     /// The seed's formulation: a static solve, then eq. 12.
     Seed,
     /// Transient rolling through a load path (`[[steps]]` with `roll`): each step's slip is the slip increment of the
-    /// material, which the contact carries along by the rolled distance ([`crate::pipeline::path`]).
+    /// material, which the contact carries along by the rolled distance (`crate::pipeline::path`).
     Transient,
+}
+
+impl RollingMode {
+    /// Its name as written in scene files (`steady`, `seed`, `transient`).
+    pub fn name(self) -> &'static str {
+        match self {
+            RollingMode::Steady => "steady",
+            RollingMode::Seed => "seed",
+            RollingMode::Transient => "transient",
+        }
+    }
 }
 
 /// Expectations a scene declares about its own outcome (`[checks]`): the status, and tolerances that override
@@ -491,6 +512,7 @@ pub const MAX_STRESS_POINTS: usize = 1_000_000;
 /// plane strain, tension positive, in the scene's stress unit.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
+#[non_exhaustive]
 pub enum StressQuantity {
     /// σ_xx, the normal stress along the surface.
     Sxx,

@@ -338,8 +338,9 @@ fn kinematics(d: &Data, f: &[f64], h: &[f64], rho: &[f64], constants: bool) -> (
 /// The gap part of [`kinematics`].
 fn gaps(d: &Data, f: &[f64], h: &[f64], rho: &[f64], constants: bool) -> Vec<f64> {
     let c = if constants { 1.0 } else { 0.0 };
-    let mut g = match d.fast_nn {
-        Some(t) => t.apply(f),
+    // The FFT product takes f of the matrix's size, which it always has here; the dense product is the fallback.
+    let mut g = match d.fast_nn.and_then(|t| t.apply(f).ok()) {
+        Some(g) => g,
         None => matvec(d.knn, f),
     };
     if let Some(k) = d.knt {
@@ -355,8 +356,8 @@ fn gaps(d: &Data, f: &[f64], h: &[f64], rho: &[f64], constants: bool) -> Vec<f64
 fn slips(d: &Data, f: &[f64], h: &[f64], rho: &[f64], constants: bool) -> Vec<f64> {
     let c = if constants { 1.0 } else { 0.0 };
     let Some(ktt) = d.ktt else { return vec![0.0; d.n] };
-    let mut s = match (d.fast_tt, &d.att) {
-        (Some(t), _) => d.slip.apply(&t.apply(h)),
+    let mut s = match (d.fast_tt.and_then(|t| t.apply(h).ok()), &d.att) {
+        (Some(th), _) => d.slip.apply(&th),
         (None, Some(att)) => matvec(att, h),
         (None, None) => d.slip.apply(&matvec(ktt, h)),
     };

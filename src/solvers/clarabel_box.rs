@@ -24,6 +24,7 @@ use faer::Mat;
 
 /// Result of a box QP.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct BoxOutcome {
     /// The minimiser (after polish when accepted).
     pub x: Vec<f64>,

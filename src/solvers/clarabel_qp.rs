@@ -75,6 +75,7 @@ impl Default for QpSettings {
 
 /// Termination status of [`solve_frictionless`].
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum QpStatus {
     /// Converged to the requested tolerance.
     Solved,
@@ -133,6 +134,7 @@ impl fmt::Display for QpStatus {
 
 /// Outcome of [`solve_frictionless`].
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct QpOutcome {
     /// Nodal normal forces (N, ≥ 0, compressive positive), length `n`: the polished solution
     /// if the polish was accepted, otherwise the interior-point solution.

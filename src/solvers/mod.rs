@@ -23,8 +23,8 @@
 //! cached in the flexibility, and concurrent solves on one model share nothing mutable.
 
 pub mod active_set;
-pub mod clarabel;
-pub mod clarabel_box;
+pub(crate) mod clarabel;
+pub(crate) mod clarabel_box;
 pub mod clarabel_qp;
 pub mod lemke;
 pub mod normtang;
@@ -445,13 +445,9 @@ impl Start {
     /// The nearby solution, if it has the problem's shape: f of n nodes, h of n nodes or none, one value per rigid
     /// DOF, every value finite. A solution of another shape is ignored (a cold start), never indexed.
     pub fn solution_for(&self, p: &ContactProblem) -> Option<&Solution> {
-        let n = p.n();
-        self.solution.as_ref().filter(|w| {
-            w.f.len() == n
-                && w.rigid.len() == p.dofs.len()
-                && w.h.as_ref().is_none_or(|h| h.len() == n)
-                && w.f.iter().chain(w.h.iter().flatten()).chain(&w.rigid).all(|v| v.is_finite())
-        })
+        self.solution
+            .as_ref()
+            .filter(|w| w.fits(p) && w.f.iter().chain(w.h.iter().flatten()).chain(&w.rigid).all(|v| v.is_finite()))
     }
 
     /// Take the solver's own state, typed, if it was left by `solver` on a problem of `p`'s layout and is a `T`;
@@ -547,6 +543,7 @@ pub trait LcpSolver {
 
 /// What a solver of bare LCPs returns.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct LcpOutcome {
     /// z; when not solved, the solver's last iterate (not a solution).
     pub z: Vec<f64>,
@@ -558,6 +555,14 @@ pub struct LcpOutcome {
     pub message: String,
     /// Work counters.
     pub work: Work,
+}
+
+impl LcpOutcome {
+    /// What a solver of bare LCPs returns: its z (the last iterate when not solved), w = M z + q, how it ended, a
+    /// message and its work counters.
+    pub fn new(z: Vec<f64>, w: Vec<f64>, termination: Termination, message: String, work: Work) -> LcpOutcome {
+        LcpOutcome { z, w, termination, message, work }
+    }
 }
 
 /// (check bound, refusal bound) on a run's largest solver-independent residual: direct solvers are held to
@@ -672,6 +677,7 @@ impl Figures {
 
 /// What a solver run produced.
 #[derive(Debug)]
+#[non_exhaustive]
 pub struct Outcome {
     /// The solution in the problem's unknowns (`None` when nothing was computed).
     pub solution: Option<Solution>,
@@ -688,22 +694,32 @@ pub struct Outcome {
 }
 
 impl Outcome {
+    /// A solver's outcome: its solution in the problem's unknowns (`None` when nothing was computed), how it ended,
+    /// a message and its work counters; no figures and no state (add them with [`Outcome::with_figures`] and
+    /// [`Outcome::with_state`]).
+    pub fn new(solution: Option<Solution>, status: Termination, message: String, work: Work) -> Outcome {
+        Outcome { solution, status, message, work, figures: Figures::default(), state: None }
+    }
+
     /// A solver's claimed solution (the harness still certifies it by its own residuals), with its message and work,
     /// no figures and no state.
     pub fn solved(solution: Solution, message: String, work: Work) -> Outcome {
-        Outcome {
-            solution: Some(solution),
-            status: Termination::Solved,
-            message,
-            work,
-            figures: Figures::default(),
-            state: None,
-        }
+        Outcome::new(Some(solution), Termination::Solved, message, work)
     }
 
     /// An outcome with no solution (a failure, or a cancelled run), no figures and no state.
     pub fn failed(status: Termination, message: String, work: Work) -> Outcome {
-        Outcome { solution: None, status, message, work, figures: Figures::default(), state: None }
+        Outcome::new(None, status, message, work)
+    }
+
+    /// The same outcome with the solver's own figures of the run.
+    pub fn with_figures(self, figures: Figures) -> Outcome {
+        Outcome { figures, ..self }
+    }
+
+    /// The same outcome with the state the solver leaves for its next run ([`SolverState`]).
+    pub fn with_state(self, state: SolverState) -> Outcome {
+        Outcome { state: Some(state), ..self }
     }
 }
 

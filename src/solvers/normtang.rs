@@ -11,7 +11,7 @@
 //! Two inner solvers: **projected Gauss–Seidel** sweeps `x_i ← clamp(x_i − ω r_i / K_ii, lo_i, hi_i)` (ω the
 //! relaxation; convergent for symmetric positive definite K, which a collocation flexibility is only nearly), and
 //! **clarabel** on the sub-problems as QPs with the symmetric part of K followed by an active-set polish with the
-//! nonsymmetric K ([`super::clarabel_qp`], [`super::clarabel_box`]). With PGS a prescribed load is met by a
+//! nonsymmetric K ([`super::clarabel_qp`], `super::clarabel_box`). With PGS a prescribed load is met by a
 //! safeguarded root-find on the rigid displacement (the resultant is monotone in it: Illinois regula falsi);
 //! clarabel carries the load as an equality constraint whose multiplier is the rigid displacement.
 //!
@@ -49,6 +49,7 @@ fn slot(kind: DofKind) -> usize {
 /// responses, plus the slip operator's offset), so TANG solves Coulomb's law on the problem's own slip. The cross
 /// blocks are zero when `coupling = false`; the tangential blocks are empty for a frictionless problem.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct Split {
     /// Contact nodes.
     pub n: usize,
@@ -241,6 +242,7 @@ impl Validate for NormTangQpSettings {
 
 /// The inner solver.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub enum Inner {
     /// Projected Gauss–Seidel.
     Pgs(PgsSettings),
@@ -250,6 +252,7 @@ pub enum Inner {
 
 /// Result of NORM-TANG.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct Outcome {
     /// Normal nodal forces (dimensionless).
     pub f: Vec<f64>,

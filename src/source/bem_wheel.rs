@@ -20,7 +20,7 @@
 
 use super::{Blocks, SourceTiming};
 use crate::bem::{assemble, kelvin::Kelvin, BlockSink};
-use crate::error::{Error, Result};
+use crate::error::{ArgumentError, Error, Result};
 use crate::flexibility::{Flexibility, ModeKind, RigidMode, Scales};
 use crate::mesh::{Bc, Mesh, MeshSpec};
 use crate::scene::{Support, Wheel};
@@ -30,6 +30,7 @@ use faer::Mat;
 
 /// The scene's wheel in dimensionless form: mesh in units of `length`, Kelvin kernels with E = 1.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct Model {
     /// Boundary mesh, lengths divided by `length`.
     pub mesh: Mesh,
@@ -43,36 +44,41 @@ pub struct Model {
 }
 
 impl Model {
-    /// The dimensionless model of a scene's BEM wheel (`None` for the half-plane model).
-    pub fn of_scene(scene: &crate::scene::Scene) -> Option<Model> {
-        crate::mesh::MeshSpec::of_scene(scene).map(|(support, spec)| Model::new(scene.wheel(), support, &spec))
+    /// The dimensionless model of a scene's BEM wheel (`None` for the half-plane model; `Err` as [`Model::new`], which
+    /// a validated scene never gives).
+    pub fn of_scene(scene: &crate::scene::Scene) -> std::result::Result<Option<Model>, ArgumentError> {
+        crate::mesh::MeshSpec::of_scene(scene)
+            .map(|(support, spec)| Model::new(scene.wheel(), support, &spec))
+            .transpose()
     }
 
-    /// Build the dimensionless model of a wheel with its support and mesh (lengths in the user's unit).
-    pub fn new(wheel: &Wheel, support: Support, spec: &MeshSpec) -> Model {
+    /// Build the dimensionless model of a wheel with its support and mesh (lengths in the user's unit). A wheel
+    /// [`Mesh::wheel`] cannot mesh is refused, naming the argument.
+    pub fn new(wheel: &Wheel, support: Support, spec: &MeshSpec) -> std::result::Result<Model, ArgumentError> {
         let length = 2.0 * wheel.radius;
         let support = match support {
             Support::Hub { radius } => Support::Hub { radius: radius / length },
             s @ Support::TopArc { .. } => s,
         };
         let spec = MeshSpec { zone: spec.zone.scaled(length), ..*spec };
-        Model {
-            mesh: Mesh::wheel(wheel.radius / length, support, &spec),
+        Ok(Model {
+            mesh: Mesh::wheel(wheel.radius / length, support, &spec)?,
             kelvin: Kelvin::new(1.0, wheel.material.poisson_ratio),
             length,
             modulus: wheel.material.youngs_modulus,
-        }
+        })
     }
 }
 
 /// Numerical health of the BEM condensation (what a BEM source adds to the flexibility).
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct BemHealth {
     /// Size of the rearranged BEM system (2 × nodes).
     pub system_size: usize,
     /// Ratio of the largest to the smallest |U_ii| of A's LU factors: a cheap lower bound of A's condition number.
     pub pivot_ratio: f64,
-    /// Estimated 1-norm condition number of the rearranged BEM system A ([`crate::condition`]).
+    /// Estimated 1-norm condition number of the rearranged BEM system A (`crate::condition`).
     pub system_condition: f64,
 }
 
@@ -163,6 +169,7 @@ impl BlockSink for CondSink<'_> {
 }
 
 /// The rearranged BEM system `A x = rhs` before factorisation (see the module docs).
+#[non_exhaustive]
 pub struct System {
     /// A: −G columns for support DOFs, H columns otherwise (2N × 2N).
     pub a: Mat<f64>,
@@ -173,9 +180,11 @@ pub struct System {
     pub blocks: Blocks,
 }
 
-/// Assemble the rearranged system of `model` (the BEM assembly stage).
+/// Assemble the rearranged system of `model` (the BEM assembly stage). A mesh that does not hold together
+/// ([`Mesh::check`]) is refused.
 pub fn assemble_system(model: &Model, blocks: Blocks) -> Result<System> {
     let mesh = &model.mesh;
+    mesh.check()?;
     let nn = mesh.n_nodes();
     let nc = mesh.contact_nodes.len();
     let mut contact_index = vec![None; nn];
@@ -205,12 +214,36 @@ pub fn solve_system(model: &Model, sys: &System) -> Result<(Flexibility, BemHeal
 /// [`solve_system`], also returning the solution of every right-hand side (`A⁻¹ rhs`, 2N × columns of
 /// [`System::rhs`]): the whole boundary's response to unit contact tractions, kept for interior stresses
 /// ([`BoundaryResponse`]).
+///
+/// A system of another model (other sizes than `model`'s mesh gives) is refused, as is a mesh that does not hold
+/// together ([`Mesh::check`]).
 pub fn solve_system_with_response(model: &Model, sys: &System) -> Result<(Flexibility, BemHealth, Mat<f64>)> {
     let mesh = &model.mesh;
+    mesh.check()?;
     let nn = mesh.n_nodes();
     let nc = mesh.contact_nodes.len();
     let store_tx = sys.blocks != Blocks::Normal;
     let ncols = sys.rhs.ncols();
+    let expected = (2 * nn, if store_tx { 2 * nc } else { nc } + 3);
+    if (sys.a.nrows(), sys.a.ncols(), sys.rhs.nrows(), ncols) != (expected.0, expected.0, expected.0, expected.1) {
+        return Err(ArgumentError::new(
+            "solve_system",
+            "sys",
+            format!(
+                "is {}×{} with {}×{} right-hand sides; the model's mesh gives {}×{} and {}×{}: a system of another \
+                 model?",
+                sys.a.nrows(),
+                sys.a.ncols(),
+                sys.rhs.nrows(),
+                ncols,
+                expected.0,
+                expected.0,
+                expected.0,
+                expected.1
+            ),
+        )
+        .into());
+    }
     let lu = sys.a.partial_piv_lu();
     let u = lu.U();
     let (mut umax, mut umin) = (0.0_f64, f64::INFINITY);
@@ -260,7 +293,7 @@ pub fn solve_system_with_response(model: &Model, sys: &System) -> Result<(Flexib
         modes,
         x: mesh.contact_nodes.iter().map(|&i| mesh.nodes[i].pos[0]).collect(),
         y: mesh.contact_nodes.iter().map(|&i| mesh.nodes[i].pos[1]).collect(),
-        g0: mesh.contact_nodes.iter().map(|&i| mesh.initial_gap(i)).collect(),
+        g0: mesh.contact_nodes.iter().map(|&i| mesh.nodes[i].gap).collect(),
         weights,
         scales: Scales { length: model.length, modulus: model.modulus },
         id: Default::default(),
@@ -304,6 +337,7 @@ pub fn condense_with_response(
 /// stress-free, so the stresses do not depend on it (the translations are reproduced exactly by the discrete
 /// system, a rotation only to the discretisation error, which leaving it out avoids).
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct BoundaryResponse {
     /// The model the response belongs to.
     pub model: Model,
@@ -314,19 +348,51 @@ pub struct BoundaryResponse {
     pub tangential: bool,
 }
 
+/// Every node's displacement u and traction t, in node order ([`BoundaryResponse::boundary`]).
+pub type BoundarySolution = (Vec<[f64; 2]>, Vec<[f64; 2]>);
+
 impl BoundaryResponse {
     /// Every node's displacement u and traction t (dimensionless, in node order) for contact tractions `p` (= t_y)
     /// and `q` (= t_x) at the contact nodes (in [`Mesh::contact_nodes`] order, dimensionless: stress / E), with the
     /// support clamped in place.
     ///
-    /// # Panics
-    /// If `p` or `q` does not have one value per contact node, or if `q` is nonzero while the tangential columns
-    /// were not built.
-    pub fn boundary(&self, p: &[f64], q: &[f64]) -> (Vec<[f64; 2]>, Vec<[f64; 2]>) {
+    /// Refused, naming the argument: `p` or `q` without one value per contact node, a nonzero `q` when the
+    /// tangential columns were not built, a matrix of another size than the mesh gives, a mesh that does not hold
+    /// together ([`Mesh::check`]).
+    pub fn boundary(&self, p: &[f64], q: &[f64]) -> std::result::Result<BoundarySolution, ArgumentError> {
+        const F: &str = "BoundaryResponse::boundary";
         let mesh = &self.model.mesh;
+        mesh.check()?;
         let nc = mesh.contact_nodes.len();
-        assert!(p.len() == nc && q.len() == nc, "one traction per contact node");
-        assert!(self.tangential || q.iter().all(|v| *v == 0.0), "shear without the tangential columns");
+        for (name, v) in [("p", p), ("q", q)] {
+            if v.len() != nc {
+                return Err(ArgumentError::new(
+                    F,
+                    name,
+                    format!("has {} values, the mesh {nc} contact nodes", v.len()),
+                ));
+            }
+        }
+        if !self.tangential && q.iter().any(|v| *v != 0.0) {
+            return Err(ArgumentError::new(
+                F,
+                "q",
+                "is nonzero, but the tangential columns were not built".to_string(),
+            ));
+        }
+        let columns = if self.tangential { 2 * nc } else { nc };
+        if self.matrix.nrows() != 2 * mesh.n_nodes() || self.matrix.ncols() < columns {
+            return Err(ArgumentError::new(
+                F,
+                "self.matrix",
+                format!(
+                    "is {}×{}; the mesh needs {}×{columns} at least",
+                    self.matrix.nrows(),
+                    self.matrix.ncols(),
+                    2 * mesh.n_nodes()
+                ),
+            ));
+        }
         let rows = self.matrix.nrows();
         let mut x = vec![0.0; rows];
         for c in 0..nc {
@@ -349,12 +415,13 @@ impl BoundaryResponse {
                 Bc::Support => t[i] = xi,
                 Bc::Free => u[i] = xi,
                 Bc::Contact => {
-                    let c = contact[i].expect("contact node has an index");
+                    // Every contact node is listed in contact_nodes (checked above).
+                    let c = contact[i].unwrap_or_default();
                     u[i] = xi;
                     t[i] = [q[c], p[c]];
                 }
             }
         }
-        (u, t)
+        Ok((u, t))
     }
 }

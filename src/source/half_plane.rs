@@ -31,9 +31,9 @@
 //! Units: dimensionless as every flexibility ([`crate::flexibility`]): lengths / L0 (L0 = 2R), stresses / E.
 
 use super::{Blocks, Built, SourceInfo, SourceTiming};
-use crate::error::Result;
+use crate::error::{ArgumentError, Result};
 use crate::flexibility::{Flexibility, ModeKind, RigidMode, Scales};
-use crate::halfplane::{HalfPlane, InfluenceBlocks};
+use crate::halfplane::{Block, HalfPlane, InfluenceBlocks};
 use crate::scene::{Body, CounterBody, ElementKind, Profile, Scene, ZoneExtent};
 use faer::Mat;
 
@@ -88,8 +88,7 @@ impl Grid {
     }
 }
 
-/// The influence blocks of a half-plane on a grid, handed out one at a time (`which`: 0 cxx, 1 cxz, 2 czx, 3 czz,
-/// row-major): on a uniform grid each is computed alone when asked for (a flexibility that needs two never holds
+/// The influence blocks of a half-plane on a grid, handed out one at a time (row-major): on a uniform grid each is computed alone when asked for (a flexibility that needs two never holds
 /// the other two); on another grid all four are computed on the first request, once.
 struct BlockSource<'g> {
     grid: &'g Grid,
@@ -102,13 +101,16 @@ impl<'g> BlockSource<'g> {
         BlockSource { grid, hp, all: None }
     }
 
-    fn take(&mut self, which: usize) -> Vec<f64> {
+    fn take(&mut self, which: Block) -> std::result::Result<Vec<f64>, ArgumentError> {
         let g = self.grid;
         if let Some((x0, h)) = g.uniform {
             return self.hp.influence_block_uniform(x0, h, g.xc.len(), which);
         }
-        let c = self.all.get_or_insert_with(|| self.hp.influence_blocks(&g.a, &g.b, &g.xc));
-        std::mem::take([&mut c.cxx, &mut c.cxz, &mut c.czx, &mut c.czz][which])
+        let c = match &mut self.all {
+            Some(c) => c,
+            all @ None => all.insert(self.hp.influence_blocks(&g.a, &g.b, &g.xc)?),
+        };
+        Ok(std::mem::take([&mut c.cxx, &mut c.cxz, &mut c.czx, &mut c.czz][which.index()]))
     }
 }
 
@@ -138,15 +140,20 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
         })
         .collect();
     let weights = grid.widths();
-    let hp = wheel_half_plane(scene).expect("a half-plane wheel");
+    let Some(hp) = wheel_half_plane(scene)? else {
+        unreachable!("half_plane::build is called for the half-plane model only")
+    };
     let all = blocks != Blocks::Normal;
     let coupled = blocks == Blocks::All;
     let tangential = |v: f64| all.then(|| vec![v; n]);
     // One block at a time, only those the scene needs (peak memory: the 841-element creep curve holds two n × n
     // blocks, not four, and never a second copy of them).
     let mut source = BlockSource::new(&grid, hp);
-    let mut k = |which: usize| per_force(&source.take(which), &weights);
-    let (k_nn, k_nt, k_tn, k_tt) = (k(3), coupled.then(|| k(2)), coupled.then(|| k(1)), all.then(|| k(0)));
+    let mut k = |which: Block| source.take(which).map(|b| per_force(&b, &weights));
+    let k_nn = k(Block::Zz)?;
+    let k_nt = if coupled { Some(k(Block::Zx)?) } else { None };
+    let k_tn = if coupled { Some(k(Block::Xz)?) } else { None };
+    let k_tt = if all { Some(k(Block::Xx)?) } else { None };
     let mut flex = Flexibility {
         k_nn,
         k_nt,
@@ -164,7 +171,7 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
         id: Default::default(),
         derived: Default::default(),
     };
-    add_counter_body(&mut flex, scene, &grid);
+    add_counter_body(&mut flex, scene, &grid)?;
     let assembly = t0.elapsed().as_secs_f64();
     Ok(Built {
         flex,
@@ -182,18 +189,20 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
     })
 }
 
-/// The wheel as a half-plane, dimensionless (E = 1, lengths / 2R), when the scene models it so.
-fn wheel_half_plane(scene: &Scene) -> Option<HalfPlane> {
-    let Body::HalfPlane { datum_depth, .. } = *scene.body() else { return None };
+/// The wheel as a half-plane, dimensionless (E = 1, lengths / 2R), when the scene models it so (`Err` only for values
+/// a validated scene does not hold).
+fn wheel_half_plane(scene: &Scene) -> std::result::Result<Option<HalfPlane>, ArgumentError> {
+    let Body::HalfPlane { datum_depth, .. } = *scene.body() else { return Ok(None) };
     let l0 = 2.0 * scene.radius();
-    Some(in_strip(HalfPlane::new(1.0, scene.wheel().material.poisson_ratio, datum_depth / l0), scene, l0))
+    in_strip(HalfPlane::new(1.0, scene.wheel().material.poisson_ratio, datum_depth / l0)?, scene, l0).map(Some)
 }
 
 /// The elastic counter-body as a half-plane in the wheel's units (E / E_wheel, lengths / 2R), if there is one.
-fn counter_half_plane(scene: &Scene) -> Option<HalfPlane> {
-    let CounterBody::HalfPlane { material, datum_depth } = *scene.counter_body() else { return None };
+fn counter_half_plane(scene: &Scene) -> std::result::Result<Option<HalfPlane>, ArgumentError> {
+    let CounterBody::HalfPlane { material, datum_depth } = *scene.counter_body() else { return Ok(None) };
     let (l0, e) = (2.0 * scene.radius(), scene.wheel().material.youngs_modulus);
-    Some(in_strip(HalfPlane::new(material.youngs_modulus / e, material.poisson_ratio, datum_depth / l0), scene, l0))
+    let hp = HalfPlane::new(material.youngs_modulus / e, material.poisson_ratio, datum_depth / l0)?;
+    in_strip(hp, scene, l0).map(Some)
 }
 
 /// Whether the scene's normal–tangential cross flexibilities K_NT, K_TN vanish identically, whatever the loads:
@@ -202,43 +211,48 @@ fn counter_half_plane(scene: &Scene) -> Option<HalfPlane> {
 /// strip). A BEM wheel never qualifies: a finite wheel keeps a coupling of order a/R (curvature, bending) even at
 /// ν = 0.5. The half-planes are the ones [`build`] and [`add_counter_body`] use.
 pub fn cross_blocks_vanish(scene: &Scene) -> bool {
-    wheel_half_plane(scene).is_some_and(|w| w.cross_influence_cancels(counter_half_plane(scene).as_ref()))
+    match (wheel_half_plane(scene), counter_half_plane(scene)) {
+        (Ok(Some(w)), Ok(counter)) => w.cross_influence_cancels(counter.as_ref()),
+        _ => false,
+    }
 }
 
 /// A half-plane as the scene poses it: in plane strain, or on the strip of `[mesh] strip_width` (lengths / `l0`).
-fn in_strip(hp: HalfPlane, scene: &Scene, l0: f64) -> HalfPlane {
+fn in_strip(hp: HalfPlane, scene: &Scene, l0: f64) -> std::result::Result<HalfPlane, ArgumentError> {
     match *scene.body() {
         Body::HalfPlane { strip_width: Some(w), .. } => hp.strip(w / l0),
-        _ => hp,
+        _ => Ok(hp),
     }
 }
 
 /// Add the elastic counter-body's flexibility (if the scene has one) on the grid of strips carrying the contact
 /// nodes' forces (see the module docs). A rigid counter-body adds nothing.
-pub fn add_counter_body(flex: &mut Flexibility, scene: &Scene, grid: &Grid) {
-    let Some(hp) = counter_half_plane(scene) else { return };
+pub fn add_counter_body(flex: &mut Flexibility, scene: &Scene, grid: &Grid) -> Result<()> {
+    let Some(hp) = counter_half_plane(scene)? else { return Ok(()) };
     let w = grid.widths();
     // Only the blocks the flexibility holds, one at a time, with the counter-body's signs
     // ([`crate::halfplane::InfluenceBlocks::into_counter_body`]).
     let mut source = BlockSource::new(grid, hp);
-    let mut add = |k: &mut Mat<f64>, which: usize| {
-        let block = source.take(which);
-        let sign = crate::halfplane::COUNTER_BODY_SIGN[which];
+    let mut add = |k: &mut Mat<f64>, which: Block| -> Result<()> {
+        let block = source.take(which)?;
+        let sign = crate::halfplane::COUNTER_BODY_SIGN[which.index()];
         let n = w.len();
         for j in 0..n {
             for i in 0..n {
                 k[(i, j)] += (sign * block[i * n + j]) / w[j];
             }
         }
+        Ok(())
     };
-    add(&mut flex.k_nn, 3);
+    add(&mut flex.k_nn, Block::Zz)?;
     if let Some(k) = flex.k_nt.as_mut() {
-        add(k, 2);
+        add(k, Block::Zx)?;
     }
     if let Some(k) = flex.k_tn.as_mut() {
-        add(k, 1);
+        add(k, Block::Xz)?;
     }
     if let Some(k) = flex.k_tt.as_mut() {
-        add(k, 0);
+        add(k, Block::Xx)?;
     }
+    Ok(())
 }

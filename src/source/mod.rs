@@ -1,13 +1,13 @@
 //! Flexibility sources: what turns a scene's bodies into the contact flexibility ([`crate::flexibility`]).
 //!
 //! Two sources: the boundary-element model of the finite wheel ([`bem_wheel`], `[wheel] model = "bem"`) and the
-//! elastic half-plane with the wheel's gap ([`half_plane`], `model = "half_plane"`); either may meet an elastic
-//! counter-body ([`half_plane::add_counter_body`]). A source builds only the blocks a scene needs ([`Blocks`]): a
+//! elastic half-plane with the wheel's gap (`half_plane`, `model = "half_plane"`); either may meet an elastic
+//! counter-body (`half_plane::add_counter_body`). A source builds only the blocks a scene needs ([`Blocks`]): a
 //! frictionless scene gets the normal columns only. It reports what it is made of ([`SourceInfo`]) for the result
 //! document and the health line.
 
 pub mod bem_wheel;
-pub mod half_plane;
+pub(crate) mod half_plane;
 
 use crate::error::Result;
 use crate::flexibility::Flexibility;
@@ -16,6 +16,7 @@ use crate::scene::{ElementKind, Scene};
 /// Which blocks of the flexibility to compute.
 /// Ordered: a model with more blocks serves every scene that needs fewer.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+#[non_exhaustive]
 pub enum Blocks {
     /// Only K_NN and the normal rigid responses: the frictionless problem.
     Normal,
@@ -29,6 +30,7 @@ pub enum Blocks {
 
 /// What a source is made of, and its numerical health (the BEM figures are `None` for closed-form sources).
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct SourceInfo {
     /// Number of boundary elements.
     pub elements: usize,
@@ -48,6 +50,7 @@ pub struct SourceInfo {
 
 /// Wall-clock time of a source's two stages, seconds.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
+#[non_exhaustive]
 pub struct SourceTiming {
     /// Assembly (BEM: H and G into the rearranged system).
     pub assembly: f64,
@@ -57,6 +60,7 @@ pub struct SourceTiming {
 
 /// A built flexibility with its description and timings.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct Built {
     /// The flexibility.
     pub flex: Flexibility,
@@ -76,9 +80,9 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
         let _stage = crate::progress::stage(|| format!("building the half-plane influence matrices ({n} elements)"));
         return half_plane::build(scene, blocks);
     };
-    let model = bem_wheel::Model::new(scene.wheel(), support, &spec);
+    let model = bem_wheel::Model::new(scene.wheel(), support, &spec)?;
     let (mut flex, health, t, response) = bem_wheel::condense_with_response(&model, blocks)?;
-    half_plane::add_counter_body(&mut flex, scene, &half_plane::Grid::of(scene));
+    half_plane::add_counter_body(&mut flex, scene, &half_plane::Grid::of(scene))?;
     let mesh = &model.mesh;
     let (elements, nodes, element) = (mesh.elements.len(), mesh.n_nodes(), mesh.kind);
     let boundary = scene.stresses().is_some().then(|| bem_wheel::BoundaryResponse {

@@ -134,8 +134,6 @@ pub struct Scanned {
     pub cut: bool,
     /// Where the header ends (the first block's start, or the file's complete lines' end when it has no row).
     pub rows_start: u64,
-    /// A journal's identity line (without its line break), when it has one.
-    pub identity: Option<String>,
 }
 
 /// A journal's identity line (its second line, without the line break), or `None` when it has none (a journal of
@@ -244,7 +242,7 @@ pub fn scan(
     if !rows.is_empty() {
         each(block, &rows)?;
     }
-    Ok(Scanned { header, cut: complete < len, rows_start, identity })
+    Ok(Scanned { header, cut: complete < len, rows_start })
 }
 
 /// Where an output goes, by the rules of [`crate::io`].

@@ -30,12 +30,13 @@
 //! A sweep can be cut into shards (`k/n`: the cases with `index % n == k − 1`) that run on different machines;
 //! [`merge`] joins the shards' CSVs into the CSV the unsharded sweep writes (up to the [`PROVENANCE_COLUMNS`]).
 
-pub mod identity;
-pub mod journal;
-pub mod plan;
+mod identity;
+mod journal;
+mod plan;
 pub mod row;
 mod run;
 
+pub use journal::MARKER;
 pub use plan::{Counts, Estimate, Plan, SweepOptions};
 pub use row::{RowStatus, SweepRow, PROVENANCE_COLUMNS};
 pub use run::{
@@ -84,6 +85,7 @@ pub struct SweepSpec {
 /// What a sweep is, as its spec says (`analysis = "..."`): what `rollbem report` makes of its rows. The report never
 /// infers it from the rows.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[non_exhaustive]
 pub enum Analysis {
     /// `accuracy`: errors against theory and against each mesh's limit, against cost (a mesh refinement:
     /// `mesh.contact_elements` must be swept).
@@ -137,6 +139,7 @@ fn zipped_keys(key: &str) -> Vec<&str> {
 
 /// One variant of the base scene.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct Case {
     /// Position in the sweep's enumeration, from 0 (the `case` column of the CSV).
     pub index: usize,
@@ -563,6 +566,7 @@ struct GridCases {
 /// The variants of a sweep spec, built one at a time from their case numbers: what a sweep of any size holds in
 /// memory is the base scenes and the grids' values, never the list of its cases ([`SweepSpec::expand`]).
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct Expansion {
     grids: Vec<GridCases>,
     spec_path: PathBuf,
@@ -597,22 +601,22 @@ impl Expansion {
         self.len() == 0
     }
 
-    /// The grid of case `index` and the case's position in it. Panics beyond [`Expansion::len`].
-    fn locate(&self, index: usize) -> (&GridCases, usize) {
-        let g = self.grids.iter().find(|g| index < g.start + g.len).expect("a case number below len()");
-        (g, index - g.start)
+    /// The grid of case `index` and the case's position in it; `None` beyond [`Expansion::len`].
+    fn locate(&self, index: usize) -> Option<(&GridCases, usize)> {
+        let g = self.grids.iter().find(|g| index < g.start + g.len)?;
+        Some((g, index - g.start))
     }
 
     /// The swept keys of case `index` with their values (strings bare, other values in TOML syntax), in sorted key
-    /// order: what its CSV rows carry. Cheap: no scene is built.
-    pub fn params(&self, index: usize) -> Vec<(String, String)> {
-        self.values(index).into_iter().map(|(k, v)| (k, show(&v))).collect()
+    /// order: what its CSV rows carry. Cheap: no scene is built. `None` beyond [`Expansion::len`].
+    pub fn params(&self, index: usize) -> Option<Vec<(String, String)>> {
+        Some(self.values(index)?.into_iter().map(|(k, v)| (k, show(&v))).collect())
     }
 
     /// The swept keys of case `index` with their values: mixed-radix digits of its position in its grid, the last
-    /// key varying fastest.
-    fn values(&self, index: usize) -> Vec<(String, Value)> {
-        let (g, m) = self.locate(index);
+    /// key varying fastest. `None` beyond [`Expansion::len`].
+    fn values(&self, index: usize) -> Option<Vec<(String, Value)>> {
+        let (g, m) = self.locate(index)?;
         let mut picks = vec![0; g.entries.len()];
         let mut rest = m;
         for (j, (_, a)) in g.entries.iter().enumerate().rev() {
@@ -629,11 +633,11 @@ impl Expansion {
             };
             out.extend(keys.iter().map(|k| k.to_string()).zip(values));
         }
-        out
+        Some(out)
     }
 
     /// The identity of the sweep's cases as the spec and its base scenes are now (`resolved` left empty: it needs
-    /// every case validated, [`identity`]).
+    /// every case validated, `identity`).
     pub fn identity(&self, spec: &SweepSpec, shard: Option<Shard>) -> identity::Identity {
         let grids: Vec<identity::GridParts<'_>> =
             self.grids.iter().map(|g| (g.base_name.display().to_string(), &g.base, g.entries.as_slice())).collect();
@@ -643,10 +647,9 @@ impl Expansion {
     /// Whether `rows` (read from a sweep CSV) can be case `index`'s: the case is one of the spec's and every row
     /// carries its parameters (empty values are not written). `Err` says why not.
     pub fn check_rows(&self, index: usize, rows: &[SweepRow]) -> std::result::Result<(), String> {
-        if index >= self.len() {
+        let Some(mut want) = self.params(index) else {
             return Err(format!("the spec has {} cases", self.len()));
-        }
-        let mut want = self.params(index);
+        };
         want.retain(|(_, v)| !v.is_empty());
         match rows.iter().find(|r| r.params != want) {
             None => Ok(()),
@@ -662,7 +665,7 @@ impl Expansion {
     }
 
     /// Case `index`: its parameters and its scene, parsed and validated. An error names the spec file, the case's
-    /// parameters and the offending field. Panics beyond [`Expansion::len`].
+    /// parameters and the offending field; an index beyond [`Expansion::len`] is an error naming `case`.
     pub fn case(&self, index: usize) -> Result<Case> {
         // A variant's error names the spec by `label` in the case's words; the spec's error names its file.
         let readdress = |e: Error| match e {
@@ -674,8 +677,9 @@ impl Expansion {
     }
 
     fn build(&self, index: usize) -> Result<Case> {
-        let (g, _) = self.locate(index);
-        let values = self.values(index);
+        let (Some((g, _)), Some(values)) = (self.locate(index), self.values(index)) else {
+            return Err(invalid(&self.label, "case", format!("case {index}: the sweep has {} cases", self.len())));
+        };
         let mut doc = g.base.clone();
         let mut params = Vec::with_capacity(values.len());
         let mut set_err = None;

@@ -85,6 +85,7 @@ pub(crate) enum Start {
 
 /// The counts of a plan.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Counts {
     /// Cases of the whole sweep.
     pub cases: usize,
@@ -102,6 +103,7 @@ pub struct Counts {
 
 /// An estimate of a run's time and memory (see the module docs for the cost model).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
+#[non_exhaustive]
 pub struct Estimate {
     /// Seconds of work, summed over the model builds, solves and timing repeats.
     pub work_s: f64,
@@ -127,6 +129,7 @@ impl Estimate {
 
 /// A sweep ready to run: checked, validated, grouped, estimated.
 #[derive(Debug)]
+#[non_exhaustive]
 pub struct Plan {
     pub(crate) spec: SweepSpec,
     pub(crate) expansion: Expansion,
@@ -452,7 +455,7 @@ impl Resume<'_> {
             let now = scene_digest(&self.expansion.case(case)?.scene);
             if rows.first().and_then(|r| r.scene_digest) != Some(now) {
                 n += 1;
-                first.get_or_insert_with(|| super::describe(case, &self.expansion.params(case)));
+                first.get_or_insert_with(|| super::describe(case, &self.expansion.params(case).unwrap_or_default()));
             }
             Ok(())
         })?;

@@ -28,6 +28,7 @@ use std::path::Path;
 
 /// The status cell of a row: a run's status, or `error` for a case that could not run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum RowStatus {
     /// The run's status.
     Run(Status),
@@ -53,6 +54,7 @@ impl RowStatus {
 /// One row of a sweep CSV (see the module docs). Lengths, loads and stresses are in the scene's units; times in
 /// seconds.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct SweepRow {
     /// The case's position in the sweep's enumeration, from 0.
     pub case: usize,
@@ -60,7 +62,7 @@ pub struct SweepRow {
     pub params: Vec<(String, String)>,
     /// The scene's name.
     pub scene: String,
-    /// The digest of the case's resolved scene ([`super::identity::scene_digest`]): equal in two rows only
+    /// The digest of the case's resolved scene (`super::identity::scene_digest`): equal in two rows only
     /// if they were computed for the same scene. `None` in a CSV of a rollbem that did not write it.
     pub scene_digest: Option<u64>,
     /// Element family.
@@ -297,6 +299,7 @@ impl SweepRow {
 /// Where the columns of a sweep CSV are: the swept keys, the known columns (in the order of the module docs) and the work
 /// counters.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub struct Header {
     /// The swept keys, in CSV order.
     pub keys: Vec<String>,

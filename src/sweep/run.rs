@@ -164,6 +164,7 @@ impl Shared {
 
 /// The counts of a finished sweep.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Outcome {
     /// Rows of the CSV.
     pub rows: usize,
@@ -411,8 +412,9 @@ pub fn merge(inputs: &[PathBuf], out_csv: &Path) -> Result<usize> {
 /// mixed with one run after): nothing lost, nothing twice, nothing stale. Checking the digests validates every case
 /// of the spec once, as a sweep does before it runs. Nothing is written when a check fails.
 pub fn merge_checked(inputs: &[PathBuf], out_csv: &Path, spec: Option<&Path>) -> Result<usize> {
+    let no_input = || invalid(out_csv, "inputs", "no shard CSV to merge");
     let Some(first) = inputs.first() else {
-        return Err(invalid(out_csv, "inputs", "no shard CSV to merge"));
+        return Err(no_input());
     };
     let expansion = match spec {
         Some(p) => Some(SweepSpec::from_file(p)?.expand(p, p)?),
@@ -460,7 +462,8 @@ pub fn merge_checked(inputs: &[PathBuf], out_csv: &Path, spec: Option<&Path>) ->
     if let (Some(e), Some(spec)) = (&expansion, spec) {
         check_spec(e, spec, inputs, &blocks, marks)?;
     }
-    let header = head.expect("at least one input");
+    // Every input's header was read, and there is at least one input.
+    let Some(header) = head else { return Err(no_input()) };
     Ok(journal::write_sorted(inputs, blocks, &header, out_csv)?.rows)
 }
 

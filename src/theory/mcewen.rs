@@ -119,6 +119,7 @@ pub fn hertz_axis_max_tau1() -> (f64, f64) {
 
 /// Location and value of a field maximum, in units of `a` and `p0`.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct FieldMax {
     /// x/a of the maximum.
     pub x: f64,

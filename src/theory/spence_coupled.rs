@@ -36,6 +36,7 @@ use std::f64::consts::PI;
 
 /// The coupled Spence solution at the final load: stick half-width and the element size that bounds its resolution.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct CoupledSpence {
     /// Central stick half-width over the contact half-width, both of the coupled solution at the final load.
     pub c_over_a: f64,

@@ -11,10 +11,10 @@ use rollbem::solvers::Lcp;
 /// The largest absolute entry of M and q, and at least 1: the scale of the enumeration's tolerances.
 pub fn scale(p: &Lcp) -> f64 {
     let n = p.size();
-    let mut s = p.q.iter().fold(1.0_f64, |a, v| a.max(v.abs()));
+    let mut s = p.q().iter().fold(1.0_f64, |a, v| a.max(v.abs()));
     for j in 0..n {
         for i in 0..n {
-            s = s.max(p.m[(i, j)].abs());
+            s = s.max(p.m()[(i, j)].abs());
         }
     }
     s
@@ -50,11 +50,11 @@ pub fn enumerate(p: &Lcp) -> Vec<Vec<f64>> {
         let mut a = vec![vec![0.0; k + 1]; n];
         for (c, &(kind, j)) in cols.iter().enumerate() {
             for (i, row) in a.iter_mut().enumerate() {
-                row[c] = if kind == 1 { f64::from(u8::from(i == j)) } else { -p.m[(i, j)] };
+                row[c] = if kind == 1 { f64::from(u8::from(i == j)) } else { -p.m()[(i, j)] };
             }
         }
         for (i, row) in a.iter_mut().enumerate() {
-            row[k] = p.q[i];
+            row[k] = p.q()[i];
         }
         // Gaussian elimination with partial pivoting; a column without a pivot means dependent columns.
         let mut rows: Vec<usize> = (0..n).collect();
@@ -106,7 +106,7 @@ pub fn enumerate(p: &Lcp) -> Vec<Vec<f64>> {
             }
         }
         // Independent check of the conditions on the original data.
-        let w = p.w_of(&z);
+        let w = p.w_of(&z).unwrap();
         if w.iter().any(|&v| v < -1e-8 * s) || z.iter().zip(&w).any(|(a, b)| (a * b).abs() > 1e-8 * s * s) {
             continue;
         }

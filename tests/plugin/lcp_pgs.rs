@@ -77,9 +77,15 @@ impl Solver for LcpPgs {
     }
 
     fn solve_from(&self, p: &ContactProblem, start: Start) -> Outcome {
-        let lcp = p.lcp();
-        let m = lcp.size();
-        if (0..m).any(|i| lcp.m[(i, i)].is_nan() || lcp.m[(i, i)] <= 0.0) {
+        let Some(lcp) = p.lcp() else {
+            return Outcome::failed(
+                Termination::Infeasible,
+                "no static problem (gross sliding)".into(),
+                Work::default(),
+            );
+        };
+        let (mat, q, m) = (lcp.m(), lcp.q(), lcp.size());
+        if (0..m).any(|i| mat[(i, i)].is_nan() || mat[(i, i)] <= 0.0) {
             let why = "the LCP's diagonal is not positive (a load-driven DOF's equilibrium row)".to_string();
             return Outcome::failed(Termination::NumericalError, why, Work::default());
         }
@@ -94,15 +100,18 @@ impl Solver for LcpPgs {
             }
             let (mut change, mut scale) = (0.0_f64, 0.0_f64);
             for i in 0..m {
-                let w: f64 = lcp.q[i] + (0..m).map(|j| lcp.m[(i, j)] * z[j]).sum::<f64>();
-                let new = (z[i] - w / lcp.m[(i, i)]).max(0.0);
+                let w: f64 = q[i] + (0..m).map(|j| mat[(i, j)] * z[j]).sum::<f64>();
+                let new: f64 = (z[i] - w / mat[(i, i)]).max(0.0);
                 change = change.max((new - z[i]).abs());
                 z[i] = new;
                 scale = scale.max(new);
             }
             if change <= self.settings.tolerance * scale {
                 let work = Work::one("sweeps", sweep as u64);
-                return Outcome::solved(p.unpack(&z), format!("converged in {sweep} sweeps"), work);
+                return match p.unpack(&z) {
+                    Some(solution) => Outcome::solved(solution, format!("converged in {sweep} sweeps"), work),
+                    None => Outcome::failed(Termination::NumericalError, "z of another size".into(), work),
+                };
             }
         }
         let n = self.settings.max_sweeps as u64;

@@ -12,7 +12,7 @@
 //! pivots and made two read-write passes over it per pivot; at m = 2644 that took 51 s against 31 s for Siconos'
 //! lexicographic Lemke on the same pivots (`benches/peer/README.md`). Measured effect: the table in [`super`].
 //!
-//! Slower than the block-revised engine ([`super::block`]), kept as an independent implementation that the tests
+//! Slower than the block-revised engine (`super::block`), kept as an independent implementation that the tests
 //! compare against, and selectable by name (`lemke_dense`) with the same retry and ray interpretation as `lemke`
 //! ([`super::Lemke`]). Its final solution is a fresh LU solve of the whole basis with one refinement step, computed
 //! exactly as before the rework.

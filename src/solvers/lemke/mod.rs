@@ -10,7 +10,7 @@
 //! - **Revised form, product form.** Both engines keep the inverse of a *base* basis B₀ and an eta file (one pivot
 //!   column per pivot since then), `B⁻¹ = E_t ⋯ E_1 B₀⁻¹`: a pivot column costs one application of B₀⁻¹ and t eta
 //!   steps, and nothing of size m² or k² is written per pivot. The block engine factorises B₀ through its z-part
-//!   (LU of the k × k block C) and refactorises every `max(refactor_every, k/4)` pivots ([`block`]); the dense
+//!   (LU of the k × k block C) and refactorises every `max(refactor_every, k/4)` pivots (`block`); the dense
 //!   engine keeps B₀⁻¹ explicitly and absorbs the eta file into it every `refactor_every` pivots with one rank-t
 //!   product, recomputing it from scratch only when a drift check fails ([`dense`]). The final basic solution is
 //!   obtained by a fresh LU solve with one step of iterative refinement, so the complementarity of the answer is
@@ -23,7 +23,7 @@
 //!   product with B₀⁻¹ is read off it wherever B₀⁻¹ maps the starting basis' column to a unit vector.
 //! - **Outcome.** `Solved` (z₀ left the basis), `RayTermination` (no blocking row: for a copositive-plus M this
 //!   proves the LCP infeasible), `NotConverged` (pivot limit).
-//! - **Engines.** [`solve`] is the block-revised engine ([`block`]); the dense reference engine is
+//! - **Engines.** [`solve`] is the block-revised engine (`block`); the dense reference engine is
 //!   [`dense`]. Both pivot on the same scaled problem (`prepare`) and follow the same path, and each computes its
 //!   final solution exactly as its previous version did, so their answers are those of the previous versions to
 //!   the bit (the recorded key figures of `tests/regression.rs` include round-off-level quantities).
@@ -71,7 +71,7 @@
 //! ray is retried with the other slack-sign patterns of the load-driven DOFs (the same solution set, another
 //! path), and a ray is reported `infeasible` only when a bound proves it ([`classify_ray`]).
 
-pub mod block;
+mod block;
 pub mod dense;
 
 use super::{
@@ -125,6 +125,7 @@ impl Validate for LemkeSettings {
 
 /// Result of Lemke's algorithm.
 #[derive(Debug, Clone)]
+#[non_exhaustive]
 pub struct LemkeOutcome {
     /// z (unscaled); on ray termination the last basic point's z (not a solution).
     pub z: Vec<f64>,
@@ -231,7 +232,7 @@ impl Scaled<'_> {
     /// Unscale z, recompute w = M z + q from the original data, and wrap up.
     pub(crate) fn finish(&self, z_s: Vec<f64>, status: Termination, pivots: usize, message: String) -> LemkeOutcome {
         let z: Vec<f64> = z_s.iter().zip(&self.dc).map(|(z, d)| z * d).collect();
-        let w = self.lcp.w_of(&z);
+        let w = self.lcp.w_of_sized(&z);
         LemkeOutcome { z, w, status, pivots, message }
     }
 }
@@ -262,7 +263,7 @@ pub(crate) fn prepare(lcp: &Lcp) -> Result<Scaled<'_>, LemkeOutcome> {
     Ok(sc)
 }
 
-/// Solve `w = M z + q ⊥ z ≥ 0` by Lemke's method: the block-revised engine ([`block`]), which works
+/// Solve `w = M z + q ⊥ z ≥ 0` by Lemke's method: the block-revised engine (`block`), which works
 /// on the k × k block of the basis that involves z-columns only.
 pub fn solve(lcp: &Lcp, settings: &LemkeSettings) -> LemkeOutcome {
     solve_cancellable(lcp, settings, &Cancel::never())
@@ -282,7 +283,7 @@ pub fn solve_cancellable(lcp: &Lcp, settings: &LemkeSettings, cancel: &Cancel) -
 ///
 /// The guessed basis (z_i basic for the guessed i, w_i for the others) is factorised once and its basic solution
 /// x̄ computed. If x̄ ≥ 0 it is the solution (0 pivots). Otherwise z₀ enters with the covering vector d = B d̄,
-/// d̄ the indicator of the infeasible rows of x̄, so that z₀ only has to repair those rows ([`block`]). If the
+/// d̄ the indicator of the infeasible rows of x̄, so that z₀ only has to repair those rows (`block`). If the
 /// guessed basis is numerically singular, or the warm-started path does not end with z₀ leaving the basis (a ray
 /// or the pivot limit), the LCP is solved by the cold start ([`solve`]) and the message says so; the pivots of
 /// the abandoned attempt are included in the count.
@@ -385,11 +386,17 @@ impl Solver for Lemke {
     }
 
     fn solve_from(&self, p: &ContactProblem, mut start: Start) -> Outcome {
-        let lcp = p.lcp();
+        let Some(lcp) = p.lcp() else {
+            let why = match &p.kind {
+                ProblemKind::GrossSliding { message } => message.clone(),
+                _ => "the problem has no LCP".to_string(),
+            };
+            return Outcome::failed(Termination::Infeasible, why, Work::one("pivots", 0));
+        };
         let guess = start.take_state::<LemkeState>(self.id, p).map(|s| s.support);
         let attempt = Attempt { guess: guess.as_deref(), cancel: &start.cancel };
         let out = match p.kind {
-            ProblemKind::Frictional => self.frictional_from(p, &attempt).1,
+            ProblemKind::Frictional => self.frictional_from(p, lcp, &attempt).1,
             ProblemKind::SlidingLimit { .. } => {
                 let o = self.first_attempt(lcp, &attempt);
                 let message = format!(
@@ -404,7 +411,7 @@ impl Solver for Lemke {
         let (status, message) = classify_ray(out.status, out.message, p);
         let support = out.z.iter().map(|&v| v > 0.0).collect();
         Outcome {
-            solution: Some(p.unpack(&out.z)),
+            solution: p.unpack(&out.z),
             state: (status == Termination::Solved).then(|| SolverState::new(self.id, p, LemkeState { support })),
             status,
             message,
@@ -434,14 +441,15 @@ impl Lemke {
 
     /// Lemke on the frictional LCP with the default slack signs and, on a ray, with every other sign pattern of the
     /// load-driven DOFs (the same solution set; see [`crate::formulation::lcp`]). Returns the LCP that was solved
-    /// (when a retry solved it) and the outcome, with the pivots of all attempts summed.
-    pub fn frictional(&self, p: &ContactProblem) -> (Option<Lcp>, LemkeOutcome) {
-        self.frictional_from(p, &Attempt { guess: None, cancel: &Cancel::never() })
+    /// (when a retry solved it) and the outcome, with the pivots of all attempts summed; `None` for a problem that
+    /// is not frictional ([`ProblemKind::Frictional`]).
+    pub fn frictional(&self, p: &ContactProblem) -> Option<(Option<Lcp>, LemkeOutcome)> {
+        let lcp = p.lcp().filter(|_| p.kind == ProblemKind::Frictional)?;
+        Some(self.frictional_from(p, lcp, &Attempt { guess: None, cancel: &Cancel::never() }))
     }
 
-    /// [`Lemke::frictional`] from an attempt's start.
-    fn frictional_from(&self, p: &ContactProblem, a: &Attempt) -> (Option<Lcp>, LemkeOutcome) {
-        let lcp = p.lcp();
+    /// [`Lemke::frictional`] on the problem's default LCP `lcp` from an attempt's start.
+    fn frictional_from(&self, p: &ContactProblem, lcp: &Lcp, a: &Attempt) -> (Option<Lcp>, LemkeOutcome) {
         let mut out = self.first_attempt(lcp, a);
         let defaults: Vec<f64> = p.load_dofs().map(|d| d.default_sign()).collect();
         let loads = defaults.len();
@@ -455,7 +463,7 @@ impl Lemke {
             }
             let signs: Vec<f64> =
                 defaults.iter().enumerate().map(|(b, s)| if pattern & (1 << b) != 0 { -s } else { *s }).collect();
-            let alt = frictional_lcp(p, &signs).lcp;
+            let Some(alt) = frictional_lcp(p, &signs).map(|f| f.lcp) else { break };
             let o = (self.engine)(&alt, &self.settings, a.cancel);
             pivots += o.pivots;
             if o.status == Termination::Solved {
@@ -476,13 +484,9 @@ impl Lemke {
     /// The LCP this solver ends up solving for a problem (for `rollbem lcp export`): the default one, or the one
     /// with the slack signs of the attempt that succeeded. `None` beyond gross sliding (no static problem).
     pub fn solved_lcp(&self, p: &ContactProblem) -> Option<Lcp> {
-        match p.kind {
-            ProblemKind::GrossSliding { .. } => None,
-            ProblemKind::Frictional => {
-                let (solved_by, _) = self.frictional(p);
-                solved_by.or_else(|| Some(p.lcp().clone()))
-            }
-            _ => Some(p.lcp().clone()),
+        match self.frictional(p) {
+            Some((Some(solved_by), _)) => Some(solved_by),
+            _ => p.lcp().cloned(),
         }
     }
 }
