@@ -14,6 +14,8 @@
 //!
 //! - `toeplitz/{fft,dense}/n`: one K x with a Toeplitz matrix of n rows, by FFT ([`rollbem::toeplitz`]) and by
 //!   faer's dense product: the crossover sets `toeplitz::FFT_ABOVE`.
+//! - `toeplitz2d/apply/m`: one K v on an m × m grid by 2D FFT ([`rollbem::toeplitz2d`]), the product a 3D
+//!   half-space solver iterates on (m² elements: 4 096 to 262 144); `toeplitz2d/build/m` the spectrum's set-up.
 //!
 //! Run one group with e.g. `cargo bench --bench physics -- history --quick`.
 
@@ -136,5 +138,33 @@ fn toeplitz_group(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, half_plane_group, rolling_group, history_group, toeplitz_group);
+/// The two-level Toeplitz product by 2D FFT on m × m grids (a half-space-like kernel 1/ρ with its singular offset
+/// replaced by a finite value), and the set-up of its spectrum.
+fn toeplitz2d_group(c: &mut Criterion) {
+    use rollbem::toeplitz2d::{Scratch, Toeplitz2d};
+    let mut g = c.benchmark_group("toeplitz2d");
+    g.sample_size(10);
+    let kernel = |dx: isize, dy: isize| {
+        let r = ((dx * dx + dy * dy) as f64).sqrt();
+        if r == 0.0 {
+            3.5
+        } else {
+            1.0 / r
+        }
+    };
+    for m in [64usize, 128, 256, 512] {
+        g.bench_with_input(BenchmarkId::new("build", m), &m, |b, &m| {
+            b.iter(|| black_box(Toeplitz2d::new(m, m, kernel).unwrap()))
+        });
+        let op = Toeplitz2d::new(m, m, kernel).unwrap();
+        let v: Vec<f64> = (0..m * m).map(|k| (k as f64 * 0.37).sin()).collect();
+        let (mut out, mut scratch) = (vec![0.0; m * m], Scratch::default());
+        g.bench_with_input(BenchmarkId::new("apply", m), &m, |b, _| {
+            b.iter(|| op.apply_into(black_box(&v), &mut out, &mut scratch).unwrap())
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, half_plane_group, rolling_group, history_group, toeplitz_group, toeplitz2d_group);
 criterion_main!(benches);

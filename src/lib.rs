@@ -93,6 +93,7 @@ pub mod stresses;
 pub mod sweep;
 pub mod theory;
 pub mod toeplitz;
+pub mod toeplitz2d;
 pub mod tolerances;
 pub(crate) mod validity;
 

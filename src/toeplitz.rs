@@ -60,7 +60,7 @@ impl std::fmt::Debug for Toeplitz {
 }
 
 /// The smallest length ≥ `min` of the form 2^a 3^b (fast FFT sizes).
-fn fast_length(min: usize) -> usize {
+pub(crate) fn fast_length(min: usize) -> usize {
     let mut best = min.next_power_of_two();
     let mut p3 = 1;
     while p3 < best {

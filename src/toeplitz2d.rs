@@ -1,0 +1,229 @@
+//! Two-level Toeplitz operators and their products by 2D FFT: the influence matrix of a uniform MX × MY grid of
+//! elements on a half-space (Kalker's 3D discretisation, issue 32) maps the tractions of element j to the displacement
+//! at element i through a kernel of the index offset only, `(K v)_i = Σ_j k(i − j) v_j` with `i = (ix, iy)`,
+//! `j = (jx, jy)` and `k` given for offsets `(dx, dy) ∈ [−(mx−1), mx−1] × [−(my−1), my−1]` (block Toeplitz with
+//! Toeplitz blocks). A dense matrix would hold (MX·MY)² numbers — 10¹⁰ at 100 000 elements; this operator holds the
+//! kernel's spectrum, O(MX·MY), and a product costs O(MX·MY log(MX·MY)).
+//!
+//! **Method.** The kernel is placed on a periodic `Lx × Ly` grid (`Lx ≥ 2mx − 1`, `Ly ≥ 2my − 1`, fast lengths
+//! 2^a 3^b): offset `(dx, dy)` at `(dx mod Lx, dy mod Ly)`. With `v` zero-padded to the same grid, the circular
+//! convolution of the two equals `K v` on the original `mx × my` indices, since no offset that occurs wraps onto
+//! another. The convolution is a product of 2D spectra: a real-to-complex FFT along x for each of the `Ly` rows
+//! (realfft), a complex FFT along y for each of the `Lx/2 + 1` columns (rustfft), the product with the kernel's
+//! spectrum (computed once, scaled by `1/(Lx Ly)` for the inverse), and the two inverse transforms.
+//!
+//! **Layout.** Grid vectors are `ix + mx · iy` (x fastest).
+//!
+//! **Accuracy.** The product is exact up to the FFT's round-off relative to `‖k‖₁ ‖v‖∞` (tested against the dense
+//! product to 1e-13 of the product's largest entry), not entry by entry: like [`crate::toeplitz`], it serves
+//! iterations, whose answers are certified by residuals.
+
+use crate::error::ArgumentError;
+use realfft::num_complex::Complex;
+use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
+use rustfft::{Fft, FftPlanner};
+use std::sync::Arc;
+
+/// A two-level Toeplitz operator on an `mx × my` grid, ready for FFT products (module docs).
+#[derive(Clone)]
+pub struct Toeplitz2d {
+    mx: usize,
+    my: usize,
+    lx: usize,
+    ly: usize,
+    /// The kernel's 2D spectrum, `(lx/2 + 1) × ly` (column kx of length ly contiguous), scaled by 1/(lx ly).
+    spectrum: Vec<Complex<f64>>,
+    r2c: Arc<dyn RealToComplex<f64>>,
+    c2r: Arc<dyn ComplexToReal<f64>>,
+    fft_y: Arc<dyn Fft<f64>>,
+    ifft_y: Arc<dyn Fft<f64>>,
+}
+
+impl std::fmt::Debug for Toeplitz2d {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Toeplitz2d").field("mx", &self.mx).field("my", &self.my).field("lx", &self.lx).finish()
+    }
+}
+
+/// Buffers of one product (reused by [`Toeplitz2d::apply_into`]).
+#[derive(Debug, Default, Clone)]
+pub struct Scratch {
+    real: Vec<f64>,
+    half: Vec<Complex<f64>>,
+    spectrum: Vec<Complex<f64>>,
+}
+
+impl Toeplitz2d {
+    /// The operator of `kernel(dx, dy)` (offsets as in the module docs) on an `mx × my` grid.
+    ///
+    /// # Errors
+    /// An [`ArgumentError`] when the grid is empty or larger than 2²⁶ elements in either direction, or when the
+    /// kernel has a non-finite value.
+    pub fn new(mx: usize, my: usize, kernel: impl Fn(isize, isize) -> f64) -> Result<Toeplitz2d, ArgumentError> {
+        const LIMIT: usize = 1 << 26;
+        let bad = |arg: &'static str, msg: String| ArgumentError::new("Toeplitz2d::new", arg, msg);
+        if mx == 0 || my == 0 || mx > LIMIT || my > LIMIT {
+            return Err(bad("mx, my", format!("a grid of 1 to {LIMIT} elements a side (got {mx} × {my})")));
+        }
+        let (lx, ly) = (crate::toeplitz::fast_length(2 * mx - 1), crate::toeplitz::fast_length(2 * my - 1));
+        let mut planner = RealFftPlanner::<f64>::new();
+        let (r2c, c2r) = (planner.plan_fft_forward(lx), planner.plan_fft_inverse(lx));
+        let mut cplanner = FftPlanner::<f64>::new();
+        let (fft_y, ifft_y) = (cplanner.plan_fft_forward(ly), cplanner.plan_fft_inverse(ly));
+        let mut op = Toeplitz2d { mx, my, lx, ly, spectrum: Vec::new(), r2c, c2r, fft_y, ifft_y };
+        let mut grid = vec![0.0; lx * ly];
+        let (mxi, myi) = (mx as isize, my as isize);
+        for dy in -(myi - 1)..myi {
+            for dx in -(mxi - 1)..mxi {
+                let v = kernel(dx, dy);
+                if !v.is_finite() {
+                    return Err(bad("kernel", format!("k({dx}, {dy}) = {v} is not finite")));
+                }
+                grid[dx.rem_euclid(lx as isize) as usize + lx * dy.rem_euclid(ly as isize) as usize] = v;
+            }
+        }
+        let mut scratch = Scratch::default();
+        op.forward(&mut grid, &mut scratch);
+        let scale = 1.0 / (lx * ly) as f64;
+        op.spectrum = scratch.spectrum.iter().map(|c| c * scale).collect();
+        Ok(op)
+    }
+
+    /// The grid's size (mx, my).
+    pub fn size(&self) -> (usize, usize) {
+        (self.mx, self.my)
+    }
+
+    /// `K v` (`v` of length `mx · my`, index `ix + mx · iy`).
+    ///
+    /// # Errors
+    /// An [`ArgumentError`] when `v` has another length.
+    pub fn apply(&self, v: &[f64]) -> Result<Vec<f64>, ArgumentError> {
+        let mut out = vec![0.0; v.len()];
+        self.apply_into(v, &mut out, &mut Scratch::default())?;
+        Ok(out)
+    }
+
+    /// `K v` into `out`, with reusable buffers.
+    ///
+    /// # Errors
+    /// An [`ArgumentError`] when `v` or `out` is not `mx · my` long.
+    pub fn apply_into(&self, v: &[f64], out: &mut [f64], scratch: &mut Scratch) -> Result<(), ArgumentError> {
+        let n = self.mx * self.my;
+        if v.len() != n || out.len() != n {
+            let msg = format!("v and out of {n} entries (got {} and {})", v.len(), out.len());
+            return Err(ArgumentError::new("Toeplitz2d::apply_into", "v", msg));
+        }
+        let (lx, hx) = (self.lx, self.lx / 2 + 1);
+        let mut grid = std::mem::take(&mut scratch.real);
+        grid.clear();
+        grid.resize(lx * self.ly, 0.0);
+        for (iy, row) in v.chunks_exact(self.mx).enumerate() {
+            grid[lx * iy..lx * iy + self.mx].copy_from_slice(row);
+        }
+        self.forward(&mut grid, scratch);
+        for (s, k) in scratch.spectrum.iter_mut().zip(&self.spectrum) {
+            *s *= k;
+        }
+        // Inverse along y (column by column), then along x (row by row).
+        let ly = self.ly;
+        for kx in 0..hx {
+            let col = &mut scratch.spectrum[kx * ly..(kx + 1) * ly];
+            self.ifft_y.process(col);
+        }
+        scratch.half.resize(hx, Complex::default());
+        for iy in 0..self.my {
+            for kx in 0..hx {
+                scratch.half[kx] = scratch.spectrum[kx * ly + iy];
+            }
+            // The imaginary parts at 0 and lx/2 are round-off of a real signal's transform: zero them, as c2r needs.
+            scratch.half[0].im = 0.0;
+            if lx % 2 == 0 {
+                scratch.half[hx - 1].im = 0.0;
+            }
+            let row = &mut grid[lx * iy..lx * (iy + 1)];
+            // Lengths come from this plan: the transform cannot fail (module docs of crate::toeplitz).
+            let _ = self.c2r.process(&mut scratch.half, row);
+            out[self.mx * iy..self.mx * (iy + 1)].copy_from_slice(&row[..self.mx]);
+        }
+        scratch.real = grid;
+        Ok(())
+    }
+
+    /// The 2D spectrum of a real `lx × ly` grid (destroyed) into `scratch.spectrum`, column-major in kx.
+    fn forward(&self, grid: &mut [f64], scratch: &mut Scratch) {
+        let (lx, ly, hx) = (self.lx, self.ly, self.lx / 2 + 1);
+        scratch.half.resize(hx, Complex::default());
+        scratch.spectrum.clear();
+        scratch.spectrum.resize(hx * ly, Complex::default());
+        for iy in 0..ly {
+            let row = &mut grid[lx * iy..lx * (iy + 1)];
+            if row.iter().all(|v| *v == 0.0) {
+                continue;
+            }
+            let _ = self.r2c.process(row, &mut scratch.half);
+            for kx in 0..hx {
+                scratch.spectrum[kx * ly + iy] = scratch.half[kx];
+            }
+        }
+        for kx in 0..hx {
+            self.fft_y.process(&mut scratch.spectrum[kx * ly..(kx + 1) * ly]);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Toeplitz2d;
+
+    /// A kernel with no symmetry (so that a transposed or mirrored embedding is caught), smooth plus a peak.
+    fn kernel(dx: isize, dy: isize) -> f64 {
+        let (x, y) = (dx as f64, dy as f64);
+        1.0 / (1.0 + x * x + 0.5 * y * y).sqrt() + 0.01 * x - 0.02 * y + 0.001 * x * y
+    }
+
+    /// The dense product Σ_j k(i − j) v_j, computed directly (the reference).
+    fn dense(mx: usize, my: usize, v: &[f64]) -> Vec<f64> {
+        let mut out = vec![0.0; mx * my];
+        for iy in 0..my {
+            for ix in 0..mx {
+                let mut s = 0.0;
+                for jy in 0..my {
+                    for jx in 0..mx {
+                        s += kernel(ix as isize - jx as isize, iy as isize - jy as isize) * v[jx + mx * jy];
+                    }
+                }
+                out[ix + mx * iy] = s;
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn the_fft_product_is_the_dense_product() {
+        for (mx, my) in [(1, 1), (1, 7), (9, 1), (2, 3), (13, 11), (16, 16), (31, 5), (40, 27)] {
+            let v: Vec<f64> = (0..mx * my).map(|k| ((k * 7919) % 101) as f64 / 50.0 - 1.0).collect();
+            let op = Toeplitz2d::new(mx, my, kernel).unwrap();
+            let fast = op.apply(&v).unwrap();
+            let slow = dense(mx, my, &v);
+            let scale = slow.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+            let err = fast.iter().zip(&slow).fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
+            assert!(err <= 1e-13 * scale, "{mx}×{my}: {err:e} of {scale:e}");
+            // Reused buffers give the same product.
+            let mut out = vec![0.0; mx * my];
+            let mut scratch = super::Scratch::default();
+            op.apply_into(&v, &mut out, &mut scratch).unwrap();
+            op.apply_into(&v, &mut out, &mut scratch).unwrap();
+            assert_eq!(out, fast);
+        }
+    }
+
+    #[test]
+    fn bad_arguments_are_errors_not_panics() {
+        assert!(Toeplitz2d::new(0, 3, kernel).is_err());
+        assert!(Toeplitz2d::new(3, 3, |_, _| f64::NAN).is_err());
+        let op = Toeplitz2d::new(3, 2, kernel).unwrap();
+        assert!(op.apply(&[1.0; 5]).is_err());
+        assert_eq!(op.size(), (3, 2));
+    }
+}
