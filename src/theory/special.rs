@@ -40,10 +40,47 @@ pub fn elliptic_k(k: f64) -> f64 {
     FRAC_PI_2 / agm(1.0, kp)
 }
 
+/// Complete elliptic integral of the second kind E(k) (modulus k), by the arithmetic–geometric mean (Abramowitz &
+/// Stegun 17.6.4): `E = K (1 − Σ_{n≥0} 2^{n−1} c_n²)` with `a₀ = 1, b₀ = k′, c₀ = k`, `c_{n+1} = (a_n − b_n)/2`.
+pub fn elliptic_e(k: f64) -> f64 {
+    let kp = ((1.0 - k) * (1.0 + k)).sqrt();
+    if kp == 0.0 {
+        return 1.0;
+    }
+    let (mut a, mut b) = (1.0_f64, kp);
+    let mut sum = 0.5 * k * k;
+    let mut power = 0.5;
+    for _ in 0..64 {
+        let c = 0.5 * (a - b);
+        power *= 2.0;
+        sum += power * c * c;
+        // Convergence is quadratic; c stagnates at round-off, where the doubling weights would amplify it.
+        if c.abs() <= 4.0 * f64::EPSILON * a {
+            break;
+        }
+        let an = 0.5 * (a + b);
+        b = (a * b).sqrt();
+        a = an;
+    }
+    FRAC_PI_2 / a * (1.0 - sum)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::theory::test_support::*;
+
+    #[test]
+    fn elliptic_e_values() {
+        // E(0) = π/2, E(1) = 1, E(1/√2) = 1.350643881047675502520 (Abramowitz & Stegun table 17.5).
+        assert!(close(elliptic_e(0.0), FRAC_PI_2, 1e-15));
+        assert!(close(elliptic_e(1.0), 1.0, 1e-15));
+        assert!(close(elliptic_e(0.5f64.sqrt()), 1.350_643_881_047_675_5, 1e-14));
+        // Legendre's relation E K' + E' K − K K' = π/2 at k = 0.3 (k' = √0.91): an identity, not a table.
+        let (k, kp) = (0.3_f64, 0.91_f64.sqrt());
+        let lhs = elliptic_e(k) * elliptic_k(kp) + elliptic_e(kp) * elliptic_k(k) - elliptic_k(k) * elliptic_k(kp);
+        assert!(close(lhs, FRAC_PI_2, 1e-14));
+    }
 
     #[test]
     fn elliptic_k_values() {
