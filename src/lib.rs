@@ -72,6 +72,7 @@ pub mod exit;
 pub mod flexibility;
 pub mod formulation;
 pub mod halfplane;
+pub mod halfspace;
 pub(crate) mod io;
 pub mod lcp_io;
 pub mod lcp_residual;
