@@ -16,6 +16,8 @@
 //!   faer's dense product: the crossover sets `toeplitz::FFT_ABOVE`.
 //! - `toeplitz2d/apply/m`: one K v on an m × m grid by 2D FFT ([`rollbem::toeplitz2d`]), the product a 3D
 //!   half-space solver iterates on (m² elements: 4 096 to 262 144); `toeplitz2d/build/m` the spectrum's set-up.
+//! - `halfspace/kernel_table_100x100`: the closed-form kernel quadrant of a 100 × 100 grid of a dissimilar pair
+//!   (10⁴ offsets, six coefficients each; [`rollbem::halfspace::UniformGrid::kernel_table`]).
 //!
 //! Run one group with e.g. `cargo bench --bench physics -- history --quick`.
 
@@ -166,5 +168,24 @@ fn toeplitz2d_group(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, half_plane_group, rolling_group, history_group, toeplitz_group, toeplitz2d_group);
+/// The half-space kernel's set-up (closed forms of every offset of one quadrant).
+fn halfspace_group(c: &mut Criterion) {
+    use rollbem::halfspace::HalfSpace;
+    let mut g = c.benchmark_group("halfspace");
+    g.sample_size(20);
+    let pair = HalfSpace::new(210e9, 0.3).unwrap().pair(&HalfSpace::new(70e9, 0.33).unwrap());
+    let grid = rollbem::halfspace::UniformGrid::new(pair, 100, 100, 1e-4, 1.5e-4).unwrap();
+    g.bench_function("kernel_table_100x100", |b| b.iter(|| black_box(black_box(&grid).kernel_table())));
+    g.finish();
+}
+
+criterion_group!(
+    benches,
+    half_plane_group,
+    rolling_group,
+    history_group,
+    toeplitz_group,
+    toeplitz2d_group,
+    halfspace_group
+);
 criterion_main!(benches);

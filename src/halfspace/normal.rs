@@ -1,0 +1,1 @@
+//! The frictionless normal problem (placeholder while the solver is written).

@@ -1,0 +1,378 @@
+//! Where the grid's elements are ([`ContactGrid`]) and the FFT operators of its influence ([`Influence`]).
+
+use super::kernel::{Coefficients, Compliance, KernelTable, UniformGrid};
+use crate::error::ArgumentError;
+use crate::toeplitz2d::{Scratch, Toeplitz2d};
+
+/// The largest grid (elements) for which a dense influence matrix may be formed ([`Influence::dense`]): 4 096
+/// elements, a 128 MiB matrix of one component. Dense matrices serve cross-checks by Lemke and clarabel on small
+/// grids; production paths use the FFT products.
+pub const DENSE_LIMIT: usize = 4096;
+
+/// A uniform grid of `mx × my` rectangular elements `dx × dy` whose first element `(0, 0)` has its centre at
+/// `(x0, y0)`: element `(ix, iy)` is centred at `(x0 + ix·dx, y0 + iy·dy)` and covers that point ± `dx/2`, `dy/2`.
+/// Lengths in any one unit (the scene's).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactGrid {
+    mx: usize,
+    my: usize,
+    dx: f64,
+    dy: f64,
+    x0: f64,
+    y0: f64,
+}
+
+impl ContactGrid {
+    /// The grid of `mx × my` elements (`≥ 1` each, at most 2²⁶ per side and 2³² in all) of sides `dx`, `dy`
+    /// (finite, `> 0`) with the first centre at `(x0, y0)` (finite).
+    ///
+    /// # Errors
+    /// An [`ArgumentError`] naming the argument out of range.
+    pub fn new(mx: usize, my: usize, dx: f64, dy: f64, x0: f64, y0: f64) -> Result<ContactGrid, ArgumentError> {
+        const F: &str = "ContactGrid::new";
+        for (name, m) in [("mx", mx), ("my", my)] {
+            if m == 0 || m > 1 << 26 {
+                return Err(ArgumentError::new(F, name, format!("(elements) must be 1 ..= 2^26, got {m}")));
+            }
+        }
+        if mx * my > 1 << 32 {
+            return Err(ArgumentError::new(F, "my", format!("{mx} × {my} elements exceed 2^32")));
+        }
+        for (name, h) in [("dx", dx), ("dy", dy)] {
+            if !(h > 0.0 && h.is_finite()) {
+                return Err(ArgumentError::new(F, name, format!("(element side) must be finite and > 0, got {h}")));
+            }
+        }
+        for (name, v) in [("x0", x0), ("y0", y0)] {
+            if !v.is_finite() {
+                return Err(ArgumentError::new(F, name, format!("must be finite, got {v}")));
+            }
+        }
+        Ok(ContactGrid { mx, my, dx, dy, x0, y0 })
+    }
+
+    /// The grid of `mx × my` elements covering the rectangle `[x_lo, x_hi] × [y_lo, y_hi]` exactly (CONTACT's
+    /// potential contact area given by its extent).
+    ///
+    /// # Errors
+    /// An [`ArgumentError`] when a bound is not finite, a range is empty or reversed, or a count is out of range.
+    pub fn covering(
+        mx: usize,
+        my: usize,
+        x_lo: f64,
+        x_hi: f64,
+        y_lo: f64,
+        y_hi: f64,
+    ) -> Result<ContactGrid, ArgumentError> {
+        const F: &str = "ContactGrid::covering";
+        for (name, lo, hi) in [("x_hi", x_lo, x_hi), ("y_hi", y_lo, y_hi)] {
+            if !(lo.is_finite() && hi.is_finite() && hi > lo) {
+                return Err(ArgumentError::new(
+                    F,
+                    name,
+                    format!("the range {lo} .. {hi} must be finite and non-empty"),
+                ));
+            }
+        }
+        if mx == 0 || my == 0 {
+            return Err(ArgumentError::new(F, "mx", format!("a grid of at least 1 × 1 elements, got {mx} × {my}")));
+        }
+        let (dx, dy) = ((x_hi - x_lo) / mx as f64, (y_hi - y_lo) / my as f64);
+        ContactGrid::new(mx, my, dx, dy, x_lo + 0.5 * dx, y_lo + 0.5 * dy)
+    }
+
+    /// Elements along `x`.
+    pub fn mx(&self) -> usize {
+        self.mx
+    }
+
+    /// Elements along `y`.
+    pub fn my(&self) -> usize {
+        self.my
+    }
+
+    /// Number of elements `mx · my`.
+    pub fn len(&self) -> usize {
+        self.mx * self.my
+    }
+
+    /// Always false: a grid has at least one element.
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+
+    /// Element side along `x` (length).
+    pub fn dx(&self) -> f64 {
+        self.dx
+    }
+
+    /// Element side along `y` (length).
+    pub fn dy(&self) -> f64 {
+        self.dy
+    }
+
+    /// One element's area `dx · dy`.
+    pub fn area(&self) -> f64 {
+        self.dx * self.dy
+    }
+
+    /// The centre of element `(ix, iy)` (not range-checked: any index gives the lattice point).
+    pub fn centre(&self, ix: usize, iy: usize) -> (f64, f64) {
+        (self.x0 + ix as f64 * self.dx, self.y0 + iy as f64 * self.dy)
+    }
+
+    /// The element centres in grid order (`ix + mx·iy`).
+    pub fn centres(&self) -> Vec<(f64, f64)> {
+        (0..self.my).flat_map(|iy| (0..self.mx).map(move |ix| self.centre(ix, iy))).collect()
+    }
+
+    /// The function `f(x, y)` sampled at the element centres, in grid order (e.g. an initial separation
+    /// `A x² + B y²`).
+    pub fn sample(&self, f: impl Fn(f64, f64) -> f64) -> Vec<f64> {
+        self.centres().into_iter().map(|(x, y)| f(x, y)).collect()
+    }
+
+    /// The uniform-grid kernel of this grid with the material constants `compliance`.
+    ///
+    /// # Errors
+    /// An [`ArgumentError`] when the grid's kernel cannot be held ([`UniformGrid::new`]).
+    pub fn kernel(&self, compliance: Compliance) -> Result<UniformGrid, ArgumentError> {
+        UniformGrid::new(compliance, self.mx, self.my, self.dx, self.dy)
+    }
+}
+
+/// Which kernels an [`Influence`] holds: the effects a problem pays for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Kernels {
+    /// `C_zz` only: the frictionless normal problem.
+    Normal,
+    /// `C_zz` and the tangential `C_xx`, `C_xy`, `C_yy`; the coupling `C_zx`, `C_zy` too when the pair's coupling
+    /// constant is non-zero (dissimilar materials), never for an identical pair (they vanish identically).
+    Full,
+}
+
+/// The influence operators of a grid: `u_z = C_zz p`, and on demand `u_t = C_tt q` and the coupling `C_zt`, `C_tz`,
+/// each a two-level Toeplitz operator applied by FFT ([`crate::toeplitz2d`]). Per unit traction; displacements as
+/// in [`super::kernel`] (body 1 relative to body 2 for a pair).
+#[derive(Clone, Debug)]
+pub struct Influence {
+    grid: ContactGrid,
+    kernel: UniformGrid,
+    zz: Toeplitz2d,
+    tangential: Option<[Toeplitz2d; 3]>,
+    coupling: Option<[Toeplitz2d; 2]>,
+}
+
+impl Influence {
+    /// The operators of `grid` with the constants `compliance` ([`super::HalfSpace::compliance`] or
+    /// [`super::HalfSpace::pair`]), holding the kernels `kernels` says.
+    ///
+    /// # Errors
+    /// An [`ArgumentError`] when the grid's kernel cannot be built (too large; a non-finite coefficient, which the
+    /// constants of two [`super::HalfSpace`]s cannot produce).
+    pub fn new(grid: ContactGrid, compliance: Compliance, kernels: Kernels) -> Result<Influence, ArgumentError> {
+        let kernel = grid.kernel(compliance)?;
+        let table = kernel.kernel_table();
+        let op = |f: fn(&Coefficients) -> f64| {
+            Toeplitz2d::new(grid.mx, grid.my, |di, dj| table.get(di, dj).map_or(f64::NAN, |c| f(&c)))
+        };
+        let zz = op(|c| c.zz)?;
+        let (tangential, coupling) = match kernels {
+            Kernels::Normal => (None, None),
+            Kernels::Full => {
+                let t = [op(|c| c.xx)?, op(|c| c.xy)?, op(|c| c.yy)?];
+                let c = if compliance.coupling() != 0.0 { Some([op(|c| c.zx)?, op(|c| c.zy)?]) } else { None };
+                (Some(t), c)
+            }
+        };
+        Ok(Influence { grid, kernel, zz, tangential, coupling })
+    }
+
+    /// The grid.
+    pub fn grid(&self) -> &ContactGrid {
+        &self.grid
+    }
+
+    /// The material constants.
+    pub fn compliance(&self) -> Compliance {
+        self.kernel.compliance()
+    }
+
+    /// Whether the tangential kernels were built.
+    pub fn has_tangential(&self) -> bool {
+        self.tangential.is_some()
+    }
+
+    /// Whether the coupling kernels were built (a pair of dissimilar materials with [`Kernels::Full`]).
+    pub fn has_coupling(&self) -> bool {
+        self.coupling.is_some()
+    }
+
+    /// The normal operator `C_zz` (for solvers that apply it themselves).
+    pub fn normal_operator(&self) -> &Toeplitz2d {
+        &self.zz
+    }
+
+    /// `u_z = C_zz p` into `uz`.
+    ///
+    /// # Errors
+    /// An [`ArgumentError`] when a vector is not one value per element.
+    pub fn apply_normal(&self, p: &[f64], uz: &mut [f64], scratch: &mut Scratch) -> Result<(), ArgumentError> {
+        self.zz.apply_into(p, uz, scratch)
+    }
+
+    /// The tangential displacements (slips, for a pair) of the shears: `u_x = C_xx q_x + C_xy q_y`,
+    /// `u_y = C_xy q_x + C_yy q_y` into `ux`, `uy` (`tmp` one more buffer of the grid's length).
+    ///
+    /// # Errors
+    /// An [`ArgumentError`] when the tangential kernels were not built ([`Kernels::Normal`]) or a vector is not one
+    /// value per element.
+    pub fn apply_tangential(
+        &self,
+        q: (&[f64], &[f64]),
+        u: (&mut [f64], &mut [f64]),
+        tmp: &mut [f64],
+        scratch: &mut Scratch,
+    ) -> Result<(), ArgumentError> {
+        let [xx, xy, yy] = self.tangential.as_ref().ok_or_else(|| {
+            ArgumentError::new(
+                "Influence::apply_tangential",
+                "self",
+                "built with Kernels::Normal: no tangential kernels",
+            )
+        })?;
+        let (qx, qy) = q;
+        let (ux, uy) = u;
+        xx.apply_into(qx, ux, scratch)?;
+        xy.apply_into(qy, tmp, scratch)?;
+        ux.iter_mut().zip(tmp.iter()).for_each(|(a, b)| *a += b);
+        yy.apply_into(qy, uy, scratch)?;
+        xy.apply_into(qx, tmp, scratch)?;
+        uy.iter_mut().zip(tmp.iter()).for_each(|(a, b)| *a += b);
+        Ok(())
+    }
+
+    /// The coupling terms, added in place: `u_z += C_zx q_x + C_zy q_y` and `u_t += C_tz p = −(C_zt)ᵀ`-kernel
+    /// products (`C_xz = −C_zx`, `C_yz = −C_zy` per offset). Nothing is added when the coupling kernels were not
+    /// built (identical materials, or [`Kernels::Normal`]): there they vanish or were not asked for.
+    ///
+    /// # Errors
+    /// An [`ArgumentError`] when a vector is not one value per element.
+    pub fn add_coupling(
+        &self,
+        p: &[f64],
+        q: (&[f64], &[f64]),
+        u: (&mut [f64], &mut [f64], &mut [f64]),
+        tmp: &mut [f64],
+        scratch: &mut Scratch,
+    ) -> Result<(), ArgumentError> {
+        let Some([zx, zy]) = self.coupling.as_ref() else { return Ok(()) };
+        let (ux, uy, uz) = u;
+        for (op, qt) in [(zx, q.0), (zy, q.1)] {
+            op.apply_into(qt, tmp, scratch)?;
+            uz.iter_mut().zip(tmp.iter()).for_each(|(a, b)| *a += b);
+        }
+        for (op, ut) in [(zx, ux), (zy, uy)] {
+            op.apply_into(p, tmp, scratch)?;
+            ut.iter_mut().zip(tmp.iter()).for_each(|(a, b)| *a -= b);
+        }
+        Ok(())
+    }
+
+    /// One component of the influence as a dense row-major `N × N` matrix (`N` the grid's elements, entry
+    /// `[i·N + j]` the displacement at centre `i` per unit traction on element `j`), for cross-checks on small grids.
+    /// `pick` selects the component from the [`Coefficients`] (e.g. `|c| c.zz`).
+    ///
+    /// # Errors
+    /// An [`ArgumentError`] when the grid has more than [`DENSE_LIMIT`] elements.
+    pub fn dense(&self, pick: impl Fn(&Coefficients) -> f64) -> Result<Vec<f64>, ArgumentError> {
+        dense(&self.grid, &self.kernel.kernel_table(), pick)
+    }
+}
+
+/// The dense matrix of one component ([`Influence::dense`]).
+fn dense(
+    grid: &ContactGrid,
+    table: &KernelTable,
+    pick: impl Fn(&Coefficients) -> f64,
+) -> Result<Vec<f64>, ArgumentError> {
+    let n = grid.len();
+    if n > DENSE_LIMIT {
+        let msg = format!("{n} elements: a dense matrix is formed only up to {DENSE_LIMIT} (use the FFT products)");
+        return Err(ArgumentError::new("Influence::dense", "grid", msg));
+    }
+    let mut m = vec![0.0; n * n];
+    for i in 0..n {
+        let (ix, iy) = ((i % grid.mx) as isize, (i / grid.mx) as isize);
+        for j in 0..n {
+            let (jx, jy) = ((j % grid.mx) as isize, (j / grid.mx) as isize);
+            m[i * n + j] = table.get(ix - jx, iy - jy).map_or(f64::NAN, |c| pick(&c));
+        }
+    }
+    Ok(m)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::HalfSpace;
+    use super::*;
+
+    fn mat_vec(m: &[f64], v: &[f64]) -> Vec<f64> {
+        let n = v.len();
+        (0..n).map(|i| (0..n).map(|j| m[i * n + j] * v[j]).sum()).collect()
+    }
+
+    /// The FFT operators against the dense matrices of the same kernel (built from the kernel entry by entry, an
+    /// independent path through `KernelTable::get`), on a small grid of a dissimilar pair, to 1e-12 of the largest
+    /// entry of the product; the identical pair builds no coupling kernels, the normal-only operator no tangential.
+    #[test]
+    fn fft_products_are_the_dense_products() {
+        let pair = HalfSpace::new(210e3, 0.3).unwrap().pair(&HalfSpace::new(70e3, 0.33).unwrap());
+        let grid = ContactGrid::new(7, 5, 0.1, 0.15, -0.3, -0.3).unwrap();
+        let inf = Influence::new(grid, pair, Kernels::Full).unwrap();
+        assert!(inf.has_tangential() && inf.has_coupling());
+        let n = grid.len();
+        let v = |s: f64| (0..n).map(|i| ((i as f64 + s) * 0.7).sin()).collect::<Vec<f64>>();
+        let (p, qx, qy) = (v(0.0), v(1.0), v(2.0));
+        let (mut ux, mut uy, mut uz, mut tmp) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        let mut s = Scratch::default();
+        inf.apply_normal(&p, &mut uz, &mut s).unwrap();
+        inf.apply_tangential((&qx, &qy), (&mut ux, &mut uy), &mut tmp, &mut s).unwrap();
+        inf.add_coupling(&p, (&qx, &qy), (&mut ux, &mut uy, &mut uz), &mut tmp, &mut s).unwrap();
+        let d = |f: fn(&Coefficients) -> f64| inf.dense(f).unwrap();
+        let add = |a: Vec<f64>, b: Vec<f64>, c: Vec<f64>| -> Vec<f64> {
+            a.iter().zip(&b).zip(&c).map(|((x, y), z)| x + y + z).collect()
+        };
+        let ex = add(mat_vec(&d(|c| c.xx), &qx), mat_vec(&d(|c| c.xy), &qy), mat_vec(&d(|c| c.xz), &p));
+        let ey = add(mat_vec(&d(|c| c.yx), &qx), mat_vec(&d(|c| c.yy), &qy), mat_vec(&d(|c| c.yz), &p));
+        let ez = add(mat_vec(&d(|c| c.zx), &qx), mat_vec(&d(|c| c.zy), &qy), mat_vec(&d(|c| c.zz), &p));
+        for (got, exp) in [(&ux, &ex), (&uy, &ey), (&uz, &ez)] {
+            let scale = exp.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            let err = got.iter().zip(exp.iter()).fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
+            assert!(err <= 1e-12 * scale, "FFT vs dense: {err:e} of {scale:e}");
+        }
+        let same = HalfSpace::new(210e3, 0.3).unwrap();
+        let inf = Influence::new(grid, same.pair(&same), Kernels::Full).unwrap();
+        assert!(inf.has_tangential() && !inf.has_coupling());
+        let inf = Influence::new(grid, same.compliance(), Kernels::Normal).unwrap();
+        assert!(!inf.has_tangential() && !inf.has_coupling());
+        let err = inf.apply_tangential((&qx, &qy), (&mut ux, &mut uy), &mut tmp, &mut s).unwrap_err();
+        assert!(err.to_string().contains("Kernels::Normal"), "{err}");
+    }
+
+    /// Grid placement: `covering` puts the element edges on the given bounds; bad sizes are refused by name.
+    #[test]
+    fn grid_placement_and_refusals() {
+        let g = ContactGrid::covering(4, 2, -1.0, 1.0, 0.0, 3.0).unwrap();
+        assert_eq!(g.centre(0, 0), (-0.75, 0.75));
+        assert_eq!(g.centre(3, 1), (0.75, 2.25));
+        assert_eq!((g.len(), g.area()), (8, 0.75));
+        assert!(ContactGrid::new(0, 3, 1.0, 1.0, 0.0, 0.0).unwrap_err().to_string().contains("mx"));
+        assert!(ContactGrid::new(3, 3, f64::NAN, 1.0, 0.0, 0.0).unwrap_err().to_string().contains("dx"));
+        assert!(ContactGrid::covering(3, 3, 1.0, 1.0, 0.0, 1.0).unwrap_err().to_string().contains("x_hi"));
+        let big = ContactGrid::new(65, 64, 1.0, 1.0, 0.0, 0.0).unwrap();
+        let inf = Influence::new(big, HalfSpace::new(1.0, 0.3).unwrap().compliance(), Kernels::Normal).unwrap();
+        assert!(inf.dense(|c| c.zz).unwrap_err().to_string().contains("4096"));
+    }
+}
