@@ -17,7 +17,9 @@
 //! - [`Influence`]: the FFT operators of a grid, built for only the effects asked for (the normal kernel alone for
 //!   a frictionless problem; the tangential kernels on demand; the coupling kernels only when the pair's coupling
 //!   constant is non-zero, so an identical pair never pays for them);
-//! - [`normal`]: the frictionless normal problem (load or approach prescribed).
+//! - [`normal`]: the frictionless normal problem (load or approach prescribed);
+//! - [`tangential`]: a shift step of the tangential problem with memory, Coulomb's law on the disc exactly
+//!   (Cattaneo–Mindlin, load paths).
 //!
 //! Axes and signs are [`kernel`]'s: `z` into body 1, pressure positive in compression, displacements of body 1
 //! relative to body 2 (slip along `x`, `y`; gap change along `z`, positive when the surfaces move apart). Grid
@@ -26,6 +28,7 @@
 pub mod kernel;
 pub mod normal;
 mod operator;
+pub mod tangential;
 
 pub use kernel::{Coefficients, Compliance, HalfSpace, KernelTable, UniformGrid};
 pub use operator::{ContactGrid, Influence, Kernels, DENSE_LIMIT};

@@ -159,6 +159,7 @@ pub enum Kernels {
 pub struct Influence {
     grid: ContactGrid,
     kernel: UniformGrid,
+    table: KernelTable,
     zz: Toeplitz2d,
     tangential: Option<[Toeplitz2d; 3]>,
     coupling: Option<[Toeplitz2d; 2]>,
@@ -186,7 +187,7 @@ impl Influence {
                 (Some(t), c)
             }
         };
-        Ok(Influence { grid, kernel, zz, tangential, coupling })
+        Ok(Influence { grid, kernel, table, zz, tangential, coupling })
     }
 
     /// The grid.
@@ -197,6 +198,11 @@ impl Influence {
     /// The material constants.
     pub fn compliance(&self) -> Compliance {
         self.kernel.compliance()
+    }
+
+    /// The kernel's quadrant table (every coefficient at every offset, by parity: [`KernelTable::get`]).
+    pub fn kernel_table(&self) -> &KernelTable {
+        &self.table
     }
 
     /// Whether the tangential kernels were built.
@@ -287,7 +293,7 @@ impl Influence {
     /// # Errors
     /// An [`ArgumentError`] when the grid has more than [`DENSE_LIMIT`] elements.
     pub fn dense(&self, pick: impl Fn(&Coefficients) -> f64) -> Result<Vec<f64>, ArgumentError> {
-        dense(&self.grid, &self.kernel.kernel_table(), pick)
+        dense(&self.grid, &self.table, pick)
     }
 }
 
