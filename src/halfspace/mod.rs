@@ -19,7 +19,10 @@
 //!   constant is non-zero, so an identical pair never pays for them);
 //! - [`normal`]: the frictionless normal problem (load or approach prescribed);
 //! - [`tangential`]: a shift step of the tangential problem with memory, Coulomb's law on the disc exactly
-//!   (Cattaneo–Mindlin, load paths).
+//!   (Cattaneo–Mindlin, load paths);
+//! - [`path`]: the typed 3D problem — bodies, grid, profile, friction, a path of steps — solving each step from the
+//!   previous state, coupling the normal and tangential problems only for a dissimilar pair, with a status per
+//!   step (a contact cut off by the grid's edge is not `Solved`).
 //!
 //! Axes and signs are [`kernel`]'s: `z` into body 1, pressure positive in compression, displacements of body 1
 //! relative to body 2 (slip along `x`, `y`; gap change along `z`, positive when the surfaces move apart). Grid
@@ -28,7 +31,9 @@
 pub mod kernel;
 pub mod normal;
 mod operator;
+pub mod path;
 pub mod tangential;
 
 pub use kernel::{Coefficients, Compliance, HalfSpace, KernelTable, UniformGrid};
 pub use operator::{ContactGrid, Influence, Kernels, DENSE_LIMIT};
+pub use path::{Path, PathSettings, PathStatus, Profile, Step, StepOutcome};

@@ -286,6 +286,47 @@ impl Influence {
         Ok(())
     }
 
+    /// The gap change of the shears through the coupling: `u_z = C_zx q_x + C_zy q_y` into `uz` (zero when the
+    /// coupling kernels were not built).
+    ///
+    /// # Errors
+    /// An [`ArgumentError`] when a vector is not one value per element.
+    pub fn coupling_gap(
+        &self,
+        q: (&[f64], &[f64]),
+        uz: &mut [f64],
+        scratch: &mut Scratch,
+    ) -> Result<(), ArgumentError> {
+        uz.iter_mut().for_each(|v| *v = 0.0);
+        let Some([zx, zy]) = self.coupling.as_ref() else { return Ok(()) };
+        let mut tmp = vec![0.0; uz.len()];
+        for (op, qt) in [(zx, q.0), (zy, q.1)] {
+            op.apply_into(qt, &mut tmp, scratch)?;
+            uz.iter_mut().zip(&tmp).for_each(|(a, b)| *a += b);
+        }
+        Ok(())
+    }
+
+    /// The slip of the pressures through the coupling: `u_x = C_xz p`, `u_y = C_yz p` (`C_xz = −C_zx` per offset)
+    /// into `ux`, `uy` (zero when the coupling kernels were not built).
+    ///
+    /// # Errors
+    /// An [`ArgumentError`] when a vector is not one value per element.
+    pub fn coupling_slip(
+        &self,
+        p: &[f64],
+        u: (&mut [f64], &mut [f64]),
+        scratch: &mut Scratch,
+    ) -> Result<(), ArgumentError> {
+        let (ux, uy) = u;
+        ux.iter_mut().chain(uy.iter_mut()).for_each(|v| *v = 0.0);
+        let Some([zx, zy]) = self.coupling.as_ref() else { return Ok(()) };
+        zx.apply_into(p, ux, scratch)?;
+        zy.apply_into(p, uy, scratch)?;
+        ux.iter_mut().chain(uy.iter_mut()).for_each(|v| *v = -*v);
+        Ok(())
+    }
+
     /// One component of the influence as a dense row-major `N × N` matrix (`N` the grid's elements, entry
     /// `[i·N + j]` the displacement at centre `i` per unit traction on element `j`), for cross-checks on small grids.
     /// `pick` selects the component from the [`Coefficients`] (e.g. `|c| c.zz`).

@@ -142,9 +142,44 @@ pub struct TangentialSolution {
     pub residual: f64,
 }
 
-/// Solve one shift step (module docs): `pressure` per element (stress, ≥ 0), `friction` μ (≥ 0), `previous` the
-/// shears `(q′_x, q′_y)` at the end of the previous step (`None`: from rest, zero), `drive`, `settings`; `cancel` is
-/// checked at every iteration.
+/// One shift step's data (module docs).
+#[derive(Clone, Copy, Debug)]
+#[non_exhaustive]
+pub struct ShiftStep<'a> {
+    /// Pressure per element at the end of the step (stress, ≥ 0), grid order.
+    pub pressure: &'a [f64],
+    /// Friction coefficient μ (≥ 0).
+    pub friction: f64,
+    /// The shears `(q′_x, q′_y)` at the end of the previous step (`None`: from rest, zero).
+    pub previous: Option<(&'a [f64], &'a [f64])>,
+    /// A slip offset per element added to `s` (length; `None`: zero) — the change in the step of the tangential
+    /// displacement that the pressures cause, `C_tz (p − p′)`, when the caller couples the normal and tangential
+    /// problems of a dissimilar pair.
+    pub offset: Option<(&'a [f64], &'a [f64])>,
+    /// What is prescribed.
+    pub drive: TangentialDrive,
+}
+
+impl<'a> ShiftStep<'a> {
+    /// A step from rest (`previous` and `offset` none) at the pressures `pressure` with friction `friction`.
+    pub fn new(pressure: &'a [f64], friction: f64, drive: TangentialDrive) -> ShiftStep<'a> {
+        ShiftStep { pressure, friction, previous: None, offset: None, drive }
+    }
+
+    /// The same step from the previous shears `(q′_x, q′_y)`.
+    pub fn after(mut self, qx: &'a [f64], qy: &'a [f64]) -> ShiftStep<'a> {
+        self.previous = Some((qx, qy));
+        self
+    }
+
+    /// The same step with the slip offset `(o_x, o_y)` per element.
+    pub fn with_offset(mut self, ox: &'a [f64], oy: &'a [f64]) -> ShiftStep<'a> {
+        self.offset = Some((ox, oy));
+        self
+    }
+}
+
+/// Solve one shift step (module docs) with `settings`; `cancel` is checked at every iteration.
 ///
 /// # Errors
 /// An [`ArgumentError`] naming the argument when the operator has no tangential kernels, a vector is not one finite
@@ -152,20 +187,19 @@ pub struct TangentialSolution {
 /// negative), `previous` violates the friction bound of this step, or a setting is out of range.
 pub fn solve(
     influence: &Influence,
-    pressure: &[f64],
-    friction: f64,
-    previous: Option<(&[f64], &[f64])>,
-    drive: TangentialDrive,
+    step: &ShiftStep<'_>,
     settings: &TangentialSettings,
     cancel: &Cancel,
 ) -> Result<TangentialSolution, ArgumentError> {
-    check(influence, pressure, friction, previous, drive, settings)?;
+    let (pressure, friction, previous, drive) = (step.pressure, step.friction, step.previous, step.drive);
+    check(influence, step, settings)?;
     let n = pressure.len();
     let area = influence.grid().area();
     let bound: Vec<f64> = pressure.iter().map(|&p| friction * p).collect();
     let zeros = vec![0.0; n];
     let (px, py) = previous.unwrap_or((&zeros, &zeros));
-    let mut fista = Fista::new(influence, &bound, (px, py), drive, area)?;
+    let offset = step.offset.unwrap_or((&zeros, &zeros));
+    let mut fista = Fista::new(influence, &bound, (px, py), offset, drive, area)?;
     if let TangentialDrive::Force(fx, fy) = drive {
         let capacity = area * bound.iter().sum::<f64>();
         if fx.hypot(fy) >= capacity {
@@ -181,6 +215,7 @@ struct Fista<'a> {
     op: &'a Influence,
     bound: &'a [f64],
     prev: (&'a [f64], &'a [f64]),
+    offset: (&'a [f64], &'a [f64]),
     drive: TangentialDrive,
     area: f64,
     /// Gershgorin bound on the largest eigenvalue of `C_tt`.
@@ -209,6 +244,7 @@ impl<'a> Fista<'a> {
         op: &'a Influence,
         bound: &'a [f64],
         prev: (&'a [f64], &'a [f64]),
+        offset: (&'a [f64], &'a [f64]),
         drive: TangentialDrive,
         area: f64,
     ) -> Result<Fista<'a>, ArgumentError> {
@@ -217,10 +253,10 @@ impl<'a> Fista<'a> {
         let z = || vec![0.0; n];
         let bufs = Buffers { dx: z(), dy: z(), ux: z(), uy: z(), tmp: z(), scratch: Scratch::default() };
         let q = (prev.0.to_vec(), prev.1.to_vec());
-        Ok(Fista { op, bound, prev, drive, area, lipschitz, diagonal, q, nu: (0.0, 0.0), bufs, iterations: 0 })
+        Ok(Fista { op, bound, prev, offset, drive, area, lipschitz, diagonal, q, nu: (0.0, 0.0), bufs, iterations: 0 })
     }
 
-    /// The slip `w + C_tt (q − q′)` of the shears `(x, y)` into `bufs.ux`, `bufs.uy` (without `w` when `with_w` is
+    /// The slip `w + o + C_tt (q − q′)` of the shears `(x, y)` into `bufs.ux`, `bufs.uy` (without `w` when `with_w` is
     /// false: the force drive's gradient, whose `w` is the projection's multiplier).
     fn slip(&mut self, x: &[f64], y: &[f64], with_w: bool) -> Result<(), ArgumentError> {
         let b = &mut self.bufs;
@@ -229,6 +265,8 @@ impl<'a> Fista<'a> {
             b.dy[i] = y[i] - self.prev.1[i];
         }
         self.op.apply_tangential((&b.dx, &b.dy), (&mut b.ux, &mut b.uy), &mut b.tmp, &mut b.scratch)?;
+        b.ux.iter_mut().zip(self.offset.0).for_each(|(v, o)| *v += o);
+        b.uy.iter_mut().zip(self.offset.1).for_each(|(v, o)| *v += o);
         if let (TangentialDrive::Shift(wx, wy), true) = (self.drive, with_w) {
             b.ux.iter_mut().for_each(|v| *v += wx);
             b.uy.iter_mut().for_each(|v| *v += wy);
@@ -456,14 +494,8 @@ fn lipschitz(op: &Influence) -> (f64, f64) {
 }
 
 /// The arguments' ranges ([`solve`]).
-fn check(
-    op: &Influence,
-    pressure: &[f64],
-    friction: f64,
-    previous: Option<(&[f64], &[f64])>,
-    drive: TangentialDrive,
-    s: &TangentialSettings,
-) -> Result<(), ArgumentError> {
+fn check(op: &Influence, step: &ShiftStep<'_>, s: &TangentialSettings) -> Result<(), ArgumentError> {
+    let (pressure, friction, previous, drive) = (step.pressure, step.friction, step.previous, step.drive);
     let bad = |arg: &'static str, msg: String| Err(ArgumentError::new("halfspace::tangential::solve", arg, msg));
     let n = op.grid().len();
     if !op.has_tangential() {
@@ -488,6 +520,11 @@ fn check(
                 let msg = format!("element {i}: |q′| = {q} exceeds this step's bound μp = {}", friction * pressure[i]);
                 return bad("previous", msg);
             }
+        }
+    }
+    if let Some((ox, oy)) = step.offset {
+        if ox.len() != n || oy.len() != n || !ox.iter().chain(oy).all(|v| v.is_finite()) {
+            return bad("offset", format!("two vectors of {n} finite values"));
         }
     }
     let (a, b) = match drive {
@@ -572,7 +609,8 @@ mod tests {
             let (mu, load) = (c.mu, c.hz.load);
             let q = 0.5 * mu * load;
             let set = TangentialSettings::default();
-            let s = solve(&c.inf, &c.p, mu, None, TangentialDrive::Force(q, 0.0), &set, &Cancel::never()).unwrap();
+            let s = solve(&c.inf, &ShiftStep::new(&c.p, mu, TangentialDrive::Force(q, 0.0)), &set, &Cancel::never())
+                .unwrap();
             assert_eq!(s.stop, TangentialStop::Converged, "{} iterations, residual {}", s.iterations, s.residual);
             assert!(s.residual <= 1e-8, "residual {}", s.residual);
             assert!((s.force.0 - q).abs() <= 1e-10 * q && s.force.1.abs() <= 1e-10 * q, "{:?}", s.force);
@@ -610,9 +648,14 @@ mod tests {
         let (q_star, q) = (0.6 * mu * load, 0.2 * mu * load);
         let set = TangentialSettings::default();
         let never = Cancel::never();
-        let up = solve(&c.inf, &c.p, mu, None, TangentialDrive::Force(q_star, 0.0), &set, &never).unwrap();
-        let down =
-            solve(&c.inf, &c.p, mu, Some((&up.qx, &up.qy)), TangentialDrive::Force(q, 0.0), &set, &never).unwrap();
+        let up = solve(&c.inf, &ShiftStep::new(&c.p, mu, TangentialDrive::Force(q_star, 0.0)), &set, &never).unwrap();
+        let down = solve(
+            &c.inf,
+            &ShiftStep::new(&c.p, mu, TangentialDrive::Force(q, 0.0)).after(&up.qx, &up.qy),
+            &set,
+            &never,
+        )
+        .unwrap();
         assert_eq!(down.stop, TangentialStop::Converged);
         assert!(down.residual <= 1e-8, "{}", down.residual);
         let a = c.hz.a_x;
@@ -643,9 +686,11 @@ mod tests {
         let set = TangentialSettings::default();
         let never = Cancel::never();
         let f = (0.3 * mu * load, -0.4 * mu * load);
-        let by_force = solve(&c.inf, &c.p, mu, None, TangentialDrive::Force(f.0, f.1), &set, &never).unwrap();
+        let by_force =
+            solve(&c.inf, &ShiftStep::new(&c.p, mu, TangentialDrive::Force(f.0, f.1)), &set, &never).unwrap();
         let w = by_force.shift;
-        let by_shift = solve(&c.inf, &c.p, mu, None, TangentialDrive::Shift(w.0, w.1), &set, &never).unwrap();
+        let by_shift =
+            solve(&c.inf, &ShiftStep::new(&c.p, mu, TangentialDrive::Shift(w.0, w.1)), &set, &never).unwrap();
         assert_eq!(by_shift.stop, TangentialStop::Converged);
         let fmag = f.0.hypot(f.1);
         assert!((by_shift.force.0 - f.0).hypot(by_shift.force.1 - f.1) <= 1e-7 * fmag, "{:?} vs {f:?}", by_shift.force);
@@ -653,13 +698,15 @@ mod tests {
         let dq = (0..c.p.len())
             .fold(0.0_f64, |m, i| m.max((by_shift.qx[i] - by_force.qx[i]).hypot(by_shift.qy[i] - by_force.qy[i])));
         assert!(dq <= 1e-7 * mu_p0, "{dq:e}");
-        let over = solve(&c.inf, &c.p, mu, None, TangentialDrive::Force(0.0, 1.01 * mu * load), &set, &never).unwrap();
+        let over =
+            solve(&c.inf, &ShiftStep::new(&c.p, mu, TangentialDrive::Force(0.0, 1.01 * mu * load)), &set, &never)
+                .unwrap();
         assert_eq!(over.stop, TangentialStop::GrossSliding);
         assert!(over.shift.0.is_nan() && over.stick == 0);
         assert!((over.force.1 - mu * load).abs() <= 1e-9 * mu * load && over.force.0 == 0.0);
         let cancel = Cancel::new();
         cancel.cancel();
-        let s = solve(&c.inf, &c.p, mu, None, TangentialDrive::Force(f.0, f.1), &set, &cancel).unwrap();
+        let s = solve(&c.inf, &ShiftStep::new(&c.p, mu, TangentialDrive::Force(f.0, f.1)), &set, &cancel).unwrap();
         assert_eq!((s.stop, s.iterations), (TangentialStop::Cancelled, 0));
     }
 
@@ -676,14 +723,16 @@ mod tests {
         let never = Cancel::never();
         let d = TangentialDrive::Force(1.0, 0.0);
         let e = |r: Result<TangentialSolution, ArgumentError>| r.unwrap_err().to_string();
-        assert!(e(solve(&normal_only, &p, 0.3, None, d, &set, &never)).contains("Kernels::Full"));
+        assert!(e(solve(&normal_only, &ShiftStep::new(&p, 0.3, d), &set, &never)).contains("Kernels::Full"));
         let mut neg = p.clone();
         neg[4] = -1.0;
-        assert!(e(solve(&full, &neg, 0.3, None, d, &set, &never)).contains("pressure[4]"));
+        assert!(e(solve(&full, &ShiftStep::new(&neg, 0.3, d), &set, &never)).contains("pressure[4]"));
         let big = vec![0.5; 9];
-        assert!(e(solve(&full, &p, 0.3, Some((&big, &big)), d, &set, &never)).contains("previous"));
-        assert!(e(solve(&full, &p, f64::NAN, None, d, &set, &never)).contains("friction"));
-        assert!(e(solve(&full, &p, 0.3, None, TangentialDrive::Shift(f64::NAN, 0.0), &set, &never)).contains("drive"));
-        assert!(e(solve(&full, &p, 0.3, None, d, &TangentialSettings::new(0.0, 5), &never)).contains("tolerance"));
+        assert!(e(solve(&full, &ShiftStep::new(&p, 0.3, d).after(&big, &big), &set, &never)).contains("previous"));
+        assert!(e(solve(&full, &ShiftStep::new(&p, f64::NAN, d), &set, &never)).contains("friction"));
+        assert!(e(solve(&full, &ShiftStep::new(&p, 0.3, TangentialDrive::Shift(f64::NAN, 0.0)), &set, &never))
+            .contains("drive"));
+        assert!(e(solve(&full, &ShiftStep::new(&p, 0.3, d), &TangentialSettings::new(0.0, 5), &never))
+            .contains("tolerance"));
     }
 }
