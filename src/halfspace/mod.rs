@@ -17,12 +17,16 @@
 //! - [`Influence`]: the FFT operators of a grid, built for only the effects asked for (the normal kernel alone for
 //!   a frictionless problem; the tangential kernels on demand; the coupling kernels only when the pair's coupling
 //!   constant is non-zero, so an identical pair never pays for them);
-//! - [`normal`]: the frictionless normal problem (load or approach prescribed).
+//! - [`normal`]: the frictionless normal problem (load or approach prescribed);
+//! - [`dense`]: the small-grid cross-checks with dense influence matrices: the normal problem by Lemke and by
+//!   clarabel's QP, the tangential shift problem at given pressure on the Coulomb disc (clarabel, second-order
+//!   cones) and on the inscribed k-facet pyramid (Lemke).
 //!
 //! Axes and signs are [`kernel`]'s: `z` into body 1, pressure positive in compression, displacements of body 1
 //! relative to body 2 (slip along `x`, `y`; gap change along `z`, positive when the surfaces move apart). Grid
 //! vectors are indexed `ix + MX·iy` (x fastest), i.e. arrays of shape `(MY, MX)` in row-major order.
 
+pub mod dense;
 pub mod kernel;
 pub mod normal;
 mod operator;
