@@ -216,7 +216,7 @@ pub struct ConeSettings {
 
 impl Default for ConeSettings {
     fn default() -> ConeSettings {
-        ConeSettings { tolerance: 1e-10, max_iter: 200 }
+        ConeSettings { tolerance: 1e-12, max_iter: 200 }
     }
 }
 
