@@ -142,3 +142,154 @@ fn the_normal_problem_converges_to_hertz() {
 fn sci(v: &[f64]) -> String {
     v.iter().map(|x| format!("{x:.2e}")).collect::<Vec<_>>().join(", ")
 }
+
+/// `μ p0/a · Σ_j w_j √(r_j² − r²)₊`: Mindlin's tractions as sums of Hertz-like distributions on the radii `r_j`.
+fn hertz_sum(r2: f64, a: f64, p0: f64, terms: &[(f64, f64)]) -> f64 {
+    MU * p0 / a * terms.iter().map(|(w, rj)| w * (rj * rj - r2).max(0.0).sqrt()).sum::<f64>()
+}
+
+/// Max and L2 errors of `q_x` against `theory(r²)`, relative to `μ p0` and to the theory's L2 norm.
+fn traction_errors(grid: &ContactGrid, qx: &[f64], p0: f64, theory: impl Fn(f64) -> f64) -> (f64, f64) {
+    let (mut emax, mut e2, mut n2) = (0.0_f64, 0.0, 0.0);
+    for ((x, y), q) in grid.centres().iter().zip(qx) {
+        let th = theory(x * x + y * y);
+        emax = emax.max((q - th).abs() / (MU * p0));
+        e2 += (q - th).powi(2);
+        n2 += th * th;
+    }
+    (emax, (e2 / n2).sqrt())
+}
+
+/// Cattaneo–Mindlin on the circle, ν = 0 (then the normal and tangential problems uncouple and Mindlin's solution
+/// is exact; Johnson §7.2): a force `Q = 0.5 μP` along x by the disc (clarabel). Expected: the stick radius
+/// `c = a (1 − Q/μP)^(1/3)`, the traction `μp0/a (√(a² − r²) − √(c² − r²))` (Hertz's a and p0), the shift of
+/// body 1 relative to body 2 `w_x = −(3μP/16a)·2(2 − ν)/G·[1 − (1 − Q/μP)^(2/3)]` (Johnson eq. 7.42 for two
+/// identical bodies; negative: body 1 carries +Q, its slip tends to −x) and `q_y ≡ 0` (ν = 0: `C_xy = 0`).
+/// Measured at 15 × 15 and 25 × 25 (12.5 and 20.8 elements across; the stick radius from the stick set's area):
+/// every error falls with refinement and stays within 1.3 × the value measured (module docs, "Measured").
+#[test]
+fn cattaneo_mindlin_on_the_circle() {
+    let ratio = 0.5;
+    // Measured: [stick radius, traction max, traction L2, shift], relative.
+    let measured = [[2.36e-2, 6.93e-2, 6.13e-2, 2.83e-3], [1.45e-2, 4.62e-2, 4.23e-2, 1.11e-4]];
+    let mut errs = Vec::new();
+    for m in [15, 25] {
+        let c = case(0.0, 0.05, 0.05, m, Kernels::Full);
+        let sh = DenseShift::new(&c.inf, &pressure(&c), MU, None).unwrap();
+        let s = sh.disc(ShiftDrive::Force([ratio * MU * LOAD, 0.0]), &ConeSettings::default()).unwrap();
+        assert!(s.status.is_solved() && s.disc_residual <= 1e-8, "{} {:e}", s.message, s.disc_residual);
+        assert!((s.force[0] - ratio * MU * LOAD).abs() <= 1e-9 * LOAD && s.force[1] == 0.0, "{:?}", s.force);
+        assert!(max_of(&s.qy) == 0.0 && s.shift[1] == 0.0);
+        let (hz, g) = (c.hertz, sh.grid());
+        let (a, cr) = (hz.a_x, hz.a_x * (1.0 - ratio).cbrt());
+        let c_num = (s.stick.iter().filter(|s| **s).count() as f64 * g.area() / PI).sqrt();
+        let (emax, el2) = traction_errors(g, &s.qx, hz.p0, |r2| hertz_sum(r2, a, hz.p0, &[(1.0, a), (-1.0, cr)]));
+        let shear_modulus = E / 2.0;
+        let mindlin = -3.0 * MU * LOAD / (16.0 * a) * 2.0 * 2.0 / shear_modulus * (1.0 - (1.0 - ratio).powf(2.0 / 3.0));
+        let e = [(c_num / cr - 1.0).abs(), emax, el2, (s.shift[0] / mindlin - 1.0).abs()];
+        println!(
+            "Cattaneo {m} x {m}: stick radius, q max, q L2, shift errors {} ({} iterations, {:.3} s)",
+            sci(&e),
+            s.iterations,
+            s.seconds
+        );
+        errs.push(e);
+    }
+    for j in 0..4 {
+        assert!(errs[1][j] < errs[0][j], "measure {j} does not fall: {errs:?}");
+        for l in 0..2 {
+            assert!(errs[l][j] <= 1.3 * measured[l][j], "measure {j} level {l}: {:e}", errs[l][j]);
+        }
+    }
+}
+
+/// The disc by clarabel against its own optimality conditions and the sign of the force's multiplier (module docs,
+/// 2a), on ν = 0.3 (so `C_xy ≠ 0`) with an oblique force `0.6 μP` at 30°: |q| ≤ μp everywhere (to 1e-9); where an
+/// element slips (|s| above 1e-6 of the largest slip) its traction is opposite to its slip (cosine −1 to 1e-6) and
+/// on the bound (to 1e-6); sticking elements have |s| ≤ 1e-6 of the largest slip; and the shift `w = σκ z_eq` read
+/// off the equality's multiplier, prescribed, gives back the force (to 1e-8 of it) and the shears (to 1e-6 μp0: measured 2.4e-7, the interior point's
+/// resolution of the elements at the stick–slip boundary, where its disc residual is 2e-7 too). A wrong sign of the
+/// multiplier would give back −F.
+#[test]
+fn disc_optimality_and_the_force_multiplier_is_the_shift() {
+    let c = case(0.3, 0.05, 0.05, 15, Kernels::Full);
+    let p = pressure(&c);
+    let sh = DenseShift::new(&c.inf, &p, MU, None).unwrap();
+    let (fm, t) = (0.6 * MU * LOAD, PI / 6.0);
+    let f = [fm * t.cos(), fm * t.sin()];
+    let s = sh.disc(ShiftDrive::Force(f), &ConeSettings::default()).unwrap();
+    assert!(s.status.is_solved(), "{}", s.message);
+    let smax = s.sx.iter().zip(&s.sy).fold(0.0_f64, |m, (x, y)| m.max(x.hypot(*y)));
+    let (mut slipping, mut sticking) = (0, 0);
+    for &i in sh.contact() {
+        let (q, sl, bound) = ([s.qx[i], s.qy[i]], [s.sx[i], s.sy[i]], MU * p[i]);
+        assert!(norm(q) <= bound * (1.0 + 1e-9), "element {i}: |q| {:e} > μp {bound:e}", norm(q));
+        if norm(sl) > 1e-6 * smax {
+            let cosine = (q[0] * sl[0] + q[1] * sl[1]) / (norm(q) * norm(sl));
+            assert!(cosine < -1.0 + 1e-6 && norm(q) >= bound * (1.0 - 1e-6), "element {i}: cos {cosine}");
+            slipping += 1;
+        }
+        if s.stick[i] {
+            assert!(norm(sl) <= 1e-6 * smax, "sticking element {i} slips {:e}", norm(sl));
+            sticking += 1;
+        }
+    }
+    assert!(slipping > 10 && sticking > 10, "{slipping} slipping, {sticking} sticking");
+    let back = sh.disc(ShiftDrive::Shift(s.shift), &ConeSettings::default()).unwrap();
+    assert!(norm([back.force[0] - f[0], back.force[1] - f[1]]) <= 1e-8 * fm, "{:?} vs {f:?}", back.force);
+    let scale = MU * c.hertz.p0;
+    let dq = max_abs_diff(&back.qx, &s.qx).max(max_abs_diff(&back.qy, &s.qy)) / scale;
+    println!("shears force- vs shift-driven: {dq:.1e} of μp0");
+    assert!(dq <= 1e-6, "{dq:e}");
+    println!(
+        "disc: {} iterations, {:.3} s, residual {:.1e}; back: residual {:.1e}",
+        s.iterations, s.seconds, s.disc_residual, back.disc_residual
+    );
+}
+
+/// Memory (the previous shears q′), ν = 0, 15 × 15 and 25 × 25: (i) loading to `0.3 μP` then to `0.6 μP` in two
+/// steps gives the one-step answer (Mindlin–Deresiewicz: under a monotone load the state does not depend on the
+/// path), to 1e-6 μp0; (ii) unloading from `Q* = 0.6 μP` to `Q = 0.2 μP` gives Mindlin–Deresiewicz's traction
+/// `μp0/a [−√(a² − r²) + 2√(b² − r²) − √(c² − r²)]`, `b = a (1 − (Q* − Q)/2μP)^(1/3)`, `c = a (1 − Q*/μP)^(1/3)`
+/// (Johnson §7.2), with a reversed-slip annulus `b < r < a`; error measured at both levels, falling, within 1.3 ×.
+#[test]
+fn memory_loading_path_and_unloading() {
+    let measured = [[1.19e-1, 1.83e-1], [6.66e-2, 9.84e-2]];
+    let mut errs = Vec::new();
+    for m in [15, 25] {
+        let c = case(0.0, 0.05, 0.05, m, Kernels::Full);
+        let p = pressure(&c);
+        let set = ConeSettings::default();
+        let solve = |prev: Option<(&[f64], &[f64])>, q: f64| {
+            let s = DenseShift::new(&c.inf, &p, MU, prev)
+                .unwrap()
+                .disc(ShiftDrive::Force([q * MU * LOAD, 0.0]), &set)
+                .unwrap();
+            assert!(s.status.is_solved(), "{}", s.message);
+            s
+        };
+        let one = solve(None, 0.6);
+        let half = solve(None, 0.3);
+        let two = solve(Some((&half.qx, &half.qy)), 0.6);
+        let scale = MU * c.hertz.p0;
+        assert!(max_abs_diff(&one.qx, &two.qx) <= 1e-6 * scale, "{:e}", max_abs_diff(&one.qx, &two.qx) / scale);
+        let down = solve(Some((&one.qx, &one.qy)), 0.2);
+        let (a, p0) = (c.hertz.a_x, c.hertz.p0);
+        let (b, cr) = (a * (1.0 - 0.4 / 2.0_f64).cbrt(), a * 0.4_f64.cbrt());
+        let e =
+            traction_errors(c.inf.grid(), &down.qx, p0, |r2| hertz_sum(r2, a, p0, &[(-1.0, a), (2.0, b), (-1.0, cr)]));
+        println!(
+            "unloading {m} x {m}: q max, q L2 errors {:.2e}, {:.2e}; two steps vs one {:.1e}",
+            e.0,
+            e.1,
+            max_abs_diff(&one.qx, &two.qx) / scale
+        );
+        errs.push([e.0, e.1]);
+    }
+    for j in 0..2 {
+        assert!(errs[1][j] < errs[0][j], "measure {j} does not fall: {errs:?}");
+        for l in 0..2 {
+            assert!(errs[l][j] <= 1.3 * measured[l][j], "measure {j} level {l}: {:e}", errs[l][j]);
+        }
+    }
+}
