@@ -293,3 +293,154 @@ fn memory_loading_path_and_unloading() {
         }
     }
 }
+
+/// The least-squares slope of `ln e` against `ln k`: the measured order (negative: falling).
+fn slope(k: &[f64], e: &[f64]) -> f64 {
+    let n = k.len() as f64;
+    let (lk, le): (Vec<f64>, Vec<f64>) = (k.iter().map(|v| v.ln()).collect(), e.iter().map(|v| v.ln()).collect());
+    let (mk, me) = (lk.iter().sum::<f64>() / n, le.iter().sum::<f64>() / n);
+    let num: f64 = lk.iter().zip(&le).map(|(a, b)| (a - mk) * (b - me)).sum();
+    num / lk.iter().map(|a| (a - mk).powi(2)).sum::<f64>()
+}
+
+/// The pyramid's error against the disc, k = 4, 8, 16, 32, on the same grid and pressure (11 × 11 over ±1.2a,
+/// ν = 0.3, 69 elements in contact: LCPs of 280 to 2 281 rows, kept small for Lemke's dense O(m²) pivots). The
+/// reference is the disc by clarabel with the force `0.6 μP` at 30° (between the vertices of every k-gon here);
+/// the pyramid is driven by the disc's shift (errors of the force and the tractions) and by the force (error of
+/// the shift). Expected from the geometry (module docs, 2b): the polygon is inscribed, so its tractions never leave
+/// the disc (checked to 1e-12); the set's error is `1 − cos(π/k) ~ k⁻²`, the direction of a vertex traction is off
+/// by up to `π/k`. Measured (asserted within 1.3 ×, each falling with k, and the fitted orders): total force
+/// `k^-2.4`, shift `k^-2.5`, per-element traction max-norm and disc residual `k^-1` — the tractions converge at
+/// first order only, the force (an average over the patch) at second.
+#[test]
+fn the_pyramid_converges_to_the_disc() {
+    let c = case(0.3, 0.05, 0.05, 11, Kernels::Full);
+    let p = pressure(&c);
+    let sh = DenseShift::new(&c.inf, &p, MU, None).unwrap();
+    let (fm, t) = (0.6 * MU * LOAD, PI / 6.0);
+    let f = [fm * t.cos(), fm * t.sin()];
+    let disc = sh.disc(ShiftDrive::Force(f), &ConeSettings::default()).unwrap();
+    assert!(disc.status.is_solved());
+    let scale = MU * c.hertz.p0;
+    let ks = [4.0, 8.0, 16.0, 32.0];
+    // Measured: [force, traction max, disc residual, shift] per k.
+    let measured = [
+        [3.66e-2, 1.73e-1, 1.85e-1, 8.95e-2],
+        [9.80e-3, 7.42e-2, 8.06e-2, 1.75e-2],
+        [2.93e-3, 3.65e-2, 3.98e-2, 5.08e-3],
+        [2.32e-4, 2.19e-2, 2.09e-2, 4.66e-4],
+    ];
+    let mut errs = Vec::new();
+    for (row, &kf) in ks.iter().enumerate() {
+        let k = kf as usize;
+        let ps = sh.pyramid(k, ShiftDrive::Shift(disc.shift), &LemkeSettings::default()).unwrap();
+        let pf = sh.pyramid(k, ShiftDrive::Force(f), &LemkeSettings::default()).unwrap();
+        for s in [&ps, &pf] {
+            assert!(s.status.is_solved(), "{}", s.message);
+            for &i in sh.contact() {
+                let q = [s.qx[i], s.qy[i]];
+                assert!(norm(q) <= MU * p[i] * (1.0 + 1e-12) && polygon_gauge(q, MU * p[i], k) <= 1.0 + 1e-12);
+            }
+        }
+        assert!(norm([pf.force[0] - f[0], pf.force[1] - f[1]]) <= 1e-10 * fm, "{:?}", pf.force);
+        let dq = (0..p.len()).fold(0.0_f64, |m, i| m.max(norm([ps.qx[i] - disc.qx[i], ps.qy[i] - disc.qy[i]])));
+        let e = [
+            norm([ps.force[0] - f[0], ps.force[1] - f[1]]) / (MU * LOAD),
+            dq / scale,
+            ps.disc_residual,
+            norm([pf.shift[0] - disc.shift[0], pf.shift[1] - disc.shift[1]]) / norm(disc.shift),
+        ];
+        println!(
+            "k = {k}: force, traction, residual, shift errors {} | shift-driven {} pivots {:.3} s, force-driven {} pivots {:.3} s",
+            sci(&e), ps.iterations, ps.seconds, pf.iterations, pf.seconds
+        );
+        for j in 0..4 {
+            assert!(e[j] <= 1.3 * measured[row][j], "k = {k} measure {j}: {:e}", e[j]);
+        }
+        errs.push(e);
+    }
+    let orders: Vec<f64> = (0..4).map(|j| slope(&ks, &errs.iter().map(|e| e[j]).collect::<Vec<_>>())).collect();
+    println!("fitted orders (force, traction, residual, shift): {}", sci(&orders));
+    for j in 0..4 {
+        assert!(errs.windows(2).all(|w| w[1][j] < w[0][j]), "measure {j} does not fall with k: {errs:?}");
+    }
+    assert!(orders[0] < -1.5 && orders[3] < -1.5, "force and shift orders {orders:?}");
+    assert!(orders[1] < -0.7 && orders[2] < -0.7, "traction and residual orders {orders:?}");
+}
+
+/// A force beyond what the friction set carries is the status `gross_sliding`, not a panic nor an error: `1.01 μP`
+/// for the disc and for the 8-gon (a vertex on x), both by the exact pre-check and by the solvers themselves when
+/// asked directly (clarabel's infeasibility certificate; Lemke's ray on the positive semi-definite LCP); `0.9 μP`
+/// at 45° exceeds the inscribed square (`μP cos 45°`) but not the disc. No element in contact: a zero shift or
+/// force is solved with no shear, a non-zero force slides. A tensile load is `infeasible` for both normal solvers.
+#[test]
+fn gross_sliding_and_infeasible_loads_are_statuses() {
+    let c = case(0.3, 0.05, 0.05, 9, Kernels::Full);
+    let p = pressure(&c);
+    let sh = DenseShift::new(&c.inf, &p, MU, None).unwrap();
+    let cone = ConeSettings::default();
+    let lemke = LemkeSettings::default();
+    let over = ShiftDrive::Force([1.01 * MU * LOAD, 0.0]);
+    assert_eq!(sh.disc(over, &cone).unwrap().status, DenseStatus::GrossSliding);
+    assert_eq!(sh.pyramid(8, over, &lemke).unwrap().status, DenseStatus::GrossSliding);
+    assert_eq!(sh.disc_solve(over, &cone).status, DenseStatus::GrossSliding);
+    assert_eq!(sh.pyramid_solve(8, over, &lemke).status, DenseStatus::GrossSliding);
+    let diagonal = ShiftDrive::Force([0.9 * MU * LOAD / 2.0_f64.sqrt(); 2]);
+    assert_eq!(sh.pyramid(4, diagonal, &lemke).unwrap().status, DenseStatus::GrossSliding);
+    assert_eq!(sh.pyramid_solve(4, diagonal, &lemke).status, DenseStatus::GrossSliding);
+    assert!(sh.disc(diagonal, &cone).unwrap().status.is_solved());
+    assert!(sh.pyramid(8, diagonal, &lemke).unwrap().status.is_solved());
+    let gross = sh.disc(over, &cone).unwrap();
+    assert!(gross.message.contains("gross sliding") && Termination::from(gross.status) == Termination::Infeasible);
+
+    let free = DenseShift::new(&c.inf, &vec![0.0; p.len()], MU, None).unwrap();
+    let s = free.disc(ShiftDrive::Shift([1e-3, 0.0]), &cone).unwrap();
+    assert!(s.status.is_solved() && max_of(&s.qx) == 0.0 && s.shift == [1e-3, 0.0]);
+    assert!(free.pyramid(4, ShiftDrive::Force([0.0; 2]), &lemke).unwrap().status.is_solved());
+    assert_eq!(free.disc(ShiftDrive::Force([1.0, 0.0]), &cone).unwrap().status, DenseStatus::GrossSliding);
+
+    let dn = DenseNormal::new(&c.inf, &c.h).unwrap();
+    assert_eq!(dn.lemke(NormalDrive::Load(-1.0), &lemke).unwrap().status, DenseStatus::Infeasible);
+    assert_eq!(dn.clarabel(NormalDrive::Load(-1.0), &QpSettings::default()).unwrap().status, DenseStatus::Infeasible);
+    let zero = dn.lemke(NormalDrive::Load(0.0), &lemke).unwrap();
+    assert!(zero.status.is_solved() && max_of(&zero.pressure) == 0.0 && zero.approach == 0.0);
+}
+
+/// Bad input is refused with an [`ArgumentError`] naming the argument; nothing panics.
+#[test]
+fn bad_input_is_refused_by_name() {
+    let c = case(0.3, 0.05, 0.05, 7, Kernels::Full);
+    let n = c.h.len();
+    let arg = |e: ArgumentError| e.argument;
+    assert_eq!(arg(DenseNormal::new(&c.inf, &c.h[1..]).unwrap_err()), "separation");
+    let mut nan = c.h.clone();
+    nan[3] = f64::NAN;
+    assert_eq!(arg(DenseNormal::new(&c.inf, &nan).unwrap_err()), "separation");
+    let dn = DenseNormal::new(&c.inf, &c.h).unwrap();
+    assert_eq!(arg(dn.lemke(NormalDrive::Approach(f64::NAN), &LemkeSettings::default()).unwrap_err()), "drive");
+    assert_eq!(arg(dn.clarabel(NormalDrive::Load(f64::INFINITY), &QpSettings::default()).unwrap_err()), "drive");
+    assert_eq!(arg(dn.gap(&c.h[1..], 0.0).unwrap_err()), "pressure");
+    let p = vec![1.0; n];
+    let normal_only = Influence::new(*c.inf.grid(), HalfSpace::new(E, 0.3).unwrap().compliance(), Kernels::Normal);
+    assert_eq!(arg(DenseShift::new(&normal_only.unwrap(), &p, MU, None).unwrap_err()), "influence");
+    let mut neg = p.clone();
+    neg[0] = -1.0;
+    assert_eq!(arg(DenseShift::new(&c.inf, &neg, MU, None).unwrap_err()), "pressure");
+    for mu in [0.0, -0.1, f64::NAN, f64::INFINITY] {
+        assert_eq!(arg(DenseShift::new(&c.inf, &p, mu, None).unwrap_err()), "mu");
+    }
+    assert_eq!(arg(DenseShift::new(&c.inf, &p, MU, Some((&p, &p[1..]))).unwrap_err()), "previous");
+    let sh = DenseShift::new(&c.inf, &p, MU, None).unwrap();
+    let s = ShiftDrive::Shift([0.0; 2]);
+    assert_eq!(arg(sh.pyramid(2, s, &LemkeSettings::default()).unwrap_err()), "facets");
+    assert_eq!(arg(sh.pyramid(1025, s, &LemkeSettings::default()).unwrap_err()), "facets");
+    let big = sh.pyramid(400, s, &LemkeSettings::default()).unwrap_err();
+    assert!(big.argument == "facets" && big.message.contains("16384"), "{big}");
+    let bad = ShiftDrive::Force([f64::NAN, 0.0]);
+    assert_eq!(arg(sh.disc(bad, &ConeSettings::default()).unwrap_err()), "drive");
+    assert_eq!(arg(ConeSettings::new(0.0, 10).unwrap_err()), "tolerance");
+    assert_eq!(arg(ConeSettings::new(1e-8, 0).unwrap_err()), "max_iter");
+    let huge = ContactGrid::new(65, 64, 1.0, 1.0, 0.0, 0.0).unwrap();
+    let inf = Influence::new(huge, HalfSpace::new(E, 0.3).unwrap().compliance(), Kernels::Full).unwrap();
+    assert!(DenseNormal::new(&inf, &vec![0.0; huge.len()]).unwrap_err().message.contains("4096"));
+}
