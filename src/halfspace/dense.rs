@@ -89,7 +89,7 @@
 //! `x = q/σ` (`σ = μ max p`), `P = C_tt/κ` (`κ` the largest diagonal entry of `C_tt` on `S`), the equality rows
 //! `Σ x = F/(Aσ)` and the cone rows `s = (μp_i/σ, x_i)`: `w = σκ z_eq` and the slip is `s_i = σκ z_i` (the dual's
 //! last two components in the cone of element `i`). Tested: the `w` so found, prescribed, gives back `F` and the
-//! same shears ([`tests`](#tests), `disc_force_multiplier_is_the_shift`). The slip reported is recomputed from
+//! same shears (test `disc_optimality_and_the_force_multiplier_is_the_shift`). The slip reported is recomputed from
 //! the primal, `s = w + C_tt(q − q′)`, not read from the dual.
 //!
 //! ### 2b. The pyramid with k facets, by Lemke ([`DenseShift::pyramid`])
@@ -98,7 +98,8 @@
 //! `θ_m = 2πm/k` (a vertex on `±x`, and on `±y` when 4 divides k). Inscribed, so that every admissible traction is
 //! also admissible for the disc (the pyramid never transmits more than Coulomb allows) and the vertex formulation
 //! below needs no scaling; its facets lie at `μ p_i cos(π/k)` from the centre, so the traction bound is low by at
-//! most the factor `1 − cos(π/k) ≈ π²/(2k²)`, where the friction direction falls mid-facet. With
+//! most the factor `1 − cos(π/k) ≈ π²/(2k²)`, where the friction direction falls mid-facet; a slipping element's
+//! traction sits at a vertex (or on a facet), so its direction is off by up to `π/k` ("Measured" below). With
 //! `q_i = Σ_m β_im e_m` (`β ≥ 0`) and the slip magnitude `γ_i` (Stewart–Trinkle's polyhedral law; Klarbring's
 //! for the static case):
 //!
@@ -129,9 +130,48 @@
 //! shear: the fixed-point form of Coulomb's law, zero exactly when the law holds; in traction units relative to
 //! `μ max p`). For the pyramid it measures how far its answer is from the disc law.
 //!
-//! ## Measured (tests below; release build, this machine, shared)
+//! ## Measured (the tests in `dense/tests.rs`; release build, 2 shared cores; times are wall clock of one run)
 //!
-//! See the tests' docs for the numbers and where each expected value comes from.
+//! Steel pair (`E = 210 000` MPa both, no coupling), `P = 1 000` N, `μ = 0.3`, grids `m × m` over ±1.2 semi-axes.
+//!
+//! **Normal, against Hertz** (Johnson §4.2; ν = 0.3; relative errors; the semi-axes from the pressure's second
+//! moments, `⟨x²⟩ = a²/5`; "L2" the pressure's relative L2 error at the centres):
+//!
+//! | case | grid (across) | p0 | approach | a | b | p L2 | Lemke pivots, s |
+//! |---|---|---|---|---|---|---|---|
+//! | circle | 15² (12.5) | 1.6e-3 | 6.4e-4 | 2.2e-3 | 2.2e-3 | 2.1e-2 | 131, 0.003 |
+//! | circle | 25² (20.8) | 2.7e-4 | 5.3e-4 | 2.9e-4 | 2.9e-4 | 1.8e-2 | 351, 0.02 |
+//! | B/A = 3 (a/b = 2.07) | 15² | 1.6e-3 | 6.2e-4 | 2.1e-3 | 2.3e-3 | 2.1e-2 | 131, 0.003 |
+//! | B/A = 3 | 25² | 2.5e-4 | 5.3e-4 | 2.2e-4 | 3.4e-4 | 1.7e-2 | 351, 0.02 |
+//!
+//! (at 35² = 1 225 elements, 29 across, a one-off run: p0 1.3e-4, approach 2.7e-4, a 1.9e-4.) Lemke and clarabel
+//! (10 iterations, polished) agree to 1e-13 of p0; clarabel's dense QP takes 0.02 s at 225 elements, 0.3 s at 625
+//! and 2 s at 1 225, Lemke 0.003, 0.02 and 0.25 s.
+//!
+//! **Cattaneo–Mindlin** (ν = 0, `Q = 0.5 μP`, the disc): stick radius (from the stick set's area) 2.4e-2 and
+//! 1.5e-2, traction max-norm 6.9e-2 and 4.6e-2 of μp0 (the slope of the traction is singular at r = c: first order
+//! at best), traction L2 6.1e-2 and 4.2e-2, the shift against Mindlin's 2.8e-3 and 1.1e-4, at 15² and 25²;
+//! clarabel 9–11 iterations, 0.06 and 0.4 s. Unloading to `0.2 μP` from `0.6 μP` against Mindlin–Deresiewicz:
+//! traction max 1.2e-1 and 6.7e-2, L2 1.8e-1 and 9.8e-2 (of a smaller traction); two loading steps equal one to
+//! 2e-11 μp0.
+//!
+//! **The pyramid against the disc** (11², ν = 0.3, 69 elements in contact, force `0.6 μP` at 30°; relative to μP,
+//! μp0, μp0 and the disc's shift):
+//!
+//! | k | LCP rows | force | traction max | disc residual | shift (force-driven) | pivots (shift / force), s |
+//! |---:|---:|---:|---:|---:|---:|---|
+//! | 4 | 345 | 3.7e-2 | 1.7e-1 | 1.9e-1 | 9.0e-2 | 175 / 197, 0.01 |
+//! | 8 | 621 | 9.8e-3 | 7.4e-2 | 8.1e-2 | 1.8e-2 | 169 / 183, 0.02 |
+//! | 16 | 1 173 | 2.9e-3 | 3.7e-2 | 4.0e-2 | 5.1e-3 | 175 / 323, 0.06 |
+//! | 32 | 2 277 | 2.3e-4 | 2.2e-2 | 2.1e-2 | 4.7e-4 | 169 / 519, 0.16–0.19 |
+//!
+//! Fitted orders in k: force −2.4, shift −2.5 (the set's error `1 − cos(π/k) ~ k⁻²`), tractions and disc residual
+//! −1.0: a vertex traction's direction is quantised to `π/k`, so the per-element answer converges at first order
+//! only, while the totals, averaged over the patch, converge at second. The disc by clarabel on the same problem:
+//! 10 iterations, 0.04 s, disc residual 2e-7, force exact to 1e-12. To reach 1e-3 of μP in the total force the
+//! pyramid needs k = 32 here (k = 16: 2.9e-3); the disc gets there in fewer seconds on this grid. Lemke's pivots
+//! hardly grow with k when the shift is prescribed (169–175), but each pivot costs O(rows²) on the dense matrix,
+//! and the rows grow as `(k + 1)|S|`: the pyramid tests stay at 69 elements in contact for that reason.
 
 use super::{ContactGrid, Influence};
 use crate::error::ArgumentError;

@@ -304,7 +304,7 @@ fn slope(k: &[f64], e: &[f64]) -> f64 {
 }
 
 /// The pyramid's error against the disc, k = 4, 8, 16, 32, on the same grid and pressure (11 × 11 over ±1.2a,
-/// ν = 0.3, 69 elements in contact: LCPs of 280 to 2 281 rows, kept small for Lemke's dense O(m²) pivots). The
+/// ν = 0.3, 69 elements in contact: LCPs of 345 to 2 281 rows, kept small for Lemke's dense O(m²) pivots). The
 /// reference is the disc by clarabel with the force `0.6 μP` at 30° (between the vertices of every k-gon here);
 /// the pyramid is driven by the disc's shift (errors of the force and the tractions) and by the force (error of
 /// the shift). Expected from the geometry (module docs, 2b): the polygon is inscribed, so its tractions never leave
