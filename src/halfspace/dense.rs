@@ -248,7 +248,8 @@ impl From<DenseStatus> for Termination {
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[non_exhaustive]
 pub struct ConeSettings {
-    /// clarabel's gap and feasibility tolerances (dimensionless, on the scaled problem). Default 1e-10.
+    /// clarabel's gap and feasibility tolerances (dimensionless, on the scaled problem). Default 1e-12 (1e-10 left a
+    /// disc residual of 1e-6 on the 11 × 11 test grid; 1e-12 converges in 9–11 iterations there, 2e-7).
     pub tolerance: f64,
     /// Interior-point iteration limit. Default 200.
     pub max_iter: u32,
