@@ -22,12 +22,16 @@
 //!   (Cattaneo–Mindlin, load paths);
 //! - [`path`]: the typed 3D problem — bodies, grid, profile, friction, a path of steps — solving each step from the
 //!   previous state, coupling the normal and tangential problems only for a dissimilar pair, with a status per
-//!   step (a contact cut off by the grid's edge is not `Solved`).
+//!   step (a contact cut off by the grid's edge is not `Solved`);
+//! - [`dense`]: the small-grid cross-checks with dense influence matrices: the normal problem by Lemke and by
+//!   clarabel's QP, the tangential shift problem at given pressure on the Coulomb disc (clarabel, second-order
+//!   cones) and on the inscribed k-facet pyramid (Lemke).
 //!
 //! Axes and signs are [`kernel`]'s: `z` into body 1, pressure positive in compression, displacements of body 1
 //! relative to body 2 (slip along `x`, `y`; gap change along `z`, positive when the surfaces move apart). Grid
 //! vectors are indexed `ix + MX·iy` (x fastest), i.e. arrays of shape `(MY, MX)` in row-major order.
 
+pub mod dense;
 pub mod kernel;
 pub mod normal;
 mod operator;
