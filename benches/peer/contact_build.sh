@@ -197,9 +197,10 @@ contact_build_line() {
       contact_build="gfortran, no MKL (WITH_MKLFFT undefined: no FFT products or preconditioners), OPENMP=, FFOPTS='$contact_fflags', MKLLIB='$contact_libs'"
     fi
   else
-    if nm "$bin" 2>/dev/null | grep -q 'DftiCommitDescriptor'; then
-      v=$(strings "$bin" | grep -m1 -oE 'Intel\(R\) oneAPI Math Kernel Library Version [0-9.]+' || true)
-      contact_build="given executable $bin: MKL build (DFTI linked${v:+; $v})"
+    # MKL's DFTI entry points (DFTI_COMMIT_DESCRIPTOR_EXTERNAL, ...) are linked statically into an MKL build.
+    # (grep -c reads all of nm's output: grep -q would end the pipe early, which pipefail takes for a failure.)
+    if [[ $(nm "$bin" 2>/dev/null | grep -ci 'dfti_commit_descriptor') -gt 0 ]]; then
+      contact_build="given executable $bin: an MKL build (MKL's DFTI linked in)"
       contact_bin_mkl=1
     else
       contact_build="given executable $bin: no MKL (no DFTI symbols)"
