@@ -111,9 +111,9 @@ out_stats() {
 }
 # The author's figures for a perfc_test input: "ncon" or "nslp", and ItCG / ItGS, from get_times.ref_out.
 perfc_ref() {
-  awk -v n="$1" '$1 == n ":" {
-      gsub(/,/, " "); for (i = 2; i < NF; i++) { if ($i == "ncon=" || $i == "nslp=") c = $(i + 1); if ($i == "ItCG=" || $i == "ItGS=") it = $(i + 1) }
-      print c, it; exit }' "$contact_src/perfc_test/get_times.ref_out"
+  # (lines like "norm_problm_8p: ncon=200980, ItCG=   31, ...": no blank after '=' at six digits)
+  grep -E "^$1 *:" "$contact_src/perfc_test/get_times.ref_out" | head -n 1 |
+    sed -nE 's/.*(ncon|nslp)= *([0-9]+).*(ItCG|ItGS)= *([0-9]+).*/\2 \4/p'
 }
 # Grid of the input's first case (MX × MY) from the .inp: the line tagged MX,MY.
 inp_grid() { awk '/MX, *MY/ && $0 !~ /^[ \t]*%/ { print $1 " × " $2; exit }' "$1"; }

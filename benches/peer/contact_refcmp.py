@@ -7,8 +7,9 @@ Used by benches/peer/contact_build.sh (contact_ref_check) to refuse a CONTACT bu
 author's answers. Standard library only.
 
 What is compared: for every case (a line ` Case     K`), CONTACT's printed results, the part of the case that
-starts at the line `PBTNFS.` (the echo of the control digits that CONTACT's output routine writes first) and ends at
-the next case, at the timer table (lines starting with `|`) or at a line `Parallel run using ...`. That part holds the
+starts at the line `PBTNFS.` (the echo of the control digits that CONTACT's output routine writes first at output
+level O >= 2) or, at O = 1, at the header of the total forces (`FN FX FY MZ ...`), and ends at the next case, at
+the timer table (lines starting with `|`, or `Performance timers:`) or at a line `Parallel run using ...`. That part holds the
 problem echo (materials, friction, kinematics), the total forces (FN FX FY MZ, elastic energy, frictional work), the
 relative forces and approach (FN/G, FX/FSTAT/FN, FY/FSTAT/FN or the shifts, APPROACH, PMAX), the element counts
 (NPOT NCON NADH NSLIP, outer iterations INORM ITANG), the map of element states and, at output level O >= 3, the
@@ -33,6 +34,7 @@ import sys
 
 NUM = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([EeDd][+-]?\d+)?$")
 ZERO = 1e-12
+TOTALS = re.compile(r"^ +FN +FX +FY +MZ ")
 ROUNDOFF = 1e-8
 
 
@@ -63,7 +65,7 @@ def result_parts(path):
                 continue
             if case is None:
                 continue
-            if "PBTNFS." in line:
+            if "PBTNFS." in line or (not keep and TOTALS.match(line)):
                 keep = True
                 parts[case] = []
             if line.startswith("|") or "Parallel run using" in line or "Performance timers" in line:
