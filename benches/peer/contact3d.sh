@@ -10,6 +10,11 @@
 #   env CASES3D="cattaneo spence35 subsurf norm_problm_1p norm_problm_2p norm_problm_4p norm_problm_8p
 #                tang_problm_1s tang_problm_2s tang_problm_4s tang_problm_8s"   the inputs (examples/, perfc_test/)
 #       REPEATS=3        timed runs per input; the median is reported
+#       MALLOC_TUNED=1   also time every input with glibc's malloc told to keep freed memory (GLIBC_TUNABLES=
+#                        glibc.malloc.mmap_max=0:glibc.malloc.trim_threshold=4294967296): CONTACT allocates and
+#                        frees its large work arrays over and over, and with glibc's defaults each large block is a
+#                        fresh mmap whose pages the kernel zero-fills again (half of 8p's and 8s's CPU is system
+#                        time); 0 skips these runs
 #       ONCE_OVER=180    CPU seconds: an input whose first run takes longer is timed once
 #       CPU=0            the core every timed run is pinned to (taskset)
 #       KEEP=DIR         keep the work folder (MKL wheels, CONTACT build, inputs, outputs) in DIR; a second run
@@ -39,6 +44,8 @@ cases=${CASES3D:-"cattaneo spence35 subsurf norm_problm_1p norm_problm_2p norm_p
 repeats=${REPEATS:-3}
 once_over=${ONCE_OVER:-180}
 cpu=${CPU:-0}
+malloc_tuned=${MALLOC_TUNED:-1}
+tunables="glibc.malloc.mmap_max=0:glibc.malloc.trim_threshold=4294967296"
 export LC_ALL=C
 
 say() { echo "[contact3d] $*" >&2; }
@@ -90,13 +97,34 @@ gfortran_version=$(gfortran --version | head -n 1)
 
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 loadavg() { cut -d' ' -f1-3 /proc/loadavg; }
-# One timed run of CONTACT on NAME.inp in DIR, pinned to one core under GNU time: "user sys maxrss_kB" appended
-# to DIR/times.
+# One timed run of CONTACT on NAME.inp in DIR, pinned to one core under GNU time, with the environment
+# assignments ENV... (none, or GLIBC_TUNABLES=...): "user sys maxrss_kB" appended to DIR/times.
 timed_run() {
   local dir=$1 name=$2 tf="$1/time.tmp"
-  (cd "$dir" && taskset -c "$cpu" /usr/bin/time -o "$tf" -f '%U %S %M' "$contact_bin" 2 "$name" </dev/null \
-    >stdout.txt 2>&1) || die "CONTACT failed on $name (see $dir/stdout.txt)"
+  shift 2
+  (cd "$dir" && env "$@" taskset -c "$cpu" /usr/bin/time -o "$tf" -f '%U %S %M' "$contact_bin" 2 "$name" \
+    </dev/null >stdout.txt 2>&1) || die "CONTACT failed on $name (see $dir/stdout.txt)"
   tail -n 1 "$tf" >>"$dir/times"
+}
+# The median run of DIR/times (by user + sys): "cpu user sys rss_MiB".
+median_run() {
+  awk '{ printf "%.2f %.2f %.2f %.1f\n", $1 + $2, $1, $2, $3 / 1024 }' "$1/times" | sort -g |
+    awk '{ v[NR] = $0 } END { print v[int((NR + 1) / 2)] }'
+}
+# Time DIR's input REPEATS times (once when the first run takes over ONCE_OVER s); prints the number of runs.
+time_input() {
+  local dir=$1 name=$2 first r runs=1
+  shift 2
+  timed_run "$dir" "$name" "$@"
+  first=$(awk '{ print $1 + $2 }' "$dir/times")
+  if awk -v t="$first" -v o="$once_over" 'BEGIN { exit !(t <= o) }'; then
+    for ((r = 2; r <= repeats; r++)); do
+      say "$name: run $r/$repeats${*:+ ($*)}"
+      timed_run "$dir" "$name" "$@"
+      runs=$r
+    done
+  fi
+  echo "$runs"
 }
 
 # CONTACT's .out, last case: "NPOT NCON NADH NSLIP" and its inner iteration counts (sum over cases of the
@@ -143,15 +171,15 @@ for name in $cases; do
   mkdir -p "$d"
   cp "$inp" "$d/"
   say "$name: first run (checked)"
-  timed_run "$d" "$name"
-  # The check of this run's answers.
+  runs=$(time_input "$d" "$name") || exit 1
+  # The check of the first run's answers (the runs after it compute the same).
   read -r npot ncon nadh nslip itn itt < <(out_stats "$d/$name.out")
   if [[ $kind == example ]]; then
     ref=$contact_src/examples/$name.ref_out
     [[ -f $ref ]] || die "no reference output $ref"
     check=$(python3 "$here/contact_refcmp.py" "$d/$name.out" "$ref") || {
       echo "$check" >&2
-      die "$name: CONTACT's answers differ from $name.ref_out beyond the printed digits; not timed"
+      die "$name: CONTACT's answers differ from $name.ref_out beyond the printed digits"
     }
     checkcell="= $name.ref_out ($(echo "$check" | awk '{ print $1 }') numbers)"
     notes+=("$name: $check.")
@@ -159,39 +187,47 @@ for name in $cases; do
     read -r rcount rit < <(perfc_ref "$name") || true
     [[ -n ${rcount:-} ]] || die "$name: not in perfc_test/get_times.ref_out"
     if [[ $name == norm_* ]]; then mine=$ncon what=NCON; else mine=$nslip what=NSLIP; fi
-    [[ $mine == "$rcount" ]] || die "$name: $what = $mine, the author's get_times.ref_out has $rcount; not timed"
+    [[ $mine == "$rcount" ]] || die "$name: $what = $mine, the author's get_times.ref_out has $rcount"
     checkcell="$what $mine = get_times.ref_out"
     if [[ $name == norm_* ]]; then myit=$itn; else myit=$itt; fi
     notes+=("$name: $what $mine as the author's get_times.ref_out (CONTACT r1274, 2016); inner iterations $myit (the author's: $rit).")
   fi
-  first=$(awk '{ print $1 + $2 }' "$d/times")
-  runs=1
-  if awk -v t="$first" -v o="$once_over" 'BEGIN { exit !(t <= o) }'; then
-    for ((r = 2; r <= repeats; r++)); do
-      say "$name: run $r/$repeats"
-      timed_run "$d" "$name"
-      runs=$r
-    done
-  else
-    notes+=("$name: timed once (its first run took $first s CPU, over ONCE_OVER = $once_over s).")
+  ((runs < repeats)) && notes+=("$name: timed once (its first run took over ONCE_OVER = $once_over s of CPU).")
+  read -r tcpu tuser tsys trss <<<"$(median_run "$d")"
+  tcells="$tcpu | $tuser | $tsys | $trss | $runs"
+  if ((malloc_tuned)); then
+    mkdir -p "$d/tuned"
+    cp "$inp" "$d/tuned/"
+    say "$name: with GLIBC_TUNABLES=$tunables"
+    truns=$(time_input "$d/tuned" "$name" "GLIBC_TUNABLES=$tunables") || exit 1
+    # The same answers as the run with glibc's defaults, to every printed digit.
+    same=$(python3 "$here/contact_refcmp.py" "$d/tuned/$name.out" "$d/$name.out") || {
+      echo "$same" >&2
+      die "$name: the run with GLIBC_TUNABLES printed other results"
+    }
+    read -r ucpu uuser usys urss <<<"$(median_run "$d/tuned")"
+    tcells="$tcells | $ucpu | $uuser | $usys | $urss | $truns"
   fi
-  # Median of user+sys; the user and system parts and the peak memory of the same (median) run.
-  med=$(awk '{ printf "%.2f %.2f %.2f %.1f\n", $1 + $2, $1, $2, $3 / 1024 }' "$d/times" | sort -g | awk '{ v[NR] = $0 } END { print v[int((NR + 1) / 2)] }')
-  read -r tcpu tuser tsys trss <<<"$med"
   grid=$(inp_grid "$inp")
   ncases=$(inp_cases "$inp")
-  rows+=("| $name | $grid | $npot | $ncases | $ncon | $nadh | $nslip | $checkcell | $tcpu | $tuser | $tsys | $trss | $runs | $(out_timers "$d/$name.out") |")
-  say "$name: CPU $tcpu s (user $tuser, sys $tsys), $trss MiB, $runs run(s)"
+  rows+=("| $name | $grid | $npot | $ncases | $ncon | $nadh | $nslip | $checkcell | $tcells | $(out_timers "$d/$name.out") |")
+  say "$name: $tcells"
 done
 
 {
-  echo "| input | grid MX × MY (first case) | NPOT | cases | NCON | NADH | NSLIP | check of this run | CPU user+sys [s] | user [s] | sys [s] | peak RSS [MiB] | runs | CONTACT's own timers, CPU total / NORM / TANG [s] |"
-  echo "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---|"
+  if ((malloc_tuned)); then
+    echo "| input | grid MX × MY (first case) | NPOT | cases | NCON | NADH | NSLIP | check of this run | CPU user+sys [s] | user [s] | sys [s] | peak RSS [MiB] | runs | with malloc tunables: CPU user+sys [s] | user [s] | sys [s] | peak RSS [MiB] | runs | CONTACT's own timers, CPU total / NORM / TANG [s] |"
+    echo "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+  else
+    echo "| input | grid MX × MY (first case) | NPOT | cases | NCON | NADH | NSLIP | check of this run | CPU user+sys [s] | user [s] | sys [s] | peak RSS [MiB] | runs | CONTACT's own timers, CPU total / NORM / TANG [s] |"
+    echo "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---|"
+  fi
   printf '%s\n' "${rows[@]}"
   echo
   echo "**CONTACT build measured: $contact_build.** CONTACT $contact_rev, commit $contact_commit, $gfortran_version."
   echo "Element counts (NPOT potential contact, NCON contact, NADH adhesion, NSLIP slip) are those CONTACT prints for the last case of each input."
-  echo "Times: CPU (user + sys) and peak RSS of the whole process (GNU time), pinned to core $cpu (taskset), one thread (OPENMP= build, MKL sequential), median of $repeats runs (one run when the first took over $once_over s); the input as shipped: \`contact_linux64 2 NAME\` in a folder holding NAME.inp. CONTACT's own timers are from the last run (its .out, rounded to 0.1 s)."
+  echo "Times: CPU (user + sys) and peak RSS of the whole process (GNU time), pinned to core $cpu (taskset), one thread (OPENMP= build, MKL sequential), median of $repeats runs (one run when the first took over $once_over s); the input as shipped: \`contact_linux64 2 NAME\` in a folder holding NAME.inp. CONTACT's own timers are from the last run with glibc's defaults (its .out, rounded to 0.1 s)."
+  ((malloc_tuned)) && echo "With malloc tunables: the same runs with \`GLIBC_TUNABLES=$tunables\` (glibc's malloc serves every block from its heap and keeps freed memory instead of returning it to the kernel, so CONTACT's repeated allocations of large work arrays are not zero-filled by the kernel again each time); each such run's printed results equal the default run's to every digit (contact_refcmp.py). CONTACT's best time is the smaller of the two."
   echo "Build check before timing (contact_refcmp.py, every printed result to one unit of its last digit): $(printf '%s. ' "${contact_ref_summary[@]}")"
   echo "Machine: $(nproc) cores, shared; load average $load_start at the start, $(loadavg) at the end."
   for note in "${notes[@]}"; do echo "Note: $note"; done
