@@ -790,7 +790,8 @@ README_NOTES = """
   shift (T = 1) with W = 0 continuing the previous stage (P = 0; stage 1 starts from zero, P = 2); the growth of the
   tangential displacement difference between stages is the slip. Spence: the stick radius is a constant fraction of
   the contact radius (one half for these μ, ν). Stage 1 reads subsurface points at the element centres of row 23
-  (y = 0), depth 1e-6, computed in every stage (S = 1).
+  (y = 1e-4, the grid's centre row), depth 1e-6 mm, computed in every stage (S ≥ 1). In the last stage CONTACT has
+  NCON = 921, NADH = 225: radii √(N/π)·DX of 3.42 and 1.69 mm, a ratio 0.49.
 - **subsurf**: one element of 1 × 1 mm (Kalker 1990, fig. 5.20: subsurface stresses under a uniformly loaded
   square): case 1 FN = 1 (pn = 1), case 2 steady rolling with FX/(μFN) = 0.999 (μ = 1), i.e. px ≈ 0.999 as well;
   G = 1, ν = 0.28. Its point is the subsurface field, in `subsurf_case*_axis.csv` and CONTACT's `.subs` files.
@@ -798,8 +799,22 @@ README_NOTES = """
   comment: "right wheel, lateral displacement 6.2 mm"): G = 82 000, ν = 0.28, μ = 0.3, approach PEN = 0.02084 mm
   prescribed (N = 0), profile IBASE = 2 (radius RM = 483.931 mm in x, the wheel–rail gap p(y) given pointwise in y),
   71 × 81 elements of 0.1 mm. norm_problm_1p: the normal problem only (T = 0); tang_problm_1s: the same with a shift
-  (T = 1, P = 2 from zero tractions) CKSI = 0.0005 mm, CETA = −0.001 mm, CPHI = 0.0008 rad. The larger members
-  (2p … 8p, 2s … 8s) refine the grid by 2, 4, 8 (DX = 0.05 … 0.0125 mm) on the same problem.
+  (T = 1, P = 2 from zero tractions) CKSI = 0.0005 mm, CETA = −0.001 mm, CPHI = 0.0008 rad. The rotation CPHI is
+  about the origin of the grid's coordinates (the spin centre SPINXO, SPINYO defaults to (0, 0)), not about the
+  patch's centre: the contact occupies x ∈ [−3.3, 3.3], y ∈ [−5.9, 1.6] (element centres in contact). The larger
+  members (2p … 8p, 2s … 8s) refine the grid by 2, 4, 8 (DX = 0.05 … 0.0125 mm) on the same problem.
+
+### What was read
+
+CONTACT's user guide (`doc/user-guide.tex` of the tree named above): "The control integers" (module 3's digits),
+"Specification of the input file <experim>.inp" (module 3: the order of the input lines), "Potential contact
+area and discretisation" (IPOTCN, grid, element numbering and centres), "Non-Hertzian geometry specification"
+(IBASE, IPLAN), "Kinematic variables" (PEN, FN, shifts, creepages, rigid shift formulas), "Homogeneous elastic
+materials" (G, ν, combined constants), "Solution processes" (MAXGS … EPS), "Subsurface stresses" (ISUBS blocks),
+"Specification of the file <experim>.<case>.mat", "Data units and sign conventions", "Formulation of the contact
+problem" and "Discretisation of the problem" (signs, shift S = W + u − u′), and the examples' chapters ("The Cattaneo
+shift problem", "Dissimilar materials: Spence compression"); CONTACT's source `src/m_hierarch_data.f90` for the
+difference parameter K; the inputs' own comments.
 """
 
 
