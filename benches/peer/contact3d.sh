@@ -64,7 +64,7 @@ contact_mkl=${MKL:-1}
 [[ $contact_mkl == 0 || $contact_mkl == 1 ]] || die "MKL must be 1 (build with Intel oneMKL, the default) or 0"
 # shellcheck source=benches/peer/contact_build.sh
 source "$here/contact_build.sh"
-contact_install_tools python3
+contact_install_tools
 
 # 1. CONTACT: sources, build, and the build's check against the author's reference outputs.
 contact_get_source "$contact_src"

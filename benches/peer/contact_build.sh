@@ -29,12 +29,13 @@ declare -F die >/dev/null || die() {
 }
 contact_build_here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 
-# Debian's packages: gfortran and make for CONTACT; with MKL python3-pip (pip download) and unzip (the wheels);
+# Debian's packages: gfortran and make for CONTACT; python3 for the reference check (contact_refcmp.py); with MKL
+# python3-pip (pip download) and unzip (the wheels);
 # without MKL reference LAPACK/BLAS (CONTACT's B-spline profile code calls dgbsv/dpbsv, which MKL provides
 # otherwise); GNU time and taskset (util-linux) for the timings; git to clone. Extra packages as arguments.
 contact_install_tools() {
   local need=() pkg sudo=()
-  local pkgs=(gfortran make time util-linux git "$@")
+  local pkgs=(gfortran make time util-linux git python3 "$@")
   if ((contact_mkl)); then pkgs+=(python3-pip unzip); else pkgs+=(liblapack-dev libblas-dev); fi
   for pkg in "${pkgs[@]}"; do
     dpkg -s "$pkg" >/dev/null 2>&1 || need+=("$pkg")
