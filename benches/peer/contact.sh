@@ -28,11 +28,15 @@
 #                                  keep the input's)
 #       KEEP=DIR                   keep the work folder (CONTACT build, inputs, outputs, scenes) in DIR
 #       ROLLBEM=PATH               use this rollbem binary instead of building one
-#       CONTACT_BIN=PATH           use this CONTACT executable instead of building one
+#       CONTACT_BIN=PATH           use this CONTACT executable instead of building one (it is checked all the same)
+#       MKL=1                      build CONTACT with Intel oneMKL from PyPI (its FFT products and preconditioners:
+#                                  CONTACT at its best, the default); MKL=0: gfortran without MKL (every FFT path
+#                                  compiled out). MKL_VERSION= picks the PyPI version (default: the newest)
 #
 # CONTACT's code is only read, built in the work folder and run: nothing of it is copied into rollbem. The build
-# makes a few gfortran-portability edits to the work folder's copy of its sources (listed in build_contact and in
-# the README); the user's tree is not touched.
+# (benches/peer/contact_build.sh, shared with contact3d.sh) makes a few edits to the work folder's copy of its
+# sources (listed there and in the README); the user's tree is not touched. Before anything is timed the build must
+# reproduce CONTACT's examples/carter2d.ref_out to its printed digits (contact_refcmp.py), else the script stops.
 set -euo pipefail
 
 if [[ $# -lt 1 || $# -gt 2 ]]; then
@@ -51,7 +55,6 @@ grid_mode=${GRID:-exact}
 section=${SECTION:-strip}
 cpu=${CPU:-0}
 warm=${WARM:-1}
-contact_repo=${CONTACT_REPO:-https://github.com/eve70a/CONTACT}
 export LC_ALL=C
 
 say() { echo "[contact-peer] $*" >&2; }
@@ -62,21 +65,8 @@ die() {
 [[ $grid_mode == exact || $grid_mode == centred ]] || die "GRID must be exact or centred"
 [[ $section == strip || $section == plane_strain ]] || die "SECTION must be strip or plane_strain"
 
-# 1. Tools from Debian's packages: gfortran and make for CONTACT, reference LAPACK/BLAS (CONTACT's B-spline
-#    profile code calls dgbsv/dpbsv, which MKL provided; the 2D Carter cases never call them), GNU time, taskset,
-#    jq for rollbem's JSON, git to clone.
-need=()
-for pkg in gfortran make liblapack-dev libblas-dev time util-linux jq git; do
-  dpkg -s "$pkg" >/dev/null 2>&1 || need+=("$pkg")
-done
-if ((${#need[@]})); then
-  sudo=()
-  if [[ $(id -u) -ne 0 ]]; then sudo=(sudo); fi
-  say "installing ${need[*]}"
-  "${sudo[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq "${need[@]}" >/dev/null
-fi
-
+# 1. The work folder; tools from Debian's packages (contact_build.sh: gfortran, make, GNU time, taskset, git, and
+#    python3-pip + unzip for MKL, reference LAPACK/BLAS without), jq for rollbem's JSON.
 if [[ -n ${KEEP:-} ]]; then
   work=$(mkdir -p "$KEEP" && cd "$KEEP" && pwd)
 else
@@ -84,93 +74,38 @@ else
   trap 'rm -rf "$work"' EXIT
 fi
 : >"$work/log"
+contact_mkl=${MKL:-1}
+[[ $contact_mkl == 0 || $contact_mkl == 1 ]] || die "MKL must be 1 (build with Intel oneMKL, the default) or 0"
+# shellcheck source=benches/peer/contact_build.sh
+source "$here/contact_build.sh"
+contact_install_tools jq
 
-# 2. CONTACT's sources.
-if [[ -z $contact_src ]]; then
-  contact_src="$work/CONTACT"
-  if [[ ! -d $contact_src/src ]]; then
-    say "no CONTACT_SRC given: cloning $contact_repo"
-    git clone -q --depth 1 "$contact_repo" "$contact_src"
-  fi
-fi
-contact_src=$(cd "$contact_src" && pwd)
-for f in src/makefile src/make_inc.linux src/VERSION examples/carter2d.inp perfc_test/carter2d_100.inp \
-  perfc_test/carter2d_800.inp; do
+# 2. CONTACT's sources and build (contact_build.sh; README "Building CONTACT"), checked against the author's
+#    reference output of carter2d before anything is timed.
+contact_get_source "$contact_src"
+for f in examples/carter2d.inp examples/carter2d.ref_out perfc_test/carter2d_100.inp perfc_test/carter2d_800.inp; do
   [[ -f $contact_src/$f ]] || die "$contact_src is not a CONTACT source tree (no $f)"
 done
-# shellcheck disable=SC2016 # the $ are literal (Subversion keywords)
-contact_rev=$(sed -n 's/.*\$Revision: *\([0-9]*\) *\$, *\$Date:: *\([0-9-]*\).*/r\1 (\2)/p' "$contact_src/src/VERSION" | head -n 1)
-contact_commit=$(git -C "$contact_src" rev-parse --short=12 HEAD 2>/dev/null || echo "not a git checkout")
-
-# Edit FILE with the sed expression EXPR when its line matches WHAT (an ifort-only construct); afterwards WHAT must
-# be gone. Upstream fixes make an edit a no-op; a construct that changed shape makes the build stop here, loudly.
-port_edit() {
-  local file=$1 what=$2 expr=$3
-  if grep -qE -e "$what" "$file"; then
-    sed -i -E "$expr" "$file"
-    if grep -qE -e "$what" "$file"; then die "gfortran edit of $file did not apply ($what)"; fi
-  else
-    say "  ($(basename "$file"): no '$what', edit not needed)"
-  fi
-}
-
-# CONTACT's makefile is written for Intel Fortran with MKL. gfortran builds the stand-alone program (PROD=exe_l64)
-# with the variables overridden on make's command line and ten small edits to a copy of the sources:
-#   - MKLINC= (no -DWITH_MKLFFT: every FFT path is compiled out, see the README), MKLLIB=reference LAPACK/BLAS,
-#     OPENMP= (one thread), FFOPTS: -cpp for ifort's -fpp, -J for ifort's -module, -ffree-line-length-none,
-#     -fdec-format-defaults (read formats like '(i)' without a width), -O3 as upstream's FFOPTS_ALL;
-#   - edits where ifort accepts what gfortran does not (each named below).
-build_contact() {
-  local dst=$1 s
-  rm -rf "$dst"
-  mkdir -p "$dst/bin"
-  cp -r "$contact_src/src" "$dst/src"
-  s="$dst/src"
-  chmod -R u+w "$s"
-  # m_licensing: a function statement without '()', OPEN(... dispose='delete') and ScanFolder (Intel's ifport,
-  # GETFILEINFOQQ; not called by the stand-alone program).
-  port_edit "$s/m_licensing.f90" '^function LicenseGetDebug *$' 's/^function LicenseGetDebug *$/function LicenseGetDebug()/'
-  port_edit "$s/m_licensing.f90" "dispose='delete'" "s/, *dispose='delete'//"
-  sed -i -E "s/^( *)close\(ltmp\)$/\1close(ltmp, status='delete')/" "$s/m_licensing.f90"
-  port_edit "$s/m_licensing.f90" '^ *public +ScanFolder' '/^ *public +ScanFolder/d'
-  port_edit "$s/m_licensing.f90" 'use ifport' '/^subroutine ScanFolder/,/^end subroutine ScanFolder/d'
-  # makefile: ifort's '-assume bscc' (backslash escapes in strings) for m_readline is gfortran's -fbackslash.
-  port_edit "$s/makefile" '-assume bscc' 's/-assume bscc/-fbackslash/'
-  # m_gridfunc: a private parameter 'strlen' that clashes with the one use-associated from m_globals (same value).
-  port_edit "$s/m_gridfunc.f90" '^ *private +strlen *$' '/^ *private +strlen *$/d'
-  port_edit "$s/m_gridfunc.f90" '^ *integer, *parameter *:: *strlen *= *16 *$' '/^ *integer, *parameter *:: *strlen *= *16 *$/d'
-  # m_bspline_make: .ne. between logicals is .neqv.
-  port_edit "$s/m_bspline_make.f90" '\.ne\.mask\(' 's/\.ne\.mask\(/.neqv.mask(/g'
-  # m_varprof, m_wr_output: an integer flag (0/1, -1) used as a condition.
-  port_edit "$s/m_varprof.f90" 'if \(is_wheel\) then' 's/if \(is_wheel\) then/if (is_wheel.ne.0) then/'
-  port_edit "$s/m_wr_output.f90" 'if \(is_right\) then' 's/if \(is_right\) then/if (is_right.ne.0) then/'
-  # m_snorm: 'public test_fft' names a routine that exists only with WITH_MKLFFT.
-  port_edit "$s/m_snorm.f90" '^public +test_fft *$' '/^public +test_fft *$/d'
-  # m_temperature: an ASSOCIATE name used inside the same ASSOCIATE statement.
-  port_edit "$s/m_temperature.f90" '=> igs%row(1st|lst)' 's/=> igs%row(1st|lst)/=> outpt%igs%row\1/g'
-  mkdir -p "$s/obj/linux64_exe"
-  local arch=()
-  [[ $(uname -m) == x86_64 ]] && arch=(-D__x86_64__) # VERSION's platform label; gfortran's cpp does not set it
-  contact_fflags="-DTARGET_exe -I. -cpp ${arch[*]} -O3 -ffree-line-length-none -fdec-format-defaults -Jobj/linux64_exe/"
-  contact_libs="-l:liblapack.a -l:libblas.a -lgfortran"
-  (cd "$s" && nice make -j1 PROD=exe_l64 F90=gfortran OPENMP= MKLINC= MKLLIB="$contact_libs" \
-    FFOPTS="$contact_fflags" >"$dst/build.log" 2>&1) || {
-    tail -n 30 "$dst/build.log" >&2
-    die "CONTACT did not build (log: $dst/build.log)"
-  }
-  [[ -x $dst/bin/contact_linux64 ]] || die "no CONTACT executable after the build"
-}
-
 if [[ -n ${CONTACT_BIN:-} ]]; then
   contact_bin=$CONTACT_BIN
-  contact_build="given: $CONTACT_BIN"
+  [[ -x $contact_bin ]] || die "no CONTACT executable at $contact_bin"
+  contact_build_line "$contact_bin"
 else
-  say "building CONTACT with gfortran, without MKL (about two minutes)"
+  if ((contact_mkl)); then
+    contact_get_mkl
+    say "building CONTACT with gfortran and Intel oneMKL $mkl_version (about a minute)"
+  else
+    say "building CONTACT with gfortran, without MKL (MKL=0; about a minute)"
+  fi
   build_contact "$work/contact-build"
   contact_bin="$work/contact-build/bin/contact_linux64"
-  contact_build="gfortran, FFOPTS='$contact_fflags', MKLINC= (no WITH_MKLFFT), OPENMP=, MKLLIB='$contact_libs'"
 fi
 [[ -x $contact_bin ]] || die "no CONTACT executable at $contact_bin"
+contact_ref_summary=()
+mkdir -p "$work/refcheck"
+cp "$contact_src/examples/carter2d.inp" "$work/refcheck/"
+say "checking the build against CONTACT's examples/carter2d.ref_out"
+contact_ref_check carter2d "$work/refcheck" "$contact_src/examples/carter2d.ref_out"
 gfortran_version=$(gfortran --version | head -n 1)
 
 # 3. rollbem.
@@ -608,7 +543,8 @@ fi
   [[ -n ${CONTACT_EPS:-} ]] && echo "CONTACT_EPS=$CONTACT_EPS: CONTACT's results (the comparison columns) were computed with EPS = $CONTACT_EPS and MAXGS = MAXIN = 9999; its timed runs with the inputs' own EPS."
   echo "Compared: FX per case (all cases of the input; CONTACT's FX = Σ PX·DX·DY from its Matlab files); contact (adhesion + slip) and stick (adhesion) element counts at every distinct creepage (equal counts: both equal), shown at the middle creepage; nodal tractions p, q at every distinct creepage (rollbem \`run\`), the largest difference over the curve relative to CONTACT's peak pressure. CONTACT's output is from a copy of each input with O = 2 and A = 1 in every case (its printed case 1 equals the timed run's)."
   echo "Times: CPU (user + sys) and peak RSS of the whole process (GNU time), pinned to core $cpu (taskset), median of $pairs runs alternating rollbem and CONTACT. rollbem: \`rollbem sweep\` of the input's creepages in its order (carter2d_100: its 50 creepages 20 times, one process, one model built once, as CONTACT builds its influence coefficients once), RAYON_NUM_THREADS=1; cold: every case from scratch (the default), warm: \`warm_start = true\` (each case from the previous case's solution). CONTACT: \`contact_linux64 2 INPUT\` on the input (cold: every case from zero tractions, I = 0) and, warm, on a copy whose cases after the first have I = 3 (start from the previous case's tractions and element division)."
-  echo "Versions: $rollbem_version; CONTACT $contact_rev, commit $contact_commit, built with $gfortran_version ($contact_build). CONTACT's solvers here: NORM by NormCG, TANG by SteadyGS (T = 3), tolerance EPS as noted per input."
+  echo "Versions: $rollbem_version; CONTACT $contact_rev, commit $contact_commit, built with $gfortran_version. **CONTACT build measured: $contact_build.** CONTACT's solvers here: NORM by NormCG, TANG by SteadyGS (T = 3), tolerance EPS as noted per input."
   echo "Machine: $(nproc) cores, shared; load average $load_start at the start, $(loadavg) at the end (other work inflates times, CONTACT's and rollbem's alike)."
+  echo "CONTACT build checked against its reference output before timing (contact_refcmp.py): ${contact_ref_summary[*]}"
   for note in "${notes[@]}"; do echo "Note: $note"; done
 } | tee "$table_out"

@@ -28,6 +28,11 @@ command -v jq >/dev/null || { echo "needs jq" >&2; exit 1; }
 export LC_ALL=C
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# Which build this is (MKL or not), for the table: contact_build.sh's look at the executable.
+contact_mkl=0
+# shellcheck source=benches/peer/contact_build.sh
+source "$here/contact_build.sh"
+contact_build_line "$contact"
 
 # The scene's numbers (the script's reference and the comparison use them, not carter2d's as printed).
 key() { awk -F' *= *' -v k="$1" '$1 == k { print $2; exit }' "$scene"; }
@@ -77,5 +82,5 @@ jq -r '.p[]' "$work/reference.json" >"$work/reference.p"
   done
   echo
   echo "Input: CONTACT's examples/carter2d.inp (55 elements, DY = $dy, CKSI = −0.00024), its results variant from $keep, with EPS as listed, MAXGS = MAXIN = 9999 (CONTACT refuses more: each NormCG call stops there) and the flow digit W = 5 (NormCG's iterations printed per call). p_exact: benches/peer/strip_reference.py, the normal problem in 40-digit arithmetic. rollbem: \`rollbem run\` of the same scene, \`[mesh] strip_width = $dy\`, solver active_set. CONTACT prints 6 significant digits: 4.4e-6 of max p is its print resolution at the peak. FX_CONTACT = Σ PX·DX from its Matlab file (also 6 digits)."
-  echo "Versions: $("$rollbem" --version); CONTACT $(awk '/Revision/ { for (i = 1; i <= NF; i++) if ($i == "$Revision:") print $(i + 1); exit }' "$work/eps${ladder%% *}/carter2d.out")."
+  echo "Versions: $("$rollbem" --version); CONTACT $(awk '/Revision/ { for (i = 1; i <= NF; i++) if ($i == "$Revision:") print $(i + 1); exit }' "$work/eps${ladder%% *}/carter2d.out"). **CONTACT build measured: $contact_build.**"
 } >"$table_out"

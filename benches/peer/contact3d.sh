@@ -1,0 +1,234 @@
+#!/usr/bin/env bash
+# CONTACT in 3D: CONTACT (E. Vollebregt's rolling-contact program) built at its best (gfortran + Intel oneMKL from
+# PyPI), checked against its own reference outputs, and timed on its 3D inputs: the examples cattaneo, spence35,
+# subsurf and the performance series norm_problm_1p ... 8p, tang_problm_1s ... 8s. The peer figures rollbem's 3D
+# half-space is measured against. Not part of CI. See benches/peer/README.md, "CONTACT in 3D, MKL build".
+#
+# Usage: bash benches/peer/contact3d.sh TABLE.md [CONTACT_SRC]
+#   CONTACT_SRC (argument or env)  a CONTACT source tree (src/, examples/, perfc_test/); without one the script
+#                                  clones $CONTACT_REPO (default https://github.com/eve70a/CONTACT)
+#   env CASES3D="cattaneo spence35 subsurf norm_problm_1p norm_problm_2p norm_problm_4p norm_problm_8p
+#                tang_problm_1s tang_problm_2s tang_problm_4s tang_problm_8s"   the inputs (examples/, perfc_test/)
+#       REPEATS=3        timed runs per input; the median is reported
+#       MALLOC_TUNED=1   also time every input with glibc's malloc told to keep freed memory (GLIBC_TUNABLES=
+#                        glibc.malloc.mmap_max=0:glibc.malloc.trim_threshold=4294967296): CONTACT allocates and
+#                        frees its large work arrays over and over, and with glibc's defaults each large block is a
+#                        fresh mmap whose pages the kernel zero-fills again (half of 8p's and 8s's CPU is system
+#                        time); 0 skips these runs
+#       ONCE_OVER=180    CPU seconds: an input whose first run takes longer is timed once
+#       CPU=0            the core every timed run is pinned to (taskset)
+#       KEEP=DIR         keep the work folder (MKL wheels, CONTACT build, inputs, outputs) in DIR; a second run
+#                        with the same DIR reuses the wheels
+#       CONTACT_BIN=PATH use this CONTACT executable instead of building one (it is checked all the same)
+#       MKL=1            build with Intel oneMKL (the default, and what the table is for); MKL=0 builds without,
+#                        which then has to pass the same checks (it does not: see the README)
+#       MKL_VERSION=     the PyPI version of mkl-static / mkl-include (default: the newest)
+#       CONTACT_COMMIT=  the commit to name when CONTACT_SRC is not a git checkout
+#
+# Checks, before and while timing (a failed check stops the script: nothing is timed on a wrong build):
+#   - the build on examples/carter2d.inp and examples/cattaneo.inp against carter2d.ref_out and cattaneo.ref_out
+#     (contact_refcmp.py: every printed result to one unit of its last digit);
+#   - each example's first timed run against its .ref_out the same way;
+#   - each perfc_test input's first timed run against the author's perfc_test/get_times.ref_out: the number of
+#     elements in contact (norm_problm_*, NCON) or in slip (tang_problm_*, NSLIP) must be equal.
+set -euo pipefail
+
+if [[ $# -lt 1 || $# -gt 2 ]]; then
+  echo "usage: $0 TABLE.md [CONTACT_SRC]" >&2
+  exit 2
+fi
+table_out=$1
+contact_src=${2:-${CONTACT_SRC:-}}
+here=$(cd "$(dirname "$0")" && pwd)
+cases=${CASES3D:-"cattaneo spence35 subsurf norm_problm_1p norm_problm_2p norm_problm_4p norm_problm_8p tang_problm_1s tang_problm_2s tang_problm_4s tang_problm_8s"}
+repeats=${REPEATS:-3}
+once_over=${ONCE_OVER:-180}
+cpu=${CPU:-0}
+malloc_tuned=${MALLOC_TUNED:-1}
+tunables="glibc.malloc.mmap_max=0:glibc.malloc.trim_threshold=4294967296"
+export LC_ALL=C
+
+say() { echo "[contact3d] $*" >&2; }
+die() {
+  echo "[contact3d] error: $*" >&2
+  exit 1
+}
+
+if [[ -n ${KEEP:-} ]]; then
+  work=$(mkdir -p "$KEEP" && cd "$KEEP" && pwd)
+else
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+fi
+contact_mkl=${MKL:-1}
+[[ $contact_mkl == 0 || $contact_mkl == 1 ]] || die "MKL must be 1 (build with Intel oneMKL, the default) or 0"
+# shellcheck source=benches/peer/contact_build.sh
+source "$here/contact_build.sh"
+contact_install_tools
+
+# 1. CONTACT: sources, build, and the build's check against the author's reference outputs.
+contact_get_source "$contact_src"
+for f in examples/carter2d.inp examples/carter2d.ref_out examples/cattaneo.inp examples/cattaneo.ref_out \
+  perfc_test/get_times.ref_out; do
+  [[ -f $contact_src/$f ]] || die "$contact_src is not a CONTACT source tree (no $f)"
+done
+if [[ -n ${CONTACT_BIN:-} ]]; then
+  contact_bin=$CONTACT_BIN
+  [[ -x $contact_bin ]] || die "no CONTACT executable at $contact_bin"
+  contact_build_line "$contact_bin"
+else
+  if ((contact_mkl)); then
+    contact_get_mkl
+    say "building CONTACT with gfortran and Intel oneMKL $mkl_version (about a minute)"
+  else
+    say "building CONTACT with gfortran, without MKL (MKL=0)"
+  fi
+  build_contact "$work/contact-build"
+  contact_bin="$work/contact-build/bin/contact_linux64"
+fi
+contact_ref_summary=()
+mkdir -p "$work/refcheck"
+for name in carter2d cattaneo; do
+  cp "$contact_src/examples/$name.inp" "$work/refcheck/"
+  say "checking the build against CONTACT's examples/$name.ref_out"
+  contact_ref_check "$name" "$work/refcheck" "$contact_src/examples/$name.ref_out"
+done
+gfortran_version=$(gfortran --version | head -n 1)
+
+median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+loadavg() { cut -d' ' -f1-3 /proc/loadavg; }
+# One timed run of CONTACT on NAME.inp in DIR, pinned to one core under GNU time, with the environment
+# assignments ENV... (none, or GLIBC_TUNABLES=...): "user sys maxrss_kB" appended to DIR/times.
+timed_run() {
+  local dir=$1 name=$2 tf="$1/time.tmp"
+  shift 2
+  (cd "$dir" && env "$@" taskset -c "$cpu" /usr/bin/time -o "$tf" -f '%U %S %M' "$contact_bin" 2 "$name" \
+    </dev/null >stdout.txt 2>&1) || die "CONTACT failed on $name (see $dir/stdout.txt)"
+  tail -n 1 "$tf" >>"$dir/times"
+}
+# The median run of DIR/times (by user + sys): "cpu user sys rss_MiB".
+median_run() {
+  awk '{ printf "%.2f %.2f %.2f %.1f\n", $1 + $2, $1, $2, $3 / 1024 }' "$1/times" | sort -g |
+    awk '{ v[NR] = $0 } END { print v[int((NR + 1) / 2)] }'
+}
+# Time DIR's input REPEATS times (once when the first run takes over ONCE_OVER s); prints the number of runs.
+time_input() {
+  local dir=$1 name=$2 first r runs=1
+  shift 2
+  timed_run "$dir" "$name" "$@"
+  first=$(awk '{ print $1 + $2 }' "$dir/times")
+  if awk -v t="$first" -v o="$once_over" 'BEGIN { exit !(t <= o) }'; then
+    for ((r = 2; r <= repeats; r++)); do
+      say "$name: run $r/$repeats${*:+ ($*)}"
+      timed_run "$dir" "$name" "$@"
+      runs=$r
+    done
+  fi
+  echo "$runs"
+}
+
+# CONTACT's .out, last case: "NPOT NCON NADH NSLIP" and its inner iteration counts (sum over cases of the
+# ItCG/ItGS printed by Norm and Tang, as the author's get_times.sh counts them).
+out_stats() {
+  awk '
+    /NPOT +NCON +NADH +NSLIP/ { getline; s = $1 " " $2 " " $3 " " $4 }
+    /Norm: final element division/ { n += $NF }
+    /Tang: final element division/ { t += $NF }
+    END { print s, n + 0, t + 0 }
+  ' "$1"
+}
+# The author's figures for a perfc_test input: "ncon" or "nslp", and ItCG / ItGS, from get_times.ref_out.
+perfc_ref() {
+  # (lines like "norm_problm_8p: ncon=200980, ItCG=   31, ...": no blank after '=' at six digits)
+  grep -E "^$1 *:" "$contact_src/perfc_test/get_times.ref_out" | head -n 1 |
+    sed -nE 's/.*(ncon|nslp)= *([0-9]+).*(ItCG|ItGS)= *([0-9]+).*/\2 \4/p'
+}
+# Grid of the input's first case (MX × MY) from the .inp: the line tagged MX,MY.
+inp_grid() { awk '/MX, *MY/ && $0 !~ /^[ \t]*%/ { print $1 " × " $2; exit }' "$1"; }
+# Number of cases (MODULE 3 blocks).
+inp_cases() { awk '$0 !~ /^[ \t]*%/ && $1 == 3 && tolower($2) == "module" { n++ } END { print n + 0 }' "$1"; }
+# Its own timers (CPU): total, Algorithm Norm, Algorithm Tang.
+out_timers() {
+  awk -F'|' '$2 ~ /^Total / { t = $4 + 0 } $2 ~ /^Algorithm Norm/ { n = $4 + 0 } $2 ~ /^Algorithm Tang/ { g = $4 + 0 }
+    END { printf "%s / %s / %s", t, (n == "" ? "–" : n), (g == "" ? "–" : g) }' "$1"
+}
+
+load_start=$(loadavg)
+rows=()
+notes=()
+for name in $cases; do
+  if [[ -f $contact_src/examples/$name.inp ]]; then
+    inp=$contact_src/examples/$name.inp
+    kind=example
+  elif [[ -f $contact_src/perfc_test/$name.inp ]]; then
+    inp=$contact_src/perfc_test/$name.inp
+    kind=perfc
+  else
+    die "no input $name.inp in $contact_src/examples or perfc_test"
+  fi
+  d="$work/runs/$name"
+  rm -rf "$d"
+  mkdir -p "$d"
+  cp "$inp" "$d/"
+  say "$name: first run (checked)"
+  runs=$(time_input "$d" "$name") || exit 1
+  # The check of the first run's answers (the runs after it compute the same).
+  read -r npot ncon nadh nslip itn itt < <(out_stats "$d/$name.out")
+  if [[ $kind == example ]]; then
+    ref=$contact_src/examples/$name.ref_out
+    [[ -f $ref ]] || die "no reference output $ref"
+    check=$(python3 "$here/contact_refcmp.py" "$d/$name.out" "$ref") || {
+      echo "$check" >&2
+      die "$name: CONTACT's answers differ from $name.ref_out beyond the printed digits"
+    }
+    checkcell="= $name.ref_out ($(echo "$check" | awk '{ print $1 }') numbers)"
+    notes+=("$name: $check.")
+  else
+    read -r rcount rit < <(perfc_ref "$name") || true
+    [[ -n ${rcount:-} ]] || die "$name: not in perfc_test/get_times.ref_out"
+    if [[ $name == norm_* ]]; then mine=$ncon what=NCON; else mine=$nslip what=NSLIP; fi
+    [[ $mine == "$rcount" ]] || die "$name: $what = $mine, the author's get_times.ref_out has $rcount"
+    checkcell="$what $mine = get_times.ref_out"
+    if [[ $name == norm_* ]]; then myit=$itn; else myit=$itt; fi
+    notes+=("$name: $what $mine as the author's get_times.ref_out (CONTACT r1274, 2016); inner iterations $myit (the author's: $rit).")
+  fi
+  ((runs < repeats)) && notes+=("$name: timed once (its first run took over ONCE_OVER = $once_over s of CPU).")
+  read -r tcpu tuser tsys trss <<<"$(median_run "$d")"
+  tcells="$tcpu | $tuser | $tsys | $trss | $runs"
+  if ((malloc_tuned)); then
+    mkdir -p "$d/tuned"
+    cp "$inp" "$d/tuned/"
+    say "$name: with GLIBC_TUNABLES=$tunables"
+    truns=$(time_input "$d/tuned" "$name" "GLIBC_TUNABLES=$tunables") || exit 1
+    # The same answers as the run with glibc's defaults, to every printed digit.
+    same=$(python3 "$here/contact_refcmp.py" "$d/tuned/$name.out" "$d/$name.out") || {
+      echo "$same" >&2
+      die "$name: the run with GLIBC_TUNABLES printed other results"
+    }
+    read -r ucpu uuser usys urss <<<"$(median_run "$d/tuned")"
+    tcells="$tcells | $ucpu | $uuser | $usys | $urss | $truns"
+  fi
+  grid=$(inp_grid "$inp")
+  ncases=$(inp_cases "$inp")
+  rows+=("| $name | $grid | $npot | $ncases | $ncon | $nadh | $nslip | $checkcell | $tcells | $(out_timers "$d/$name.out") |")
+  say "$name: $tcells"
+done
+
+{
+  if ((malloc_tuned)); then
+    echo "| input | grid MX × MY (first case) | NPOT | cases | NCON | NADH | NSLIP | check of this run | CPU user+sys [s] | user [s] | sys [s] | peak RSS [MiB] | runs | with malloc tunables: CPU user+sys [s] | user [s] | sys [s] | peak RSS [MiB] | runs | CONTACT's own timers, CPU total / NORM / TANG [s] |"
+    echo "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+  else
+    echo "| input | grid MX × MY (first case) | NPOT | cases | NCON | NADH | NSLIP | check of this run | CPU user+sys [s] | user [s] | sys [s] | peak RSS [MiB] | runs | CONTACT's own timers, CPU total / NORM / TANG [s] |"
+    echo "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---|"
+  fi
+  printf '%s\n' "${rows[@]}"
+  echo
+  echo "**CONTACT build measured: $contact_build.** CONTACT $contact_rev, commit $contact_commit, $gfortran_version."
+  echo "Element counts (NPOT potential contact, NCON contact, NADH adhesion, NSLIP slip) are those CONTACT prints for the last case of each input."
+  echo "Times: CPU (user + sys) and peak RSS of the whole process (GNU time), pinned to core $cpu (taskset), one thread (OPENMP= build, MKL sequential), median of $repeats runs (one run when the first took over $once_over s); the input as shipped: \`contact_linux64 2 NAME\` in a folder holding NAME.inp. CONTACT's own timers are from the last run with glibc's defaults (its .out, rounded to 0.1 s)."
+  ((malloc_tuned)) && echo "With malloc tunables: the same runs with \`GLIBC_TUNABLES=$tunables\` (glibc's malloc serves every block from its heap and keeps freed memory instead of returning it to the kernel, so CONTACT's repeated allocations of large work arrays are not zero-filled by the kernel again each time); each such run's printed results equal the default run's to every digit (contact_refcmp.py). CONTACT's best time is the smaller of the two."
+  echo "Build check before timing (contact_refcmp.py, every printed result to one unit of its last digit): $(printf '%s. ' "${contact_ref_summary[@]}")"
+  echo "Machine: $(nproc) cores, shared; load average $load_start at the start, $(loadavg) at the end."
+  for note in "${notes[@]}"; do echo "Note: $note"; done
+} | tee "$table_out"
