@@ -735,4 +735,49 @@ mod tests {
         assert!(e(solve(&full, &ShiftStep::new(&p, 0.3, d), &TangentialSettings::new(0.0, 5), &never))
             .contains("tolerance"));
     }
+
+    /// The FISTA solver against an independent solver of the same discrete problem: clarabel's second-order-cone
+    /// program on the dense matrices ([`super::super::dense`]), with ν = 0.3 (so `C_xy ≠ 0` and the shears turn
+    /// out of the force's direction) and an oblique force 0.6 μP at 30°. Same shears to 1e-6 of μp₀ (clarabel's
+    /// own resolution at the stick–slip boundary is about 2e-7), same force, same rigid shift to 1e-5.
+    #[test]
+    fn fista_agrees_with_clarabel_on_the_disc() {
+        use super::super::dense::{ConeSettings, DenseShift, ShiftDrive};
+        let (e, nu, load, r_star) = (210e3, 0.3, 1.0e3, 50.0);
+        let body = HalfSpace::new(e, nu).unwrap();
+        let hz = Hertz3D::from_load(0.5 / r_star, 0.5 / r_star, e / (2.0 * (1.0 - nu * nu)), load).unwrap();
+        let m = 21;
+        let d = 2.4 * hz.a_x / m as f64;
+        let o = -((m / 2) as f64) * d;
+        let grid = ContactGrid::new(m, m, d, d, o, o).unwrap();
+        let inf = Influence::new(grid, body.pair(&body), Kernels::Full).unwrap();
+        let h = grid.sample(|x, y| (x * x + y * y) / (2.0 * r_star));
+        let p =
+            normal::solve(&inf, &h, Drive::Load(load), &NormalSettings::default(), &Cancel::never()).unwrap().pressure;
+        let mu = 0.3;
+        let f = (0.6 * mu * load * 30f64.to_radians().cos(), 0.6 * mu * load * 30f64.to_radians().sin());
+        let ours = solve(
+            &inf,
+            &ShiftStep::new(&p, mu, TangentialDrive::Force(f.0, f.1)),
+            &TangentialSettings::default(),
+            &Cancel::never(),
+        )
+        .unwrap();
+        assert_eq!(ours.stop, TangentialStop::Converged);
+        let theirs = DenseShift::new(&inf, &p, mu, None)
+            .unwrap()
+            .disc(ShiftDrive::Force([f.0, f.1]), &ConeSettings::default())
+            .unwrap();
+        let mu_p0 = mu * p.iter().fold(0.0_f64, |m, &v| m.max(v));
+        let dq = (0..p.len()).fold(0.0_f64, |m, i| m.max((ours.qx[i] - theirs.qx[i]).hypot(ours.qy[i] - theirs.qy[i])));
+        assert!(dq <= 1e-6 * mu_p0, "shears differ by {:.2e} of μp₀", dq / mu_p0);
+        let qy_off = ours.qy.iter().zip(&ours.qx).any(|(qy, qx)| (qy / qx - 30f64.to_radians().tan()).abs() > 1e-3);
+        assert!(qy_off, "with ν ≠ 0 the shears are not all along the force");
+        let w = theirs.shift;
+        assert!(
+            (ours.shift.0 - w[0]).hypot(ours.shift.1 - w[1]) <= 1e-5 * w[0].hypot(w[1]),
+            "{:?} vs {w:?}",
+            ours.shift
+        );
+    }
 }
