@@ -856,10 +856,8 @@ impl DenseShift {
                 Some(k) => polygon_gauge(qi, bound, k),
             };
             stick[i] = gauge < 1.0 - STICK_TOLERANCE;
-            let trial = [qi[0] - si[0] / self.c0, qi[1] - si[1] / self.c0];
-            let t = norm(trial);
-            let proj = if t <= bound { trial } else { [trial[0] * bound / t, trial[1] * bound / t] };
-            residual = residual.max(norm([qi[0] - proj[0], qi[1] - proj[1]]) / scale);
+            let r = super::tangential::disc_law_residual((qi[0], qi[1]), (si[0], si[1]), bound, self.c0);
+            residual = residual.max(r / scale);
         }
         let area = self.grid.area();
         let force = [area * qx.iter().sum::<f64>(), area * qy.iter().sum::<f64>()];

@@ -686,39 +686,18 @@ mod tests {
     // the closed forms above.
     // ------------------------------------------------------------------------------------------------------------
 
-    /// Gauss–Legendre nodes and weights on [−1, 1] by Newton's method on P_n.
+    /// Gauss–Legendre nodes and weights on [−1, 1].
     struct Gl {
         x: Vec<f64>,
         w: Vec<f64>,
     }
 
     impl Gl {
+        /// The n-point rule of [`crate::bem::quadrature::gauss_legendre`] (tested there: exact for monomials;
+        /// nothing in it is shared with the closed forms under test here).
         fn new(n: usize) -> Gl {
-            let legendre = |t: f64| {
-                let (mut p0, mut p1) = (1.0, t);
-                for k in 1..n {
-                    let kf = k as f64;
-                    let p2 = ((2.0 * kf + 1.0) * t * p1 - kf * p0) / (kf + 1.0);
-                    p0 = p1;
-                    p1 = p2;
-                }
-                (p1, n as f64 * (t * p1 - p0) / (t * t - 1.0))
-            };
-            let (mut x, mut w) = (Vec::new(), Vec::new());
-            for i in 0..n {
-                let mut t = (PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
-                for _ in 0..100 {
-                    let (p, dp) = legendre(t);
-                    t -= p / dp;
-                    if (p / dp).abs() < 1e-16 {
-                        break;
-                    }
-                }
-                let (_, dp) = legendre(t);
-                x.push(t);
-                w.push(2.0 / ((1.0 - t * t) * dp * dp));
-            }
-            Gl { x, w }
+            let rule = crate::bem::quadrature::gauss_legendre(n).unwrap();
+            Gl { x: rule.points, w: rule.weights }
         }
 
         /// Tensor rule on the rectangle `r = [x1, x2, y1, y2]`.

@@ -201,10 +201,8 @@ impl<'a> Iteration<'a> {
                 }
                 // A small uniform start; the iteration scales it (steepest descent from here).
                 let depth = self.h.iter().map(|&h| (d - h).max(0.0)).fold(0.0, f64::max);
-                let c0 = self.op.normal_operator();
-                let mut unit = vec![0.0; n];
-                unit[0] = 1.0;
-                let stiff = c0.apply(&unit).ok().and_then(|u| u.first().copied()).unwrap_or(1.0);
+                // The self-influence C_zz(0, 0), from the kernel table (no product needed).
+                let stiff = self.op.kernel_table().get(0, 0).map_or(1.0, |c| c.zz);
                 for (p, &h) in self.p.iter_mut().zip(self.h) {
                     *p = if h < d { 0.5 * depth / (stiff * touching as f64).max(f64::MIN_POSITIVE) } else { 0.0 };
                 }
@@ -235,7 +233,7 @@ impl<'a> Iteration<'a> {
             g_old = big_g.max(f64::MIN_POSITIVE);
             self.op.apply_normal(&self.t, &mut self.r, &mut self.scratch)?;
             let r_mean = match self.drive {
-                Drive::Load(_) => mean_on(&self.p, &self.r),
+                Drive::Load(_) => mean_on(&self.p, |i| self.r[i]),
                 Drive::Approach(_) => 0.0,
             };
             let (num, den) = (0..n)
@@ -253,10 +251,7 @@ impl<'a> Iteration<'a> {
     /// The mean gap offset: over the contact set under a prescribed load, the approach under a prescribed one.
     fn shift(&self) -> f64 {
         match self.drive {
-            Drive::Load(_) => {
-                let hu: Vec<f64> = self.u.iter().zip(self.h).map(|(u, h)| u + h).collect();
-                mean_on(&self.p, &hu)
-            }
+            Drive::Load(_) => mean_on(&self.p, |i| self.u[i] + self.h[i]),
             Drive::Approach(d) => d,
         }
     }
@@ -318,9 +313,9 @@ impl<'a> Iteration<'a> {
     }
 }
 
-/// The mean of `v` over the elements with `p > 0` (0 when there are none).
-fn mean_on(p: &[f64], v: &[f64]) -> f64 {
-    let (s, c) = p.iter().zip(v).filter(|(&p, _)| p > 0.0).fold((0.0, 0usize), |(s, c), (_, &v)| (s + v, c + 1));
+/// The mean of `v(i)` over the elements `i` with `p > 0` (0 when there are none).
+fn mean_on(p: &[f64], v: impl Fn(usize) -> f64) -> f64 {
+    let (s, c) = (0..p.len()).filter(|&i| p[i] > 0.0).fold((0.0, 0usize), |(s, c), i| (s + v(i), c + 1));
     if c > 0 {
         s / c as f64
     } else {
@@ -378,8 +373,8 @@ mod tests {
 
     /// The Hertzian problem on a grid centred on the origin with an odd number of elements per side (a centre
     /// element on each axis): `per_minor` elements across the minor axis 2b, the grid extending `1.3×` each
-    /// semi-axis. Returns (relative errors of a_x, a_y, p0, approach, the solution).
-    fn hertz_case(curv_a: f64, curv_b: f64, per_minor: usize) -> ([f64; 4], NormalSolution) {
+    /// semi-axis; its operator, the separation and Hertz's solution (steel pair, P = 10 kN).
+    fn hertz_setup(curv_a: f64, curv_b: f64, per_minor: usize) -> (Influence, Vec<f64>, Hertz3D) {
         let (e, nu, load) = (210e3, 0.3, 1.0e4);
         let body = HalfSpace::new(e, nu).unwrap();
         let e_star = e / (2.0 * (1.0 - nu * nu));
@@ -390,15 +385,22 @@ mod tests {
         let grid = ContactGrid::new(mx, my, h_el, h_el, -((mx / 2) as f64) * h_el, -((my / 2) as f64) * h_el).unwrap();
         let inf = Influence::new(grid, body.pair(&body), Kernels::Normal).unwrap();
         let h = grid.sample(|x, y| curv_a * x * x + curv_b * y * y);
+        (inf, h, hz)
+    }
+
+    /// [`hertz_setup`]'s problem solved: (relative errors of a_x, a_y, p0, approach, the solution).
+    fn hertz_case(curv_a: f64, curv_b: f64, per_minor: usize) -> ([f64; 4], NormalSolution) {
+        let (inf, h, hz) = hertz_setup(curv_a, curv_b, per_minor);
+        let (grid, load) = (*inf.grid(), hz.load);
+        let (mx, my) = (grid.mx(), grid.my());
         let sol = solve(&inf, &h, Drive::Load(load), &NormalSettings::default(), &Cancel::never()).unwrap();
         assert_eq!(sol.stop, Stop::Converged, "{sol:?}");
         let row: Vec<(f64, f64)> =
             (0..mx).map(|ix| (grid.centre(ix, my / 2).0, sol.pressure[ix + mx * (my / 2)])).collect();
         let col: Vec<(f64, f64)> =
             (0..my).map(|iy| (grid.centre(mx / 2, iy).1, sol.pressure[mx / 2 + mx * iy])).collect();
-        let (ax, p0x) = fit_axis(&row, 0.8);
+        let (ax, _) = fit_axis(&row, 0.8);
         let (ay, _) = fit_axis(&col, 0.8);
-        let _ = p0x;
         let p0 = sol.pressure.iter().fold(0.0, |m: f64, &v| m.max(v));
         let rel = |got: f64, exp: f64| (got - exp).abs() / exp;
         ([rel(ax, hz.a_x), rel(ay, hz.a_y), rel(p0, hz.p0), rel(sol.approach, hz.approach)], sol)
@@ -461,17 +463,7 @@ mod tests {
     fn approach_drive_inverts_the_load_drive() {
         let (ca, cb) = curvatures(2.0);
         let (_, by_load) = hertz_case(ca, cb, 20);
-        let body = HalfSpace::new(210e3, 0.3).unwrap();
-        let n = by_load.pressure.len();
-        // The same grid as `hertz_case` builds (rebuilt from the solution's size by the same rule).
-        let hz = Hertz3D::from_load(ca, cb, 210e3 / (2.0 * 0.91), 1.0e4).unwrap();
-        let h_el = 2.0 * hz.a_x.min(hz.a_y) / 20.0;
-        let odd = |semi: f64| (((1.3 * semi / h_el).ceil() as usize) * 2 + 1).max(3);
-        let (mx, my) = (odd(hz.a_x), odd(hz.a_y));
-        assert_eq!(mx * my, n);
-        let grid = ContactGrid::new(mx, my, h_el, h_el, -((mx / 2) as f64) * h_el, -((my / 2) as f64) * h_el).unwrap();
-        let inf = Influence::new(grid, body.pair(&body), Kernels::Normal).unwrap();
-        let h = grid.sample(|x, y| ca * x * x + cb * y * y);
+        let (inf, h, _) = hertz_setup(ca, cb, 20);
         let set = NormalSettings::default();
         let sol = solve(&inf, &h, Drive::Approach(by_load.approach), &set, &Cancel::never()).unwrap();
         assert_eq!(sol.stop, Stop::Converged);

@@ -259,33 +259,6 @@ impl Influence {
         Ok(())
     }
 
-    /// The coupling terms, added in place: `u_z += C_zx q_x + C_zy q_y` and `u_t += C_tz p = −(C_zt)ᵀ`-kernel
-    /// products (`C_xz = −C_zx`, `C_yz = −C_zy` per offset). Nothing is added when the coupling kernels were not
-    /// built (identical materials, or [`Kernels::Normal`]): there they vanish or were not asked for.
-    ///
-    /// # Errors
-    /// An [`ArgumentError`] when a vector is not one value per element.
-    pub fn add_coupling(
-        &self,
-        p: &[f64],
-        q: (&[f64], &[f64]),
-        u: (&mut [f64], &mut [f64], &mut [f64]),
-        tmp: &mut [f64],
-        scratch: &mut Scratch,
-    ) -> Result<(), ArgumentError> {
-        let Some([zx, zy]) = self.coupling.as_ref() else { return Ok(()) };
-        let (ux, uy, uz) = u;
-        for (op, qt) in [(zx, q.0), (zy, q.1)] {
-            op.apply_into(qt, tmp, scratch)?;
-            uz.iter_mut().zip(tmp.iter()).for_each(|(a, b)| *a += b);
-        }
-        for (op, ut) in [(zx, ux), (zy, uy)] {
-            op.apply_into(p, tmp, scratch)?;
-            ut.iter_mut().zip(tmp.iter()).for_each(|(a, b)| *a -= b);
-        }
-        Ok(())
-    }
-
     /// The gap change of the shears through the coupling: `u_z = C_zx q_x + C_zy q_y` into `uz` (zero when the
     /// coupling kernels were not built).
     ///
@@ -386,7 +359,12 @@ mod tests {
         let mut s = Scratch::default();
         inf.apply_normal(&p, &mut uz, &mut s).unwrap();
         inf.apply_tangential((&qx, &qy), (&mut ux, &mut uy), &mut tmp, &mut s).unwrap();
-        inf.add_coupling(&p, (&qx, &qy), (&mut ux, &mut uy, &mut uz), &mut tmp, &mut s).unwrap();
+        let (mut cz, mut cx, mut cy) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        inf.coupling_gap((&qx, &qy), &mut cz, &mut s).unwrap();
+        inf.coupling_slip(&p, (&mut cx, &mut cy), &mut s).unwrap();
+        for (u, c) in [(&mut uz, &cz), (&mut ux, &cx), (&mut uy, &cy)] {
+            u.iter_mut().zip(c).for_each(|(a, b)| *a += b);
+        }
         let d = |f: fn(&Coefficients) -> f64| inf.dense(f).unwrap();
         let add = |a: Vec<f64>, b: Vec<f64>, c: Vec<f64>| -> Vec<f64> {
             a.iter().zip(&b).zip(&c).map(|((x, y), z)| x + y + z).collect()

