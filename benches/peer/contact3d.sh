@@ -72,20 +72,7 @@ for f in examples/carter2d.inp examples/carter2d.ref_out examples/cattaneo.inp e
   perfc_test/get_times.ref_out; do
   [[ -f $contact_src/$f ]] || die "$contact_src is not a CONTACT source tree (no $f)"
 done
-if [[ -n ${CONTACT_BIN:-} ]]; then
-  contact_bin=$CONTACT_BIN
-  [[ -x $contact_bin ]] || die "no CONTACT executable at $contact_bin"
-  contact_build_line "$contact_bin"
-else
-  if ((contact_mkl)); then
-    contact_get_mkl
-    say "building CONTACT with gfortran and Intel oneMKL $mkl_version (about a minute)"
-  else
-    say "building CONTACT with gfortran, without MKL (MKL=0)"
-  fi
-  build_contact "$work/contact-build"
-  contact_bin="$work/contact-build/bin/contact_linux64"
-fi
+contact_obtain_bin "$work"
 contact_ref_summary=()
 mkdir -p "$work/refcheck"
 for name in carter2d cattaneo; do

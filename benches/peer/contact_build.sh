@@ -187,6 +187,26 @@ build_contact() {
   contact_build_line "$dst/bin/contact_linux64"
 }
 
+# contact_obtain_bin WORK: the CONTACT executable to run, into $contact_bin: $CONTACT_BIN when set (it must be
+# executable), otherwise a build in WORK/contact-build (with MKL unless MKL=0). Either way $contact_build names it.
+contact_obtain_bin() {
+  local work=$1
+  if [[ -n ${CONTACT_BIN:-} ]]; then
+    contact_bin=$CONTACT_BIN
+    [[ -x $contact_bin ]] || die "no CONTACT executable at $contact_bin"
+    contact_build_line "$contact_bin"
+  else
+    if ((contact_mkl)); then
+      contact_get_mkl
+      say "building CONTACT with gfortran and Intel oneMKL $mkl_version (about a minute)"
+    else
+      say "building CONTACT with gfortran, without MKL (MKL=0; about a minute)"
+    fi
+    build_contact "$work/contact-build"
+    contact_bin="$work/contact-build/bin/contact_linux64"
+  fi
+}
+
 # contact_build: one line naming the build (for every table), from the flags of build_contact or, for a given
 # executable, from what is linked into it (MKL's DFTI symbols, its version string).
 contact_build_line() {
