@@ -7,10 +7,11 @@
 //!
 //! Prints, per level: the elements in contact (CONTACT's: 3 148, 12 902, 50 796, 200 980), the normal force, the
 //! iterations, the residual and the wall time of the set-up and of the solve. Run:
-//! `cargo run --release --example halfspace_norm_series -- 1 2 4` (levels as arguments; default 1 2 4).
+//! `cargo run --release --example halfspace_norm_series -- 1 2 4` (levels as arguments; default 1 2 4; with
+//! `--polonsky-keer` the unpreconditioned method instead of the default FFT-preconditioned CG).
 
 use rollbem::cancel::Cancel;
-use rollbem::halfspace::normal::{self, Drive, NormalSettings};
+use rollbem::halfspace::normal::{self, Drive, NormalMethod, NormalSettings};
 use rollbem::halfspace::{ContactGrid, HalfSpace, Influence, Kernels};
 use std::time::Instant;
 
@@ -26,7 +27,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let k = (t.floor() as usize).min(p.len() - 2);
         p[k] + (t - k as f64) * (p[k + 1] - p[k])
     };
-    let levels: Vec<usize> = std::env::args().skip(1).filter_map(|a| a.parse().ok()).collect();
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let method = if args.iter().any(|a| a == "--polonsky-keer") {
+        NormalMethod::PolonskyKeer
+    } else {
+        NormalMethod::PreconditionedCg
+    };
+    let levels: Vec<usize> = args.iter().filter_map(|a| a.parse().ok()).collect();
     let levels = if levels.is_empty() { vec![1, 2, 4] } else { levels };
     let body = HalfSpace::new(2.0 * 82000.0 * 1.28, 0.28)?;
     // (level, MX, MY, CONTACT's elements in contact)
@@ -43,9 +50,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let inf = Influence::new(grid, body.pair(&body), Kernels::Normal)?;
         let h = grid.sample(|x, y| profile(y) + x * x / (2.0 * 483.931));
         let setup = t0.elapsed().as_secs_f64();
+        let settings = NormalSettings::new(1e-7, 10_000).with_method(method);
         let t1 = Instant::now();
-        let s =
-            normal::solve(&inf, &h, Drive::Approach(0.02084), &NormalSettings::new(1e-7, 10_000), &Cancel::never())?;
+        let s = normal::solve(&inf, &h, Drive::Approach(0.02084), &settings, &Cancel::never())?;
         let solve = t1.elapsed().as_secs_f64();
         println!(
             "{k}p | {mx} × {my} | {} ({theirs}) | {:.2} | {} | {:.1e} | {setup:.3} | {solve:.3}",

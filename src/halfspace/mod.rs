@@ -39,5 +39,5 @@ pub mod path;
 pub mod tangential;
 
 pub use kernel::{Coefficients, Compliance, HalfSpace, KernelTable, UniformGrid};
-pub use operator::{ContactGrid, Influence, Kernels, DENSE_LIMIT};
+pub use operator::{ContactGrid, Influence, Kernels, DENSE_LIMIT, PRECONDITIONER_FLOOR};
 pub use path::{Path, PathSettings, PathStatus, Profile, Step, StepOutcome};
