@@ -3,7 +3,8 @@
 //!
 //! - `STEM.pn.svg`, `STEM.pt.svg`: maps of the pressure p and of the shear's magnitude |p_t| = |(q_x, q_y)| on the
 //!   (MY, MX) grid (a [`ContourMap`] over the element centres: x across, y down the page, as the grid's rows are
-//!   listed), with the largest value marked; `STEM.state.svg`: the element states (0 exterior, 1 stick, 2 slip);
+//!   listed), with the largest value marked; `STEM.state.svg`: the element states (bands 0–1 exterior, 1–2 slip,
+//!   2–3 stick);
 //! - `STEM.section_x.svg`, `STEM.section_y.svg`: sections along x and along y through the element row and column
 //!   nearest the origin (the profile's lowest point): p, the shear components, and μp (the friction bound) dashed,
 //!   with Hertz's `p₀ √(1 − x²/a_x² − y²/a_y²)` on the same line where the document has Hertz's ellipse for that
@@ -36,11 +37,14 @@ pub fn plot_space(r: &SpaceReport, out: &Path) -> crate::Result<Vec<PathBuf>> {
     let tag = format!("step {}.{} ({})", step.step, step.substep, step.status);
     let e = &step.elements;
     let pt: Vec<f64> = e.qx.iter().zip(&e.qy).map(|(x, y)| x.hypot(*y)).collect();
-    let states: Vec<f64> = e.state.iter().map(|&s| f64::from(s)).collect();
+    // Each state mid-band, so that the map's unit bands 0–1, 1–2, 2–3 hold one state each; slip between exterior and
+    // stick, where it is on the grid (the bands interpolate between element centres: an exterior–stick order would
+    // draw a false stick rim around every contact).
+    let states: Vec<f64> = e.state.iter().map(|&s| [0.5, 2.5, 1.5][usize::from(s).min(2)]).collect();
     let mut maps = vec![("pn", "pressure p", e.pressure.clone(), su.clone())];
     if r.scene.contact.friction > 0.0 {
         maps.push(("pt", "shear |p_t|", pt, su.clone()));
-        maps.push(("state", "state (0 exterior, 1 stick, 2 slip)", states, String::new()));
+        maps.push(("state", "state: 0–1 exterior, 1–2 slip, 2–3 stick", states, String::new()));
     }
     let mut files = Vec::new();
     for (name, label, values, vu) in maps {
