@@ -321,6 +321,7 @@ fn space_exit(r: &SpaceReport, checks_count: bool) -> u8 {
 }
 
 /// What one scene of `run` or `check` produced.
+#[allow(clippy::large_enum_variant)] // one per scene, moved once
 enum Ran {
     Plane(Report),
     Space(SpaceReport),

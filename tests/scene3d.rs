@@ -272,6 +272,20 @@ fn the_command_line_runs_checks_and_plots_3d_scenes() {
     let out = bin().args(["run", slide.to_str().unwrap()]).output().unwrap();
     assert_eq!(out.status.code(), Some(5));
     assert!(String::from_utf8_lossy(&out.stdout).contains("gross_sliding"));
+    // Sweeps do not take half-space scenes yet: a 3D base is refused, naming the key, exit 2.
+    let spec = dir.path().join("s.toml");
+    let base = scene("hertz-ellipse.toml");
+    std::fs::write(
+        &spec,
+        format!("name = \"s3\"\nbase = '{}'\n[[grid]]\n\"drive.normal_load\" = [50.0]\n", base.display()),
+    )
+    .unwrap();
+    let out = bin()
+        .args(["sweep", spec.to_str().unwrap(), "--out", dir.path().join("s.csv").to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("wheel.model"));
     // Plots.
     let out = bin().args(["plot", json.to_str().unwrap()]).output().unwrap();
     assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));

@@ -622,7 +622,7 @@ impl Scene {
                     path: path.to_path_buf(),
                     field: "wheel.model".into(),
                     message: "\"half_space\" is a 3D scene: read it with `scene::AnyScene` or `SpaceScene` (`rollbem \
-                              run` and `check` take both kinds)"
+                              run`, `check` and `plot` take both kinds; sweeps take 2D scenes only, for now)"
                         .into(),
                 };
             }
