@@ -565,7 +565,8 @@ class SpaceScene:
 class SpaceModel:
     """A half-space scene's influence kernels, built once: only those its effects need."""
 
-    def __init__(self, scene: SpaceScene) -> None: ...
+    def __new__(cls, scene: SpaceScene) -> SpaceModel:
+        """Build the kernels of ``scene``."""
     @property
     def has_tangential(self) -> bool:
         """Whether the tangential kernels were built (friction only)."""
