@@ -528,14 +528,6 @@ impl SpaceScene {
         SpaceScene::from_document(document, path)
     }
 
-    /// Validate a document (`path` as in [`SpaceScene::from_toml`]).
-    ///
-    /// # Errors
-    /// As [`SpaceScene::from_toml`].
-    pub fn from_document(document: SpaceDocument, path: &Path) -> Result<SpaceScene> {
-        super::space_validate::validate(document, path)
-    }
-
     /// A changed copy: `change` edits the document, which is validated again.
     ///
     /// # Errors

@@ -59,8 +59,18 @@ impl Bad<'_> {
     }
 }
 
+impl SpaceScene {
+    /// Validate a document (`path` as in [`SpaceScene::from_toml`]).
+    ///
+    /// # Errors
+    /// As [`SpaceScene::from_toml`].
+    pub fn from_document(document: SpaceDocument, path: &Path) -> Result<SpaceScene> {
+        validate(document, path)
+    }
+}
+
 /// Validate a half-space document and build the typed scene.
-pub(super) fn validate(document: SpaceDocument, path: &Path) -> Result<SpaceScene> {
+fn validate(document: SpaceDocument, path: &Path) -> Result<SpaceScene> {
     let bad = Bad(path);
     if let Err(why) = safe_name(&document.name) {
         return Err(bad.at("name", why));
