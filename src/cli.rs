@@ -12,8 +12,9 @@
 use crate::exit;
 use crate::io::write_output;
 use crate::pipeline::{Model, Warm};
-use crate::results::{render, Report};
-use crate::scene::Scene;
+use crate::results::space::SpaceReport;
+use crate::results::{render, space_render, Report};
+use crate::scene::{AnyScene, Scene, SpaceScene};
 use clap::{Parser, Subcommand};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -205,10 +206,13 @@ fn lcp_cmd(cmd: LcpCmd) -> crate::Result<u8> {
 }
 
 fn parse_solver(s: &str) -> Result<String, String> {
-    if s == "all" || crate::solvers::SolverId::from_name(s).is_some() {
+    if s == "all" || s == "half_space" || crate::solvers::SolverId::from_name(s).is_some() {
         Ok(s.to_string())
     } else {
-        Err(format!("unknown solver `{s}` (expected one of: all, {})", crate::solvers::names()))
+        Err(format!(
+            "unknown solver `{s}` (expected one of: all, {}; half_space for half-space scenes)",
+            crate::solvers::names()
+        ))
     }
 }
 
@@ -268,15 +272,67 @@ fn run_one(scene: &Scene, out: &Outputs) -> crate::Result<Report> {
 }
 
 /// Read and validate every scene of a command before any runs (with `--solver` overriding `[solvers] use`),
-/// refusing unsafe or repeated names (they name the output files).
-fn load_all(paths: &[PathBuf], solvers: &[String]) -> crate::Result<Vec<Scene>> {
+/// refusing unsafe or repeated names (they name the output files). A scene is 2D or 3D by its `[wheel] model`.
+fn load_all(paths: &[PathBuf], solvers: &[String]) -> crate::Result<Vec<AnyScene>> {
     let mut scenes = Vec::with_capacity(paths.len());
     for p in paths {
-        let s = Scene::from_file(p)?;
-        scenes.push(if solvers.is_empty() { s } else { s.edit(|d| d.solvers.use_ = solvers.to_vec())? });
+        let s = match AnyScene::from_file(p)? {
+            AnyScene::Plane(s) if !solvers.is_empty() => {
+                AnyScene::Plane(s.edit(|d| d.solvers.use_ = solvers.to_vec())?)
+            }
+            AnyScene::Space(s) if !solvers.is_empty() => {
+                AnyScene::Space(s.edit(|d| d.solvers.use_ = solvers.to_vec())?)
+            }
+            other => other,
+        };
+        scenes.push(s);
     }
-    crate::scene::unique_names(paths.iter().map(PathBuf::as_path).zip(&scenes))?;
+    let names: Vec<&str> = scenes.iter().map(AnyScene::name).collect();
+    crate::scene::unique_output_names(paths.iter().map(PathBuf::as_path).zip(names))?;
     Ok(scenes)
+}
+
+/// Solve one half-space scene and write its outputs (each only when the run completes).
+fn run_space(scene: &SpaceScene, out: &Outputs) -> crate::Result<SpaceReport> {
+    let report = crate::pipeline::SpaceModel::build(scene)?.solve(interrupt())?;
+    if let Some(path) = out.json {
+        let text = serde_json::to_string_pretty(&report).expect("a report serialises");
+        write_output(path, &(text + "\n"))?;
+    }
+    if let Some(path) = out.path_csv {
+        write_output(path, &report.steps_csv())?;
+    }
+    if let Some(path) = out.csv {
+        write_output(path, &report.elements_csv())?;
+    }
+    Ok(report)
+}
+
+/// The exit code of a half-space report (as [`exit::of_report`]: a step not ending with the expected status is
+/// [`exit::NOT_SOLVED`], then a failed check counts when `checks_count`).
+fn space_exit(r: &SpaceReport, checks_count: bool) -> u8 {
+    if r.unexpected_status() {
+        exit::NOT_SOLVED
+    } else if checks_count && !r.all_pass() {
+        exit::CHECK_FAILED
+    } else {
+        exit::SUCCESS
+    }
+}
+
+/// What one scene of `run` or `check` produced.
+#[allow(clippy::large_enum_variant)] // one per scene, moved once
+enum Ran {
+    Plane(Report),
+    Space(SpaceReport),
+}
+
+/// Solve a scene of either kind.
+fn run_any(scene: &AnyScene, out: &Outputs) -> crate::Result<Ran> {
+    match scene {
+        AnyScene::Plane(s) => run_one(s, out).map(Ran::Plane),
+        AnyScene::Space(s) => run_space(s, out).map(Ran::Space),
+    }
 }
 
 /// `rollbem check`: one table of checks per scene, a closing count line; exit codes of [`crate::exit`].
@@ -288,14 +344,22 @@ fn check(paths: &[PathBuf], solvers: &[String]) -> ExitCode {
     let (mut passed, mut failed, mut na) = (0usize, 0usize, 0usize);
     let mut code = exit::SUCCESS;
     for (p, s) in paths.iter().zip(&scenes) {
-        match run_one(s, &Outputs::default()) {
-            Ok(r) => {
+        match run_any(s, &Outputs::default()) {
+            Ok(Ran::Plane(r)) => {
                 say!("{}", render::check_summary(&r));
                 let (bad, skipped) = render::check_counts(&r);
                 passed += r.checks.len() - bad - skipped;
                 failed += bad;
                 na += skipped;
                 code = code.max(exit::of_report(&r, true));
+            }
+            Ok(Ran::Space(r)) => {
+                say!("{}", space_render::check_summary(&r));
+                let (bad, skipped) = space_render::check_counts(&r);
+                passed += r.checks.len() - bad - skipped;
+                failed += bad;
+                na += skipped;
+                code = code.max(space_exit(&r, true));
             }
             Err(e) => {
                 say!("FAIL {}: {e}", p.display());
@@ -336,7 +400,11 @@ fn run(
         Ok(l) => l,
         Err(e) => return fail(&e),
     };
-    if let (Some(_), Some((p, _))) = (&path_csv, paths.iter().zip(&scenes).find(|(_, s)| s.steps().is_empty())) {
+    let no_path = |s: &AnyScene| match s {
+        AnyScene::Plane(s) => s.steps().is_empty(),
+        AnyScene::Space(s) => !s.is_path(),
+    };
+    if let (Some(_), Some((p, _))) = (&path_csv, paths.iter().zip(&scenes).find(|(_, s)| no_path(s))) {
         eprintln!("error: --path-csv: scene {} has no load path (`[[steps]]`)", p.display());
         return ExitCode::from(exit::BAD_INPUT);
     }
@@ -350,15 +418,18 @@ fn run(
     for (i, s) in scenes.iter().enumerate() {
         let target = json.clone().or_else(|| out_dir.as_ref().map(|d| d.join(format!("{}.json", s.name()))));
         let out = Outputs { json: target.as_deref(), path_csv: path_csv.as_deref(), csv: csv.as_deref() };
-        match run_one(s, &out) {
-            Ok(report) => {
-                let table = render::run_table(&report);
+        match run_any(s, &out) {
+            Ok(ran) => {
+                let (table, c) = match &ran {
+                    Ran::Plane(r) => (render::run_table(r), exit::of_report(r, exit::declares_checks(r))),
+                    Ran::Space(r) => (space_render::run_table(r), space_exit(r, r.scene.checks.is_some())),
+                };
                 if out.to_stdout() {
                     eprint!("{}{table}", if i > 0 { "\n" } else { "" });
                 } else {
                     say!("{}{}", if i > 0 { "\n" } else { "" }, table.trim_end());
                 }
-                code = code.max(exit::of_report(&report, exit::declares_checks(&report)));
+                code = code.max(c);
             }
             Err(e) => {
                 eprintln!("error: {e}");
@@ -417,6 +488,14 @@ fn plot(
         let scene = scene.map(|p| Scene::from_file(&p)).transpose()?;
         let dir = input.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
         return crate::report::plot_csv(input, out.unwrap_or(dir), analysis, scene.as_ref());
+    }
+    if let Ok(text) = std::fs::read_to_string(input) {
+        if serde_json::from_str::<serde_json::Value>(&text).is_ok_and(|v| crate::results::space::is_space_value(&v)) {
+            let report = SpaceReport::from_json(&text, input)?;
+            let dir = input.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+            let files = crate::plot::space::plot_space(&report, out.unwrap_or(dir))?;
+            return Ok(crate::report::Plotted { files, skipped: Vec::new() });
+        }
     }
     crate::report::plot_result(input, out)
 }

@@ -30,6 +30,10 @@ key (a drive key given twice included); a run that did not solve is a status in 
 when asked (``check=True``). Where Python has a class of its own it is raised: ``FileNotFoundError`` (and the other
 ``OSError`` subclasses) for a file, ``KeyError`` for a solver or quantity a result does not hold, ``TypeError`` for
 an argument of the wrong kind.
+Half-space (3D) scenes (``[wheel] model = "half_space"``): :class:`SpaceScene`, :class:`SpaceModel` (only the
+kernels the effects need), :class:`SpaceReport` with each :class:`SpaceStep`'s per-element arrays of shape (MY, MX)
+(``pressure``, ``px``, ``py``, ``gap``, ``state``); CONTACT's signs: tractions on body 1, pressure > 0 in compression.
+
 Solves release the GIL and run on a worker thread; Ctrl-C raises ``KeyboardInterrupt`` within about 20 ms (a list
 of drives stops before its next drive; a single solve in progress finishes in the background, its result dropped).
 """
@@ -40,6 +44,7 @@ import os
 from typing import Any, Dict, List, Literal, Optional, Union, overload
 
 from ._core import (
+    ELEMENT_STATES,
     NODE_STATES,
     SCHEMA_VERSION,
     Model,
@@ -47,11 +52,16 @@ from ._core import (
     Residuals,
     Run,
     Scene,
+    SpaceModel,
+    SpaceReport,
+    SpaceScene,
+    SpaceStep,
     Step,
     Stresses,
     __version__,
     register_solver,
     run,
+    run3d,
 )
 from ._core import _sweep_rows
 from .errors import InputError, InternalError, NumericalError, OutputError, RollbemError, SolveError
@@ -64,10 +74,16 @@ __all__ = [
     "Step",
     "Residuals",
     "Stresses",
+    "SpaceScene",
+    "SpaceModel",
+    "SpaceReport",
+    "SpaceStep",
     "run",
+    "run3d",
     "register_solver",
     "sweep",
     "NODE_STATES",
+    "ELEMENT_STATES",
     "SCHEMA_VERSION",
     "RollbemError",
     "InputError",

@@ -40,6 +40,8 @@ __version__: str
 NODE_STATES: List[str]
 #: The layout version of the result document (``Report.to_dict()["schema"]``).
 SCHEMA_VERSION: int
+#: Names of the element state codes of ``SpaceStep.state``, by code: 0 exterior, 1 stick, 2 slip.
+ELEMENT_STATES: List[str]
 
 __all__ = [
     "Scene",
@@ -49,18 +51,25 @@ __all__ = [
     "Step",
     "Residuals",
     "Stresses",
+    "SpaceScene",
+    "SpaceModel",
+    "SpaceReport",
+    "SpaceStep",
     "run",
+    "run3d",
     "register_solver",
     "_rust_creep_curve",
     "_sweep_rows",
     "NODE_STATES",
     "SCHEMA_VERSION",
+    "ELEMENT_STATES",
     "__version__",
 ]
 
 _Path = Union[str, "os.PathLike[str]"]
 _Drive = Mapping[str, float]
 _FloatArray = npt.NDArray[np.float64]
+_Int8Array = npt.NDArray[np.int8]
 
 @final
 class Scene:
@@ -518,3 +527,122 @@ def _rust_creep_curve(scene: Scene, creepages: Sequence[float], on_worker: bool 
     [force/thickness])."""
 
 def _sweep_rows(spec: str, shard: Optional[str] = None) -> Tuple[List[str], List[List[Any]]]: ...
+
+@final
+class SpaceScene:
+    """A validated half-space (3D) scene (``[wheel] model = "half_space"``; README "Scenes"): two elastic
+    half-spaces on an MX x MY grid. CONTACT's signs: tractions and forces on body 1, pressure > 0 in compression,
+    shifts of body 1 relative to body 2. Bad input raises ``InputError`` naming the key."""
+
+    @staticmethod
+    def from_toml(text: str, origin: Optional[_Path] = None) -> SpaceScene:
+        """Parse and validate scene text; ``origin`` names it in errors and anchors a relative ``gap_file``."""
+    @staticmethod
+    def from_file(path: _Path) -> SpaceScene:
+        """Read, parse and validate a half-space scene file."""
+    @staticmethod
+    def from_dict(tables: Mapping[str, Any]) -> SpaceScene:
+        """A scene from its tables as nested dicts."""
+    def edit(self, changes: Mapping[str, Any]) -> SpaceScene:
+        """A changed copy: dotted keys to values (``None`` removes a key); validated again."""
+    def with_gap(self, gap: Union[_FloatArray, Sequence[Sequence[float]]]) -> SpaceScene:
+        """The scene with one gap [length] per element, shape (MY, MX), row iy first; it replaces ``[profile]``."""
+    @property
+    def name(self) -> str: ...
+    @property
+    def shape(self) -> Tuple[int, int]:
+        """(MY, MX): the shape of every per-element array."""
+    @property
+    def friction(self) -> float:
+        """Coulomb's mu [-]."""
+    @property
+    def dundurs_beta(self) -> float:
+        """Dundurs' beta of the pair, body 1 first [-]."""
+    def to_dict(self) -> Dict[str, Any]:
+        """The document as nested dicts (defaults filled in)."""
+
+@final
+class SpaceModel:
+    """A half-space scene's influence kernels, built once: only those its effects need."""
+
+    def __new__(cls, scene: SpaceScene) -> SpaceModel:
+        """Build the kernels of ``scene``."""
+    @property
+    def has_tangential(self) -> bool:
+        """Whether the tangential kernels were built (friction only)."""
+    @property
+    def has_coupling(self) -> bool:
+        """Whether the coupling kernels were built (a dissimilar pair with friction asked to couple)."""
+    def solve(self) -> SpaceReport:
+        """Solve every step (a step without a solution is a status in the report)."""
+
+@final
+class SpaceStep:
+    """One (sub)step of a half-space result. Arrays have shape (MY, MX), are read-only and made once."""
+
+    @property
+    def index(self) -> int:
+        """The ``[[steps]]`` index (0 for ``[drive]``)."""
+    @property
+    def substep(self) -> int: ...
+    @property
+    def status(self) -> str:
+        """``solved``, ``contact_at_grid_edge``, ``not_converged``, ``gross_sliding`` or ``no_contact``."""
+    @property
+    def message(self) -> str: ...
+    @property
+    def load(self) -> float:
+        """The normal load P [force]."""
+    @property
+    def approach(self) -> float:
+        """The approach [length]."""
+    @property
+    def force(self) -> Tuple[float, float]:
+        """The tangential force (F_x, F_y) on body 1 [force]."""
+    @property
+    def shift(self) -> Optional[Tuple[float, float]]:
+        """The shift of body 1 relative to body 2 from the path's start [length]; None after gross sliding."""
+    @property
+    def counts(self) -> Tuple[int, int, int]:
+        """Elements in contact, in stick, in slip."""
+    @property
+    def pressure(self) -> _FloatArray:
+        """Pressure p [stress], shape (MY, MX)."""
+    @property
+    def px(self) -> _FloatArray:
+        """Shear q_x on body 1 [stress], shape (MY, MX)."""
+    @property
+    def py(self) -> _FloatArray:
+        """Shear q_y on body 1 [stress], shape (MY, MX)."""
+    @property
+    def gap(self) -> _FloatArray:
+        """The deformed gap [length], shape (MY, MX)."""
+    @property
+    def state(self) -> _Int8Array:
+        """State codes (``ELEMENT_STATES``), shape (MY, MX)."""
+
+@final
+class SpaceReport:
+    """The result document of a half-space scene (``rollbem run --json`` of a 3D scene)."""
+
+    @property
+    def steps(self) -> Tuple[SpaceStep, ...]: ...
+    @property
+    def checks(self) -> List[Dict[str, Any]]: ...
+    @property
+    def all_pass(self) -> bool: ...
+    @property
+    def hertz(self) -> Optional[Dict[str, float]]:
+        """Hertz's ellipse at the last step's load (a_x, a_y [length], p0 [stress], approach [length], load)."""
+    @property
+    def x(self) -> _FloatArray:
+        """The element centres' x [length], shape (MY, MX) (made on each access)."""
+    @property
+    def y(self) -> _FloatArray:
+        """The element centres' y [length], shape (MY, MX) (made on each access)."""
+    def to_dict(self) -> Dict[str, Any]:
+        """The whole document, as ``rollbem run --json`` writes it."""
+    def to_json(self) -> str: ...
+
+def run3d(scene: SpaceScene) -> SpaceReport:
+    """Build and solve a half-space scene once."""

@@ -32,7 +32,7 @@ fn from_json(value: Value, origin: &Path) -> Result<Scene, Failure> {
 }
 
 /// Set a dotted key (`drive.normal_load`, `solvers.use`) in a JSON document; `Null` removes it.
-fn set_dotted(doc: &mut Value, key: &str, value: Value, origin: &Path) -> Result<(), Failure> {
+pub(crate) fn set_dotted(doc: &mut Value, key: &str, value: Value, origin: &Path) -> Result<(), Failure> {
     let parts: Vec<&str> = key.split('.').collect();
     if parts.iter().any(|p| p.is_empty()) {
         return Err(keyed(origin, key, "not a dotted key (e.g. `drive.normal_load`)".into()));

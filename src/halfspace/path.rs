@@ -137,6 +137,9 @@ pub struct StepOutcome {
     pub qy: Vec<f64>,
     /// Element states (exterior, stick, slip; all stick-free for a frictionless path: `Exterior` or `Slip`).
     pub state: Vec<ElementState>,
+    /// The deformed gap per element (length): `h − d + C_zz p` (with the coupling's `C_zt q` for a coupled step),
+    /// 0 in contact up to the normal residual, ≥ 0 outside.
+    pub gap: Vec<f64>,
     /// The approach (length).
     pub approach: f64,
     /// The normal force `A Σ p`.
@@ -349,6 +352,7 @@ impl Path {
             outer_iterations: outer,
             iterations: its,
             pressure: ns.pressure,
+            gap: ns.gap,
             qx: t.qx,
             qy: t.qy,
             state,

@@ -57,6 +57,8 @@
 
 mod path;
 mod single;
+pub mod space;
+mod space_checks;
 pub mod stages;
 
 use crate::cancel::Cancel;
@@ -66,6 +68,9 @@ use crate::results::{Report, Setup};
 use crate::scene::{Loading, Scene};
 use crate::source::{self, Blocks, Built, SourceTiming};
 use std::sync::atomic::{AtomicUsize, Ordering};
+
+pub use space::{run_space_scene, SpaceModel};
+pub use space_checks::fit_ellipse;
 
 /// A scene's flexibility, built once and solved for many drives (see the module docs).
 #[derive(Debug)]

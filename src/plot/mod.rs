@@ -61,6 +61,7 @@ mod field;
 mod legend;
 mod map_layout;
 mod prepared;
+pub mod space;
 mod style;
 #[cfg(test)]
 mod test_support;

@@ -12,6 +12,8 @@ use serde::{Deserialize, Serialize};
 
 mod export;
 pub mod render;
+pub mod space;
+pub mod space_render;
 
 /// The version of the result document's layout ([`Report::schema`]): raised when a key changes meaning or is
 /// removed (keys are only ever added within a version).
@@ -379,6 +381,13 @@ impl Report {
     pub fn from_json(text: &str, path: &std::path::Path) -> crate::Result<Report> {
         let bad = |message: String| crate::Error::Parse { path: path.to_path_buf(), message };
         let mut value: serde_json::Value = serde_json::from_str(text).map_err(|e| bad(format!("not JSON: {e}")))?;
+        if space::is_space_value(&value) {
+            return Err(bad(
+                "a half-space (3D) result document: read it with `results::space::SpaceReport::read` (`rollbem plot` \
+                 reads both kinds)"
+                    .into(),
+            ));
+        }
         if value.get("runs").is_none() {
             return Err(bad("not a rollbem result document: no `runs` array".into()));
         }

@@ -38,6 +38,8 @@
 //! ```
 
 pub mod document;
+pub mod space;
+mod space_validate;
 mod validate;
 
 use crate::error::{Error, Result};
@@ -47,6 +49,7 @@ use crate::solvers::{SolverId, SolverSettings};
 use crate::status::Status;
 use document::SceneDocument;
 use serde::{Deserialize, Serialize};
+pub use space::{AnyScene, SpaceDocument, SpaceScene, SpaceStatus, SpaceStep};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -611,8 +614,29 @@ impl Scene {
 
     /// Parse and validate scene text; `path` is used in error messages only.
     pub fn from_toml(text: &str, path: &Path) -> Result<Scene> {
-        let document: SceneDocument = toml::from_str(text)
-            .map_err(|e| Error::Parse { path: path.to_path_buf(), message: e.to_string().trim_end().to_string() })?;
+        let document: SceneDocument = toml::from_str(text).map_err(|e| {
+            // A half-space scene, or a 2D scene with a key only half-space scenes have: name it.
+            let table = text.parse::<toml::Table>().ok();
+            if table.as_ref().is_some_and(space::is_space_table) {
+                return Error::Invalid {
+                    path: path.to_path_buf(),
+                    field: "wheel.model".into(),
+                    message: "\"half_space\" is a 3D scene: read it with `scene::AnyScene` or `SpaceScene` (`rollbem \
+                              run`, `check` and `plot` take both kinds; sweeps take 2D scenes only, for now)"
+                        .into(),
+                };
+            }
+            if let Some(key) = table.as_ref().and_then(space::space_only_key) {
+                return Error::Invalid {
+                    path: path.to_path_buf(),
+                    field: key.into(),
+                    message: "is a key of the half-space (3D) scenes (wheel.model = \"half_space\"); this 2D scene \
+                              does not take it (README, \"Scenes\")"
+                        .into(),
+                };
+            }
+            Error::Parse { path: path.to_path_buf(), message: e.to_string().trim_end().to_string() }
+        })?;
         Scene::from_document(document, path)
     }
 
