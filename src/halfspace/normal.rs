@@ -73,7 +73,7 @@
 //! ```
 //!
 //! The preconditioned CG's count grows about as N^0.07 to N^0.12, Polonsky–Keer's as N^0.2. On CONTACT's rail–wheel series
-//! `norm_problm_1p … 8p` (approach prescribed, tolerance 1e-7; `examples/halfspace_norm_series.rs`) the
+//! `norm_problm_1p … 8p` (approach prescribed, tolerance 1e-7; `examples/halfspace_perfc_series.rs`) the
 //! preconditioned CG takes 22, 23, 28 and 43 iterations for 3 148 to 200 980 elements in contact, Polonsky–Keer
 //! 56, 80 and 109 up to `4p`; CONTACT's own NormCG with its FFT preconditioner 27 to 31.
 
