@@ -101,8 +101,8 @@ fn point_stress(x: f64, y: f64, z: f64, f: [f64; 3], nu: f64) -> [f64; 6] {
     for j in 0..3 {
         let s = |k: usize, v: f64| D { v, d: if k == j { 1.0 } else { 0.0 } };
         let u = point_displacement(s(0, x), s(1, y), s(2, z), f, nu);
-        for i in 0..3 {
-            g[i][j] = u[i].d;
+        for (row, ui) in g.iter_mut().zip(u) {
+            row[j] = ui.d;
         }
     }
     // With 4πG u given and G = 1: σ = λ tr ε + 2ε, λ = 2ν/(1−2ν), all over 4π.
