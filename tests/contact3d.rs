@@ -200,3 +200,53 @@ fn norm_problm_1p_agrees_with_contact() {
         (o.load - num(c, "fn")).abs() <= 5e-4 * num(c, "fn") && (pmax - num(c, "pmax")).abs() <= 5e-4 * num(c, "pmax")
     );
 }
+
+/// Spence's receding stick zone for dissimilar spheres, as theory (`rollbem::theory::spence_sphere_c_over_a`, the
+/// self-similar solution in Goodman's approximation, derived in `src/theory/spence3d.rs`): an elastic sphere (R = 1,
+/// ν = 0.45, E* = 1) pressed on a rigid flat (β = (1 − 2ν)/(2(1 − ν)) = 1/11), μ = β/2 (β/μ = 2, c/a = 0.4851; βμ =
+/// 0.004, so the coupling the theory neglects is small), the load raised from a = 0.2 to a = 1 in steps of half an
+/// element of radius, coupled (`halfspace::Path`, zero tangential force). Error measure: |c/a − theory| with c/a =
+/// √(N_stick/N_contact), the radii of the stick and contact areas (counts of elements) at the last step. Measured:
+/// 0.0244 at 10 elements per radius (c/a 0.4608), 0.0054 at 20 (0.4798): a factor 4.5 per halving, order ≈ 2 (an
+/// area count resolves a radius to O(h²) on average, but with O(h) jitter: two grids show the trend, not a
+/// rate). 40 elements per radius (145 steps of 7 225 elements) would take minutes: not run here.
+#[test]
+fn spence_sphere_stick_radius_converges_to_theory() {
+    let nu = 0.45;
+    let beta = (1.0 - 2.0 * nu) / (2.0 * (1.0 - nu));
+    let mu = beta / 2.0;
+    let theory = rollbem::theory::spence_sphere_c_over_a(beta / mu);
+    let elastic = HalfSpace::new(1.0 - nu * nu, nu).unwrap();
+    let rigid = HalfSpace::new(f64::INFINITY, nu).unwrap();
+    let mut errs = Vec::new();
+    for n in [10usize, 20] {
+        let m = 2 * n + 5;
+        let d = 1.0 / n as f64;
+        let g = ContactGrid::new(m, m, d, d, -((n + 2) as f64) * d, -((n + 2) as f64) * d).unwrap();
+        // a³ = 3PR/(4E*): P = (4/3) a³; a from 0.1 to 1 in steps of d/4.
+        let steps: Vec<Step> = (0..)
+            .map(|k| 0.2 + 0.5 * d * k as f64)
+            .take_while(|&a| a < 1.0 + 1e-12)
+            .map(|a| Step::new(Drive::Load(4.0 / 3.0 * a * a * a), TangentialDrive::Force(0.0, 0.0)))
+            .collect();
+        let path = Path::new(g, elastic, rigid, Profile::Quadratic { a: 0.5, b: 0.5 }, mu, true, steps).unwrap();
+        let t0 = std::time::Instant::now();
+        let out = path.solve(&PathSettings::default(), &Cancel::never()).unwrap();
+        let o = out.last().unwrap();
+        assert!(out.iter().all(|o| o.status == PathStatus::Solved), "{}", o.message);
+        let ratio = (o.counts.1 as f64 / o.counts.0 as f64).sqrt();
+        let outer: usize = out.iter().map(|o| o.outer_iterations).sum();
+        let inner = out.iter().fold((0, 0), |a, o| (a.0 + o.iterations.0, a.1 + o.iterations.1));
+        println!(
+            "n = {n}: {} steps ({outer} alternations, inner {inner:?}), c/a {ratio:.4} ({} stick of {} in contact) vs \
+             theory {theory:.4}: error {:.4}, {:.1} s",
+            out.len(),
+            o.counts.1,
+            o.counts.0,
+            (ratio - theory).abs(),
+            t0.elapsed().as_secs_f64()
+        );
+        errs.push((ratio - theory).abs());
+    }
+    assert!(errs[1] < 0.5 * errs[0] && errs[1] < 0.01, "{errs:?}");
+}

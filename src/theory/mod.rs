@@ -52,7 +52,7 @@
 //! # Files
 //!
 //! One file per theory: [`hertz`] (1. Hertz line contact), [`cattaneo`] (2. Cattaneo–Mindlin),
-//! [`mindlin_deresiewicz`] (3. Mindlin–Deresiewicz), [`carter`] (4. Carter rolling), [`spence`] (5. Spence),
+//! [`mindlin_deresiewicz`] (3. Mindlin–Deresiewicz), [`carter`] (4. Carter rolling), [`spence`] (5. Spence; [`spence3d`] its axisymmetric counterpart),
 //! [`mcewen`] (6. McEwen subsurface stresses), [`disk`] (7. diametrally compressed disk); [`stress`] holds the
 //! stress state they return and [`special`] the special functions. Every item is re-exported here, so
 //! `rollbem::theory::X` names each of them.
@@ -77,6 +77,7 @@ pub mod mcewen;
 pub mod mindlin_deresiewicz;
 pub mod special;
 pub mod spence;
+pub mod spence3d;
 pub mod spence_coupled;
 pub mod stress;
 #[cfg(test)]
@@ -91,6 +92,7 @@ pub use mcewen::*;
 pub use mindlin_deresiewicz::*;
 pub use special::*;
 pub use spence::*;
+pub use spence3d::*;
 pub use spence_coupled::*;
 pub use stress::*;
 
