@@ -2,7 +2,7 @@
 
 use super::kernel::{Coefficients, Compliance, KernelTable, UniformGrid};
 use crate::error::ArgumentError;
-use crate::toeplitz2d::{Scratch, Toeplitz2d};
+use crate::toeplitz2d::{BlockScratch, Scratch, Toeplitz2d};
 
 /// The largest grid (elements) for which a dense influence matrix may be formed ([`Influence::dense`]): 4 096
 /// elements, a 128 MiB matrix of one component. Dense matrices serve cross-checks by Lemke and clarabel on small
@@ -263,7 +263,7 @@ impl Influence {
     }
 
     /// The tangential displacements (slips, for a pair) of the shears: `u_x = C_xx q_x + C_xy q_y`,
-    /// `u_y = C_xy q_x + C_yy q_y` into `ux`, `uy` (`tmp` one more buffer of the grid's length).
+    /// `u_y = C_xy q_x + C_yy q_y` into `ux`, `uy` (one 2 × 2 block product: [`Toeplitz2d::apply_block_into`]).
     ///
     /// # Errors
     /// An [`ArgumentError`] when the tangential kernels were not built ([`Kernels::Normal`]) or a vector is not one
@@ -272,8 +272,7 @@ impl Influence {
         &self,
         q: (&[f64], &[f64]),
         u: (&mut [f64], &mut [f64]),
-        tmp: &mut [f64],
-        scratch: &mut Scratch,
+        scratch: &mut BlockScratch,
     ) -> Result<(), ArgumentError> {
         let [xx, xy, yy] = self.tangential.as_ref().ok_or_else(|| {
             ArgumentError::new(
@@ -282,15 +281,7 @@ impl Influence {
                 "built with Kernels::Normal: no tangential kernels",
             )
         })?;
-        let (qx, qy) = q;
-        let (ux, uy) = u;
-        xx.apply_into(qx, ux, scratch)?;
-        xy.apply_into(qy, tmp, scratch)?;
-        ux.iter_mut().zip(tmp.iter()).for_each(|(a, b)| *a += b);
-        yy.apply_into(qy, uy, scratch)?;
-        xy.apply_into(qx, tmp, scratch)?;
-        uy.iter_mut().zip(tmp.iter()).for_each(|(a, b)| *a += b);
-        Ok(())
+        Toeplitz2d::apply_block_into([xx, xy, yy], q, u, scratch)
     }
 
     /// The gap change of the shears through the coupling: `u_z = C_zx q_x + C_zy q_y` into `uz` (zero when the
@@ -395,10 +386,10 @@ mod tests {
         let n = grid.len();
         let v = |s: f64| (0..n).map(|i| ((i as f64 + s) * 0.7).sin()).collect::<Vec<f64>>();
         let (p, qx, qy) = (v(0.0), v(1.0), v(2.0));
-        let (mut ux, mut uy, mut uz, mut tmp) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
-        let mut s = Scratch::default();
+        let (mut ux, mut uy, mut uz) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        let (mut s, mut bs) = (Scratch::default(), BlockScratch::default());
         inf.apply_normal(&p, &mut uz, &mut s).unwrap();
-        inf.apply_tangential((&qx, &qy), (&mut ux, &mut uy), &mut tmp, &mut s).unwrap();
+        inf.apply_tangential((&qx, &qy), (&mut ux, &mut uy), &mut bs).unwrap();
         let (mut cz, mut cx, mut cy) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
         inf.coupling_gap((&qx, &qy), &mut cz, &mut s).unwrap();
         inf.coupling_slip(&p, (&mut cx, &mut cy), &mut s).unwrap();
@@ -422,7 +413,7 @@ mod tests {
         assert!(inf.has_tangential() && !inf.has_coupling());
         let inf = Influence::new(grid, same.compliance(), Kernels::Normal).unwrap();
         assert!(!inf.has_tangential() && !inf.has_coupling());
-        let err = inf.apply_tangential((&qx, &qy), (&mut ux, &mut uy), &mut tmp, &mut s).unwrap_err();
+        let err = inf.apply_tangential((&qx, &qy), (&mut ux, &mut uy), &mut bs).unwrap_err();
         assert!(err.to_string().contains("Kernels::Normal"), "{err}");
         // The normal-only operator computed C_zz alone: bit for bit the full table's, and a dense tangential matrix
         // of it is refused rather than filled with what was never computed.

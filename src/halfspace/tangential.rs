@@ -48,7 +48,7 @@
 use super::operator::Influence;
 use crate::cancel::Cancel;
 use crate::error::ArgumentError;
-use crate::toeplitz2d::Scratch;
+use crate::toeplitz2d::BlockScratch;
 
 /// What is prescribed tangentially in a shift step.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -235,8 +235,7 @@ struct Buffers {
     dy: Vec<f64>,
     ux: Vec<f64>,
     uy: Vec<f64>,
-    tmp: Vec<f64>,
-    scratch: Scratch,
+    scratch: BlockScratch,
 }
 
 impl<'a> Fista<'a> {
@@ -251,7 +250,7 @@ impl<'a> Fista<'a> {
         let n = bound.len();
         let (lipschitz, diagonal) = lipschitz(op);
         let z = || vec![0.0; n];
-        let bufs = Buffers { dx: z(), dy: z(), ux: z(), uy: z(), tmp: z(), scratch: Scratch::default() };
+        let bufs = Buffers { dx: z(), dy: z(), ux: z(), uy: z(), scratch: BlockScratch::default() };
         let q = (prev.0.to_vec(), prev.1.to_vec());
         Fista { op, bound, prev, offset, drive, area, lipschitz, diagonal, q, nu: (0.0, 0.0), bufs, iterations: 0 }
     }
@@ -264,7 +263,7 @@ impl<'a> Fista<'a> {
             b.dx[i] = x[i] - self.prev.0[i];
             b.dy[i] = y[i] - self.prev.1[i];
         }
-        self.op.apply_tangential((&b.dx, &b.dy), (&mut b.ux, &mut b.uy), &mut b.tmp, &mut b.scratch)?;
+        self.op.apply_tangential((&b.dx, &b.dy), (&mut b.ux, &mut b.uy), &mut b.scratch)?;
         b.ux.iter_mut().zip(self.offset.0).for_each(|(v, o)| *v += o);
         b.uy.iter_mut().zip(self.offset.1).for_each(|(v, o)| *v += o);
         if let (TangentialDrive::Shift(wx, wy), true) = (self.drive, with_w) {
