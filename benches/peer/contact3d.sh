@@ -31,6 +31,12 @@
 #   - each example's first timed run against its .ref_out the same way;
 #   - each perfc_test input's first timed run against the author's perfc_test/get_times.ref_out: the number of
 #     elements in contact (norm_problm_*, NCON) or in slip (tang_problm_*, NSLIP) must be equal.
+#
+# rollbem beside it: each perfc_test input (norm_problm_kp, tang_problm_ks) is also timed as rollbem's
+# `examples/halfspace_perfc_series` (built here with cargo; the same discrete problem: grid, profile, materials,
+# approach, shift, EPS) under the same conditions (pinned, GNU time, median of REPEATS); its elements in contact and
+# in slip are printed beside CONTACT's, and the ratio is CONTACT's best CPU (the smaller of its two runs) over
+# rollbem's. ROLLBEM=0 skips these runs.
 set -euo pipefail
 
 if [[ $# -lt 1 || $# -gt 2 ]]; then
@@ -45,6 +51,7 @@ repeats=${REPEATS:-3}
 once_over=${ONCE_OVER:-180}
 cpu=${CPU:-0}
 malloc_tuned=${MALLOC_TUNED:-1}
+with_rollbem=${ROLLBEM:-1}
 tunables="glibc.malloc.mmap_max=0:glibc.malloc.trim_threshold=4294967296"
 export LC_ALL=C
 
@@ -140,6 +147,28 @@ out_timers() {
     END { printf "%s / %s / %s", t, (n == "" ? "–" : n), (g == "" ? "–" : g) }' "$1"
 }
 
+rollbem_ex=""
+if ((with_rollbem)); then
+  say "building rollbem's examples/halfspace_perfc_series"
+  (cd "$here/../.." && cargo build --release --quiet --example halfspace_perfc_series) || die "cargo build failed"
+  rollbem_ex="$here/../../target/release/examples/halfspace_perfc_series"
+fi
+# rollbem on perfc input NAME (norm_problm_kp / tang_problm_ks) in DIR/rollbem, REPEATS times: prints
+# "cpu rss_MiB contact slip" (median run; counts from its last line of output).
+rollbem_cells() {
+  local dir=$1/rollbem name=$2 lvl=${2##*_problm_}
+  mkdir -p "$dir"
+  : >"$dir/times"
+  for ((r = 0; r < repeats; r++)); do
+    taskset -c "$cpu" /usr/bin/time -o "$dir/time.tmp" -f '%U %S %M' "$rollbem_ex" "$lvl" >"$dir/out.txt" ||
+      die "$name: rollbem failed"
+    tail -n 1 "$dir/time.tmp" >>"$dir/times"
+  done
+  read -r rcpu _ _ rrss <<<"$(median_run "$dir")"
+  tail -n 1 "$dir/out.txt" | awk -F'|' -v c="$rcpu" -v m="$rrss" '{ split($3, a, " "); split($5, b, " ");
+    printf "%s %s %s %s\n", c, m, a[1], (b[1] == "" ? "-" : b[1]) }'
+}
+
 load_start=$(loadavg)
 rows=()
 notes=()
@@ -195,19 +224,29 @@ for name in $cases; do
     read -r ucpu uuser usys urss <<<"$(median_run "$d/tuned")"
     tcells="$tcells | $ucpu | $uuser | $usys | $urss | $truns"
   fi
+  rcells="– | – | – | –"
+  if [[ -n $rollbem_ex && $kind == perfc ]]; then
+    say "$name: rollbem"
+    read -r rcpu rrss rcon rslip <<<"$(rollbem_cells "$d" "$name")"
+    best=$tcpu
+    ((malloc_tuned)) && best=$(awk -v a="$tcpu" -v b="$ucpu" 'BEGIN { print (b < a) ? b : a }')
+    ratio=$(awk -v a="$best" -v b="$rcpu" 'BEGIN { if (b > 0) printf "%.2f", a / b; else print "n/a" }')
+    rcells="$rcon / $rslip | $rcpu | $rrss | $ratio"
+    notes+=("$name: rollbem's elements in contact / in slip $rcon / $rslip (CONTACT's $ncon / $nslip); CONTACT's best CPU $best s.")
+  fi
   grid=$(inp_grid "$inp")
   ncases=$(inp_cases "$inp")
-  rows+=("| $name | $grid | $npot | $ncases | $ncon | $nadh | $nslip | $checkcell | $tcells | $(out_timers "$d/$name.out") |")
+  rows+=("| $name | $grid | $npot | $ncases | $ncon | $nadh | $nslip | $checkcell | $tcells | $(out_timers "$d/$name.out") | $rcells |")
   say "$name: $tcells"
 done
 
 {
   if ((malloc_tuned)); then
-    echo "| input | grid MX × MY (first case) | NPOT | cases | NCON | NADH | NSLIP | check of this run | CPU user+sys [s] | user [s] | sys [s] | peak RSS [MiB] | runs | with malloc tunables: CPU user+sys [s] | user [s] | sys [s] | peak RSS [MiB] | runs | CONTACT's own timers, CPU total / NORM / TANG [s] |"
-    echo "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+    echo "| input | grid MX × MY (first case) | NPOT | cases | NCON | NADH | NSLIP | check of this run | CPU user+sys [s] | user [s] | sys [s] | peak RSS [MiB] | runs | with malloc tunables: CPU user+sys [s] | user [s] | sys [s] | peak RSS [MiB] | runs | CONTACT's own timers, CPU total / NORM / TANG [s] | rollbem: contact / slip | rollbem CPU [s] | rollbem peak RSS [MiB] | CONTACT best ÷ rollbem |"
+    echo "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|"
   else
-    echo "| input | grid MX × MY (first case) | NPOT | cases | NCON | NADH | NSLIP | check of this run | CPU user+sys [s] | user [s] | sys [s] | peak RSS [MiB] | runs | CONTACT's own timers, CPU total / NORM / TANG [s] |"
-    echo "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---|"
+    echo "| input | grid MX × MY (first case) | NPOT | cases | NCON | NADH | NSLIP | check of this run | CPU user+sys [s] | user [s] | sys [s] | peak RSS [MiB] | runs | CONTACT's own timers, CPU total / NORM / TANG [s] | rollbem: contact / slip | rollbem CPU [s] | rollbem peak RSS [MiB] | CONTACT best ÷ rollbem |"
+    echo "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|"
   fi
   printf '%s\n' "${rows[@]}"
   echo
@@ -215,6 +254,7 @@ done
   echo "Element counts (NPOT potential contact, NCON contact, NADH adhesion, NSLIP slip) are those CONTACT prints for the last case of each input."
   echo "Times: CPU (user + sys) and peak RSS of the whole process (GNU time), pinned to core $cpu (taskset), one thread (OPENMP= build, MKL sequential), median of $repeats runs (one run when the first took over $once_over s); the input as shipped: \`contact_linux64 2 NAME\` in a folder holding NAME.inp. CONTACT's own timers are from the last run with glibc's defaults (its .out, rounded to 0.1 s)."
   ((malloc_tuned)) && echo "With malloc tunables: the same runs with \`GLIBC_TUNABLES=$tunables\` (glibc's malloc serves every block from its heap and keeps freed memory instead of returning it to the kernel, so CONTACT's repeated allocations of large work arrays are not zero-filled by the kernel again each time); each such run's printed results equal the default run's to every digit (contact_refcmp.py). CONTACT's best time is the smaller of the two."
+  [[ -n $rollbem_ex ]] && echo "rollbem: \`target/release/examples/halfspace_perfc_series kp|ks\` (rollbem $(awk -F'"' '/^version/ { print $2; exit }' "$here/../../Cargo.toml"), commit $(git -C "$here/../.." rev-parse --short HEAD 2>/dev/null || echo unknown)), the same discrete problem; normal problem by the FFT-preconditioned CG, the shift by FISTA on the disc, tolerance 1e-7; the same pinning, GNU time and median; the whole process (reading the profile, building the influence operators, solving)."
   echo "Build check before timing (contact_refcmp.py, every printed result to one unit of its last digit): $(printf '%s. ' "${contact_ref_summary[@]}")"
   echo "Machine: $(nproc) cores, shared; load average $load_start at the start, $(loadavg) at the end."
   for note in "${notes[@]}"; do echo "Note: $note"; done
