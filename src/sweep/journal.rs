@@ -63,7 +63,7 @@ impl Journal {
     /// A new journal (an old one at `path` is replaced): the marker, the sweep's identity line
     /// ([`super::identity::Identity::line`]) and the header. Written to a temporary file renamed into place, so a
     /// journal always has all three.
-    pub fn create(path: &Path, keys: &[String], identity: &str) -> Result<Journal> {
+    pub fn create(path: &Path, keys: &[String], kind: super::Kind, identity: &str) -> Result<Journal> {
         let werr = write_err(path);
         let mut name = path.as_os_str().to_owned();
         name.push(format!(".tmp-{}", std::process::id()));
@@ -71,7 +71,7 @@ impl Journal {
         let made = (|| {
             let mut file = File::create(&tmp).map_err(&werr)?;
             let mut w = csv::Writer::from_writer(Vec::new());
-            w.write_record(super::row::header(keys)).expect("writing to memory");
+            w.write_record(super::row::header_of(keys, kind)).expect("writing to memory");
             let head =
                 [format!("{MARKER}\n{identity}").into_bytes(), w.into_inner().expect("writing to memory")].concat();
             file.write_all(&head).map_err(&werr)?;
