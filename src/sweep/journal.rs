@@ -209,12 +209,17 @@ pub fn scan(
     let mut rd = csv::Reader::from_reader(input);
     let perr = |e: csv::Error| bad(e.to_string());
     let names: Vec<String> = rd.headers().map_err(perr)?.iter().map(str::to_string).collect();
-    if expect.is_some_and(|h| h != names) {
-        return Err(super::invalid(
-            path,
-            "header",
-            "its columns are not this sweep's: it was written for another sweep spec or version of rollbem",
-        ));
+    if let Some(want) = expect.filter(|h| *h != names) {
+        let kind = |n: &[String]| Header::parse(n, path).map(|h| h.kind).ok();
+        let why = match (kind(&names), kind(want)) {
+            (Some(theirs), Some(ours)) if theirs != ours => format!(
+                "its columns are those of a sweep of {}, this sweep's cases are {}: it was written by another sweep",
+                theirs.describe(),
+                ours.describe()
+            ),
+            _ => "its columns are not this sweep's: it was written for another sweep spec or version of rollbem".into(),
+        };
+        return Err(super::invalid(path, "header", why));
     }
     let header = Header::parse(&names, path)?;
     let rows_start = offset + rd.position().byte();

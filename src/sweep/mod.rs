@@ -41,7 +41,8 @@ pub use journal::MARKER;
 pub use plan::{Counts, Estimate, Plan, SweepOptions};
 pub use row::{RowStatus, SweepRow, PROVENANCE_COLUMNS};
 pub use run::{
-    error_rows_in, merge, merge_checked, run_sweep, sweep_rows, sweep_rows_with, Outcome, REPEAT_BELOW_S, TIMING_BATCH,
+    error_rows_in, merge, merge_checked, run_sweep, sweep_rows, sweep_rows_with, sweep_table_with, Outcome, REPEAT_BELOW_S,
+    TIMING_BATCH,
 };
 
 use crate::error::{Error, Result};

@@ -426,6 +426,17 @@ pub fn sweep_rows_with(
     progress: bool,
     cancel: &crate::cancel::Cancel,
 ) -> Result<(Vec<String>, Vec<SweepRow>)> {
+    sweep_table_with(spec_path, shard, progress, cancel).map(|(header, rows)| (header.keys, rows))
+}
+
+/// [`sweep_rows_with`] with the CSV's whole header ([`super::row::Header`]: its kind, 2D or 3D, and every column's
+/// name in order) instead of the swept keys alone.
+pub fn sweep_table_with(
+    spec_path: &Path,
+    shard: Option<Shard>,
+    progress: bool,
+    cancel: &crate::cancel::Cancel,
+) -> Result<(super::row::Header, Vec<SweepRow>)> {
     static SEQ: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
     let seq = SEQ.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let nanos = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.subsec_nanos());
@@ -437,8 +448,7 @@ pub fn sweep_rows_with(
         Plan::new(spec_path, &out, &options).and_then(|plan| plan.run()).and_then(|_| SweepRow::read_csv(&out));
     // The folder is ours alone; failing to remove it loses nothing.
     let _ = std::fs::remove_dir_all(&dir);
-    let (header, rows) = result?;
-    Ok((header.keys, rows))
+    result
 }
 
 /// The number of rows with status `error` in a sweep CSV (0 when it cannot be read), read without keeping its rows.
