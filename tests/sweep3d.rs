@@ -62,7 +62,10 @@ fn hertz_convergence_rows_agree_with_single_runs_and_with_hertz() {
         let s = single.steps.last().unwrap();
         assert_eq!(s.status, SpaceStatus::Solved);
         assert!(close(r.normal_load.unwrap(), s.load, 1e-12) && close(r.approach.unwrap(), s.approach, 1e-12));
-        assert_eq!((r.space.contact_count, r.space.stick_count, r.space.slip_count), (Some(s.contact), Some(0), Some(s.slip)));
+        assert_eq!(
+            (r.space.contact_count, r.space.stick_count, r.space.slip_count),
+            (Some(s.contact), Some(0), Some(s.slip))
+        );
         let peak = s.elements.pressure.iter().fold(0.0_f64, |m, &p| m.max(p));
         assert!(close(r.space.peak_pressure.unwrap(), peak, 1e-12));
         assert_eq!(r.space.iterations_normal, Some(s.iterations_normal));
@@ -170,7 +173,10 @@ fn a_3d_sweep_resumes_shards_and_merges_to_the_uninterrupted_csv() {
         let text = std::fs::read_to_string(partial(&probe)).unwrap();
         text.split_inclusive('\n').take(3).map(str::len).sum::<usize>() as u64
     };
-    assert!(kill_at(bin().arg("sweep").arg(&spec).arg("--out").arg(&out), &out, head + 2200, 0), "finished before the kill");
+    assert!(
+        kill_at(bin().arg("sweep").arg(&spec).arg("--out").arg(&out), &out, head + 2200, 0),
+        "finished before the kill"
+    );
     let journal = std::fs::read(partial(&out)).unwrap();
     let cut = journal.len() - 5;
     std::fs::write(partial(&out), &journal[..cut]).unwrap();
@@ -252,22 +258,37 @@ fn bad_keys_of_a_3d_sweep_are_refused_by_name_with_nothing_written() {
     let plane = reference("scenes/half-plane-hertz.toml");
     let cases: Vec<(String, &str, &str)> = vec![
         // A 2D key in a 3D scene.
-        (format!("base = '{}'\n[[grid]]\n\"mesh.contact_elements\" = [10]\n", hertz.display()), "mesh.contact_elements", "2D"),
+        (
+            format!("base = '{}'\n[[grid]]\n\"mesh.contact_elements\" = [10]\n", hertz.display()),
+            "mesh.contact_elements",
+            "2D",
+        ),
         // A key no scene has.
         (format!("base = '{}'\n[[grid]]\n\"mesh.nx\" = [10]\n", hertz.display()), "mesh.nx", "unknown key"),
         // A value out of range.
         (format!("base = '{}'\n[[grid]]\n\"mesh.mx\" = [10, 0]\n", hertz.display()), "mesh.mx", "case 1"),
         // A step the base scene does not have.
-        (format!("base = '{}'\n[[grid]]\n\"steps[2].normal_load\" = [1.0]\n", cattaneo.display()), "steps[2].normal_load", "2 entries"),
+        (
+            format!("base = '{}'\n[[grid]]\n\"steps[2].normal_load\" = [1.0]\n", cattaneo.display()),
+            "steps[2].normal_load",
+            "2 entries",
+        ),
         // Cases of both kinds in one sweep.
         (
-            format!("base = '{}'\n[[grid]]\n\"mesh.mx\" = [20]\n[[grid]]\nbase = '{}'\n\"drive.normal_load\" = [1000.0]\n", hertz.display(), plane.display()),
+            format!(
+                "base = '{}'\n[[grid]]\n\"mesh.mx\" = [20]\n[[grid]]\nbase = '{}'\n\"drive.normal_load\" = [1000.0]\n",
+                hertz.display(),
+                plane.display()
+            ),
             "wheel.model",
             "all 2D or all 3D",
         ),
         // An analysis of 2D sweeps (its own check of the grid passes: it sweeps a key named like the one it needs).
         (
-            format!("analysis = \"creep_curve\"\nbase = '{}'\n[[grid]]\n\"drive.tangential_load\" = [[1.0, 0.0]]\n", hertz.display()),
+            format!(
+                "analysis = \"creep_curve\"\nbase = '{}'\n[[grid]]\n\"drive.tangential_load\" = [[1.0, 0.0]]\n",
+                hertz.display()
+            ),
             "analysis",
             "2D sweeps",
         ),

@@ -27,6 +27,14 @@
 //!   base scene for that grid, so one sweep can compare models whose scenes differ in more than the swept keys (a
 //!   finite wheel with a hub beside a half-plane that refuses one).
 //!
+//! A key may index an array of tables the base scene has: `steps[1].tangential_load` is the second `[[steps]]`
+//! entry's key (an index beyond the base scene's entries is bad input naming the key).
+//!
+//! **3D sweeps.** A base scene of the 3D kind (`[wheel] model = "half_space"`, [`SpaceScene`]) makes a 3D sweep:
+//! its cases run through the same plan, journal, resume, shards and merge, the case runner ([`run`]) dispatching
+//! on each case's [`AnyScene`] and [`space`] writing its rows, which have their own columns ([`row::header_of`],
+//! [`Kind`]). Every case of a sweep is of one kind.
+//!
 //! A sweep can be cut into shards (`k/n`: the cases with `index % n == k − 1`) that run on different machines;
 //! [`merge`] joins the shards' CSVs into the CSV the unsharded sweep writes (up to the [`PROVENANCE_COLUMNS`]).
 
@@ -41,8 +49,8 @@ pub use journal::MARKER;
 pub use plan::{Counts, Estimate, Plan, SweepOptions};
 pub use row::{RowStatus, SweepRow, PROVENANCE_COLUMNS};
 pub use run::{
-    error_rows_in, merge, merge_checked, run_sweep, sweep_rows, sweep_rows_with, sweep_table_with, Outcome, REPEAT_BELOW_S,
-    TIMING_BATCH,
+    error_rows_in, merge, merge_checked, run_sweep, sweep_rows, sweep_rows_with, sweep_table_with, Outcome,
+    REPEAT_BELOW_S, TIMING_BATCH,
 };
 
 use crate::error::{Error, Result};
@@ -419,7 +427,9 @@ fn indexed<'a>(t: &'a mut Table, name: &str, k: usize, key: &str) -> std::result
                 format!("`{name}` has {n} entries in the base scene (indices from 0): cannot set `{key}`")
             })
         }
-        Some(other) => Err(format!("`{name}` is a {} in the base scene, not an array: cannot set `{key}`", other.type_str())),
+        Some(other) => {
+            Err(format!("`{name}` is a {} in the base scene, not an array: cannot set `{key}`", other.type_str()))
+        }
         None => Err(format!("the base scene has no `{name}` to index: cannot set `{key}`")),
     }
 }

@@ -19,10 +19,10 @@
 //! A CSV of an older rollbem (without `scene_digest`, columns in another order) still reads: columns are found by
 //! name.
 
+use super::Kind;
 use crate::error::{Error, Result};
 use crate::references::Metrics;
 use crate::scene::{BodyModel, ElementKind, SpaceStatus};
-use super::Kind;
 use crate::solvers::Work;
 use crate::status::Status;
 use std::path::Path;

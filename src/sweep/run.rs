@@ -132,7 +132,8 @@ struct Shared {
 
 /// The model of the last case, with the scene it was built for: the case runner's one seam between the kinds of
 /// scene. A 2D model serves the next cases that share its source; a 3D model ([`SpaceModel`]: kernels, profile and
-/// load path together) serves only a case of the same scene.
+/// load path together) serves only a case of the same scene. (One per thread: its size does not matter.)
+#[allow(clippy::large_enum_variant)]
 enum Built {
     Plane(Scene, Result<Model>),
     Space(SpaceScene, Result<SpaceModel>),
@@ -258,7 +259,9 @@ impl Plan {
         }
         let journal = match self.start {
             Start::Journal(keep) => Journal::reopen(&self.journal, &self.keys, keep)?,
-            Start::Fresh | Start::Output => Journal::create(&self.journal, &self.keys, self.kind, &self.identity.line())?,
+            Start::Fresh | Start::Output => {
+                Journal::create(&self.journal, &self.keys, self.kind, &self.identity.line())?
+            }
         };
         faer::set_global_parallelism(faer::Par::Seq);
         // The runs go in parallel: their stage spinners would draw over each other and over the bar below.

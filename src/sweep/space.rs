@@ -127,7 +127,8 @@ fn cattaneo(row: &mut SweepRow, report: &SpaceReport, last: &SpaceStepResult) {
     }
     let ours = || report.checks.iter().filter(|c| c.name.starts_with(&tag));
     let radius = ours().find(|c| c.name[tag.len()..].starts_with("stick radius"));
-    let transfer = ours().find(|c| c.name[tag.len()..].starts_with("shift") || c.name[tag.len()..].starts_with("force"));
+    let transfer =
+        ours().find(|c| c.name[tag.len()..].starts_with("shift") || c.name[tag.len()..].starts_with("force"));
     // Hertz's radius at the step's load (a circle: a_x = a_y).
     let a = row.space.hertz_a_x;
     if let (Some(c), Some(a)) = (radius, a) {
