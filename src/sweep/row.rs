@@ -371,6 +371,21 @@ impl SweepRow {
     }
 }
 
+/// A row's timing columns; `spread` is (fastest, slowest, repeats) of the total time when the case was timed
+/// repeatedly.
+pub(super) fn set_timing(row: &mut SweepRow, t: &crate::results::Timing, spread: Option<(f64, f64, usize)>) {
+    row.t_assembly = Some(t.assembly);
+    row.t_condensation = Some(t.condensation);
+    row.t_formulation = Some(t.formulation);
+    row.t_solve = Some(t.solve);
+    row.t_total = Some(t.total);
+    let (lo, hi, k) = spread.unwrap_or((t.total, t.total, 1));
+    row.t_total_min = Some(lo);
+    row.t_total_max = Some(hi);
+    row.timing_runs = Some(k);
+    row.setup = Some(t.setup);
+}
+
 /// Where the columns of a sweep CSV are: the swept keys, the known columns (in the order of the module docs) and the work
 /// counters.
 #[derive(Debug, Clone, PartialEq)]

@@ -10,7 +10,7 @@
 use super::identity::{case_digest, mark};
 use super::journal::{self, Block, Journal, Written};
 use super::plan::{Plan, Start, SweepOptions};
-use super::row::{RowStatus, SweepRow};
+use super::row::{set_timing, RowStatus, SweepRow};
 use super::{invalid, Case, Shard, SweepSpec};
 use crate::error::{Error, Result};
 use crate::pipeline::space::SpaceModel;
@@ -76,21 +76,6 @@ fn run_row(case: &Case<AnyScene>, scene: &Scene, contact_nodes: usize, r: &Solve
     // One line per row (the journal's rule): a line break in a message is written as a space.
     row.message = r.explanation().replace(['\n', '\r'], " ");
     row
-}
-
-/// A row's timing columns; `spread` is (fastest, slowest, repeats) of the total time when the case was timed
-/// repeatedly.
-pub(super) fn set_timing(row: &mut SweepRow, t: &Timing, spread: Option<(f64, f64, usize)>) {
-    row.t_assembly = Some(t.assembly);
-    row.t_condensation = Some(t.condensation);
-    row.t_formulation = Some(t.formulation);
-    row.t_solve = Some(t.solve);
-    row.t_total = Some(t.total);
-    let (lo, hi, k) = spread.unwrap_or((t.total, t.total, 1));
-    row.t_total_min = Some(lo);
-    row.t_total_max = Some(hi);
-    row.timing_runs = Some(k);
-    row.setup = Some(t.setup);
 }
 
 /// Rows for a case that could not be built or run: one per solver its scene asks for (by name; `all` when it asks

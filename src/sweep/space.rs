@@ -86,7 +86,7 @@ pub(super) fn case_rows(case: &Case<AnyScene>, scene: &SpaceScene, report: &Spac
     cattaneo(&mut row, report, last);
     let t = &report.timing_s;
     let timing = Timing { assembly: t.build, solve: t.solve, total: t.total, setup: Setup::Built, ..Timing::default() };
-    super::run::set_timing(&mut row, &timing, None);
+    super::row::set_timing(&mut row, &timing, None);
     let message = match failed {
         Some(s) => format!("step {}.{}: {}", s.step, s.substep, s.message),
         None => last.message.clone(),
