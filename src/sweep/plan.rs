@@ -30,7 +30,12 @@
 //! on this project's 2-core development machine (BEM meshes up to 2688 unknowns, half-planes up to 3200 strips). The
 //! estimate is rough — on the six reference sweeps it came out between 0.6× and 2.5× the measured time and between
 //! 0.6× and 1.0× the measured peak memory — and is meant to tell minutes from days and megabytes from the machine's
-//! memory.
+//! memory. A 3D case of N = MX·MY elements ([`super::space`]'s cost model): a build of `2e-8·k·N·log₂(4N)` s and
+//! `64·k·N` bytes (k = 1 kernel frictionless, 6 with friction), per (sub)step `5e-7·N·log₂(4N)` s (`3e-6·…` with
+//! friction) and 48 bytes per element kept; on the two 3D reference sweeps the estimate came out 2× (0.1 s against
+//! 0.05 s, `hertz3d-convergence`) and 1.0× (0.9 s against 0.92 s, `cattaneo3d-load`) the measured time, and 1.2–1.6×
+//! the peak memory. 3D cases share a model only with a case of the same scene (its kernels, profile and path are one
+//! object).
 
 use super::identity::{case_digest, mark, show_digest, Identity, Running};
 use super::journal::{self, Block, Target};
