@@ -31,8 +31,8 @@
 //! entry's key (an index beyond the base scene's entries is bad input naming the key).
 //!
 //! **3D sweeps.** A base scene of the 3D kind (`[wheel] model = "half_space"`, [`SpaceScene`]) makes a 3D sweep:
-//! its cases run through the same plan, journal, resume, shards and merge, the case runner ([`run`]) dispatching
-//! on each case's [`AnyScene`] and [`space`] writing its rows, which have their own columns ([`row::header_of`],
+//! its cases run through the same plan, journal, resume, shards and merge, the case runner (`run.rs`) dispatching
+//! on each case's [`AnyScene`] and `space.rs` writing its rows, which have their own columns ([`row::header_of`],
 //! [`Kind`]). Every case of a sweep is of one kind.
 //!
 //! A sweep can be cut into shards (`k/n`: the cases with `index % n == k − 1`) that run on different machines;
