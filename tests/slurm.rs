@@ -9,7 +9,8 @@
 //! Needs the cluster (`SLURM_CONF` set), so ignored by `cargo test`; CI starts the cluster and runs
 //! `cargo test --release --test slurm -- --ignored --nocapture`. `ROLLBEM_SLURM_SPEC` and `ROLLBEM_SLURM_SHARDS`
 //! choose another sweep for the first part (default `reference/sweeps/finite-vs-half-plane.toml`, 3 shards); the
-//! recovery runs a sweep of its own ([`slow_spec`]), whose timing it needs.
+//! recovery runs a sweep of its own ([`slow_spec`]), whose timing it needs. Between the two, the 3D reference sweep
+//! `cattaneo3d-load` (issue 32) runs as an array of 3 shards whose merge must equal its serial CSV.
 
 #[path = "common/sweep_cli.rs"]
 mod common;
@@ -145,6 +146,26 @@ fn a_job_array_merges_to_the_serial_sweep_and_a_cancelled_shard_resumes() {
         "job array of {n} shards and merge: {:.1} s; merged CSV = serial CSV ({} rows)",
         t.elapsed().as_secs_f64(),
         reference.1.len()
+    );
+
+    // A 3D sweep (issue 32: half-space scenes through the same machinery) as an array of 3 shards: about 1 s of
+    // computing (10 cases of reference/sweeps/cattaneo3d-load.toml), the rest the scheduler's.
+    let t = Instant::now();
+    let spec3 = root().join("reference/sweeps/cattaneo3d-load.toml");
+    let serial3 = dir.path().join("serial3d.csv");
+    run(bin().arg("sweep").arg(&spec3).arg("--out").arg(&serial3));
+    let dir3 = dir.path().join("space");
+    let (array3, merge3) = submit(&spec3, 3, &dir3);
+    wait(&[&array3, &merge3]);
+    assert_eq!(
+        masked(&dir3.join("merged.csv")),
+        masked(&serial3),
+        "merge log: {:?}",
+        std::fs::read_to_string(dir3.join("merge.log"))
+    );
+    eprintln!(
+        "3D sweep as a job array of 3 shards and merge: {:.1} s; merged CSV = serial CSV",
+        t.elapsed().as_secs_f64()
     );
 
     // The recovery of the README (issue 31): on a sweep whose shard 3 is slow, shard 2 of 3 is cancelled once its

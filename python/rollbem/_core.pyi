@@ -526,7 +526,10 @@ def _rust_creep_curve(scene: Scene, creepages: Sequence[float], on_worker: bool 
     """Benchmark reference: the same creep curve through the Rust API alone: (time [s], Q per creepage
     [force/thickness])."""
 
-def _sweep_rows(spec: str, shard: Optional[str] = None) -> Tuple[List[str], List[List[Any]]]: ...
+def _sweep_rows(spec: str, shard: Optional[str] = None) -> Tuple[List[str], List[List[Any]]]:
+    """The sweep CSV's columns and rows of typed cells (``rollbem.sweep``); a sweep of 3D half-space scenes has its
+    own columns (``mx``, ``my``, the contact/stick/slip counts, the errors against Hertz's ellipse and
+    Cattaneo-Mindlin; README "Sweeps")."""
 
 @final
 class SpaceScene:

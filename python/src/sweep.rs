@@ -4,7 +4,7 @@
 use crate::errors::{to_py, Failure};
 use crate::worker;
 use pyo3::prelude::*;
-use rollbem::sweep::{sweep_rows_with, Shard, SweepRow};
+use rollbem::sweep::{sweep_table_with, Shard, SweepRow};
 use std::path::PathBuf;
 
 /// A CSV cell as a Python value: empty → `None`, an integer → int, a number → float, anything else → str.
@@ -33,7 +33,8 @@ fn text(row: &SweepRow, name: &str) -> String {
 type Rows<'py> = (Vec<String>, Vec<Vec<Bound<'py, PyAny>>>);
 
 /// Run the sweep spec at `spec` (its shard `k/n`, or all of it): (the columns of the sweep CSV, one list of cells per
-/// row), rows sorted by case then solver, the cells typed (`None` where empty). Runs the cases in parallel.
+/// row), rows sorted by case then solver, the cells typed (`None` where empty). Runs the cases in parallel. A sweep
+/// of 3D half-space scenes has its own columns (README, "Sweeps").
 #[pyfunction]
 #[pyo3(signature = (spec, shard = None))]
 pub fn _sweep_rows<'py>(py: Python<'py>, spec: PathBuf, shard: Option<String>) -> PyResult<Rows<'py>> {
@@ -44,8 +45,8 @@ pub fn _sweep_rows<'py>(py: Python<'py>, spec: PathBuf, shard: Option<String>) -
             to_py(py, Failure::Rollbem(error))
         })?),
     };
-    let (keys, rows) = worker::run(py, move |cancel| Ok(sweep_rows_with(&spec, shard, false, cancel)?))?;
-    let columns = rollbem::sweep::row::header(&keys);
+    let (header, rows) = worker::run(py, move |cancel| Ok(sweep_table_with(&spec, shard, false, cancel)?))?;
+    let columns = header.names;
     let mut out = Vec::with_capacity(rows.len());
     for row in &rows {
         out.push(columns.iter().map(|c| cell(py, &text(row, c))).collect::<PyResult<Vec<_>>>()?);

@@ -22,7 +22,7 @@
 //! Memory: the digests are computed case by case as the cases are validated and folded as they go; nothing is kept
 //! per case.
 
-use crate::scene::Scene;
+use crate::scene::{AnyScene, Scene};
 use serde::{Deserialize, Serialize};
 use std::collections::{BTreeMap, BTreeSet};
 use toml::{Table, Value};
@@ -72,6 +72,20 @@ pub fn scene_digest(scene: &Scene) -> u64 {
     // error would leave a digest of what was written so far, which still differs from a complete one's.
     let _ = serde_json::to_writer(&mut h, scene);
     h.digest()
+}
+
+/// The digest of a resolved scene of either kind: a 2D scene's [`scene_digest`]; a 3D scene's FNV-1a of its
+/// document as validated (defaults filled in) as JSON. A 3D scene's `gap_file` enters by its name, not its content.
+pub fn case_digest(scene: &AnyScene) -> u64 {
+    match scene {
+        AnyScene::Plane(s) => scene_digest(s),
+        AnyScene::Space(s) => {
+            let mut h = Fnv::default();
+            // As in `scene_digest`: writing into the hasher cannot fail.
+            let _ = serde_json::to_writer(&mut h, s.document());
+            h.digest()
+        }
+    }
 }
 
 /// A digest as written in the CSV and the journal: `fnv1a64:` and 16 hex digits (a prefix, so that no reader takes

@@ -63,7 +63,7 @@ impl Journal {
     /// A new journal (an old one at `path` is replaced): the marker, the sweep's identity line
     /// ([`super::identity::Identity::line`]) and the header. Written to a temporary file renamed into place, so a
     /// journal always has all three.
-    pub fn create(path: &Path, keys: &[String], identity: &str) -> Result<Journal> {
+    pub fn create(path: &Path, keys: &[String], kind: super::Kind, identity: &str) -> Result<Journal> {
         let werr = write_err(path);
         let mut name = path.as_os_str().to_owned();
         name.push(format!(".tmp-{}", std::process::id()));
@@ -71,7 +71,7 @@ impl Journal {
         let made = (|| {
             let mut file = File::create(&tmp).map_err(&werr)?;
             let mut w = csv::Writer::from_writer(Vec::new());
-            w.write_record(super::row::header(keys)).expect("writing to memory");
+            w.write_record(super::row::header_of(keys, kind)).expect("writing to memory");
             let head =
                 [format!("{MARKER}\n{identity}").into_bytes(), w.into_inner().expect("writing to memory")].concat();
             file.write_all(&head).map_err(&werr)?;
@@ -209,12 +209,17 @@ pub fn scan(
     let mut rd = csv::Reader::from_reader(input);
     let perr = |e: csv::Error| bad(e.to_string());
     let names: Vec<String> = rd.headers().map_err(perr)?.iter().map(str::to_string).collect();
-    if expect.is_some_and(|h| h != names) {
-        return Err(super::invalid(
-            path,
-            "header",
-            "its columns are not this sweep's: it was written for another sweep spec or version of rollbem",
-        ));
+    if let Some(want) = expect.filter(|h| *h != names) {
+        let kind = |n: &[String]| Header::parse(n, path).map(|h| h.kind).ok();
+        let why = match (kind(&names), kind(want)) {
+            (Some(theirs), Some(ours)) if theirs != ours => format!(
+                "its columns are those of a sweep of {}, this sweep's cases are {}: it was written by another sweep",
+                theirs.describe(),
+                ours.describe()
+            ),
+            _ => "its columns are not this sweep's: it was written for another sweep spec or version of rollbem".into(),
+        };
+        return Err(super::invalid(path, "header", why));
     }
     let header = Header::parse(&names, path)?;
     let rows_start = offset + rd.position().byte();

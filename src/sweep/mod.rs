@@ -27,6 +27,14 @@
 //!   base scene for that grid, so one sweep can compare models whose scenes differ in more than the swept keys (a
 //!   finite wheel with a hub beside a half-plane that refuses one).
 //!
+//! A key may index an array of tables the base scene has: `steps[1].tangential_load` is the second `[[steps]]`
+//! entry's key (an index beyond the base scene's entries is bad input naming the key).
+//!
+//! **3D sweeps.** A base scene of the 3D kind (`[wheel] model = "half_space"`, [`SpaceScene`]) makes a 3D sweep:
+//! its cases run through the same plan, journal, resume, shards and merge, the case runner (`run.rs`) dispatching
+//! on each case's [`AnyScene`] and `space.rs` writing its rows, which have their own columns ([`row::header_of`],
+//! [`Kind`]). Every case of a sweep is of one kind.
+//!
 //! A sweep can be cut into shards (`k/n`: the cases with `index % n == k − 1`) that run on different machines;
 //! [`merge`] joins the shards' CSVs into the CSV the unsharded sweep writes (up to the [`PROVENANCE_COLUMNS`]).
 
@@ -35,16 +43,18 @@ mod journal;
 mod plan;
 pub mod row;
 mod run;
+mod space;
 
 pub use journal::MARKER;
 pub use plan::{Counts, Estimate, Plan, SweepOptions};
 pub use row::{RowStatus, SweepRow, PROVENANCE_COLUMNS};
 pub use run::{
-    error_rows_in, merge, merge_checked, run_sweep, sweep_rows, sweep_rows_with, Outcome, REPEAT_BELOW_S, TIMING_BATCH,
+    error_rows_in, merge, merge_checked, run_sweep, sweep_rows, sweep_rows_with, sweep_table_with, Outcome,
+    REPEAT_BELOW_S, TIMING_BATCH,
 };
 
 use crate::error::{Error, Result};
-use crate::scene::Scene;
+use crate::scene::{AnyScene, Scene, SpaceScene};
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use toml::{Table, Value};
@@ -137,17 +147,48 @@ fn zipped_keys(key: &str) -> Vec<&str> {
     key.split('&').map(str::trim).collect()
 }
 
-/// One variant of the base scene.
+/// One variant of the base scene: a 2D [`Scene`] ([`Expansion::case`]), or a scene of either kind
+/// (`Case<AnyScene>`, [`Expansion::any_case`]: what a sweep runs).
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
-pub struct Case {
+pub struct Case<S = Scene> {
     /// Position in the sweep's enumeration, from 0 (the `case` column of the CSV).
     pub index: usize,
     /// The swept keys of this case's grid with the values set, in sorted key order. Strings are given bare,
     /// other values in TOML syntax (e.g. `40`, `0.001`, `["lemke"]`).
     pub params: Vec<(String, String)>,
     /// The validated scene.
-    pub scene: Scene,
+    pub scene: S,
+}
+
+/// The kind of a sweep's scenes, which decides its CSV's columns ([`row::header_of`]): every case of a sweep is of
+/// one kind.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Hash)]
+#[non_exhaustive]
+pub enum Kind {
+    /// 2D scenes (the BEM wheel, the half-plane): [`Scene`].
+    #[default]
+    Plane,
+    /// 3D half-space scenes (`[wheel] model = "half_space"`): [`SpaceScene`].
+    Space,
+}
+
+impl Kind {
+    /// The kind of a scene.
+    pub fn of(scene: &AnyScene) -> Kind {
+        match scene {
+            AnyScene::Plane(_) => Kind::Plane,
+            AnyScene::Space(_) => Kind::Space,
+        }
+    }
+
+    /// The kind in words (messages).
+    pub fn describe(self) -> &'static str {
+        match self {
+            Kind::Plane => "2D scenes",
+            Kind::Space => "3D half-space scenes",
+        }
+    }
 }
 
 /// One shard of a sweep: `k` of `n` (1-based), the cases with `index % n == k − 1`.
@@ -325,7 +366,7 @@ fn check_overlaps(path: &Path, grid: &Table) -> Result<()> {
                     "key given twice in the same grid (once in a zipped key)",
                 ));
             }
-            if long.starts_with(&format!("{short}.")) {
+            if long.starts_with(&format!("{short}.")) || long.starts_with(&format!("{short}[")) {
                 return Err(invalid(
                     path,
                     &format!("grid.{long}"),
@@ -337,26 +378,60 @@ fn check_overlaps(path: &Path, grid: &Table) -> Result<()> {
     Ok(())
 }
 
-/// Set the dotted `key` of a TOML document, creating missing intermediate tables.
+/// A component of a dotted key: a name, with an index into an array of tables when it is written `name[i]`
+/// (`steps[1].tangential_load`: the second `[[steps]]` entry's key).
+fn component(part: &str) -> (&str, Option<usize>) {
+    match part.strip_suffix(']').and_then(|p| p.split_once('[')) {
+        Some((name, i)) => match i.trim().parse() {
+            Ok(i) => (name.trim(), Some(i)),
+            Err(_) => (part, None),
+        },
+        None => (part, None),
+    }
+}
+
+/// Set the dotted `key` of a TOML document, creating missing intermediate tables. A component `name[i]` indexes an
+/// array the base scene has (a load path's `[[steps]]`): it is not created.
 fn set_dotted(doc: &mut Table, key: &str, value: Value) -> std::result::Result<(), String> {
     let parts: Vec<&str> = key.split('.').collect();
     let (last, inner) = parts.split_last().expect("split yields at least one part");
+    let not_table = |i: usize, v: &Value| {
+        format!("`{}` is a {} in the base scene, not a table: cannot set `{key}`", parts[..=i].join("."), v.type_str())
+    };
     let mut t = doc;
     for (i, p) in inner.iter().enumerate() {
-        let entry = t.entry(p.to_string()).or_insert_with(|| Value::Table(Table::new()));
+        let entry = match component(p) {
+            (name, None) => t.entry(name.to_string()).or_insert_with(|| Value::Table(Table::new())),
+            (name, Some(k)) => indexed(t, name, k, key)?,
+        };
         t = match entry {
             Value::Table(t) => t,
-            other => {
-                return Err(format!(
-                    "`{}` is a {} in the base scene, not a table: cannot set `{key}`",
-                    parts[..=i].join("."),
-                    other.type_str()
-                ))
-            }
+            other => return Err(not_table(i, other)),
         };
     }
-    t.insert(last.to_string(), value);
+    match component(last) {
+        (name, None) => {
+            t.insert(name.to_string(), value);
+        }
+        (name, Some(k)) => *indexed(t, name, k, key)? = value,
+    }
     Ok(())
+}
+
+/// Element `k` of the array `name` of a table (for [`set_dotted`]); an error says why there is none.
+fn indexed<'a>(t: &'a mut Table, name: &str, k: usize, key: &str) -> std::result::Result<&'a mut Value, String> {
+    match t.get_mut(name) {
+        Some(Value::Array(a)) => {
+            let n = a.len();
+            a.get_mut(k).ok_or_else(|| {
+                format!("`{name}` has {n} entries in the base scene (indices from 0): cannot set `{key}`")
+            })
+        }
+        Some(other) => {
+            Err(format!("`{name}` is a {} in the base scene, not an array: cannot set `{key}`", other.type_str()))
+        }
+        None => Err(format!("the base scene has no `{name}` to index: cannot set `{key}`")),
+    }
 }
 
 /// The spec's run options: `timing_repeats`, `analysis`, `warm_start` (each with its default when absent).
@@ -553,6 +628,8 @@ impl SweepSpec {
 struct GridCases {
     /// The base scene as written in the spec.
     base_name: PathBuf,
+    /// The base scene's path, resolved against the spec's folder (anchors a 3D scene's `gap_file`).
+    base_path: PathBuf,
     /// The base scene's document.
     base: Table,
     /// The (possibly zipped) keys in sorted order, each with its values.
@@ -581,11 +658,12 @@ impl Expansion {
             let base_name = spec.grid_base(gi).to_path_buf();
             let own = spec.grid_base.get(gi).is_some_and(Option::is_some);
             let field = if own { format!("grid[{gi}].base") } else { "base".to_string() };
-            let base = read_base(spec_path, &resolve(spec_path, &base_name), &field)?;
+            let base_path = resolve(spec_path, &base_name);
+            let base = read_base(spec_path, &base_path, &field)?;
             let entries: Vec<(String, Vec<Value>)> =
                 g.iter().map(|(k, v)| (k.clone(), v.as_array().expect("grid values are arrays").clone())).collect();
             let len = entries.iter().map(|(_, a)| a.len()).product();
-            grids.push(GridCases { base_name, base, entries, start, len });
+            grids.push(GridCases { base_name, base_path, base, entries, start, len });
             start += len;
         }
         Ok(Expansion { grids, spec_path: spec_path.to_path_buf(), label: label.to_path_buf() })
@@ -664,22 +742,45 @@ impl Expansion {
         }
     }
 
-    /// Case `index`: its parameters and its scene, parsed and validated. An error names the spec file, the case's
-    /// parameters and the offending field; an index beyond [`Expansion::len`] is an error naming `case`.
+    /// Case `index` of a sweep of 2D scenes: its parameters and its scene, parsed and validated. An error names the
+    /// spec file, the case's parameters and the offending field (a 3D case is refused naming `wheel.model`: read it
+    /// with [`Expansion::any_case`]); an index beyond [`Expansion::len`] is an error naming `case`.
     pub fn case(&self, index: usize) -> Result<Case> {
+        self.built(index, false).map(|c| match c.scene {
+            AnyScene::Plane(scene) => Case { index: c.index, params: c.params, scene },
+            AnyScene::Space(_) => unreachable!("a 2D case is built as a 2D scene"),
+        })
+    }
+
+    /// Case `index` of either kind (a 3D case when its document says `[wheel] model = "half_space"`): what a sweep
+    /// runs. Errors as [`Expansion::case`]'s.
+    pub fn any_case(&self, index: usize) -> Result<Case<AnyScene>> {
+        self.built(index, true)
+    }
+
+    /// The kind of case `index` (from its document, without validating it); `None` beyond [`Expansion::len`] or
+    /// when a swept key cannot be set (building the case says why).
+    pub fn kind(&self, index: usize) -> Option<Kind> {
+        let (doc, _, set_err) = self.document(index)?;
+        set_err.is_none().then(|| if crate::scene::space::is_space_table(&doc) { Kind::Space } else { Kind::Plane })
+    }
+
+    fn built(&self, index: usize, any: bool) -> Result<Case<AnyScene>> {
         // A variant's error names the spec by `label` in the case's words; the spec's error names its file.
         let readdress = |e: Error| match e {
             Error::Invalid { field, message, .. } => invalid(&self.spec_path, &field, message),
             Error::Parse { message, .. } => Error::Parse { path: self.spec_path.clone(), message },
             other => other,
         };
-        self.build(index).map_err(readdress)
+        self.build(index, any).map_err(readdress)
     }
 
-    fn build(&self, index: usize) -> Result<Case> {
-        let (Some((g, _)), Some(values)) = (self.locate(index), self.values(index)) else {
-            return Err(invalid(&self.label, "case", format!("case {index}: the sweep has {} cases", self.len())));
-        };
+    /// Case `index`'s document (the base scene with the swept values set), its parameters, and the first key that
+    /// could not be set with why.
+    #[allow(clippy::type_complexity)]
+    fn document(&self, index: usize) -> Option<(Table, Vec<(String, String)>, Option<(String, String)>)> {
+        let (g, _) = self.locate(index)?;
+        let values = self.values(index)?;
         let mut doc = g.base.clone();
         let mut params = Vec::with_capacity(values.len());
         let mut set_err = None;
@@ -689,13 +790,24 @@ impl Expansion {
                 set_err.get_or_insert((k, e));
             }
         }
+        Some((doc, params, set_err))
+    }
+
+    fn build(&self, index: usize, any: bool) -> Result<Case<AnyScene>> {
+        let (Some((g, _)), Some((doc, params, set_err))) = (self.locate(index), self.document(index)) else {
+            return Err(invalid(&self.label, "case", format!("case {index}: the sweep has {} cases", self.len())));
+        };
         let what = describe(index, &params);
         if let Some((key, e)) = set_err {
             return Err(invalid(&self.label, &key, format!("{what}: {e}")));
         }
-        // The case's messages name the spec and the case, wherever the scene came from.
-        let origin = PathBuf::from(format!("{} [case {index}]", self.label.display()));
-        let scene = build_scene(&doc, &self.label, &g.base_name, &what)?.relabel(origin);
+        let scene = if any && crate::scene::space::is_space_table(&doc) {
+            AnyScene::Space(build_space_scene(&doc, &self.label, g, &what)?)
+        } else {
+            // The case's messages name the spec and the case, wherever the scene came from.
+            let origin = PathBuf::from(format!("{} [case {index}]", self.label.display()));
+            AnyScene::Plane(build_scene(&doc, &self.label, &g.base_name, &what)?.relabel(origin))
+        };
         Ok(Case { index, params, scene })
     }
 }
@@ -716,6 +828,14 @@ fn build_scene(doc: &Table, spec_label: &Path, base: &Path, what: &str) -> Resul
     }
     let text = toml::to_string(doc).map_err(|e| invalid(spec_label, "base", format!("{what}: {e}")))?;
     Scene::from_toml(&text, base).map_err(|e| readdress_scene(e, spec_label, base, what))
+}
+
+/// Parse a 3D variant's document as a half-space scene (through its text, so that a 2D key or an unknown one is
+/// named as a scene file's would be); a relative `gap_file` is read beside the base scene. Errors as
+/// [`build_scene`]'s.
+fn build_space_scene(doc: &Table, spec_label: &Path, g: &GridCases, what: &str) -> Result<SpaceScene> {
+    let text = toml::to_string(doc).map_err(|e| invalid(spec_label, "base", format!("{what}: {e}")))?;
+    SpaceScene::from_toml(&text, &g.base_path).map_err(|e| readdress_scene(e, spec_label, &g.base_name, what))
 }
 
 /// A variant's error re-addressed to the spec (see [`build_scene`]).

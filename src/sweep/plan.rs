@@ -30,15 +30,20 @@
 //! on this project's 2-core development machine (BEM meshes up to 2688 unknowns, half-planes up to 3200 strips). The
 //! estimate is rough — on the six reference sweeps it came out between 0.6× and 2.5× the measured time and between
 //! 0.6× and 1.0× the measured peak memory — and is meant to tell minutes from days and megabytes from the machine's
-//! memory.
+//! memory. A 3D case of N = MX·MY elements ([`super::space`]'s cost model): a build of `2e-8·k·N·log₂(4N)` s and
+//! `64·k·N` bytes (k = 1 kernel frictionless, 6 with friction), per (sub)step `5e-7·N·log₂(4N)` s (`3e-6·…` with
+//! friction) and 48 bytes per element kept; on the two 3D reference sweeps the estimate came out 2× (0.1 s against
+//! 0.05 s, `hertz3d-convergence`) and 1.0× (0.9 s against 0.92 s, `cattaneo3d-load`) the measured time, and 1.2–1.6×
+//! the peak memory. 3D cases share a model only with a case of the same scene (its kernels, profile and path are one
+//! object).
 
-use super::identity::{mark, scene_digest, show_digest, Identity, Running};
+use super::identity::{case_digest, mark, show_digest, Identity, Running};
 use super::journal::{self, Block, Target};
-use super::row::header;
-use super::{invalid, Expansion, Shard, SweepSpec, LARGE_SWEEP_CASES, REPEAT_BELOW_S};
+use super::row::header_of;
+use super::{invalid, Analysis, Expansion, Kind, Shard, SweepSpec, LARGE_SWEEP_CASES, REPEAT_BELOW_S};
 use crate::error::Result;
 use crate::pipeline::Model;
-use crate::scene::{CounterBody, ElementKind, Loading, Scene};
+use crate::scene::{AnyScene, CounterBody, ElementKind, Loading, Scene};
 use crate::solvers::SolverId;
 use rayon::prelude::*;
 use std::collections::HashMap;
@@ -134,6 +139,8 @@ pub struct Plan {
     pub(crate) spec: SweepSpec,
     pub(crate) expansion: Expansion,
     pub(crate) keys: Vec<String>,
+    /// The kind of the sweep's scenes (its CSV's columns).
+    pub(crate) kind: Kind,
     pub(crate) options: SweepOptions,
     pub(crate) out: PathBuf,
     pub(crate) journal: PathBuf,
@@ -197,6 +204,18 @@ impl Plan {
         // Per-case messages name the spec by its file name only: the CSV must not depend on where a shard ran.
         let label = PathBuf::from(spec_path.file_name().unwrap_or(spec_path.as_os_str()));
         let expansion = spec.expand(spec_path, &label)?;
+        let kind = expansion.kind(0).unwrap_or_default();
+        if kind == Kind::Space && spec.analysis != Analysis::Table {
+            return Err(invalid(
+                spec_path,
+                "analysis",
+                format!(
+                    "`{}` is an analysis of 2D sweeps; a sweep of 3D half-space scenes is a table of rows (remove \
+                     `analysis`, or give `table`)",
+                    spec.analysis.name()
+                ),
+            ));
+        }
         let keys = spec.keys();
         let target = Target::of(out)?;
         let journal = journal_path(out, &target, &spec.name);
@@ -214,16 +233,18 @@ impl Plan {
                 "a sweep written to standard output or a FIFO keeps no journal to resume: give a file (--out)",
             ));
         } else {
-            let resumed = Resume { expansion: &expansion, keys: &keys, shard, identity: &identity, done: &mut done };
+            let resumed =
+                Resume { expansion: &expansion, keys: &keys, kind, shard, identity: &identity, done: &mut done };
             let found = resumed.read(&journal, out)?;
             counts.done = found.done;
             counts.redone = found.redone;
             Some(found)
         };
-        let survey = survey(&expansion, |i| mine(i) && !done.get(i), |i| done.get(i), spec.timing_repeats)?;
+        let survey = survey(&expansion, kind, |i| mine(i) && !done.get(i), |i| done.get(i), spec.timing_repeats)?;
         identity.resolved = show_digest(survey.resolved);
         if let Some(found) = &found {
-            let resume = Resume { expansion: &expansion, keys: &keys, shard, identity: &identity, done: &mut done };
+            let resume =
+                Resume { expansion: &expansion, keys: &keys, kind, shard, identity: &identity, done: &mut done };
             resume.confirm(found, survey.done_marks, counts)?;
         }
         let start = found.map_or(Start::Fresh, |f| f.start);
@@ -241,6 +262,7 @@ impl Plan {
             spec,
             expansion,
             keys,
+            kind,
             options: options.clone(),
             out: out.to_path_buf(),
             journal,
@@ -323,6 +345,7 @@ fn bytes(b: f64) -> String {
 struct Resume<'a> {
     expansion: &'a Expansion,
     keys: &'a [String],
+    kind: Kind,
     shard: Option<Shard>,
     /// The sweep's identity as it is now (`resolved` set only once every case is validated).
     identity: &'a Identity,
@@ -355,7 +378,7 @@ impl Resume<'_> {
     /// A journal must be of this sweep's identity (all but `resolved`, which [`Resume::confirm`] checks once every
     /// case is validated).
     fn read(self, journal: &Path, out: &Path) -> Result<Found> {
-        let head = header(self.keys);
+        let head = header_of(self.keys, self.kind);
         if journal.exists() {
             let line = journal::read_identity(journal)?.ok_or_else(|| {
                 refuse(journal, "it has no identity line: an older rollbem wrote it, which did not record its cases")
@@ -452,7 +475,7 @@ impl Resume<'_> {
         journal::scan(&found.from, 0, journal, None, |b, rows| {
             let case = b.case as usize;
             total += 1;
-            let now = scene_digest(&self.expansion.case(case)?.scene);
+            let now = case_digest(&self.expansion.any_case(case)?.scene);
             if rows.first().and_then(|r| r.scene_digest) != Some(now) {
                 n += 1;
                 first.get_or_insert_with(|| super::describe(case, &self.expansion.params(case).unwrap_or_default()));
@@ -470,7 +493,16 @@ impl Resume<'_> {
 /// The key of the model a scene is solved on: cases with equal keys share bodies, mesh, zone and counter-body
 /// ([`Model::shares_source`]) and what they need of the model ([`Model::needs`]). (A run checks the sharing again
 /// before solving on a model, so the key only decides which cases are tried together.)
-fn model_key(scene: &Scene) -> String {
+fn model_key(scene: &AnyScene) -> String {
+    match scene {
+        AnyScene::Plane(s) => plane_model_key(s),
+        // A 3D model is the case's scene whole (kernels, profile, path): shared only by cases of one scene.
+        AnyScene::Space(_) => format!("space|{:016x}", case_digest(scene)),
+    }
+}
+
+/// [`model_key`] of a 2D scene.
+fn plane_model_key(scene: &Scene) -> String {
     format!(
         "{:?}|{:?}|{:?}|{:?}|{:?}",
         scene.wheel(),
@@ -490,7 +522,18 @@ struct Costs {
     solve_bytes: f64,
 }
 
-fn costs(scene: &Scene) -> Costs {
+fn costs(scene: &AnyScene) -> Costs {
+    match scene {
+        AnyScene::Plane(s) => plane_costs(s),
+        AnyScene::Space(s) => {
+            let (build_s, model_bytes, solve_s, solve_bytes) = super::space::costs(s);
+            Costs { build_s, model_bytes, solve_s, solve_bytes }
+        }
+    }
+}
+
+/// [`costs`] of a 2D scene.
+fn plane_costs(scene: &Scene) -> Costs {
     let per_element = |e: ElementKind| if e == ElementKind::Quadratic { 3.0 } else { 1.0 };
     let strips = scene.zone().elements as f64;
     let half_plane = (1.5e-7 * strips * strips, 32.0 * strips * strips);
@@ -555,13 +598,13 @@ struct Group {
 /// not validate, in enumeration order, is the error.
 pub(crate) fn each_case<T: Send>(
     expansion: &Expansion,
-    map: impl Fn(usize, super::Case) -> T + Sync,
+    map: impl Fn(usize, super::Case<AnyScene>) -> T + Sync,
     mut fold: impl FnMut(usize, T) -> Result<()>,
 ) -> Result<()> {
     let n = expansion.len();
     for start in (0..n).step_by(SURVEY_BLOCK) {
         let end = (start + SURVEY_BLOCK).min(n);
-        let found: Vec<Result<T>> = (start..end).into_par_iter().map(|i| Ok(map(i, expansion.case(i)?))).collect();
+        let found: Vec<Result<T>> = (start..end).into_par_iter().map(|i| Ok(map(i, expansion.any_case(i)?))).collect();
         for (i, f) in (start..end).zip(found) {
             fold(i, f?)?;
         }
@@ -569,10 +612,26 @@ pub(crate) fn each_case<T: Send>(
     Ok(())
 }
 
+/// A sweep whose case `i` is of another kind than its first case: bad input naming `wheel.model`.
+fn mixed(expansion: &Expansion, i: usize, first: Kind, other: Kind) -> crate::error::Error {
+    let what = super::describe(i, &expansion.params(i).unwrap_or_default());
+    invalid(
+        &expansion.label,
+        "wheel.model",
+        format!(
+            "{what} is of {}, case 0 of {}: a sweep's cases are all 2D or all 3D (`wheel.model = \"half_space\"`), \
+             its CSV has the columns of one kind; split the sweep",
+            other.describe(),
+            first.describe()
+        ),
+    )
+}
+
 /// The validation pass: every case's scene built and validated ([`each_case`]) and digested, keeping only the
 /// model key of the cases to run (`take`); the cases done (`done`) summed by [`mark`].
 fn survey(
     expansion: &Expansion,
+    kind: Kind,
     take: impl Fn(usize) -> bool + Sync,
     done: impl Fn(usize) -> bool,
     repeats: usize,
@@ -581,11 +640,14 @@ fn survey(
     let mut groups: Vec<Group> = Vec::new();
     let mut repeat_s = 0.0;
     let (mut resolved, mut done_marks) = (Running::default(), 0u64);
-    let map = |i: usize, case: super::Case| {
-        let digest = scene_digest(&case.scene);
-        (digest, take(i).then(|| (model_key(&case.scene), costs(&case.scene))))
+    let map = |i: usize, case: super::Case<AnyScene>| {
+        let digest = case_digest(&case.scene);
+        (digest, Kind::of(&case.scene), take(i).then(|| (model_key(&case.scene), costs(&case.scene))))
     };
-    each_case(expansion, map, |i, (digest, kept)| {
+    each_case(expansion, map, |i, (digest, k, kept)| {
+        if k != kind {
+            return Err(mixed(expansion, i, kind, k));
+        }
         resolved.add(digest);
         if done(i) {
             done_marks = done_marks.wrapping_add(mark(i, digest));

@@ -19,9 +19,10 @@
 //! A CSV of an older rollbem (without `scene_digest`, columns in another order) still reads: columns are found by
 //! name.
 
+use super::Kind;
 use crate::error::{Error, Result};
 use crate::references::Metrics;
-use crate::scene::{BodyModel, ElementKind};
+use crate::scene::{BodyModel, ElementKind, SpaceStatus};
 use crate::solvers::Work;
 use crate::status::Status;
 use std::path::Path;
@@ -32,6 +33,8 @@ use std::path::Path;
 pub enum RowStatus {
     /// The run's status.
     Run(Status),
+    /// A 3D (half-space) case's status: the first (sub)step's that is not `solved`, else `solved`.
+    Space(SpaceStatus),
     /// The case could not be built or run (the message says why).
     Error,
 }
@@ -41,13 +44,14 @@ impl RowStatus {
     pub fn name(self) -> &'static str {
         match self {
             RowStatus::Run(s) => s.name(),
+            RowStatus::Space(s) => s.name(),
             RowStatus::Error => "error",
         }
     }
 
     /// Whether the run solved.
     pub fn solved(self) -> bool {
-        self == RowStatus::Run(Status::Solved)
+        matches!(self, RowStatus::Run(Status::Solved) | RowStatus::Space(SpaceStatus::Solved))
     }
 }
 
@@ -58,6 +62,8 @@ impl RowStatus {
 pub struct SweepRow {
     /// The case's position in the sweep's enumeration, from 0.
     pub case: usize,
+    /// The kind of the case's scene: which columns the row has ([`header_of`]).
+    pub kind: Kind,
     /// The swept keys this case's grid sets, with their values as written in the spec (strings bare).
     pub params: Vec<(String, String)>,
     /// The scene's name.
@@ -138,9 +144,75 @@ pub struct SweepRow {
     pub setup: Option<crate::results::Setup>,
     /// The solver's explanation, or why the case could not run.
     pub message: String,
+    /// The figures of a 3D case that the 2D columns do not hold (all empty in a 2D row).
+    pub space: SpaceFigures,
     /// Figures a reader derives from the rows, by name (not written to the CSV; e.g. the report's errors against a
     /// mesh's limit). [`SweepRow::number`] finds them as it finds the columns.
     pub derived: std::collections::BTreeMap<String, f64>,
+}
+
+/// The figures of a 3D (half-space) case beyond the columns it shares with the 2D rows, at the end of its last
+/// (sub)step unless said otherwise. Lengths, forces and stresses in the scene's units; the errors relative (the
+/// stick radius's in elements, in `metrics.cm_c_err_elements`).
+#[derive(Debug, Clone, Default, PartialEq)]
+#[non_exhaustive]
+pub struct SpaceFigures {
+    /// Elements along x (MX).
+    pub mx: Option<usize>,
+    /// Elements along y (MY).
+    pub my: Option<usize>,
+    /// Element side along x (DX).
+    pub dx: Option<f64>,
+    /// Element side along y (DY).
+    pub dy: Option<f64>,
+    /// Elements across Hertz's minor axis at the run's load, `2 min(a_x/DX, a_y/DY)` (a quadratic profile).
+    pub elements_across: Option<f64>,
+    /// (Sub)steps solved (the path's length).
+    pub steps: Option<usize>,
+    /// Normal solver iterations, summed over the steps.
+    pub iterations_normal: Option<usize>,
+    /// Tangential solver iterations, summed over the steps.
+    pub iterations_tangential: Option<usize>,
+    /// Normal–tangential alternations, summed over the steps.
+    pub outer_iterations: Option<usize>,
+    /// Tangential force on body 1 along x.
+    pub force_x: Option<f64>,
+    /// Tangential force on body 1 along y.
+    pub force_y: Option<f64>,
+    /// Elements in contact.
+    pub contact_count: Option<usize>,
+    /// Elements sticking.
+    pub stick_count: Option<usize>,
+    /// Elements slipping.
+    pub slip_count: Option<usize>,
+    /// The largest element pressure.
+    pub peak_pressure: Option<f64>,
+    /// Semi-axis along x of the least-squares ellipse fit `p² = p₀²(1 − x²/a_x² − y²/a_y²)`.
+    pub a_x_fit: Option<f64>,
+    /// Semi-axis along y of the fit.
+    pub a_y_fit: Option<f64>,
+    /// Error of `a_x_fit` against Hertz's a_x.
+    pub hertz_a_x_err: Option<f64>,
+    /// Error of `a_y_fit` against Hertz's a_y.
+    pub hertz_a_y_err: Option<f64>,
+    /// Error of the approach against Hertz's.
+    pub hertz_approach_err: Option<f64>,
+    /// Cattaneo–Mindlin: error of the shift for a prescribed force (or of the force for a prescribed shift).
+    pub cm_transfer_err: Option<f64>,
+    /// The profile's curvature A (h = A x² + B y²).
+    pub curvature_a: Option<f64>,
+    /// The profile's curvature B.
+    pub curvature_b: Option<f64>,
+    /// Hertz's a_x at the run's load.
+    pub hertz_a_x: Option<f64>,
+    /// Hertz's a_y at the run's load.
+    pub hertz_a_y: Option<f64>,
+    /// Hertz's approach at the run's load.
+    pub hertz_approach: Option<f64>,
+    /// The shift of body 1 relative to body 2 along x.
+    pub shift_x: Option<f64>,
+    /// The shift along y.
+    pub shift_y: Option<f64>,
 }
 
 impl SweepRow {
@@ -148,6 +220,7 @@ impl SweepRow {
     pub fn new(case: usize, solver: &str, status: RowStatus) -> SweepRow {
         SweepRow {
             case,
+            kind: Kind::Plane,
             params: Vec::new(),
             scene: String::new(),
             scene_digest: None,
@@ -187,6 +260,7 @@ impl SweepRow {
             timing_runs: None,
             setup: None,
             message: String::new(),
+            space: SpaceFigures::default(),
             derived: Default::default(),
         }
     }
@@ -194,7 +268,7 @@ impl SweepRow {
     /// Set a known column from its CSV cell; `Ok(false)` when `name` is not a known column (a swept key, a work
     /// counter or a derived figure).
     pub fn set(&mut self, name: &str, cell: &str) -> std::result::Result<bool, String> {
-        match COLUMNS.iter().find(|c| c.name == name) {
+        match columns(self.kind).find(|c| c.name == name) {
             Some(c) => (c.set)(self, cell).map(|_| true),
             None => Ok(false),
         }
@@ -210,7 +284,7 @@ impl SweepRow {
         if let Some(v) = self.param(name) {
             return v.to_string();
         }
-        if let Some(c) = COLUMNS.iter().find(|c| c.name == name) {
+        if let Some(c) = columns(self.kind).find(|c| c.name == name) {
             return (c.get)(self).text();
         }
         if let Some(v) = self.derived.get(name) {
@@ -221,7 +295,7 @@ impl SweepRow {
 
     /// The value of a numeric column by name (a figure, an error, a time, a count), if it has one and it is finite.
     pub fn number(&self, name: &str) -> Option<f64> {
-        let v = match COLUMNS.iter().find(|c| c.name == name) {
+        let v = match columns(self.kind).find(|c| c.name == name) {
             Some(c) => match (c.get)(self) {
                 Cell::Num(v) => v,
                 Cell::Int(v) => v.map(|v| v as f64),
@@ -232,11 +306,11 @@ impl SweepRow {
         v.filter(|v| v.is_finite())
     }
 
-    /// The row's cells against a header written by [`header`] with the same swept keys.
+    /// The row's cells against a header written by [`header_of`] for the row's kind with the same swept keys.
     pub fn record(&self, keys: &[String]) -> Vec<String> {
         let mut out = vec![self.case.to_string()];
         out.extend(keys.iter().map(|k| self.param(k).unwrap_or_default().to_string()));
-        for c in COLUMNS {
+        for c in columns(self.kind) {
             if c.name == WORK_AFTER {
                 out.push((c.get)(self).text());
                 out.extend(crate::solvers::work_columns().iter().map(|w| self.cell(w)));
@@ -256,6 +330,7 @@ impl SweepRow {
         let get = |i: usize| record.get(i).unwrap_or("");
         let case = get(0).parse().map_err(|_| bad("case", format!("`{}` is not a case number", get(0))))?;
         let mut row = SweepRow::new(case, "", RowStatus::Error);
+        row.kind = header.kind;
         row.params = header
             .keys
             .iter()
@@ -263,7 +338,7 @@ impl SweepRow {
             .filter(|(k, _)| !get(1 + k).is_empty())
             .map(|(k, key)| (key.clone(), get(1 + k).to_string()))
             .collect();
-        for (c, i) in COLUMNS.iter().zip(&header.columns) {
+        for (c, i) in columns(header.kind).zip(&header.columns) {
             if let Some(i) = *i {
                 (c.set)(&mut row, get(i)).map_err(|why| bad(c.name, why))?;
             }
@@ -296,11 +371,28 @@ impl SweepRow {
     }
 }
 
+/// A row's timing columns; `spread` is (fastest, slowest, repeats) of the total time when the case was timed
+/// repeatedly.
+pub(super) fn set_timing(row: &mut SweepRow, t: &crate::results::Timing, spread: Option<(f64, f64, usize)>) {
+    row.t_assembly = Some(t.assembly);
+    row.t_condensation = Some(t.condensation);
+    row.t_formulation = Some(t.formulation);
+    row.t_solve = Some(t.solve);
+    row.t_total = Some(t.total);
+    let (lo, hi, k) = spread.unwrap_or((t.total, t.total, 1));
+    row.t_total_min = Some(lo);
+    row.t_total_max = Some(hi);
+    row.timing_runs = Some(k);
+    row.setup = Some(t.setup);
+}
+
 /// Where the columns of a sweep CSV are: the swept keys, the known columns (in the order of the module docs) and the work
 /// counters.
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
 pub struct Header {
+    /// The kind of the sweep's scenes (a 3D CSV has the column `mx`).
+    pub kind: Kind,
     /// The swept keys, in CSV order.
     pub keys: Vec<String>,
     /// Index of each known column (`None`: an [`OPTIONAL`] one this CSV lacks).
@@ -327,26 +419,38 @@ impl Header {
             .iter()
             .position(|n| n == COLUMNS[0].name)
             .ok_or_else(|| bad(format!("not a sweep CSV of this version: no `{}` column", COLUMNS[0].name)))?;
-        let mut columns = Vec::with_capacity(COLUMNS.len());
-        for c in COLUMNS {
+        let kind = if names[first..].iter().any(|n| n == SPACE_MARK) { Kind::Space } else { Kind::Plane };
+        let mut found = Vec::with_capacity(COLUMNS.len());
+        for c in columns(kind) {
             let i = names.iter().position(|n| n == c.name);
             if i.is_none() && !OPTIONAL.contains(&c.name) {
                 return Err(bad(format!("not a sweep CSV of this version: no `{}` column (rerun the sweep)", c.name)));
             }
-            columns.push(i);
+            found.push(i);
         }
-        let work_at = names.iter().position(|n| n == WORK_AFTER).map_or(first, |i| i + 1);
-        let work_end = names.iter().position(|n| n == "residual").unwrap_or(work_at);
-        let work = (work_at..work_end).map(|i| (names[i].clone(), i)).collect();
-        Ok(Header { keys: names[1..first].to_vec(), columns, work, names: names.to_vec() })
+        let work = match kind {
+            Kind::Plane => {
+                let work_at = names.iter().position(|n| n == WORK_AFTER).map_or(first, |i| i + 1);
+                let work_end = names.iter().position(|n| n == "residual").unwrap_or(work_at);
+                (work_at..work_end).map(|i| (names[i].clone(), i)).collect()
+            }
+            Kind::Space => Vec::new(),
+        };
+        Ok(Header { kind, keys: names[1..first].to_vec(), columns: found, work, names: names.to_vec() })
     }
 }
 
-/// The full CSV header for a spec's swept keys.
+/// The full CSV header of a sweep of 2D scenes for a spec's swept keys ([`header_of`]).
 pub fn header(keys: &[String]) -> Vec<String> {
+    header_of(keys, Kind::Plane)
+}
+
+/// The full CSV header of a sweep of `kind` for a spec's swept keys: `case`, the keys, then the kind's columns (the
+/// module docs; a 3D sweep's in [`space_columns`]).
+pub fn header_of(keys: &[String], kind: Kind) -> Vec<String> {
     let mut h = vec!["case".to_string()];
     h.extend(keys.iter().cloned());
-    for c in COLUMNS {
+    for c in columns(kind) {
         h.push(c.name.to_string());
         if c.name == WORK_AFTER {
             h.extend(crate::solvers::work_columns().iter().map(|s| s.to_string()));
@@ -372,6 +476,36 @@ pub const PROVENANCE_COLUMNS: &[&str] = &[
     "setup",
 ];
 
+/// The column whose presence marks a 3D sweep's CSV.
+const SPACE_MARK: &str = "mx";
+
+/// Which kinds of sweep have a column.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Kinds {
+    /// 2D only.
+    P,
+    /// 3D only.
+    S,
+    /// Both.
+    B,
+}
+
+impl Kinds {
+    fn has(self, kind: Kind) -> bool {
+        matches!((self, kind), (Kinds::B, _) | (Kinds::P, Kind::Plane) | (Kinds::S, Kind::Space))
+    }
+}
+
+/// The known columns of a kind of sweep, in CSV order.
+fn columns(kind: Kind) -> impl Iterator<Item = &'static Column> {
+    COLUMNS.iter().filter(move |c| c.kinds.has(kind))
+}
+
+/// The columns of a 3D sweep's CSV after the swept keys, in order (for documentation and tests).
+pub fn space_columns() -> Vec<&'static str> {
+    columns(Kind::Space).map(|c| c.name).collect()
+}
+
 /// Columns a CSV of an older rollbem may lack (read as empty).
 const OPTIONAL: &[&str] = &["scene_digest"];
 
@@ -396,6 +530,7 @@ impl Cell {
 /// One known column: its name, how it is written and how it is read back.
 struct Column {
     name: &'static str,
+    kinds: Kinds,
     get: fn(&SweepRow) -> Cell,
     set: fn(&mut SweepRow, &str) -> std::result::Result<(), String>,
 }
@@ -426,15 +561,21 @@ fn named<T: serde::de::DeserializeOwned>(s: &str) -> std::result::Result<Option<
 }
 
 macro_rules! num_col {
-    ($name:literal, $($f:ident).+) => {
-        Column { name: $name, get: |r| Cell::Num(r.$($f).+), set: |r, s| { r.$($f).+ = num(s)?; Ok(()) } }
+    ($kinds:ident, $name:literal, $($f:ident).+) => {
+        Column {
+            name: $name,
+            kinds: Kinds::$kinds,
+            get: |r| Cell::Num(r.$($f).+),
+            set: |r, s| { r.$($f).+ = num(s)?; Ok(()) },
+        }
     };
 }
 
 macro_rules! int_col {
-    ($name:literal, $($f:ident).+) => {
+    ($kinds:ident, $name:literal, $($f:ident).+) => {
         Column {
             name: $name,
+            kinds: Kinds::$kinds,
             get: |r| Cell::Int(r.$($f).+.map(|v| v as u64)),
             set: |r, s| { r.$($f).+ = int(s)?; Ok(()) },
         }
@@ -445,6 +586,7 @@ macro_rules! int_col {
 static COLUMNS: &[Column] = &[
     Column {
         name: "scene",
+        kinds: Kinds::B,
         get: |r| Cell::Text(r.scene.clone()),
         set: |r, s| {
             r.scene = s.into();
@@ -453,6 +595,7 @@ static COLUMNS: &[Column] = &[
     },
     Column {
         name: "scene_digest",
+        kinds: Kinds::B,
         get: |r| Cell::Text(r.scene_digest.map(super::identity::show_digest).unwrap_or_default()),
         set: |r, s| {
             r.scene_digest = match s {
@@ -462,18 +605,25 @@ static COLUMNS: &[Column] = &[
             Ok(())
         },
     },
+    int_col!(S, "mx", space.mx),
+    int_col!(S, "my", space.my),
+    num_col!(S, "dx", space.dx),
+    num_col!(S, "dy", space.dy),
+    num_col!(S, "elements_across", space.elements_across),
     Column {
         name: "element",
+        kinds: Kinds::P,
         get: |r| Cell::Text(r.element.map(|e| e.name().to_string()).unwrap_or_default()),
         set: |r, s| {
             r.element = named(s)?;
             Ok(())
         },
     },
-    int_col!("contact_elements", contact_elements),
-    int_col!("contact_nodes", contact_nodes),
+    int_col!(P, "contact_elements", contact_elements),
+    int_col!(P, "contact_nodes", contact_nodes),
     Column {
         name: "solver",
+        kinds: Kinds::B,
         get: |r| Cell::Text(r.solver.clone()),
         set: |r, s| {
             r.solver = s.into();
@@ -482,6 +632,7 @@ static COLUMNS: &[Column] = &[
     },
     Column {
         name: "formulation",
+        kinds: Kinds::P,
         get: |r| Cell::Text(r.formulation.clone().unwrap_or_default()),
         set: |r, s| {
             r.formulation = (!s.is_empty()).then(|| s.to_string());
@@ -490,73 +641,101 @@ static COLUMNS: &[Column] = &[
     },
     Column {
         name: "status",
+        kinds: Kinds::B,
         get: |r| Cell::Text(r.status.name().to_string()),
         set: |r, s| {
             r.status = match s {
                 "error" => RowStatus::Error,
+                _ if r.kind == Kind::Space => RowStatus::Space(named(s)?.ok_or("empty status")?),
                 _ => RowStatus::Run(named(s)?.ok_or("empty status")?),
             };
             Ok(())
         },
     },
-    int_col!("problem_size", problem_size),
-    num_col!("residual", residual),
-    num_col!("normal_load", normal_load),
-    num_col!("tangential_load", tangential_load),
-    num_col!("half_width_fit", half_width_fit),
-    num_col!("peak_pressure_fit", peak_pressure_fit),
-    num_col!("hertz_a_err", metrics.hertz_a_err),
-    num_col!("hertz_p0_err", metrics.hertz_p0_err),
-    num_col!("hertz_l2_err", metrics.hertz_l2_err),
-    num_col!("cm_c_over_a", metrics.cm_c_over_a),
-    num_col!("cm_c_over_a_exact", metrics.cm_c_over_a_exact),
-    num_col!("cm_c_err_elements", metrics.cm_c_err_elements),
-    num_col!("cm_centre_elements", metrics.cm_centre_elements),
-    num_col!("cm_shear_err", metrics.cm_shear_err),
-    num_col!("cm_shear_l2_err", metrics.cm_shear_l2_err),
+    int_col!(P, "problem_size", problem_size),
+    int_col!(S, "steps", space.steps),
+    int_col!(S, "iterations_normal", space.iterations_normal),
+    int_col!(S, "iterations_tangential", space.iterations_tangential),
+    int_col!(S, "outer_iterations", space.outer_iterations),
+    num_col!(B, "residual", residual),
+    num_col!(B, "normal_load", normal_load),
+    num_col!(P, "tangential_load", tangential_load),
+    num_col!(S, "force_x", space.force_x),
+    num_col!(S, "force_y", space.force_y),
+    int_col!(S, "contact_count", space.contact_count),
+    int_col!(S, "stick_count", space.stick_count),
+    int_col!(S, "slip_count", space.slip_count),
+    num_col!(S, "peak_pressure", space.peak_pressure),
+    num_col!(P, "half_width_fit", half_width_fit),
+    num_col!(B, "peak_pressure_fit", peak_pressure_fit),
+    num_col!(S, "a_x_fit", space.a_x_fit),
+    num_col!(S, "a_y_fit", space.a_y_fit),
+    num_col!(S, "hertz_a_x_err", space.hertz_a_x_err),
+    num_col!(S, "hertz_a_y_err", space.hertz_a_y_err),
+    num_col!(P, "hertz_a_err", metrics.hertz_a_err),
+    num_col!(B, "hertz_p0_err", metrics.hertz_p0_err),
+    num_col!(S, "hertz_approach_err", space.hertz_approach_err),
+    num_col!(P, "hertz_l2_err", metrics.hertz_l2_err),
+    num_col!(B, "cm_c_over_a", metrics.cm_c_over_a),
+    num_col!(B, "cm_c_over_a_exact", metrics.cm_c_over_a_exact),
+    num_col!(B, "cm_c_err_elements", metrics.cm_c_err_elements),
+    num_col!(P, "cm_centre_elements", metrics.cm_centre_elements),
+    num_col!(P, "cm_shear_err", metrics.cm_shear_err),
+    num_col!(S, "cm_transfer_err", space.cm_transfer_err),
+    num_col!(P, "cm_shear_l2_err", metrics.cm_shear_l2_err),
     Column {
         name: "model",
+        kinds: Kinds::P,
         get: |r| Cell::Text(r.model.map(|m| m.name().to_string()).unwrap_or_default()),
         set: |r, s| {
             r.model = named(s)?;
             Ok(())
         },
     },
-    num_col!("strip_width", strip_width),
-    num_col!("radius", radius),
-    num_col!("contact_modulus", contact_modulus),
-    num_col!("friction", friction),
-    num_col!("hertz_a", hertz_a),
-    num_col!("hertz_p0", hertz_p0),
-    num_col!("shift", shift),
-    num_col!("approach", approach),
-    num_col!("stick_left", stick_left),
-    num_col!("stick_right", stick_right),
-    num_col!("creepage", creepage),
-    num_col!("carter_q_over_mup", metrics.carter_q_over_mup),
-    num_col!("carter_q_over_mup_exact", metrics.carter_q_over_mup_exact),
-    num_col!("carter_c_over_a", metrics.carter_c_over_a),
-    num_col!("carter_c_over_a_exact", metrics.carter_c_over_a_exact),
-    num_col!("carter_c_err_elements", metrics.carter_c_err_elements),
-    num_col!("carter_shear_rms", metrics.carter_shear_rms),
+    num_col!(P, "strip_width", strip_width),
+    num_col!(P, "radius", radius),
+    num_col!(S, "curvature_a", space.curvature_a),
+    num_col!(S, "curvature_b", space.curvature_b),
+    num_col!(B, "contact_modulus", contact_modulus),
+    num_col!(B, "friction", friction),
+    num_col!(S, "hertz_a_x", space.hertz_a_x),
+    num_col!(S, "hertz_a_y", space.hertz_a_y),
+    num_col!(P, "hertz_a", hertz_a),
+    num_col!(B, "hertz_p0", hertz_p0),
+    num_col!(S, "hertz_approach", space.hertz_approach),
+    num_col!(P, "shift", shift),
+    num_col!(S, "shift_x", space.shift_x),
+    num_col!(S, "shift_y", space.shift_y),
+    num_col!(B, "approach", approach),
+    num_col!(P, "stick_left", stick_left),
+    num_col!(P, "stick_right", stick_right),
+    num_col!(P, "creepage", creepage),
+    num_col!(P, "carter_q_over_mup", metrics.carter_q_over_mup),
+    num_col!(P, "carter_q_over_mup_exact", metrics.carter_q_over_mup_exact),
+    num_col!(P, "carter_c_over_a", metrics.carter_c_over_a),
+    num_col!(P, "carter_c_over_a_exact", metrics.carter_c_over_a_exact),
+    num_col!(P, "carter_c_err_elements", metrics.carter_c_err_elements),
+    num_col!(P, "carter_shear_rms", metrics.carter_shear_rms),
     Column {
         name: "message",
+        kinds: Kinds::B,
         get: |r| Cell::Text(r.message.clone()),
         set: |r, s| {
             r.message = s.into();
             Ok(())
         },
     },
-    num_col!("t_assembly", t_assembly),
-    num_col!("t_condensation", t_condensation),
-    num_col!("t_formulation", t_formulation),
-    num_col!("t_solve", t_solve),
-    num_col!("t_total", t_total),
-    num_col!("t_total_min", t_total_min),
-    num_col!("t_total_max", t_total_max),
-    int_col!("timing_runs", timing_runs),
+    num_col!(B, "t_assembly", t_assembly),
+    num_col!(P, "t_condensation", t_condensation),
+    num_col!(P, "t_formulation", t_formulation),
+    num_col!(B, "t_solve", t_solve),
+    num_col!(B, "t_total", t_total),
+    num_col!(B, "t_total_min", t_total_min),
+    num_col!(B, "t_total_max", t_total_max),
+    int_col!(B, "timing_runs", timing_runs),
     Column {
         name: "setup",
+        kinds: Kinds::B,
         get: |r| {
             Cell::Text(
                 r.setup

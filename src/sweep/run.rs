@@ -7,16 +7,17 @@
 //! What is in memory at any time: the plan (4 bytes per case to run), and per thread one model and one case; with
 //! `timing_repeats`, the rows of at most [`TIMING_BATCH`] cases waiting for their repeats. Never the grid's rows.
 
-use super::identity::{mark, scene_digest};
+use super::identity::{case_digest, mark};
 use super::journal::{self, Block, Journal, Written};
 use super::plan::{Plan, Start, SweepOptions};
-use super::row::{RowStatus, SweepRow};
+use super::row::{set_timing, RowStatus, SweepRow};
 use super::{invalid, Case, Shard, SweepSpec};
 use crate::error::{Error, Result};
+use crate::pipeline::space::SpaceModel;
 use crate::pipeline::Model;
 use crate::references::metrics;
 use crate::results::{Report, SolverRun, Timing};
-use crate::scene::Scene;
+use crate::scene::{AnyScene, Scene, SpaceScene};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 use std::collections::BTreeSet;
@@ -32,16 +33,16 @@ pub const REPEAT_BELOW_S: f64 = 2.0;
 /// over the batch, then their rows are written (a sweep of fewer cases is one batch).
 pub const TIMING_BATCH: usize = 256;
 
-/// The rows of a run of one case, sorted by solver.
-fn case_rows(case: &Case, report: &Report) -> Vec<SweepRow> {
-    let mut rows: Vec<SweepRow> = report.runs.iter().map(|r| run_row(case, report.mesh.contact_nodes, r)).collect();
+/// The rows of a run of one 2D case, sorted by solver.
+fn case_rows(case: &Case<AnyScene>, scene: &Scene, report: &Report) -> Vec<SweepRow> {
+    let nodes = report.mesh.contact_nodes;
+    let mut rows: Vec<SweepRow> = report.runs.iter().map(|r| run_row(case, scene, nodes, r)).collect();
     rows.sort_by(|a, b| a.solver.cmp(&b.solver));
     rows
 }
 
 /// The row of one solver run.
-fn run_row(case: &Case, contact_nodes: usize, r: &SolverRun) -> SweepRow {
-    let scene = &case.scene;
+fn run_row(case: &Case<AnyScene>, scene: &Scene, contact_nodes: usize, r: &SolverRun) -> SweepRow {
     let mut row = SweepRow::new(case.index, r.solver.name(), RowStatus::Run(r.status));
     row.params = case.params.clone();
     row.scene = scene.name().to_string();
@@ -77,25 +78,9 @@ fn run_row(case: &Case, contact_nodes: usize, r: &SolverRun) -> SweepRow {
     row
 }
 
-/// A row's timing columns; `spread` is (fastest, slowest, repeats) of the total time when the case was timed
-/// repeatedly.
-fn set_timing(row: &mut SweepRow, t: &Timing, spread: Option<(f64, f64, usize)>) {
-    row.t_assembly = Some(t.assembly);
-    row.t_condensation = Some(t.condensation);
-    row.t_formulation = Some(t.formulation);
-    row.t_solve = Some(t.solve);
-    row.t_total = Some(t.total);
-    let (lo, hi, k) = spread.unwrap_or((t.total, t.total, 1));
-    row.t_total_min = Some(lo);
-    row.t_total_max = Some(hi);
-    row.timing_runs = Some(k);
-    row.setup = Some(t.setup);
-}
-
 /// Rows for a case that could not be built or run: one per solver its scene asks for (by name; `all` when it asks
 /// for every solver), status `error`, the message last.
-fn error_rows(case: &Case, err: &Error) -> Vec<SweepRow> {
-    let scene = &case.scene;
+fn error_rows(case: &Case<AnyScene>, scene: &Scene, err: &Error) -> Vec<SweepRow> {
     let set = scene.solvers();
     let mut solvers: BTreeSet<String> = set.named.iter().map(|id| id.name().to_string()).collect();
     if set.all {
@@ -125,40 +110,94 @@ fn error_rows(case: &Case, err: &Error) -> Vec<SweepRow> {
 /// [`super::SweepSpec::warm_start`] for what then depends on the order).
 #[derive(Default)]
 struct Shared {
-    built: Option<(Scene, Result<Model>)>,
+    built: Option<Built>,
     warm: Option<crate::pipeline::Warm>,
     cancel: crate::cancel::Cancel,
 }
 
+/// The model of the last case, with the scene it was built for: the case runner's one seam between the kinds of
+/// scene. A 2D model serves the next cases that share its source; a 3D model ([`SpaceModel`]: kernels, profile and
+/// load path together) serves only a case of the same scene. (One per thread: its size does not matter.)
+#[allow(clippy::large_enum_variant)]
+enum Built {
+    Plane(Scene, Result<Model>),
+    Space(SpaceScene, Result<SpaceModel>),
+}
+
 impl Shared {
     /// The rows of a case, sorted by solver.
-    fn rows(&mut self, case: &Case) -> Result<Vec<SweepRow>> {
+    fn rows(&mut self, case: &Case<AnyScene>) -> Result<Vec<SweepRow>> {
         self.cancel.check()?;
-        let s = &case.scene;
+        let mut rows = match &case.scene {
+            AnyScene::Plane(s) => self.plane_rows(case, s)?,
+            AnyScene::Space(s) => self.space_rows(case, s)?,
+        };
+        let digest = Some(case_digest(&case.scene));
+        for r in &mut rows {
+            r.scene_digest = digest;
+        }
+        Ok(rows)
+    }
+
+    fn plane_rows(&mut self, case: &Case<AnyScene>, s: &Scene) -> Result<Vec<SweepRow>> {
         let fits = |m: &Scene| Model::shares_source(m, s) && Model::needs(m) == Model::needs(s);
-        if !self.built.as_ref().is_some_and(|(m, _)| fits(m)) {
-            self.built = Some((s.clone(), Model::build(s)));
+        if !matches!(&self.built, Some(Built::Plane(m, _)) if fits(m)) {
+            self.built = Some(Built::Plane(s.clone(), Model::build(s)));
             if let Some(w) = self.warm.as_mut() {
                 w.clear();
             }
         }
         let mut cold = crate::pipeline::Warm::default();
-        let solved = match (self.built.as_ref().map(|b| &b.1), self.warm.as_mut()) {
-            (Some(Ok(m)), w) => m.solve_with(s, w.unwrap_or(&mut cold), &self.cancel).map_err(|e| error_rows(case, &e)),
-            (Some(Err(e)), _) => Err(error_rows(case, e)),
-            (None, _) => return Err(Error::Cancelled),
+        let solved = match (&self.built, self.warm.as_mut()) {
+            (Some(Built::Plane(_, Ok(m))), w) => {
+                m.solve_with(s, w.unwrap_or(&mut cold), &self.cancel).map_err(|e| error_rows(case, s, &e))
+            }
+            (Some(Built::Plane(_, Err(e))), _) => Err(error_rows(case, s, e)),
+            _ => return Err(Error::Cancelled),
         };
         // A case cancelled in its solve has no rows: the run stops (its journal keeps the finished cases).
         self.cancel.check()?;
-        let mut rows = match solved {
-            Ok(report) => case_rows(case, &report),
+        Ok(match solved {
+            Ok(report) => case_rows(case, s, &report),
             Err(rows) => rows,
-        };
-        let digest = Some(scene_digest(s));
-        for r in &mut rows {
-            r.scene_digest = digest;
+        })
+    }
+
+    fn space_rows(&mut self, case: &Case<AnyScene>, s: &SpaceScene) -> Result<Vec<SweepRow>> {
+        if !matches!(&self.built, Some(Built::Space(m, _)) if m == s) {
+            self.built = Some(Built::Space(s.clone(), SpaceModel::build(s)));
         }
-        Ok(rows)
+        let solved = match &self.built {
+            Some(Built::Space(_, Ok(m))) => m.solve(&self.cancel),
+            Some(Built::Space(_, Err(e))) => return Ok(super::space::error_rows(case, s, e)),
+            _ => return Err(Error::Cancelled),
+        };
+        self.cancel.check()?;
+        Ok(match solved {
+            Ok(report) => super::space::case_rows(case, s, &report),
+            Err(e) => super::space::error_rows(case, s, &e),
+        })
+    }
+}
+
+/// The timings of a case run again from scratch (model built and solved), by solver; `None` when it failed.
+fn rerun(scene: &AnyScene) -> Option<Vec<(String, Timing)>> {
+    match scene {
+        AnyScene::Plane(s) => {
+            let again = crate::pipeline::run_scene(s).ok()?;
+            Some(again.runs.iter().map(|r| (r.solver.name().to_string(), r.timing_s)).collect())
+        }
+        AnyScene::Space(s) => {
+            let t = crate::pipeline::space::run_space_scene(s).ok()?.timing_s;
+            let timing = Timing {
+                assembly: t.build,
+                solve: t.solve,
+                total: t.total,
+                setup: crate::results::Setup::Built,
+                ..Timing::default()
+            };
+            Some(vec![(super::space::SOLVER.to_string(), timing)])
+        }
     }
 }
 
@@ -205,7 +244,9 @@ impl Plan {
         }
         let journal = match self.start {
             Start::Journal(keep) => Journal::reopen(&self.journal, &self.keys, keep)?,
-            Start::Fresh | Start::Output => Journal::create(&self.journal, &self.keys, &self.identity.line())?,
+            Start::Fresh | Start::Output => {
+                Journal::create(&self.journal, &self.keys, self.kind, &self.identity.line())?
+            }
         };
         faer::set_global_parallelism(faer::Par::Seq);
         // The runs go in parallel: their stage spinners would draw over each other and over the bar below.
@@ -222,7 +263,7 @@ impl Plan {
                     ..Default::default()
                 };
                 for &i in unit {
-                    append(&journal, &model.rows(&self.expansion.case(i as usize)?)?)?;
+                    append(&journal, &model.rows(&self.expansion.any_case(i as usize)?)?)?;
                     bar.inc(1);
                 }
                 Ok::<(), Error>(())
@@ -285,7 +326,7 @@ impl Plan {
         while cases.peek().is_some() {
             let mut batch = Vec::with_capacity(TIMING_BATCH);
             for i in cases.by_ref().take(TIMING_BATCH) {
-                batch.push((i, model.rows(&self.expansion.case(i as usize)?)?));
+                batch.push((i, model.rows(&self.expansion.any_case(i as usize)?)?));
                 bar.inc(1);
             }
             self.retime(&mut batch, bar)?;
@@ -319,12 +360,12 @@ impl Plan {
         let mut times: Vec<Vec<Vec<Timing>>> = batch.iter().map(|(_, rows)| vec![Vec::new(); rows.len()]).collect();
         for _ in 0..repeats {
             for &k in &order {
-                let again = crate::pipeline::run_scene(&self.expansion.case(batch[k].0 as usize)?.scene);
+                let again = rerun(&self.expansion.any_case(batch[k].0 as usize)?.scene);
                 bar.inc(1);
-                let Ok(again) = again else { continue };
-                for r in &again.runs {
-                    if let Some(j) = batch[k].1.iter().position(|row| row.solver == r.solver.name()) {
-                        times[k][j].push(r.timing_s);
+                let Some(again) = again else { continue };
+                for (solver, timing) in again {
+                    if let Some(j) = batch[k].1.iter().position(|row| row.solver == solver) {
+                        times[k][j].push(timing);
                     }
                 }
             }
@@ -373,6 +414,17 @@ pub fn sweep_rows_with(
     progress: bool,
     cancel: &crate::cancel::Cancel,
 ) -> Result<(Vec<String>, Vec<SweepRow>)> {
+    sweep_table_with(spec_path, shard, progress, cancel).map(|(header, rows)| (header.keys, rows))
+}
+
+/// [`sweep_rows_with`] with the CSV's whole header ([`super::row::Header`]: its kind, 2D or 3D, and every column's
+/// name in order) instead of the swept keys alone.
+pub fn sweep_table_with(
+    spec_path: &Path,
+    shard: Option<Shard>,
+    progress: bool,
+    cancel: &crate::cancel::Cancel,
+) -> Result<(super::row::Header, Vec<SweepRow>)> {
     static SEQ: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
     let seq = SEQ.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let nanos = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.subsec_nanos());
@@ -384,8 +436,7 @@ pub fn sweep_rows_with(
         Plan::new(spec_path, &out, &options).and_then(|plan| plan.run()).and_then(|_| SweepRow::read_csv(&out));
     // The folder is ours alone; failing to remove it loses nothing.
     let _ = std::fs::remove_dir_all(&dir);
-    let (header, rows) = result?;
-    Ok((header.keys, rows))
+    result
 }
 
 /// The number of rows with status `error` in a sweep CSV (0 when it cannot be read), read without keeping its rows.
@@ -485,7 +536,7 @@ fn check_spec(e: &super::Expansion, spec: &Path, inputs: &[PathBuf], blocks: &[B
     let mut now = 0u64;
     super::plan::each_case(
         e,
-        |_, case| scene_digest(&case.scene),
+        |_, case| case_digest(&case.scene),
         |i, d| {
             now = now.wrapping_add(mark(i, d));
             Ok(())
@@ -499,7 +550,7 @@ fn check_spec(e: &super::Expansion, spec: &Path, inputs: &[PathBuf], blocks: &[B
     for path in inputs {
         journal::scan(path, 0, false, None, |b, rows| {
             let case = b.case as usize;
-            if rows[0].scene_digest != Some(scene_digest(&e.case(case)?.scene)) {
+            if rows[0].scene_digest != Some(case_digest(&e.any_case(case)?.scene)) {
                 n += 1;
                 first.get_or_insert_with(|| format!("case {case}, in {}", path.display()));
             }
