@@ -170,6 +170,7 @@ rollbem_cells() {
 }
 
 load_start=$(loadavg)
+growth=()
 rows=()
 notes=()
 for name in $cases; do
@@ -233,6 +234,9 @@ for name in $cases; do
     ratio=$(awk -v a="$best" -v b="$rcpu" 'BEGIN { if (b > 0) printf "%.2f", a / b; else print "n/a" }')
     rcells="$rcon / $rslip | $rcpu | $rrss | $ratio"
     notes+=("$name: rollbem's elements in contact / in slip $rcon / $rslip (CONTACT's $ncon / $nslip); CONTACT's best CPU $best s.")
+    [[ $rcon == "$ncon" && ($name == norm_* || $rslip == "$nslip") ]] ||
+      notes+=("$name: **rollbem's counts differ from CONTACT's** (contact $rcon / $ncon, slip $rslip / $nslip).")
+    growth+=("${name%_*} $npot $rcpu $best")
   fi
   grid=$(inp_grid "$inp")
   ncases=$(inp_cases "$inp")
@@ -258,4 +262,14 @@ done
   echo "Build check before timing (contact_refcmp.py, every printed result to one unit of its last digit): $(printf '%s. ' "${contact_ref_summary[@]}")"
   echo "Machine: $(nproc) cores, shared; load average $load_start at the start, $(loadavg) at the end."
   for note in "${notes[@]}"; do echo "Note: $note"; done
+  # How each program's CPU grows with the elements, per series: the exponent x of CPU ∝ NPOT^x between the series'
+  # first input well above GNU time's 0.01 s resolution (rollbem ≥ 0.03 s or CONTACT ≥ 0.1 s) and its last, beside
+  # the exponent N log N would give over the same range.
+  ((${#growth[@]})) && printf '%s\n' "${growth[@]}" | awk '
+    { s = $1; if (!(s in first) && ($3 >= 0.03 || $4 >= 0.1)) { first[s] = NR; n0[s] = $2; r0[s] = $3; c0[s] = $4 }
+      n1[s] = $2; r1[s] = $3; c1[s] = $4 }
+    END { for (s in first) if (n1[s] > n0[s] && r0[s] > 0 && c0[s] > 0)
+      printf "Growth (%s, NPOT %d → %d, %.0f×): rollbem CPU ∝ N^%.2f (%s → %s s), CONTACT best ∝ N^%.2f (%s → %s s); N log N would be N^%.2f.\n",
+        s, n0[s], n1[s], n1[s] / n0[s], log(r1[s] / r0[s]) / log(n1[s] / n0[s]), r0[s], r1[s],
+        log(c1[s] / c0[s]) / log(n1[s] / n0[s]), c0[s], c1[s], 1 + log(log(n1[s]) / log(n0[s])) / log(n1[s] / n0[s]) }'
 } | tee "$table_out"

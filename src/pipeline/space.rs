@@ -1,7 +1,7 @@
 //! The half-space (3D) pipeline: a [`SpaceModel`] is built once from a validated [`SpaceScene`] — the influence
 //! kernels of its grid, only those the scene's effects need ([`crate::halfspace::Path`]: the normal kernel alone
 //! without friction; the coupling kernels only for a dissimilar pair asked to couple) — and solved into the
-//! half-space result document ([`SpaceReport`]) with its checks ([`super::space_checks`]).
+//! half-space result document ([`SpaceReport`]) with its checks (`pipeline::space_checks`).
 //!
 //! ```
 //! use rollbem::pipeline::space::SpaceModel;

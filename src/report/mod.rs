@@ -30,6 +30,7 @@ mod physics;
 mod plot_csv;
 mod plot_result;
 mod rolling;
+mod space;
 mod table;
 
 pub use paths::{md_curve, md_pattern, md_shift, path_figures};
@@ -227,10 +228,11 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
 fn peer_and_maps(md: &mut String, out: &Path, maps: &Figures) {
     // The peer benchmarks are not part of `report` (they install and build peers and run for minutes): a table is
     // included when its script (`benches/peer/run.sh OUT/peer-lcp.md`, `benches/peer/contact.sh
-    // OUT/peer-contact.md`) has written it into this folder.
+    // OUT/peer-contact.md`, `benches/peer/contact3d.sh OUT/peer-contact3d.md`) has written it into this folder.
     for (file, title, script) in [
         ("peer-lcp.md", "Side by side with Siconos numerics", "run.sh"),
         ("peer-contact.md", "Side by side with CONTACT (Vollebregt), 2D Carter", "contact.sh"),
+        ("peer-contact3d.md", "Side by side with CONTACT (Vollebregt), 3D half-space", "contact3d.sh"),
     ] {
         let peer = out.join(file);
         if let Ok(table) = std::fs::read_to_string(&peer) {
@@ -374,7 +376,7 @@ fn sweeps(opts: &ReportOptions, specs: Vec<(PathBuf, crate::sweep::SweepSpec)>) 
             Analysis::CreepCurve => physics::creep_curves(&sw, &mut md, &mut sink)?,
             Analysis::FiniteVsHalfPlane => physics::finite_vs_half_plane(&sw, &mut md, &mut sink)?,
             Analysis::Accuracy => accuracy::sections(&mut sw, &mut md, &mut sink)?,
-            Analysis::Table => {}
+            Analysis::Table => space::table(&sw, &mut md),
         }
     }
     Ok((md, sink.list))
