@@ -25,6 +25,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 mod accuracy;
+mod friction3d;
 mod paths;
 mod physics;
 mod plot_csv;
@@ -213,6 +214,7 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
         }
     }
     md.push_str(&roll_md);
+    friction3d::section(&mut md)?;
     peer_and_maps(&mut md, out, &maps);
     writeln!(md, "\n## Files\n\n- `runs/NAME.json`: result document of every reference scene").unwrap();
     writeln!(md, "- `solver-comparison.csv`, `sweeps/*.csv`: the tables behind this page").unwrap();
