@@ -27,8 +27,8 @@
 //! recomputed), elements outside `S` with a negative gap join it, and conjugation restarts whenever `S` changes.
 //! Under a prescribed load the preconditioned residual is projected along `M 1_S` onto `Σ z = 0`, so every step
 //! keeps the load and the unknown `d` drops out of the iteration (it is the mean of `h + C p` over `S` at the
-//! solution); a clipped step is rescaled to the load. Two products per iteration (`C v` and `M r`), plus one per
-//! change of the set.
+//! solution); a clipped step is rescaled to the load. Two products per iteration (`C v` and `M r`), plus, when the
+//! set changes, `C p` afresh after a clipped step and (load prescribed) `M 1_S`.
 //!
 //! **Polonsky–Keer**, the constrained conjugate gradient method of Polonsky & Keer (Wear 231, 1999, 206–219), kept
 //! as the independent second method: on the current contact set `S`
