@@ -67,17 +67,10 @@ impl Toeplitz2d {
     /// An [`ArgumentError`] when the grid is empty or larger than 2²⁶ elements in either direction, or when the
     /// kernel has a non-finite value.
     pub fn new(mx: usize, my: usize, kernel: impl Fn(isize, isize) -> f64) -> Result<Toeplitz2d, ArgumentError> {
-        const LIMIT: usize = 1 << 26;
         let bad = |arg: &'static str, msg: String| ArgumentError::new("Toeplitz2d::new", arg, msg);
-        if mx == 0 || my == 0 || mx > LIMIT || my > LIMIT {
-            return Err(bad("mx, my", format!("a grid of 1 to {LIMIT} elements a side (got {mx} × {my})")));
-        }
-        let (lx, ly) = (crate::toeplitz::fast_length(2 * mx - 1), crate::toeplitz::fast_length(2 * my - 1));
-        let mut planner = RealFftPlanner::<f64>::new();
-        let (r2c, c2r) = (planner.plan_fft_forward(lx), planner.plan_fft_inverse(lx));
-        let mut cplanner = FftPlanner::<f64>::new();
-        let (fft_y, ifft_y) = (cplanner.plan_fft_forward(ly), cplanner.plan_fft_inverse(ly));
-        let mut op = Toeplitz2d { mx, my, lx, ly, spectrum: Vec::new(), r2c, c2r, fft_y, ifft_y };
+        Toeplitz2d::check_size("Toeplitz2d::new", mx, my)?;
+        let mut op = Toeplitz2d::plan(mx, my);
+        let (lx, ly) = (op.lx, op.ly);
         let mut grid = vec![0.0; lx * ly];
         let (mxi, myi) = (mx as isize, my as isize);
         for dy in -(myi - 1)..myi {
@@ -91,6 +84,26 @@ impl Toeplitz2d {
         }
         op.set_spectrum(grid);
         Ok(op)
+    }
+
+    /// A grid of 1 to 2²⁶ elements a side, or an [`ArgumentError`] of `function` naming `mx, my`.
+    fn check_size(function: &'static str, mx: usize, my: usize) -> Result<(), ArgumentError> {
+        const LIMIT: usize = 1 << 26;
+        if mx == 0 || my == 0 || mx > LIMIT || my > LIMIT {
+            let msg = format!("a grid of 1 to {LIMIT} elements a side (got {mx} × {my})");
+            return Err(ArgumentError::new(function, "mx, my", msg));
+        }
+        Ok(())
+    }
+
+    /// The FFT plans of an `mx × my` grid (sizes checked by [`Toeplitz2d::check_size`]), with no kernel yet.
+    fn plan(mx: usize, my: usize) -> Toeplitz2d {
+        let (lx, ly) = (crate::toeplitz::fast_length(2 * mx - 1), crate::toeplitz::fast_length(2 * my - 1));
+        let mut planner = RealFftPlanner::<f64>::new();
+        let (r2c, c2r) = (planner.plan_fft_forward(lx), planner.plan_fft_inverse(lx));
+        let mut cplanner = FftPlanner::<f64>::new();
+        let (fft_y, ifft_y) = (cplanner.plan_fft_forward(ly), cplanner.plan_fft_inverse(ly));
+        Toeplitz2d { mx, my, lx, ly, spectrum: Vec::new(), r2c, c2r, fft_y, ifft_y }
     }
 
     /// The kernel's spectrum from its values on the periodic grid (destroyed), scaled for the inverse transform.
@@ -116,7 +129,8 @@ impl Toeplitz2d {
         my: usize,
         kernel: impl Fn(usize, usize) -> f64,
     ) -> Result<Toeplitz2d, ArgumentError> {
-        let mut op = Toeplitz2d::new(mx, my, |_, _| 0.0)?;
+        Toeplitz2d::check_size("Toeplitz2d::circulant_even", mx, my)?;
+        let mut op = Toeplitz2d::plan(mx, my);
         let (lx, ly) = (op.lx, op.ly);
         let (hx, hy) = (lx / 2 + 1, ly / 2 + 1);
         let mut quadrant = Vec::with_capacity(hx * hy);

@@ -102,14 +102,14 @@ fn write_section(md: &mut String, lines: &[Line], in_contact: usize) {
             Some((k, l.force_err, l.traction_err))
         })
         .collect();
-    if pyr.len() >= 2 {
-        let order = |pick: fn(&(f64, f64, f64)) -> f64| slope(&pyr.iter().map(|r| (r.0, pick(r))).collect::<Vec<_>>());
+    let order = |pick: fn(&(f64, f64, f64)) -> f64| {
+        super::table::log_slope(&pyr.iter().map(|r| (r.0, pick(r))).collect::<Vec<_>>()).map(|s| s.0)
+    };
+    if let (Some(force), Some(traction)) = (order(|r| r.1), order(|r| r.2)) {
         writeln!(
             md,
-            "\nThe pyramid's errors fall with its facets as k^{:.1} (total force) and k^{:.1} (element tractions) \
-             (least-squares slopes over k = {}).",
-            order(|r| r.1),
-            order(|r| r.2),
+            "\nThe pyramid's errors fall with its facets as k^{force:.1} (total force) and k^{traction:.1} (element \
+             tractions) (least-squares slopes over k = {}).",
             pyr.iter().map(|r| format!("{}", r.0)).collect::<Vec<_>>().join(", ")
         )
         .unwrap();
@@ -124,14 +124,6 @@ fn write_section(md: &mut String, lines: &[Line], in_contact: usize) {
         .unwrap(),
         None => writeln!(md, "None of these formulations reaches {target:.0e} of μP in the total force.\n").unwrap(),
     }
-}
-
-/// The least-squares slope of ln e against ln k.
-fn slope(points: &[(f64, f64)]) -> f64 {
-    let n = points.len() as f64;
-    let (mk, me) = points.iter().fold((0.0, 0.0), |(a, b), &(k, e)| (a + k.ln() / n, b + e.max(1e-300).ln() / n));
-    let num: f64 = points.iter().map(|&(k, e)| (k.ln() - mk) * (e.max(1e-300).ln() - me)).sum();
-    num / points.iter().map(|&(k, _)| (k.ln() - mk).powi(2)).sum::<f64>()
 }
 
 #[cfg(test)]
