@@ -99,6 +99,11 @@ impl Toeplitz2d {
     /// The FFT plans of an `mx × my` grid (sizes checked by [`Toeplitz2d::check_size`]), with no kernel yet.
     fn plan(mx: usize, my: usize) -> Toeplitz2d {
         let (lx, ly) = (crate::toeplitz::fast_length(2 * mx - 1), crate::toeplitz::fast_length(2 * my - 1));
+        Toeplitz2d::plan_periodic(mx, my, lx, ly)
+    }
+
+    /// The FFT plans of an `mx × my` grid on the periodic `lx × ly` grid (`lx ≥ mx`, `ly ≥ my`), with no kernel.
+    fn plan_periodic(mx: usize, my: usize, lx: usize, ly: usize) -> Toeplitz2d {
         let mut planner = RealFftPlanner::<f64>::new();
         let (r2c, c2r) = (planner.plan_fft_forward(lx), planner.plan_fft_inverse(lx));
         let mut cplanner = FftPlanner::<f64>::new();
@@ -130,7 +135,31 @@ impl Toeplitz2d {
         kernel: impl Fn(usize, usize) -> f64,
     ) -> Result<Toeplitz2d, ArgumentError> {
         Toeplitz2d::check_size("Toeplitz2d::circulant_even", mx, my)?;
-        let mut op = Toeplitz2d::plan(mx, my);
+        let op = Toeplitz2d::plan(mx, my);
+        Toeplitz2d::circulant_even_periodic(op, kernel)
+    }
+
+    /// As [`Toeplitz2d::circulant_even`] on the smallest fast periodic grid that holds the `mx × my` grid once
+    /// (`Lx ≥ mx`, `Ly ≥ my`, not `2mx − 1`): Strang's circulant, whose products cut to the grid are NOT `K v` (the
+    /// far offsets wrap onto near images), but whose inverse is a cheaper preconditioner — a quarter of the FFT work.
+    ///
+    /// # Errors
+    /// As [`Toeplitz2d::new`].
+    pub fn circulant_even_compact(
+        mx: usize,
+        my: usize,
+        kernel: impl Fn(usize, usize) -> f64,
+    ) -> Result<Toeplitz2d, ArgumentError> {
+        Toeplitz2d::check_size("Toeplitz2d::circulant_even_compact", mx, my)?;
+        let (lx, ly) = (crate::toeplitz::fast_length(mx), crate::toeplitz::fast_length(my));
+        Toeplitz2d::circulant_even_periodic(Toeplitz2d::plan_periodic(mx, my, lx, ly), kernel)
+    }
+
+    /// The circulant of the even `kernel` on `op`'s periodic grid (nearest images), as its spectrum.
+    fn circulant_even_periodic(
+        mut op: Toeplitz2d,
+        kernel: impl Fn(usize, usize) -> f64,
+    ) -> Result<Toeplitz2d, ArgumentError> {
         let (lx, ly) = (op.lx, op.ly);
         let (hx, hy) = (lx / 2 + 1, ly / 2 + 1);
         let mut quadrant = Vec::with_capacity(hx * hy);

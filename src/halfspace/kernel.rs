@@ -584,6 +584,13 @@ impl UniformGrid {
         self.compliance.normal(normal_integral(x, y, 0.5 * self.dx, 0.5 * self.dy))
     }
 
+    /// `(C_xx, C_yy)` at any offset `(di, dj)`, also beyond the grid (as [`UniformGrid::normal_at`]): for the
+    /// tangential problem's FFT preconditioner.
+    pub(crate) fn tangential_at(&self, di: usize, dj: usize) -> (f64, f64) {
+        let c = self.kernel_unchecked(di as isize, dj as isize);
+        (c.xx, c.yy)
+    }
+
     fn kernel_unchecked(&self, di: isize, dj: isize) -> Coefficients {
         let n = integrals(di as f64 * self.dx, dj as f64 * self.dy, 0.5 * self.dx, 0.5 * self.dy);
         self.compliance.coefficients(&n)
