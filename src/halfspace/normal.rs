@@ -20,9 +20,10 @@
 //!
 //! **Preconditioned CG (the default)**, a bound-constrained conjugate-gradient method with an FFT preconditioner
 //! after Vollebregt (J. Comput. Phys. 257, 2014, 333–351; written from the paper's description): on the contact set
-//! `S` the residual `r = d − h − C p` (the gap's negative) is preconditioned by `M`, the inverse of the circulant
-//! embedding of `C_zz` with all its periodic images ([`super::Influence::normal_preconditioner`]: "the pressures
-//! that give unit displacement at one element", applied by FFT to `r` restricted to `S`); a CG step on `S`
+//! `S` the residual `r = d − h − C p` (the gap's negative) is preconditioned by `M`, the inverse of a circulant
+//! of `C_zz` (Strang's compact circulant of its nearest periodic images, on a periodic grid that holds the contact
+//! grid once: [`super::Influence::normal_preconditioner`]; "the pressures that give unit displacement at one
+//! element", applied by FFT to `r` restricted to `S`, a quarter of the FFT work of the product `C v`); a CG step on `S`
 //! follows (one product `C v`); negative pressures are set to zero (those elements leave `S`, and `C p` is
 //! recomputed), elements outside `S` with a negative gap join it, and conjugation restarts whenever `S` changes.
 //! Under a prescribed load the preconditioned residual is projected along `M 1_S` onto `Σ z = 0`, so every step
@@ -66,15 +67,15 @@
 //!
 //! ```text
 //!                              n = 10   20   40   80   160
-//! circle (A = B)         PCG        9   12   14   16    19
+//! circle (A = B)         PCG       10   12   14   17    19
 //!                        P–K       22   36   41   56    78
-//! ellipse (B = 8A)       PCG       15   17   19   21    24
+//! ellipse (B = 8A)       PCG       15   17   19   22    24
 //!                        P–K       33   48   69   91   122
 //! ```
 //!
 //! The preconditioned CG's count grows about as N^0.07 to N^0.12, Polonsky–Keer's as N^0.2. On CONTACT's rail–wheel series
 //! `norm_problm_1p … 8p` (approach prescribed, tolerance 1e-7; `examples/halfspace_perfc_series.rs`) the
-//! preconditioned CG takes 22, 23, 28 and 43 iterations for 3 148 to 200 980 elements in contact, Polonsky–Keer
+//! preconditioned CG takes 21, 23, 31 and 37 iterations for 3 148 to 200 980 elements in contact, Polonsky–Keer
 //! 56, 80 and 109 up to `4p`; CONTACT's own NormCG with its FFT preconditioner 27 to 31.
 
 mod pcg;
