@@ -168,7 +168,8 @@ pub enum Kernels {
 /// a quarter of the FFT work of the embedding of all images on the products' grid (`Lx ≥ 2mx − 1`,
 /// [`Toeplitz2d::circulant_even`]), and it preconditions as well: the normal PCG's iterations on Hertz's circle and
 /// the 8 : 1 ellipse at 10 … 160 elements across were 10 12 14 17 19 and 15 17 19 22 24 against 9 12 14 16 19 and
-/// 15 17 19 21 24; the tangential CG's on CONTACT's `tang_problm_1s`, `2s`, `4s` 47, 70, 150 against 47, 70, 140.
+/// 15 17 19 21 24; the tangential CG's on CONTACT's `tang_problm_1s`, `2s`, `4s` 47, 70, 150 against 47, 70, 140 (with the CG's
+/// step criterion alone, before its stop also asked for a small fresh residual).
 pub const PRECONDITIONER_FLOOR: f64 = 0.001;
 
 /// The inverse of the compact circulant of an even kernel given on one quadrant ([`PRECONDITIONER_FLOOR`]).
