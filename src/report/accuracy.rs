@@ -93,6 +93,32 @@ pub fn sections(sw: &mut Sweep, md: &mut String, figs: &mut Figs) -> Result<Vec<
     Ok(out)
 }
 
+/// The error measures of a 3D half-space sweep's rows ([`crate::sweep::Kind::Space`]): CSV column and label.
+const MEASURES_3D: &[(&str, &str)] = &[
+    ("hertz_p0_err", "peak-pressure error vs Hertz's ellipse"),
+    ("hertz_approach_err", "approach error vs Hertz's ellipse"),
+    ("cm_transfer_err", "transfer error vs Cattaneo–Mindlin (3D)"),
+];
+
+/// The fronts and recommendations of a 3D half-space sweep (a table sweep of `half_space` scenes), by the same rule
+/// as the 2D sweeps ([`front_and_cheapest`]), over its grids: per error measure it carries (a sweep with a tangential
+/// load is about the tangential problem, as in 2D: its transfer error alone), per problem. No convergence table or
+/// mesh limit: the 3D rows have no 2D element count; the swept grid keys label the discretisations.
+pub fn fronts_3d(sw: &Sweep, md: &mut String, figs: &mut Figs) -> Result<Vec<Summary>> {
+    let solved: Vec<&Row> =
+        sw.rows.iter().filter(|r| r.kind == crate::sweep::Kind::Space && r.status.solved()).collect();
+    let mut present: Vec<(&str, &str)> =
+        MEASURES_3D.iter().copied().filter(|(k, _)| solved.iter().any(|r| num(r, k).is_some())).collect();
+    if present.iter().any(|m| m.0 == "cm_transfer_err") {
+        present.retain(|m| m.0 == "cm_transfer_err");
+    }
+    let mut out = Vec::new();
+    for (err, label) in present {
+        out.extend(front_and_cheapest(sw, &solved, err, label, md, figs)?);
+    }
+    Ok(out)
+}
+
 /// The targets every recommendation table answers (relative errors).
 pub const TARGETS: [f64; 3] = [1e-2, 1e-3, 1e-4];
 
@@ -622,13 +648,9 @@ fn picks(cl: &[Class], err: &str, names: &Names) -> Vec<Pick> {
             .iter()
             .filter_map(|c| {
                 let r = chosen_solver(c, target, err, names.cost)?;
-                Some(format!(
-                    "{} {} · {} ({:.1}×)",
-                    names.discretisation(r),
-                    cell(r, "contact_elements"),
-                    names.solver(r),
-                    (names.cost)(r).time / t_best
-                ))
+                let mesh = [names.discretisation(r), cell(r, "contact_elements")];
+                let mesh: Vec<&str> = mesh.iter().map(String::as_str).filter(|s| !s.is_empty()).collect();
+                Some(format!("{} · {} ({:.1}×)", mesh.join(" "), names.solver(r), (names.cost)(r).time / t_best))
             })
             .collect();
         let chosen = Chosen {

@@ -171,7 +171,14 @@ pub fn changes(prev: &Previous, recs: &str, fronts: &str) -> String {
 /// One cell of the front page's table: `constant 50 · active_set: 8.40e-3 in 8.48e-5 s`.
 fn cell(s: &Summary, target: f64) -> String {
     match s.picks.iter().find(|p| p.target == target).and_then(|p| p.chosen.as_ref()) {
-        Some(c) => format!("{} {} · {}: {:.2e} in {:.2e} s", c.discretisation, c.elements, c.solver, c.error, c.time),
+        Some(c) => {
+            let mesh = if c.elements.is_empty() {
+                c.discretisation.clone()
+            } else {
+                format!("{} {}", c.discretisation, c.elements)
+            };
+            format!("{mesh} · {}: {:.2e} in {:.2e} s", c.solver, c.error, c.time)
+        }
         None if s.measure.starts_with("disc_") => "not resolved".into(),
         None => "not reached".into(),
     }

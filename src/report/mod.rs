@@ -380,7 +380,7 @@ fn front_page(
     let untimed: Vec<String> = parts
         .family
         .keys()
-        .filter(|f| !parts.summaries.iter().any(|(g, _)| g == *f) && **f != Family::Space3d)
+        .filter(|f| !parts.summaries.iter().any(|(g, _)| g == *f) && **f != Family::Space3d && **f != Family::Seed)
         .map(|f| format!("[{}]({})", f.short(), f.page()))
         .collect();
     if !untimed.is_empty() {
@@ -419,7 +419,8 @@ fn front_page_tail(
     if !loose.is_empty() {
         writeln!(
             md,
-            "\nCompared with their theories without a declared tolerance (the differences are on their pages): {}.",
+            "\nAlso compared with their theories, without a declared tolerance (the differences are on their pages): \
+             {}.",
             loose.join(", ")
         )
         .unwrap();
@@ -597,6 +598,8 @@ fn sweeps(
             }
             Analysis::Table => {
                 space::table(&sw, &mut md);
+                let s = accuracy::fronts_3d(&sw, &mut md, &mut sink)?;
+                summaries.extend(s.into_iter().map(|x| (Family::Space3d, x)));
                 Family::Space3d
             }
         };
