@@ -322,6 +322,33 @@ fn check_links(out: &Path) {
             assert!(p.exists(), "{}: link to {target} does not resolve", page.display());
         }
     }
+    // The HTML site: one file per page, every href resolving, the figures inline.
+    let mut html = Vec::new();
+    let mut stack = vec![out.join("html")];
+    while let Some(d) = stack.pop() {
+        for e in std::fs::read_dir(&d).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+            } else {
+                html.push(p);
+            }
+        }
+    }
+    assert!(html.iter().any(|p| p.ends_with("html/index.html")), "{html:?}");
+    for page in html {
+        let text = read(&page);
+        for part in text.split("href=\"").skip(1) {
+            let target = part[..part.find('"').unwrap()].split('#').next().unwrap();
+            if target.is_empty() || target.starts_with("http") {
+                continue;
+            }
+            let p = page.parent().unwrap().join(target);
+            assert!(p.exists(), "{}: link to {target} does not resolve", page.display());
+        }
+    }
+    let index = read(&out.join("html/index.html"));
+    assert!(index.contains("<figure><svg"), "the front page's figure is inline");
 }
 
 /// `rollbem report` run twice: files planted between the runs in the folders it owns are gone, a file the folder's

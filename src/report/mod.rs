@@ -6,8 +6,13 @@
 //! - SVG plots (plotters, [`crate::plot`]): accuracy against time for Hertz and Cattaneo–Mindlin per element kind
 //!   and solver, convergence under mesh refinement with observed orders, and the seed's figures (tractions against
 //!   x with the analytic curves, stick/slip/separation maps, slip velocity for several μ).
-//! - `README.md`: the summary a reader uses to choose a method for a given accuracy: Pareto fronts, the cheapest
-//!   configuration reaching 1 %, 0.1 % and 0.01 %, observed orders, the solver comparison table, links.
+//! - `README.md`, the front page ([`front`]): per problem family and target (1e-2, 1e-3, 1e-4) the recommended
+//!   method and its time, one figure of every Pareto front, the verification scoreboard, what changed since the
+//!   previous run; `families/NAME.md` (one page per problem family: the sweeps' fronts, recommendations, observed
+//!   orders, the load paths, the stresses, the seed's figures), `peers/NAME.md`, `methods.md`, `solvers.md`; the
+//!   same pages as HTML under `html/` ([`html`]); `recommendations.csv` and `fronts.csv`, the front page's data;
+//!   `MANIFEST`, every file written. Files a previous run left and this one did not write are removed
+//!   ([`pages::clean`]).
 //!
 //! Everything is deterministic except the timings (and the plots and tables drawn from them): the machine is
 //! noisy, sweeps run cases in parallel, so read times as ratios.
@@ -28,6 +33,7 @@ use std::path::{Path, PathBuf};
 mod accuracy;
 mod friction3d;
 mod front;
+mod html;
 mod pages;
 mod paths;
 mod physics;
@@ -181,7 +187,7 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
     let (scenes, specs) = read_inputs(opts)?;
     let previous = front::Previous::read(out);
     let previous_files = pages::previous_manifest(out);
-    for d in ["", "runs", "sweeps", "figures", "families", "peers"] {
+    for d in ["", "runs", "sweeps", "figures", "families", "peers", "html/families", "html/peers"] {
         let d = out.join(d);
         std::fs::create_dir_all(&d).map_err(|source| Error::Write { path: d.clone(), source })?;
     }
@@ -207,6 +213,7 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
         let depth = file.matches('/').count();
         write_atomic(&out.join(file), &pages::relink(md, depth))?;
         written.add(out, file);
+        written.add(out, html::write_page(out, file, md)?);
     }
     for (file, text) in [(front::RECOMMENDATIONS, &recs), (front::FRONTS, &fronts)] {
         write_atomic(&out.join(file), text)?;

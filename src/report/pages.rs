@@ -98,7 +98,7 @@ pub fn relink(md: &str, depth: usize) -> String {
 pub const DECLARED_INPUTS: [&str; 3] = ["peer-lcp.md", "peer-contact.md", "peer-contact3d.md"];
 
 /// The sub-folders the report owns: every file in them that a run did not write is removed by [`clean`].
-pub const OWNED_FOLDERS: [&str; 5] = ["runs", "sweeps", "figures", "families", "peers"];
+pub const OWNED_FOLDERS: [&str; 6] = ["runs", "sweeps", "figures", "families", "peers", "html"];
 
 /// The manifest's file name (in the output folder): every file the last run wrote, one relative path a line.
 pub const MANIFEST: &str = "MANIFEST";
