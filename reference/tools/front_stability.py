@@ -43,7 +43,8 @@ def tables_of_page(path, out):
     """Add the tables of one page to `out`."""
     sweep = measure = problem = kind = None
     for line in open(path, encoding="utf-8"):
-        line = line.rstrip("\n")
+        # Links on a family page are relative to it (`](../sweeps/…)`): the same heading as on a single page.
+        line = line.rstrip("\n").replace("](../", "](")
         if line.startswith("### "):
             sweep, measure, problem, kind = line, None, None, None
         elif line.startswith("#### "):

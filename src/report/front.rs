@@ -107,63 +107,87 @@ impl Previous {
     }
 }
 
-/// A recommendation row's identity (family, sweep, measure, problem, target) and its choice (discretisation,
-/// solver, elements): what a change of recommendation changes. Times are left out (they differ between runs by
+/// A recommendation row's identity (sweep, measure, problem, target) and its choice (discretisation, elements,
+/// solver, or `none`): what a change of recommendation changes. Times are left out (they differ between runs by
 /// construction).
 fn rec_key(r: &[String]) -> (String, String) {
-    (format!("{} · {} ({}) at {}", r[1], r[3], r[4], r[5]).replace(" ()", ""), format!("{} {} · {}", r[6], r[8], r[7]))
+    let problem = if r[4].is_empty() { String::new() } else { format!(" ({})", r[4]) };
+    let choice = if r[7] == "none" {
+        "none".to_string()
+    } else {
+        let mesh = [r[6].as_str(), r[8].as_str()].iter().filter(|x| !x.is_empty()).copied().collect::<Vec<_>>();
+        format!("{} · {}", mesh.join(" "), r[7])
+    };
+    (format!("{} · {}{problem} at {}", r[1], r[3], r[5]), choice)
+}
+
+/// How many changed recommendations or fronts the front page lists by name (the rest are counted).
+const LISTED: usize = 8;
+
+fn parse(t: &str) -> Vec<Vec<String>> {
+    csv::Reader::from_reader(t.as_bytes())
+        .records()
+        .filter_map(|r| r.ok().map(|x| x.iter().map(str::to_string).collect()))
+        .collect()
+}
+
+/// Up to [`LISTED`] lines, then how many more.
+fn listed(md: &mut String, lines: &[String]) {
+    for l in lines.iter().take(LISTED) {
+        writeln!(md, "- {l}").unwrap();
+    }
+    if lines.len() > LISTED {
+        writeln!(md, "- and {} more", lines.len() - LISTED).unwrap();
+    }
 }
 
 /// The "what changed" section: recommendations and front memberships (errors, not times) against the previous
 /// report's CSVs; says so when there are none.
 pub fn changes(prev: &Previous, recs: &str, fronts: &str) -> String {
     let mut md = String::from("## What changed since the last report\n\n");
-    let parse = |t: &str| -> Vec<Vec<String>> {
-        csv::Reader::from_reader(t.as_bytes())
-            .records()
-            .filter_map(|r| r.ok().map(|x| x.iter().map(str::to_string).collect()))
-            .collect()
-    };
     let Some(old) = &prev.recommendations else {
         md.push_str(
             "First report with a `recommendations.csv` in this folder: there is no earlier one to compare with.\n",
         );
         return md;
     };
-    let new = parse(recs);
     let old: BTreeMap<String, String> =
         old.iter().filter(|r| r.len() == REC_HEADER.len()).map(|r| rec_key(r)).collect();
-    let new: BTreeMap<String, String> = new.iter().map(|r| rec_key(r)).collect();
-    let moved: Vec<String> = new
-        .iter()
-        .filter_map(|(k, v)| match old.get(k) {
-            Some(o) if o != v => Some(format!("- {k}: {o} → {v}")),
-            None => Some(format!("- {k}: new, {v}")),
-            _ => None,
-        })
-        .chain(old.keys().filter(|k| !new.contains_key(*k)).map(|k| format!("- {k}: no longer computed")))
-        .collect();
+    let new: BTreeMap<String, String> = parse(recs).iter().map(|r| rec_key(r)).collect();
+    let moved: Vec<String> =
+        new.iter().filter_map(|(k, v)| old.get(k).filter(|o| *o != v).map(|o| format!("{k}: {o} → {v}"))).collect();
     let same = new.iter().filter(|(k, v)| old.get(*k) == Some(*v)).count();
-    writeln!(md, "Recommendations: {same} of {} unchanged (discretisation, elements and solver).", new.len()).unwrap();
-    for m in &moved {
-        writeln!(md, "{m}").unwrap();
-    }
-    let key = |r: &Vec<String>| format!("{} · {} {}", r[0], r[1], r[2]);
-    let members = |rows: &[Vec<String>]| {
-        let mut m: BTreeMap<String, Vec<String>> = BTreeMap::new();
-        for r in rows.iter().filter(|r| r.len() == 5) {
-            m.entry(key(r)).or_default().push(r[3].clone());
-        }
-        m
-    };
+    let added = new.keys().filter(|k| !old.contains_key(*k)).count();
+    let gone = old.keys().filter(|k| !new.contains_key(*k)).count();
+    writeln!(
+        md,
+        "Recommendations (discretisation, elements and solver; times left out): {same} unchanged, {} changed, \
+         {added} new, {gone} no longer computed.",
+        moved.len()
+    )
+    .unwrap();
+    listed(&mut md, &moved);
     if let Some(old_fronts) = &prev.fronts {
+        let members = |rows: &[Vec<String>]| {
+            let mut m: BTreeMap<String, Vec<String>> = BTreeMap::new();
+            for r in rows.iter().filter(|r| r.len() == 5) {
+                let problem = if r[2].is_empty() { String::new() } else { format!(" ({})", r[2]) };
+                m.entry(format!("{} · {}{problem}", r[0], r[1])).or_default().push(r[3].clone());
+            }
+            m
+        };
         let (a, b) = (members(old_fronts), members(&parse(fronts)));
-        let differ: Vec<&String> = b.keys().filter(|k| a.get(*k) != b.get(*k)).collect();
-        writeln!(md, "\nFronts (entries' errors; times masked): {} of {} identical.", b.len() - differ.len(), b.len())
-            .unwrap();
-        for k in differ {
-            writeln!(md, "- {k} moved").unwrap();
-        }
+        let differ: Vec<String> =
+            b.keys().filter(|k| a.get(*k).is_some_and(|v| Some(v) != b.get(*k))).cloned().collect();
+        let added = b.keys().filter(|k| !a.contains_key(*k)).count();
+        let same = b.len() - differ.len() - added;
+        writeln!(
+            md,
+            "\nPareto fronts (their entries' errors; times left out): {same} identical, {} moved, {added} new.",
+            differ.len()
+        )
+        .unwrap();
+        listed(&mut md, &differ);
     }
     md
 }

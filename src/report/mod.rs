@@ -435,7 +435,8 @@ fn front_page_tail(
     if !peers.is_empty() {
         writeln!(
             md,
-            "\nPeers (measured by their scripts, which declare no tolerance; the pages show the agreement):\n"
+            "\nPeers, measured by their scripts (`benches/peer/`), which declare no pass/fail tolerance for the \
+             agreement with rollbem: each page shows the differences it measured.\n"
         )
         .unwrap();
         for (page, title, _) in peers {
