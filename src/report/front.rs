@@ -147,7 +147,8 @@ pub fn changes(prev: &Previous, recs: &str, fronts: &str) -> String {
     let mut md = String::from("## What changed since the last report\n\n");
     let Some(old) = &prev.recommendations else {
         md.push_str(
-            "First report with a `recommendations.csv` in this folder: there is no earlier one to compare with.\n",
+            "First report with a `recommendations.csv` in this folder (no earlier run wrote one here): nothing to \
+             compare with.\n",
         );
         return md;
     };
