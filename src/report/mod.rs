@@ -6,13 +6,13 @@
 //! - SVG plots (plotters, [`crate::plot`]): accuracy against time for Hertz and Cattaneo–Mindlin per element kind
 //!   and solver, convergence under mesh refinement with observed orders, and the seed's figures (tractions against
 //!   x with the analytic curves, stick/slip/separation maps, slip velocity for several μ).
-//! - `README.md`, the front page ([`front`]): per problem family and target (1e-2, 1e-3, 1e-4) the recommended
+//! - `README.md`, the front page (`report/front.rs`): per problem family and target (1e-2, 1e-3, 1e-4) the recommended
 //!   method and its time, one figure of every Pareto front, the verification scoreboard, what changed since the
 //!   previous run; `families/NAME.md` (one page per problem family: the sweeps' fronts, recommendations, observed
 //!   orders, the load paths, the stresses, the seed's figures), `peers/NAME.md`, `methods.md`, `solvers.md`; the
-//!   same pages as HTML under `html/` ([`html`]); `recommendations.csv` and `fronts.csv`, the front page's data;
+//!   same pages as HTML under `html/` (`report/html.rs`); `recommendations.csv` and `fronts.csv`, the front page's data;
 //!   `MANIFEST`, every file written. Files a previous run left and this one did not write are removed
-//!   ([`pages::clean`]).
+//!   (`report/pages.rs`).
 //!
 //! Everything is deterministic except the timings (and the plots and tables drawn from them): the machine is
 //! noisy, sweeps run cases in parallel, so read times as ratios.
@@ -181,7 +181,7 @@ struct Parts {
 
 /// Regenerate everything; returns the path of the front page. Reads the previous run's CSVs and manifest first,
 /// writes the pages, CSVs and figures, then removes what the previous run left that this one did not write
-/// ([`pages::clean`]; the files it lists but leaves are named on standard error).
+/// (`report/pages.rs`; the files it lists but leaves are named on standard error).
 pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
     let out = &opts.out;
     let (scenes, specs) = read_inputs(opts)?;
