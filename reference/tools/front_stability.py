@@ -5,6 +5,10 @@ Usage:
     for x in a b; do rollbem report --out /tmp/rep-$x; done
     python3 reference/tools/front_stability.py /tmp/rep-a/README.md /tmp/rep-b/README.md
 
+A report's front page (README.md) links one page per problem family (families/*.md), which holds the sweeps' fronts
+and recommendation tables: the README given and every families/*.md beside it are read (a report from before the
+split has everything in its README).
+
 For every (sweep, error measure, problem) it extracts the front (discretisation, elements, error, solvers with this
 answer) and the recommendations (target, recommended, solver, elements, error, alternatives), drops every time and time
 ratio, and
@@ -12,7 +16,9 @@ reports per pair of reports how many fronts and recommendation tables are identi
 Exit status 0 when all are identical, 1 otherwise. This is how the front's stability was measured (issue 12): the
 times differ between runs by construction; membership and recommendations must not.
 """
+import glob
 import itertools
+import os
 import re
 import sys
 
@@ -20,12 +26,25 @@ TIME = re.compile(r" [0-9.]+e-?[0-9]+ s")
 RATIO = re.compile(r" \([0-9.]+×\)")
 
 
+def pages(path):
+    """The report's pages: its README and the family pages beside it."""
+    return [path] + sorted(glob.glob(os.path.join(os.path.dirname(path), "families", "*.md")))
+
+
 def tables(path):
-    """{(sweep, measure, problem, kind): [row tuples]} of one report README."""
+    """{(sweep, measure, problem, kind): [row tuples]} of one report (README and family pages)."""
     out = {}
+    for page in pages(path):
+        tables_of_page(page, out)
+    return out
+
+
+def tables_of_page(path, out):
+    """Add the tables of one page to `out`."""
     sweep = measure = problem = kind = None
     for line in open(path, encoding="utf-8"):
-        line = line.rstrip("\n")
+        # Links on a family page are relative to it (`](../sweeps/…)`): the same heading as on a single page.
+        line = line.rstrip("\n").replace("](../", "](")
         if line.startswith("### "):
             sweep, measure, problem, kind = line, None, None, None
         elif line.startswith("#### "):
@@ -34,7 +53,7 @@ def tables(path):
             problem, kind = line, None
         elif line.startswith("Pareto front:"):
             kind = "front"
-        elif line.startswith(("Cheapest configurations", "Recommended configuration")):
+        elif line.startswith(("Cheapest configurations", "Recommended configuration", "Recommended (")):
             kind = "recommendations"
         elif kind and line.startswith("| ") and not line.startswith(("| discretisation", "| target")):
             cells = [c.strip() for c in line.strip("|").split("|")]
@@ -47,7 +66,6 @@ def tables(path):
             out.setdefault((sweep, measure, problem, kind), []).append(row)
         elif kind and line and not line.startswith("|"):
             kind = None
-    return out
 
 
 def main(paths):

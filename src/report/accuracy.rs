@@ -66,8 +66,9 @@ fn is_discretisation(err: &str) -> bool {
 /// The accuracy sections of one sweep. On the finite wheel an error against a half-space theory converges to the
 /// model error, not to zero: there the fronts and recommendations are made on the discretisation errors (against
 /// each series' own mesh limit), and the errors against theory are shown against the mesh without an observed order.
-pub fn sections(sw: &mut Sweep, md: &mut String, figs: &mut Figs) -> Result<()> {
+pub fn sections(sw: &mut Sweep, md: &mut String, figs: &mut Figs) -> Result<Vec<Summary>> {
     let richardson = discretisation_errors(sw, md);
+    let mut out = Vec::new();
     let solved: Vec<&Row> = sw.rows.iter().filter(|r| r.status.solved()).collect();
     let failed = sw.rows.len() - solved.len();
     if failed > 0 {
@@ -81,7 +82,7 @@ pub fn sections(sw: &mut Sweep, md: &mut String, figs: &mut Figs) -> Result<()> 
     let present: Vec<(&str, &str)> =
         MEASURES.iter().copied().filter(|(k, _)| solved.iter().any(|r| num(r, k).is_some())).collect();
     for (err, label) in present.iter().filter(|(k, _)| !richardson || is_discretisation(k)) {
-        front_and_cheapest(sw, &solved, err, label, md, figs)?;
+        out.extend(front_and_cheapest(sw, &solved, err, label, md, figs)?);
     }
     if let Some(&(err, label)) = present.iter().find(|(k, _)| !is_discretisation(k)) {
         convergence(sw, &solved, err, label, !richardson, md, figs)?;
@@ -89,7 +90,85 @@ pub fn sections(sw: &mut Sweep, md: &mut String, figs: &mut Figs) -> Result<()> 
     for &(err, label) in present.iter().filter(|(k, _)| is_discretisation(k)) {
         convergence(sw, &solved, err, label, true, md, figs)?;
     }
-    Ok(())
+    Ok(out)
+}
+
+/// The error measures of a 3D half-space sweep's rows ([`crate::sweep::Kind::Space`]): CSV column and label.
+const MEASURES_3D: &[(&str, &str)] = &[
+    ("hertz_p0_err", "peak-pressure error vs Hertz's ellipse"),
+    ("hertz_approach_err", "approach error vs Hertz's ellipse"),
+    ("cm_transfer_err", "transfer error vs Cattaneo–Mindlin (3D)"),
+];
+
+/// The fronts and recommendations of a 3D half-space sweep (a table sweep of `half_space` scenes), by the same rule
+/// as the 2D sweeps ([`front_and_cheapest`]), over its grids: per error measure it carries (a sweep with a tangential
+/// load is about the tangential problem, as in 2D: its transfer error alone), per problem. No convergence table or
+/// mesh limit: the 3D rows have no 2D element count; the swept grid keys label the discretisations.
+pub fn fronts_3d(sw: &Sweep, md: &mut String, figs: &mut Figs) -> Result<Vec<Summary>> {
+    let solved: Vec<&Row> =
+        sw.rows.iter().filter(|r| r.kind == crate::sweep::Kind::Space && r.status.solved()).collect();
+    let mut present: Vec<(&str, &str)> =
+        MEASURES_3D.iter().copied().filter(|(k, _)| solved.iter().any(|r| num(r, k).is_some())).collect();
+    if present.iter().any(|m| m.0 == "cm_transfer_err") {
+        present.retain(|m| m.0 == "cm_transfer_err");
+    }
+    let mut out = Vec::new();
+    for (err, label) in present {
+        out.extend(front_and_cheapest(sw, &solved, err, label, md, figs)?);
+    }
+    Ok(out)
+}
+
+/// The targets every recommendation table answers (relative errors).
+pub const TARGETS: [f64; 3] = [1e-2, 1e-3, 1e-4];
+
+/// What one (sweep, error measure, problem) table says, as data: its Pareto front and its recommendation per
+/// target. The Markdown tables of the detail pages are written from these values, and so are the front page and
+/// `recommendations.csv`: one computation, three renderings.
+#[derive(Debug, Clone)]
+pub struct Summary {
+    /// The sweep's `name`.
+    pub sweep: String,
+    /// The error measure's CSV column (`hertz_l2_err`).
+    pub measure: String,
+    /// The error measure's label (`L2 pressure error vs Hertz`).
+    pub label: String,
+    /// The problem within the sweep (`friction 0.3`), empty when the sweep poses one.
+    pub problem: String,
+    /// The front, fastest first: (total time in seconds, relative error).
+    pub front: Vec<(f64, f64)>,
+    /// One per [`TARGETS`] entry, in that order.
+    pub picks: Vec<Pick>,
+}
+
+/// The recommendation for one target error.
+#[derive(Debug, Clone)]
+pub struct Pick {
+    /// The target (relative error).
+    pub target: f64,
+    /// The configuration, or `None` when no entry reaches the target.
+    pub chosen: Option<Chosen>,
+    /// Why there is none (empty when there is one).
+    pub why: String,
+}
+
+/// A recommended configuration: what the detail page's row shows.
+#[derive(Debug, Clone)]
+pub struct Chosen {
+    /// The discretisation's label (`constant`, `quadratic`).
+    pub discretisation: String,
+    /// The solver configuration's label (`active_set`, `pgs · τ 1e-8`).
+    pub solver: String,
+    /// Contact elements.
+    pub elements: String,
+    /// The chosen solver's own error (relative).
+    pub error: f64,
+    /// Its total time, seconds (median; [`Cost`]).
+    pub time: f64,
+    /// Its time with spread, as the table prints it.
+    pub time_text: String,
+    /// The other front entries reaching the target, with their time ratios.
+    pub alternatives: Vec<String>,
 }
 
 /// Whether a swept key (or a series column) chooses the method — the mesh, the solver and its settings — rather than
@@ -238,7 +317,7 @@ fn front_and_cheapest(
     label: &str,
     md: &mut String,
     figs: &mut Figs,
-) -> Result<()> {
+) -> Result<Vec<Summary>> {
     let rows: Vec<&Row> = solved.iter().copied().filter(|r| num(r, err).is_some() && r.t_total.is_some()).collect();
     let by_row = costs(sw, &rows);
     let cost = |r: &Row| by_row[&(r as *const Row)];
@@ -281,15 +360,24 @@ fn front_and_cheapest(
         .unwrap();
     }
     let names = Names { sw, disc_keys: &disc_keys, solver_keys: &solver_keys, cost: &cost };
+    let mut out = Vec::new();
     for (problem, rows) in &problems {
         if problems.len() > 1 {
             writeln!(md, "##### {problem}\n").unwrap();
         }
         let cl = classes(sw, rows, err, &cost);
-        front_table(&cl, &names, md);
-        cheapest_table(&cl, err, &names, md);
+        let front = front_table(&cl, &names, md);
+        let picks = cheapest_table(&cl, err, &names, md);
+        out.push(Summary {
+            sweep: sw.name.clone(),
+            measure: err.to_string(),
+            label: label.to_string(),
+            problem: if problems.len() > 1 { problem.clone() } else { String::new() },
+            front,
+            picks,
+        });
     }
-    Ok(())
+    Ok(out)
 }
 
 /// Table rows `(series, cells)` with identical cells merged into one row naming every series (solvers that return
@@ -455,8 +543,8 @@ fn elements(r: &Row) -> f64 {
     r.contact_elements.map(|n| n as f64).unwrap_or(f64::INFINITY)
 }
 
-/// The Pareto front of one problem, fastest first.
-fn front_table(cl: &[Class], names: &Names, md: &mut String) {
+/// The Pareto front of one problem, fastest first; returns its (time, error) points in that order.
+fn front_table(cl: &[Class], names: &Names, md: &mut String) -> Vec<(f64, f64)> {
     let cost = names.cost;
     let all: Vec<&Class> = cl.iter().collect();
     let mut front = pareto_front(&all, cost);
@@ -485,10 +573,12 @@ fn front_table(cl: &[Class], names: &Names, md: &mut String) {
         .unwrap();
     }
     writeln!(md).unwrap();
+    front.iter().map(|c| (cost(c.fastest).time, c.error)).collect()
 }
 
-/// The cheapest configuration of one problem per target error, with the other front entries reaching it.
-fn cheapest_table(cl: &[Class], err: &str, names: &Names, md: &mut String) {
+/// The cheapest configuration of one problem per target error, with the other front entries reaching it: computed
+/// ([`picks`]) and written as the detail page's table. Returns the picks.
+fn cheapest_table(cl: &[Class], err: &str, names: &Names, md: &mut String) -> Vec<Pick> {
     // The preference order of the solvers this problem ran, not of every solver rollbem has.
     let mut present: Vec<&Row> = cl.iter().flat_map(|c| c.members.iter().copied()).collect();
     present.sort_by(|a, b| preference(a).cmp(&preference(b)).then(a.solver.as_str().cmp(b.solver.as_str())));
@@ -500,9 +590,40 @@ fn cheapest_table(cl: &[Class], err: &str, names: &Names, md: &mut String) {
         "| target | recommended | solver | elements | error | total time [s] | alternatives |\n|---|---|---|---|---|---|---|"
     )
     .unwrap();
+    let picks = picks(cl, err, names);
+    for (t, p) in picks.iter().enumerate() {
+        let Some(c) = &p.chosen else {
+            if cl.iter().all(|c| c.error > p.target) {
+                // No entry reaches it, so none reaches a smaller target either: one row says it for all.
+                let rest: Vec<String> = TARGETS[t..].iter().map(|v| format!("{v:.0e}")).collect();
+                writeln!(md, "| {} | {} | | | | | |", rest.join(", "), p.why).unwrap();
+                break;
+            }
+            writeln!(md, "| {:.0e} | {} | | | | | |", p.target, p.why).unwrap();
+            continue;
+        };
+        writeln!(
+            md,
+            "| {:.0e} | {} | {} | {} | {:.2e} | {} | {} |",
+            p.target,
+            c.discretisation,
+            c.solver,
+            c.elements,
+            c.error,
+            c.time_text,
+            if c.alternatives.is_empty() { "–".into() } else { c.alternatives.join(", ") }
+        )
+        .unwrap();
+    }
+    writeln!(md).unwrap();
+    picks
+}
+
+/// The recommendation of one problem for every entry of [`TARGETS`] ([`recommend`] on the entries reaching it).
+fn picks(cl: &[Class], err: &str, names: &Names) -> Vec<Pick> {
     let smallest = cl.iter().map(|c| c.error).fold(f64::INFINITY, f64::min);
-    const TARGETS: [f64; 3] = [1e-2, 1e-3, 1e-4];
-    for (t, target) in TARGETS.into_iter().enumerate() {
+    let mut out = Vec::new();
+    for target in TARGETS {
         let reach: Vec<&Class> = cl.iter().filter(|c| c.error <= target).collect();
         let Some((best, solver, mut others)) = recommend(&reach, target, err, names) else {
             let why = if err.starts_with("disc_") {
@@ -513,13 +634,7 @@ fn cheapest_table(cl: &[Class], err: &str, names: &Names, md: &mut String) {
             } else {
                 format!("not reached by this sweep (smallest error {smallest:.2e})")
             };
-            if reach.is_empty() {
-                // No entry reaches it, so none reaches a smaller target either: one row says it for all.
-                let rest: Vec<String> = TARGETS[t..].iter().map(|v| format!("{v:.0e}")).collect();
-                writeln!(md, "| {} | {why} | | | | | |", rest.join(", ")).unwrap();
-                break;
-            }
-            writeln!(md, "| {target:.0e} | {why} | | | | | |").unwrap();
+            out.push(Pick { target, chosen: None, why });
             continue;
         };
         others.sort_by(|a, b| {
@@ -529,32 +644,27 @@ fn cheapest_table(cl: &[Class], err: &str, names: &Names, md: &mut String) {
                 .then(names.discretisation(a.fastest).cmp(&names.discretisation(b.fastest)))
         });
         let t_best = (names.cost)(solver).time;
-        let others: Vec<String> = others
+        let alternatives: Vec<String> = others
             .iter()
             .filter_map(|c| {
                 let r = chosen_solver(c, target, err, names.cost)?;
-                Some(format!(
-                    "{} {} · {} ({:.1}×)",
-                    names.discretisation(r),
-                    cell(r, "contact_elements"),
-                    names.solver(r),
-                    (names.cost)(r).time / t_best
-                ))
+                let mesh = [names.discretisation(r), cell(r, "contact_elements")];
+                let mesh: Vec<&str> = mesh.iter().map(String::as_str).filter(|s| !s.is_empty()).collect();
+                Some(format!("{} · {} ({:.1}×)", mesh.join(" "), names.solver(r), (names.cost)(r).time / t_best))
             })
             .collect();
-        writeln!(
-            md,
-            "| {target:.0e} | {} | {} | {} | {:.2e} | {} | {} |",
-            names.discretisation(best.fastest),
-            names.solver(solver),
-            cell(best.fastest, "contact_elements"),
-            num(solver, err).unwrap_or(best.error),
-            names.time(solver),
-            if others.is_empty() { "–".into() } else { others.join(", ") }
-        )
-        .unwrap();
+        let chosen = Chosen {
+            discretisation: names.discretisation(best.fastest),
+            solver: names.solver(solver),
+            elements: cell(best.fastest, "contact_elements"),
+            error: num(solver, err).unwrap_or(best.error),
+            time: t_best,
+            time_text: names.time(solver),
+            alternatives,
+        };
+        out.push(Pick { target, chosen: Some(chosen), why: String::new() });
     }
-    writeln!(md).unwrap();
+    out
 }
 
 /// Error against the mesh per series, with the least-squares order over all meshes and its standard error when the
@@ -611,6 +721,23 @@ fn convergence(
         figs.save(&chart, &format!("{}-{err}-vs-mesh.svg", sw.stem), format!("{}: {label} against mesh", sw.name))?;
     writeln!(md, "\n![{label} against mesh]({file})\n").unwrap();
     Ok(())
+}
+
+/// How a converged-mesh limit is estimated and what the discretisation and model errors are: said once, on the
+/// methods page (every finite-wheel accuracy sweep links to it).
+pub fn richardson_method() -> String {
+    format!(
+        "For each series a quantity's values on its three finest meshes give its converged-mesh limit x∞: when they \
+         converge monotonically (two changes of one sign, the second smaller), by Richardson extrapolation \
+         x(n) = x∞ + C n^(−p) through the three, with uncertainty {RICHARDSON_SAFETY}·|x∞ − x_finest| (the grid \
+         convergence index's safety factor); otherwise (oscillating, or changes not yet shrinking) x∞ is the finest \
+         mesh's value with the larger of the two changes as uncertainty. The discretisation error of a run is its \
+         distance to its series' x∞ (what a finer mesh buys), reported only where it exceeds that uncertainty; x∞ \
+         against the theory is the model error (what no mesh buys: the finite wheel is not a half-space) for the \
+         direct solvers (lemke, lemke_dense, active_set, clarabel), exact on the discrete problem, and model plus \
+         solver error for an iterative solver at a finite tolerance; where it is within the uncertainty it is not \
+         resolved and only its bound is given.\n"
+    )
 }
 
 /// The range of orders [`extrapolate`] searches (a 0.01 grid from `P_MIN` to `P_MAX`).
@@ -709,16 +836,8 @@ fn discretisation_errors(sw: &mut Sweep, md: &mut String) -> bool {
     let names: Vec<&str> = present.iter().map(|q| q.3).collect();
     writeln!(
         md,
-        "Discretisation error and model error, separated ({}). For each series a quantity's values on its three \
-         finest meshes give its converged-mesh limit x∞: when they converge monotonically (two changes of one sign, \
-         the second smaller), by Richardson extrapolation x(n) = x∞ + C n^(−p) through the three, with uncertainty \
-         {RICHARDSON_SAFETY}·|x∞ − x_finest| (the grid convergence index's safety factor); otherwise (oscillating, or \
-         changes not yet shrinking) x∞ is the finest mesh's value with the larger of the two changes as uncertainty. \
-         The discretisation error of a run is its distance to its series' x∞ (what a finer mesh buys), reported only \
-         where it exceeds that uncertainty; x∞ against the theory is the model error (what no mesh buys: the finite \
-         wheel is not a half-space) for the direct solvers (lemke, lemke_dense, active_set, clarabel), exact on the \
-         discrete problem, and model plus solver error for an iterative solver at a finite tolerance; where it is \
-         within the uncertainty it is not resolved and only its bound is given.\n",
+        "Discretisation error and model error, separated ({}): each series' converged-mesh limit x∞ and its distance \
+         to the theory ([how](methods.md#converged-mesh-limits)).\n",
         names.join(", ")
     )
     .unwrap();

@@ -29,8 +29,18 @@ struct Line {
     seconds: f64,
 }
 
-/// Append the section to `md`.
-pub(super) fn section(md: &mut String) -> Result<()> {
+/// What the section found, for the front page: every formulation as (name, total-force error of μP, seconds), and
+/// per target of [`super::accuracy::TARGETS`] the fastest formulation within it ([`fastest_within`], the rule the
+/// section's own sentence uses), as an index into `lines`.
+pub(super) struct Found {
+    /// (name, force error, seconds) per formulation, in the table's order.
+    pub lines: Vec<(String, f64, f64)>,
+    /// (target, the fastest line within it).
+    pub picks: Vec<(f64, Option<usize>)>,
+}
+
+/// Append the section to `md`; returns what it found.
+pub(super) fn section(md: &mut String) -> Result<Found> {
     let (e, nu, c) = (210e3, 0.3, 0.05);
     let body = HalfSpace::new(e, nu)?;
     let hertz = Hertz3D::from_load(c, c, e / (2.0 * (1.0 - nu * nu)), LOAD).ok_or_else(|| {
@@ -75,7 +85,16 @@ pub(super) fn section(md: &mut String) -> Result<()> {
         lines.push(from(format!("pyramid, k = {k}, Lemke"), &s));
     }
     write_section(md, &lines, dense.contact().len());
-    Ok(())
+    let picks = super::accuracy::TARGETS
+        .iter()
+        .map(|&t| (t, fastest_within(&lines, t).and_then(|b| lines.iter().position(|l| std::ptr::eq(l, b)))))
+        .collect();
+    Ok(Found { lines: lines.iter().map(|l| (l.name.clone(), l.force_err, l.seconds)).collect(), picks })
+}
+
+/// The fastest formulation whose total force is within `target` of μP.
+fn fastest_within(lines: &[Line], target: f64) -> Option<&Line> {
+    lines.iter().filter(|l| l.force_err <= target).min_by(|a, b| a.seconds.total_cmp(&b.seconds))
 }
 
 /// The table, the pyramid's fitted order and the verdict at 1e-3 of μP.
@@ -115,7 +134,7 @@ fn write_section(md: &mut String, lines: &[Line], in_contact: usize) {
         .unwrap();
     }
     let target = 1e-3;
-    match lines.iter().filter(|l| l.force_err <= target).min_by(|a, b| a.seconds.total_cmp(&b.seconds)) {
+    match fastest_within(lines, target) {
         Some(best) => writeln!(
             md,
             "Of the formulations whose total force is within {target:.0e} of μP, the fastest here is {} ({:.1e} s).\n",
