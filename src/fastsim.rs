@@ -1,0 +1,430 @@
+//! FASTSIM: Kalker's fast algorithm for the simplified theory of steady rolling contact (J.J. Kalker, "A fast
+//! algorithm for the simplified theory of rolling contact", Vehicle System Dynamics 11 (1982) 1–13), for an elliptic
+//! contact of semi-axes a (along the rolling direction x) and b (lateral y), with the grid, the variants and the
+//! conventions of CONTACT (E.A.H. Vollebregt's program, module 3 with M = 3, T = 3, B = 2 or 3) so that its output
+//! can be reproduced (tests/fastsim.rs).
+//!
+//! # Conventions (CONTACT's)
+//!
+//! * Units: any consistent set (CONTACT's are mm, N, N/mm²). Creepages ξ, η are dimensionless, the spin φ is in
+//!   rad/length.
+//! * Creepages are those **of body 1 relative to body 2**: the rigid slip per unit rolled distance is
+//!   `w(x, y) = (ξ − φ y, η + φ x)`. Tractions (px, py) and forces act **on body 1**; pn > 0 is compression.
+//!   A positive ξ thus gives a negative Fx: `Fx ≈ −G c² C11 ξ` at small creepage (c = √(ab)).
+//! * The contact rolls along +x ([`Direction::PlusX`], CONTACT's χ = 0: material enters the contact at its leading
+//!   edge x = +a(y) and leaves at −a(y)) or along −x ([`Direction::MinusX`], χ = 180°).
+//! * `Mz = Σ (x py − y px) dx dy` about the ellipse's centre (counter-clockwise seen from +z positive).
+//!
+//! # The simplified theory and the marching
+//!
+//! The simplified theory replaces the half-space by independent springs: the displacement difference of a surface
+//! particle is `u = L p` (L a flexibility, length³/force). In steady rolling along +x the slip per rolled distance is
+//! `s = w − ∂u/∂x`, and Coulomb's law asks `|p| ≤ μ pn`, with `s = 0` where `|p| < μ pn` and `p = −μ pn s/|s|` where
+//! the particle slips. Along each row y = const of the grid, FASTSIM marches from the leading edge (where u = 0) to
+//! the trailing edge in steps of the element length dx: with p' the traction of the previous element of the row
+//! (zero ahead of the contact),
+//!
+//! ```text
+//!   p* = p' − (dx / L) w(x, y)          (adhesion: u − u' = −dx w, i.e. s = 0)
+//!   p  = p*                   if |p*| ≤ μ pn   (adhesion)
+//!   p  = μ pn p* / |p*|       otherwise        (slip)
+//! ```
+//!
+//! In slip the discrete slip `dx s = u − u' + dx w = L (p − p*)` is anti-parallel to p* and so to p: Coulomb's law
+//! holds exactly for one flexibility. The forces are the sums `F = Σ p dx dy` over the elements.
+//!
+//! # The flexibilities (why they reproduce Kalker's linear theory)
+//!
+//! At vanishing creepage nothing slips and the marching integrates `u = −∫_x^{a(y)} w dx'`, a(y) = a√(1 − y²/b²).
+//! For ξ alone, `px = −ξ (a(y) − x)/L1` and `Fx = −(ξ/L1) ∫ 2a(y)² dy = −8a²b ξ/(3 L1)`; equating it with Kalker's
+//! `−G c² C11 ξ` gives `L1 = 8a/(3 C11 G)`, and likewise `L2 = 8a/(3 C22 G)`. For the spin's lateral part
+//! `w_y = φ x`: `py = −φ (a(y)² − x²)/(2 L3)`, `Fy = −(2φ/(3 L3)) ∫ a(y)³ dy = −π a³ b φ/(4 L3)`, which equals
+//! `−G c³ C23 φ` for `L3 = π a^{3/2} / (4 C23 G √b)` (= π a √(a/b)/(4 C23 G), as CONTACT's `simpflex` writes it).
+//! The C_ij are Kalker's Table E.3 ([`crate::theory::kalker`]). The variants ([`Flexibility`]):
+//!
+//! * [`Flexibility::Weighted`] (Kalker 1982, his original FASTSIM): one flexibility
+//!   `L = (|ξ| L1 + |η| L2 + c |φ| L3) / √(ξ² + η² + c² φ²)`, so the linear theory is reproduced exactly for each
+//!   creepage alone, and Coulomb's law holds exactly in the slip area.
+//! * [`Flexibility::Three`]: `px = ux/L1`, `py = uy/L2`, the spin entering the rigid slip scaled as
+//!   `w = (ξ − (L1/L3) φ y, η + (L2/L3) φ x)` (CONTACT's `set_tang_rhs` for M = 3): the linear theory holds for any
+//!   combination of creepages, but for L1 ≠ L2 the slip is no longer exactly opposite to the traction.
+//! * [`Flexibility::Blended`]: [`Flexibility::Three`] with the flexibilities moved towards one combined value as the
+//!   creepage grows (Vollebregt 2022, CONTACT's default for M = 3 with the creepages prescribed, `simpflex`):
+//!   `L_c = (ξ² + η² + (kφ)²) / (ξ²/L1 + η²/L2 + (kφ)²/L3)` with `k = (πa²/4)/(8a/3)`, weight
+//!   `f = min(1, r/3)` with `r = √((ξ² + η²)/(χξ² + χη²))`, `χξ = μN/(c² G C11)`, `χη = μN/(c² G C22)`, and
+//!   `Li ← (1 − f) Li + f L_c`. This is what CONTACT prints as FLX1–3 for `fastsim.inp`.
+//!
+//! # The traction bound ([`Bound`])
+//!
+//! Kalker's original FASTSIM bounds the traction by μ times the **parabolic** pressure
+//! `pn = (2N/(πab)) (1 − x²/a² − y²/b²)` ([`Bound::Parabolic`], CONTACT's B = 3): the pressure of the simplified
+//! theory itself, and the one whose full-sliding force is μN. [`Bound::Elliptic`] uses Hertz's
+//! `pn = (3N/(2πab)) √(1 − x²/a² − y²/b²)` (CONTACT's B = 2, the bound CONTACT advises). Both are evaluated at the
+//! element centres as CONTACT does (the discrete Σ pn dx dy is N only in the limit of a fine grid).
+//!
+//! # The grid (CONTACT's, IPOTCN = −3)
+//!
+//! The rectangle `[−s a, s a] × [−s b, s b]` (s = [`Grid::scale`] ≥ 1) is divided into `mx × my` equal elements;
+//! an element is in contact when the pressure at its centre is > 0. Each row is marched with the step dx = 2sa/mx
+//! from its leading element, which starts from p' = 0. The spin's part of the rigid slip is evaluated at
+//! `x + cos χ · dx · o` with CONTACT's offset o = 1/6 ([`Grid::spin_offset`]; 0 evaluates it at the centre).
+//! These are CONTACT's choices; the error of the grid against the continuum (above) is O(dx), tested by refinement.
+
+use crate::error::ArgumentError;
+use crate::theory::kalker::{self, CreepCoefficients};
+use std::f64::consts::PI;
+
+/// The elliptic contact and its material: semi-axes, combined shear modulus and Poisson ratio, friction, load.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Contact {
+    /// Semi-axis along the rolling direction x (length, > 0).
+    pub a: f64,
+    /// Lateral semi-axis along y (length, > 0). Kalker's table needs 0.1 ≤ a/b ≤ 10.
+    pub b: f64,
+    /// Combined modulus of rigidity G = 2/(1/G1 + 1/G2) (force/length², > 0).
+    pub shear_modulus: f64,
+    /// Combined Poisson ratio ν = G (ν1/G1 + ν2/G2)/2, in [0, 1/2].
+    pub nu: f64,
+    /// Coefficient of friction μ (≥ 0).
+    pub mu: f64,
+    /// Normal force N (force, > 0).
+    pub normal_force: f64,
+}
+
+/// The creepages of body 1 relative to body 2 (CONTACT's CKSI, CETA, CPHI).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Creepages {
+    /// Longitudinal creepage ξ (dimensionless).
+    pub xi: f64,
+    /// Lateral creepage η (dimensionless).
+    pub eta: f64,
+    /// Spin φ (rad/length).
+    pub phi: f64,
+}
+
+/// The traction bound μ pn: the pressure's shape (module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Bound {
+    /// `pn = (2N/(πab)) (1 − x²/a² − y²/b²)`: Kalker's original FASTSIM (CONTACT's B = 3).
+    Parabolic,
+    /// Hertz's `pn = (3N/(2πab)) √(1 − x²/a² − y²/b²)` (CONTACT's B = 2).
+    Elliptic,
+}
+
+/// Which flexibilities the springs have (module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Flexibility {
+    /// One flexibility, Kalker's weighted mean of L1, L2, L3 (his original FASTSIM).
+    Weighted,
+    /// L1 and L2 for px and py, the spin scaled by L1/L3 and L2/L3 (CONTACT's M = 3 without blending).
+    Three,
+    /// [`Flexibility::Three`] blended towards one flexibility at large creepage (CONTACT's M = 3 with the
+    /// creepages prescribed).
+    Blended,
+}
+
+/// The rolling direction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Direction {
+    /// Rolling along +x (CONTACT's χ = 0): the leading edge is at x = +a.
+    PlusX,
+    /// Rolling along −x (CONTACT's χ = 180°): the leading edge is at x = −a.
+    MinusX,
+}
+
+/// The grid: CONTACT's rectangular grid of `mx × my` elements over `[−s a, s a] × [−s b, s b]`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Grid {
+    /// Elements along x (≥ 1).
+    pub mx: usize,
+    /// Elements along y (≥ 1).
+    pub my: usize,
+    /// The rectangle's half-sides over the semi-axes, s ≥ 1 (CONTACT's SCALE).
+    pub scale: f64,
+    /// Where the spin's rigid slip is evaluated, in steps dx ahead of the element centre (CONTACT: 1/6).
+    pub spin_offset: f64,
+}
+
+impl Default for Grid {
+    /// 100 × 100 elements on the ellipse's bounding box, CONTACT's spin offset 1/6.
+    fn default() -> Grid {
+        Grid { mx: 100, my: 100, scale: 1.0, spin_offset: 1.0 / 6.0 }
+    }
+}
+
+/// The options of [`solve`]: Kalker's original FASTSIM by default (weighted flexibility, parabolic bound, +x).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Options {
+    /// The traction bound.
+    pub bound: Bound,
+    /// The flexibilities.
+    pub flexibility: Flexibility,
+    /// The rolling direction.
+    pub direction: Direction,
+    /// The grid.
+    pub grid: Grid,
+}
+
+impl Default for Options {
+    fn default() -> Options {
+        Options {
+            bound: Bound::Parabolic,
+            flexibility: Flexibility::Weighted,
+            direction: Direction::PlusX,
+            grid: Grid::default(),
+        }
+    }
+}
+
+/// The state of one element.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum State {
+    /// Outside the contact (pn = 0 at its centre).
+    Exterior,
+    /// In contact and sticking (|p| < μ pn).
+    Adhesion,
+    /// In contact and slipping (|p| = μ pn).
+    Slip,
+}
+
+/// One element of the grid: its centre, pressure, traction on body 1 and state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct Element {
+    /// Centre x (length).
+    pub x: f64,
+    /// Centre y (length).
+    pub y: f64,
+    /// Pressure pn (force/length², the bound's shape).
+    pub pn: f64,
+    /// Traction px on body 1 (force/length²).
+    pub px: f64,
+    /// Traction py on body 1 (force/length²).
+    pub py: f64,
+    /// Adhesion, slip or exterior.
+    pub state: State,
+}
+
+/// What [`solve`] returns.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub struct Solution {
+    /// Fx on body 1 (force).
+    pub fx: f64,
+    /// Fy on body 1 (force).
+    pub fy: f64,
+    /// Mz on body 1 about the ellipse's centre (force·length).
+    pub mz: f64,
+    /// Σ pn dx dy (force; N only in the limit of a fine grid).
+    pub fn_discrete: f64,
+    /// Kalker's coefficients used.
+    pub coefficients: CreepCoefficients,
+    /// The flexibilities L1, L2, L3 used (length³/force; for [`Flexibility::Weighted`] all three are the weighted L).
+    pub flexibilities: [f64; 3],
+    /// The elements, x fastest: element (ix, iy) is `elements[ix + mx·iy]`.
+    pub elements: Vec<Element>,
+    /// Element size along x (length).
+    pub dx: f64,
+    /// Element size along y (length).
+    pub dy: f64,
+    /// Elements in contact.
+    pub n_contact: usize,
+    /// Elements in adhesion.
+    pub n_adhesion: usize,
+    /// Elements in slip.
+    pub n_slip: usize,
+}
+
+/// The largest grid [`solve`] accepts (elements).
+pub const MAX_ELEMENTS: usize = 50_000_000;
+
+/// Kalker's flexibilities `L1 = 8a/(3 C11 G)`, `L2 = 8a/(3 C22 G)`, `L3 = π a^{3/2}/(4 C23 G √b)` (length³/force;
+/// module docs), unblended.
+pub fn kalker_flexibilities(contact: &Contact, c: &CreepCoefficients) -> [f64; 3] {
+    let (a, b, g) = (contact.a, contact.b, contact.shear_modulus);
+    [8.0 * a / (3.0 * c.c11 * g), 8.0 * a / (3.0 * c.c22 * g), PI * a * (a / b).sqrt() / (4.0 * c.c23 * g)]
+}
+
+/// The flexibilities the variant uses, and the factors (L1/L3, L2/L3) that scale the spin's rigid slip.
+fn flexibilities(contact: &Contact, cr: &Creepages, c: &CreepCoefficients, flex: Flexibility) -> ([f64; 3], [f64; 2]) {
+    let l = kalker_flexibilities(contact, c);
+    let (xi, eta, phi) = (cr.xi, cr.eta, cr.phi);
+    match flex {
+        Flexibility::Weighted => {
+            let cc = (contact.a * contact.b).sqrt();
+            let norm = (xi * xi + eta * eta + cc * cc * phi * phi).sqrt();
+            let lw =
+                if norm > 0.0 { (xi.abs() * l[0] + eta.abs() * l[1] + cc * phi.abs() * l[2]) / norm } else { l[0] };
+            ([lw; 3], [1.0, 1.0])
+        }
+        Flexibility::Three => (l, [l[0] / l[2], l[1] / l[2]]),
+        Flexibility::Blended => {
+            let (a, b) = (contact.a, contact.b);
+            let cc2 = a * b;
+            let k = (PI * a * a / 4.0) / (8.0 * a / 3.0);
+            let kphi2 = (k * phi).powi(2);
+            let num = xi * xi + eta * eta + kphi2;
+            let den = (xi * xi / l[0] + eta * eta / l[1] + kphi2 / l[2]).max(1e-14);
+            let l_c = num / den;
+            let load = contact.mu * contact.normal_force / (cc2 * contact.shear_modulus);
+            let (ch_xi, ch_eta) = (load / c.c11, load / c.c22);
+            let ratio = ((xi * xi + eta * eta) / (ch_xi * ch_xi + ch_eta * ch_eta)).sqrt().max(1e-10);
+            let f = (ratio / 3.0).clamp(0.0, 1.0);
+            let lb = l.map(|li| (1.0 - f) * li + f * l_c);
+            (lb, [lb[0] / lb[2], lb[1] / lb[2]])
+        }
+    }
+}
+
+fn check(contact: &Contact, cr: &Creepages, opt: &Options) -> Result<(), ArgumentError> {
+    const F: &str = "fastsim::solve";
+    let positive = [
+        ("a", contact.a),
+        ("b", contact.b),
+        ("shear_modulus", contact.shear_modulus),
+        ("normal_force", contact.normal_force),
+    ];
+    for (name, v) in positive {
+        if !(v.is_finite() && v > 0.0) {
+            return Err(ArgumentError::new(F, name, format!("must be finite and > 0, is {v}")));
+        }
+    }
+    if !(contact.mu.is_finite() && contact.mu >= 0.0) {
+        return Err(ArgumentError::new(F, "mu", format!("must be finite and ≥ 0, is {}", contact.mu)));
+    }
+    for (name, v) in [("xi", cr.xi), ("eta", cr.eta), ("phi", cr.phi)] {
+        if !v.is_finite() {
+            return Err(ArgumentError::new(F, name, format!("must be finite, is {v}")));
+        }
+    }
+    let g = &opt.grid;
+    if g.mx == 0 || g.my == 0 || g.mx.saturating_mul(g.my) > MAX_ELEMENTS {
+        let msg = format!("mx × my must be ≥ 1 each and at most {MAX_ELEMENTS} elements, is {} × {}", g.mx, g.my);
+        return Err(ArgumentError::new(F, "grid", msg));
+    }
+    if !(g.scale.is_finite() && g.scale >= 1.0) {
+        return Err(ArgumentError::new(F, "grid.scale", format!("must be finite and ≥ 1, is {}", g.scale)));
+    }
+    if !g.spin_offset.is_finite() {
+        return Err(ArgumentError::new(F, "grid.spin_offset", format!("must be finite, is {}", g.spin_offset)));
+    }
+    Ok(())
+}
+
+/// Solves the steady rolling problem by FASTSIM (module docs): the tractions, stick and slip of every element and
+/// the creep forces. Errors ([`ArgumentError`] naming the argument): a semi-axis, G or N not finite and > 0, μ < 0
+/// or not finite, a creepage not finite, ν or a/b outside Kalker's table (ν ∈ [0, 1/2], a/b ∈ [0.1, 10]), an empty
+/// or too large grid, a scale < 1.
+pub fn solve(contact: &Contact, creepages: &Creepages, options: &Options) -> Result<Solution, ArgumentError> {
+    check(contact, creepages, options)?;
+    let coefficients = kalker::creep_coefficients(contact.a, contact.b, contact.nu)?;
+    let (l, spin) = flexibilities(contact, creepages, &coefficients, options.flexibility);
+    let grid = &options.grid;
+    let (mx, my) = (grid.mx, grid.my);
+    let dx = 2.0 * grid.scale * contact.a / mx as f64;
+    let dy = 2.0 * grid.scale * contact.b / my as f64;
+    let centre = |i: usize, d: f64, half: f64| -half + (i as f64 + 0.5) * d;
+    let pressure = bound_pressure(contact, options.bound);
+    let mut elements = Vec::with_capacity(mx * my);
+    for iy in 0..my {
+        let y = centre(iy, dy, grid.scale * contact.b);
+        for ix in 0..mx {
+            let x = centre(ix, dx, grid.scale * contact.a);
+            let pn = pressure(x, y);
+            let state = if pn > 0.0 { State::Adhesion } else { State::Exterior };
+            elements.push(Element { x, y, pn, px: 0.0, py: 0.0, state });
+        }
+    }
+    let march = March { creepages, l, spin, mu: contact.mu, dx, direction: options.direction, grid };
+    for row in elements.chunks_mut(mx) {
+        march.row(row);
+    }
+    let (mut fx, mut fy, mut mz, mut fn_discrete) = (0.0, 0.0, 0.0, 0.0);
+    let (mut n_adhesion, mut n_slip) = (0, 0);
+    for e in &elements {
+        fx += e.px;
+        fy += e.py;
+        mz += e.x * e.py - e.y * e.px;
+        fn_discrete += e.pn;
+        match e.state {
+            State::Adhesion => n_adhesion += 1,
+            State::Slip => n_slip += 1,
+            State::Exterior => {}
+        }
+    }
+    let area = dx * dy;
+    Ok(Solution {
+        fx: fx * area,
+        fy: fy * area,
+        mz: mz * area,
+        fn_discrete: fn_discrete * area,
+        coefficients,
+        flexibilities: l,
+        elements,
+        dx,
+        dy,
+        n_contact: n_adhesion + n_slip,
+        n_adhesion,
+        n_slip,
+    })
+}
+
+/// The bound's pressure at (x, y) (module docs).
+fn bound_pressure(contact: &Contact, bound: Bound) -> impl Fn(f64, f64) -> f64 {
+    let (a, b, n) = (contact.a, contact.b, contact.normal_force);
+    move |x: f64, y: f64| {
+        let f = 1.0 - (x / a).powi(2) - (y / b).powi(2);
+        match bound {
+            Bound::Parabolic => 2.0 * n / (PI * a * b) * f.max(0.0),
+            Bound::Elliptic => 1.5 * n / (PI * a * b) * f.max(0.0).sqrt(),
+        }
+    }
+}
+
+/// The marching of one row (module docs).
+struct March<'a> {
+    creepages: &'a Creepages,
+    l: [f64; 3],
+    spin: [f64; 2],
+    mu: f64,
+    dx: f64,
+    direction: Direction,
+    grid: &'a Grid,
+}
+
+impl March<'_> {
+    fn row(&self, row: &mut [Element]) {
+        let (cr, dx) = (self.creepages, self.dx);
+        let cos_chi = match self.direction {
+            Direction::PlusX => 1.0,
+            Direction::MinusX => -1.0,
+        };
+        let x_offset = cos_chi * dx * self.grid.spin_offset;
+        // Displacement differences u = L p of the previous element of the row (zero ahead of the contact).
+        let (mut ux, mut uy) = (0.0, 0.0);
+        let mut step = |e: &mut Element| {
+            if e.state == State::Exterior {
+                (ux, uy) = (0.0, 0.0);
+                return;
+            }
+            let wx = cr.xi - self.spin[0] * cr.phi * e.y;
+            let wy = cr.eta + self.spin[1] * cr.phi * (e.x + x_offset);
+            ux -= dx * wx;
+            uy -= dx * wy;
+            let (mut px, mut py) = (ux / self.l[0], uy / self.l[1]);
+            let (p, limit) = (px.hypot(py), self.mu * e.pn);
+            e.state = State::Adhesion;
+            if p > limit {
+                e.state = State::Slip;
+                px *= limit / p;
+                py *= limit / p;
+                (ux, uy) = (self.l[0] * px, self.l[1] * py);
+            }
+            (e.px, e.py) = (px, py);
+        };
+        match self.direction {
+            Direction::PlusX => row.iter_mut().rev().for_each(&mut step),
+            Direction::MinusX => row.iter_mut().for_each(&mut step),
+        }
+    }
+}
