@@ -62,13 +62,22 @@
 //! `pn = (3N/(2πab)) √(1 − x²/a² − y²/b²)` (CONTACT's B = 2, the bound CONTACT advises). Both are evaluated at the
 //! element centres as CONTACT does (the discrete Σ pn dx dy is N only in the limit of a fine grid).
 //!
-//! # The grid (CONTACT's, IPOTCN = −3)
+//! # The grids ([`Grid`])
 //!
-//! The rectangle `[−s a, s a] × [−s b, s b]` (s = [`Grid::scale`] ≥ 1) is divided into `mx × my` equal elements;
-//! an element is in contact when the pressure at its centre is > 0. Each row is marched with the step dx = 2sa/mx
-//! from its leading element, which starts from p' = 0. The spin's part of the rigid slip is evaluated at
-//! `x + cos χ · dx · o` with CONTACT's offset o = 1/6 ([`Grid::spin_offset`]; 0 evaluates it at the centre).
-//! These are CONTACT's choices; the error of the grid against the continuum (above) is O(dx), tested by refinement.
+//! * [`Grid::Contact`], CONTACT's (IPOTCN = −3): the rectangle `[−s a, s a] × [−s b, s b]` (s ≥ 1) divided into
+//!   `mx × my` equal elements; an element is in contact when the pressure at its centre is > 0. Each row is marched
+//!   with the step dx = 2sa/mx from its leading element, which starts one whole step from p' = 0; the spin's part of
+//!   the rigid slip is evaluated at `x + cos χ · dx · o` with CONTACT's offset o = 1/6 (0 evaluates it at the
+//!   centre). These are CONTACT's choices, needed to reproduce its numbers; where a row's leading edge falls between
+//!   element centres is not seen, so the error against the continuum is O(dx): about 1.2/mx relative in the linear
+//!   regime (tests/fastsim.rs).
+//! * [`Grid::Strips`] (the default): `my` strips of width 2b/my, each divided into `mx` equal elements between its
+//!   own edges ±a(y); the marching starts at the strip's leading edge, steps half an element to the first centre and
+//!   whole elements after, and takes the rigid slip of each step at the step's midpoint. Without slip this
+//!   integrates `u = −∫ w` exactly (w is linear in x), so ξ and η alone give Kalker's forces exactly in x and to
+//!   O(dy²) across the strips, the spin to O(dx²).
+//!
+//! Forces are `Σ p · area` over the elements (midpoint rule); `Σ pn · area` → N as the grid refines.
 
 use crate::error::ArgumentError;
 use crate::theory::kalker::{self, CreepCoefficients};
@@ -132,27 +141,54 @@ pub enum Direction {
     MinusX,
 }
 
-/// The grid: CONTACT's rectangular grid of `mx × my` elements over `[−s a, s a] × [−s b, s b]`.
+/// The grid (module docs, "The grids").
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Grid {
-    /// Elements along x (≥ 1).
-    pub mx: usize,
-    /// Elements along y (≥ 1).
-    pub my: usize,
-    /// The rectangle's half-sides over the semi-axes, s ≥ 1 (CONTACT's SCALE).
-    pub scale: f64,
-    /// Where the spin's rigid slip is evaluated, in steps dx ahead of the element centre (CONTACT: 1/6).
-    pub spin_offset: f64,
+pub enum Grid {
+    /// `my` strips across the ellipse, each divided into `mx` equal elements between its own leading and trailing
+    /// edges; the marching starts at the strip's leading edge and the rigid slip of each step is taken at the step's
+    /// midpoint (exact for the linear theory's w).
+    Strips {
+        /// Elements along each strip (≥ 1).
+        mx: usize,
+        /// Strips (≥ 1).
+        my: usize,
+    },
+    /// CONTACT's rectangular grid (IPOTCN = −3): `mx × my` equal elements over `[−s a, s a] × [−s b, s b]`.
+    Contact {
+        /// Elements along x (≥ 1).
+        mx: usize,
+        /// Elements along y (≥ 1).
+        my: usize,
+        /// The rectangle's half-sides over the semi-axes, s ≥ 1 (CONTACT's SCALE).
+        scale: f64,
+        /// Where the spin's rigid slip is evaluated, in steps dx ahead of the element centre (CONTACT: 1/6).
+        spin_offset: f64,
+    },
 }
 
-impl Default for Grid {
-    /// 100 × 100 elements on the ellipse's bounding box, CONTACT's spin offset 1/6.
-    fn default() -> Grid {
-        Grid { mx: 100, my: 100, scale: 1.0, spin_offset: 1.0 / 6.0 }
+impl Grid {
+    /// CONTACT's grid with its spin offset 1/6.
+    pub fn contact(mx: usize, my: usize, scale: f64) -> Grid {
+        Grid::Contact { mx, my, scale, spin_offset: 1.0 / 6.0 }
+    }
+
+    /// Elements along x and y.
+    pub fn size(&self) -> (usize, usize) {
+        match *self {
+            Grid::Strips { mx, my } | Grid::Contact { mx, my, .. } => (mx, my),
+        }
     }
 }
 
-/// The options of [`solve`]: Kalker's original FASTSIM by default (weighted flexibility, parabolic bound, +x).
+impl Default for Grid {
+    /// 100 strips of 100 elements.
+    fn default() -> Grid {
+        Grid::Strips { mx: 100, my: 100 }
+    }
+}
+
+/// The options of [`solve`]: Kalker's original FASTSIM by default (weighted flexibility, parabolic bound, +x) on
+/// 100 strips of 100 elements.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Options {
     /// The traction bound.
@@ -203,6 +239,15 @@ pub struct Element {
     pub py: f64,
     /// Adhesion, slip or exterior.
     pub state: State,
+    /// The element's weight in the sums F = Σ p · area (length²).
+    pub area: f64,
+}
+
+impl Element {
+    fn new(x: f64, y: f64, pn: f64, area: f64) -> Element {
+        let state = if pn > 0.0 { State::Adhesion } else { State::Exterior };
+        Element { x, y, pn, px: 0.0, py: 0.0, state, area }
+    }
 }
 
 /// What [`solve`] returns.
@@ -221,12 +266,9 @@ pub struct Solution {
     pub coefficients: CreepCoefficients,
     /// The flexibilities L1, L2, L3 used (length³/force; for [`Flexibility::Weighted`] all three are the weighted L).
     pub flexibilities: [f64; 3],
-    /// The elements, x fastest: element (ix, iy) is `elements[ix + mx·iy]`.
+    /// The elements, x fastest: element (ix, iy) is `elements[ix + mx·iy]` (for [`Grid::Strips`] row iy is strip iy,
+    /// its elements from −x to +x).
     pub elements: Vec<Element>,
-    /// Element size along x (length).
-    pub dx: f64,
-    /// Element size along y (length).
-    pub dy: f64,
     /// Elements in contact.
     pub n_contact: usize,
     /// Elements in adhesion.
@@ -297,16 +339,18 @@ fn check(contact: &Contact, cr: &Creepages, opt: &Options) -> Result<(), Argumen
             return Err(ArgumentError::new(F, name, format!("must be finite, is {v}")));
         }
     }
-    let g = &opt.grid;
-    if g.mx == 0 || g.my == 0 || g.mx.saturating_mul(g.my) > MAX_ELEMENTS {
-        let msg = format!("mx × my must be ≥ 1 each and at most {MAX_ELEMENTS} elements, is {} × {}", g.mx, g.my);
+    let (mx, my) = opt.grid.size();
+    if mx == 0 || my == 0 || mx.saturating_mul(my) > MAX_ELEMENTS {
+        let msg = format!("mx × my must be ≥ 1 each and at most {MAX_ELEMENTS} elements, is {mx} × {my}");
         return Err(ArgumentError::new(F, "grid", msg));
     }
-    if !(g.scale.is_finite() && g.scale >= 1.0) {
-        return Err(ArgumentError::new(F, "grid.scale", format!("must be finite and ≥ 1, is {}", g.scale)));
-    }
-    if !g.spin_offset.is_finite() {
-        return Err(ArgumentError::new(F, "grid.spin_offset", format!("must be finite, is {}", g.spin_offset)));
+    if let Grid::Contact { scale, spin_offset, .. } = opt.grid {
+        if !(scale.is_finite() && scale >= 1.0) {
+            return Err(ArgumentError::new(F, "grid.scale", format!("must be finite and ≥ 1, is {scale}")));
+        }
+        if !spin_offset.is_finite() {
+            return Err(ArgumentError::new(F, "grid.spin_offset", format!("must be finite, is {spin_offset}")));
+        }
     }
     Ok(())
 }
@@ -319,54 +363,81 @@ pub fn solve(contact: &Contact, creepages: &Creepages, options: &Options) -> Res
     check(contact, creepages, options)?;
     let coefficients = kalker::creep_coefficients(contact.a, contact.b, contact.nu)?;
     let (l, spin) = flexibilities(contact, creepages, &coefficients, options.flexibility);
-    let grid = &options.grid;
-    let (mx, my) = (grid.mx, grid.my);
-    let dx = 2.0 * grid.scale * contact.a / mx as f64;
-    let dy = 2.0 * grid.scale * contact.b / my as f64;
-    let centre = |i: usize, d: f64, half: f64| -half + (i as f64 + 0.5) * d;
+    let march = March { creepages, l, spin, mu: contact.mu };
     let pressure = bound_pressure(contact, options.bound);
+    let (mx, my) = options.grid.size();
     let mut elements = Vec::with_capacity(mx * my);
-    for iy in 0..my {
-        let y = centre(iy, dy, grid.scale * contact.b);
-        for ix in 0..mx {
-            let x = centre(ix, dx, grid.scale * contact.a);
-            let pn = pressure(x, y);
-            let state = if pn > 0.0 { State::Adhesion } else { State::Exterior };
-            elements.push(Element { x, y, pn, px: 0.0, py: 0.0, state });
+    let forward = options.direction == Direction::PlusX;
+    match options.grid {
+        Grid::Contact { scale, spin_offset, .. } => {
+            let (dx, dy) = (2.0 * scale * contact.a / mx as f64, 2.0 * scale * contact.b / my as f64);
+            let centre = |i: usize, d: f64, half: f64| -half + (i as f64 + 0.5) * d;
+            // The spin's rigid slip at x + cos χ · dx · offset (CONTACT's set_tang_rhs).
+            let ahead = if forward { dx * spin_offset } else { -dx * spin_offset };
+            for iy in 0..my {
+                let y = centre(iy, dy, scale * contact.b);
+                let row = elements.len();
+                for ix in 0..mx {
+                    let x = centre(ix, dx, scale * contact.a);
+                    elements.push(Element::new(x, y, pressure(x, y), dx * dy));
+                }
+                march.row(&mut elements[row..], forward, |e| (dx, e.x + ahead));
+            }
+        }
+        Grid::Strips { .. } => {
+            let dy = 2.0 * contact.b / my as f64;
+            for iy in 0..my {
+                let y = -contact.b + (iy as f64 + 0.5) * dy;
+                let half = contact.a * (1.0 - (y / contact.b).powi(2)).max(0.0).sqrt();
+                let dx = 2.0 * half / mx as f64;
+                let row = elements.len();
+                for ix in 0..mx {
+                    let x = -half + (ix as f64 + 0.5) * dx;
+                    elements.push(Element::new(x, y, pressure(x, y), dx * dy));
+                }
+                // From the leading edge to the first centre half a step, then whole steps; w at each step's midpoint.
+                let lead = if forward { half } else { -half };
+                let sign = if forward { 1.0 } else { -1.0 };
+                march.row(&mut elements[row..], forward, |e| {
+                    if (lead - e.x).abs() < dx {
+                        (0.5 * dx, e.x + sign * 0.25 * dx)
+                    } else {
+                        (dx, e.x + sign * 0.5 * dx)
+                    }
+                });
+            }
         }
     }
-    let march = March { creepages, l, spin, mu: contact.mu, dx, direction: options.direction, grid };
-    for row in elements.chunks_mut(mx) {
-        march.row(row);
-    }
+    Ok(totals(elements, coefficients, l))
+}
+
+/// The forces and counts of the solved elements.
+fn totals(elements: Vec<Element>, coefficients: CreepCoefficients, flexibilities: [f64; 3]) -> Solution {
     let (mut fx, mut fy, mut mz, mut fn_discrete) = (0.0, 0.0, 0.0, 0.0);
     let (mut n_adhesion, mut n_slip) = (0, 0);
     for e in &elements {
-        fx += e.px;
-        fy += e.py;
-        mz += e.x * e.py - e.y * e.px;
-        fn_discrete += e.pn;
+        fx += e.px * e.area;
+        fy += e.py * e.area;
+        mz += (e.x * e.py - e.y * e.px) * e.area;
+        fn_discrete += e.pn * e.area;
         match e.state {
             State::Adhesion => n_adhesion += 1,
             State::Slip => n_slip += 1,
             State::Exterior => {}
         }
     }
-    let area = dx * dy;
-    Ok(Solution {
-        fx: fx * area,
-        fy: fy * area,
-        mz: mz * area,
-        fn_discrete: fn_discrete * area,
+    Solution {
+        fx,
+        fy,
+        mz,
+        fn_discrete,
         coefficients,
-        flexibilities: l,
+        flexibilities,
         elements,
-        dx,
-        dy,
         n_contact: n_adhesion + n_slip,
         n_adhesion,
         n_slip,
-    })
+    }
 }
 
 /// The bound's pressure at (x, y) (module docs).
@@ -387,30 +458,26 @@ struct March<'a> {
     l: [f64; 3],
     spin: [f64; 2],
     mu: f64,
-    dx: f64,
-    direction: Direction,
-    grid: &'a Grid,
 }
 
 impl March<'_> {
-    fn row(&self, row: &mut [Element]) {
-        let (cr, dx) = (self.creepages, self.dx);
-        let cos_chi = match self.direction {
-            Direction::PlusX => 1.0,
-            Direction::MinusX => -1.0,
-        };
-        let x_offset = cos_chi * dx * self.grid.spin_offset;
+    /// Marches `row` from its leading element (the last when `forward`, rolling along +x) to its trailing one;
+    /// `step(e)` gives the distance from the previous element (or the leading edge) and the x where the rigid
+    /// slip of that step is evaluated.
+    fn row(&self, row: &mut [Element], forward: bool, step: impl Fn(&Element) -> (f64, f64)) {
+        let cr = self.creepages;
         // Displacement differences u = L p of the previous element of the row (zero ahead of the contact).
         let (mut ux, mut uy) = (0.0, 0.0);
-        let mut step = |e: &mut Element| {
+        let mut advance = |e: &mut Element| {
             if e.state == State::Exterior {
                 (ux, uy) = (0.0, 0.0);
                 return;
             }
+            let (h, x_w) = step(e);
             let wx = cr.xi - self.spin[0] * cr.phi * e.y;
-            let wy = cr.eta + self.spin[1] * cr.phi * (e.x + x_offset);
-            ux -= dx * wx;
-            uy -= dx * wy;
+            let wy = cr.eta + self.spin[1] * cr.phi * x_w;
+            ux -= h * wx;
+            uy -= h * wy;
             let (mut px, mut py) = (ux / self.l[0], uy / self.l[1]);
             let (p, limit) = (px.hypot(py), self.mu * e.pn);
             e.state = State::Adhesion;
@@ -422,9 +489,10 @@ impl March<'_> {
             }
             (e.px, e.py) = (px, py);
         };
-        match self.direction {
-            Direction::PlusX => row.iter_mut().rev().for_each(&mut step),
-            Direction::MinusX => row.iter_mut().for_each(&mut step),
+        if forward {
+            row.iter_mut().rev().for_each(&mut advance);
+        } else {
+            row.iter_mut().for_each(&mut advance);
         }
     }
 }
