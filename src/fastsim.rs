@@ -440,6 +440,45 @@ fn totals(elements: Vec<Element>, coefficients: CreepCoefficients, flexibilities
     }
 }
 
+/// The creep forces of one steady rolling contact (on body 1, CONTACT's signs: module docs).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub struct CreepForces {
+    /// Longitudinal force Fx on body 1 (force; ≈ −G c² C11 ξ at small ξ, → −μN ξ/|ξ| at large ξ).
+    pub fx: f64,
+    /// Lateral force Fy on body 1 (force; ≈ −G c² (C22 η + c C23 φ) at small creepage).
+    pub fy: f64,
+    /// Spin moment Mz on body 1 about the ellipse's centre (force·length).
+    pub mz: f64,
+}
+
+/// The creep forces by Kalker's original FASTSIM ([`Options::default`]: one weighted flexibility, parabolic traction
+/// bound, rolling along +x, 100 strips of 100 elements), for vehicle-dynamics use.
+///
+/// Units: those of `contact` (e.g. mm, N, N/mm²: forces in N, Mz in N·mm); ξ, η dimensionless, φ in rad/length.
+/// Signs (CONTACT's): creepages of body 1 relative to body 2 (rigid slip `(ξ − φ y, η + φ x)`), forces on body 1, so
+/// a positive creepage gives a force against it. Accuracy against the simplified theory's continuum: 5e-5 relative
+/// in the linear regime (tests/fastsim.rs); against the exact theory, FASTSIM's own approximation (Kalker 1982).
+/// Errors: those of [`solve`] (reported with its name).
+///
+/// ```
+/// use rollbem::fastsim::{creep_forces, Contact, Creepages};
+/// use rollbem::theory::kalker::creep_coefficients;
+/// // A 6 mm × 6 mm steel contact, N = 10 kN, μ = 0.3, a small longitudinal creepage.
+/// let contact = Contact { a: 6.0, b: 6.0, shear_modulus: 80_000.0, nu: 0.25, mu: 0.3, normal_force: 10_000.0 };
+/// let f = creep_forces(&contact, &Creepages { xi: 1e-7, eta: 0.0, phi: 0.0 }).unwrap();
+/// let c11 = creep_coefficients(6.0, 6.0, 0.25).unwrap().c11; // 4.12 (Kalker's Table E.3)
+/// let linear = -80_000.0 * 36.0 * c11 * 1e-7; // −G c² C11 ξ
+/// assert!((f.fx - linear).abs() < 1e-3 * linear.abs());
+/// // Full sliding: the force saturates at μN.
+/// let f = creep_forces(&contact, &Creepages { xi: 0.1, eta: 0.0, phi: 0.0 }).unwrap();
+/// assert!((f.fx + 0.3 * 10_000.0).abs() < 1e-3 * 3_000.0);
+/// ```
+pub fn creep_forces(contact: &Contact, creepages: &Creepages) -> Result<CreepForces, ArgumentError> {
+    let s = solve(contact, creepages, &Options::default())?;
+    Ok(CreepForces { fx: s.fx, fy: s.fy, mz: s.mz })
+}
+
 /// The bound's pressure at (x, y) (module docs).
 fn bound_pressure(contact: &Contact, bound: Bound) -> impl Fn(f64, f64) -> f64 {
     let (a, b, n) = (contact.a, contact.b, contact.normal_force);
