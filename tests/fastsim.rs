@@ -59,12 +59,7 @@ fn options_of(row: &HashMap<String, String>) -> Options {
     // CONTACT steps by DQ and assumes DQ = DX: check that the input says so.
     let dx = 2.0 * scale * num(row, "a") / mx as f64;
     assert!((dx - num(row, "dq")).abs() < 1e-12, "case {}: DQ {} is not DX {dx}", row["case"], row["dq"]);
-    let mut o = Options::default();
-    o.bound = bound;
-    o.flexibility = Flexibility::Blended;
-    o.direction = direction;
-    o.grid = grid;
-    o
+    Options { bound, flexibility: Flexibility::Blended, direction, grid }
 }
 
 #[test]
@@ -152,10 +147,8 @@ fn kalker_contact(a: f64, b: f64, nu: f64) -> Contact {
 }
 
 fn fine(flexibility: Flexibility, n: usize, strips: bool) -> Options {
-    let mut o = Options::default();
-    o.flexibility = flexibility;
-    o.grid = if strips { Grid::Strips { mx: n, my: n } } else { Grid::contact(n, n, 1.0) };
-    o
+    let grid = if strips { Grid::Strips { mx: n, my: n } } else { Grid::contact(n, n, 1.0) };
+    Options { flexibility, grid, ..Options::default() }
 }
 
 #[test]

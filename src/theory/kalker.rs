@@ -42,6 +42,8 @@ use crate::error::ArgumentError;
 /// Kalker's Table E.3 (C11, C22, C23): `TABLE_E3[branch][row][coefficient][nu]`. Branch 0: a ≤ b, g = a/b; branch 1:
 /// a ≥ b, g = b/a; row k (0-based) is g = (k + 1)/10; coefficient 0, 1, 2 = C11, C22, C23; ν column 0, 1, 2 =
 /// 0, 1/4, 1/2. Dimensionless. Source: see the module docs.
+// 3.14 is Kalker's C22 (twice), not an approximation of π.
+#[allow(clippy::approx_constant)]
 pub const TABLE_E3: [[[[f64; 3]; 3]; 10]; 2] = [
     [
         [[2.51, 3.31, 4.85], [2.51, 2.52, 2.53], [0.334, 0.473, 0.731]],
