@@ -43,11 +43,13 @@
 //! The C_ij are Kalker's Table E.3 ([`crate::theory::kalker`]). The variants ([`Flexibility`]):
 //!
 //! * [`Flexibility::Weighted`] (Kalker 1982, his original FASTSIM): one flexibility
-//!   `L = (|ξ| L1 + |η| L2 + c |φ| L3) / √(ξ² + η² + c² φ²)`, so the linear theory is reproduced exactly for each
-//!   creepage alone, and Coulomb's law holds exactly in the slip area.
+//!   `L = (|ξ| L1 + |η| L2 + c |φ| L3) / √(ξ² + η² + c² φ²)` (the formula as it is commonly cited from that paper;
+//!   the paper itself was not at hand), so the linear theory is reproduced exactly for each creepage alone, and
+//!   Coulomb's law holds exactly in the slip area.
 //! * [`Flexibility::Three`]: `px = ux/L1`, `py = uy/L2`, the spin entering the rigid slip scaled as
-//!   `w = (ξ − (L1/L3) φ y, η + (L2/L3) φ x)` (CONTACT's `set_tang_rhs` for M = 3): the linear theory holds for any
-//!   combination of creepages, but for L1 ≠ L2 the slip is no longer exactly opposite to the traction.
+//!   `w = (ξ − (L1/L3) φ y, η + (L2/L3) φ x)` (CONTACT's `set_tang_rhs` for M = 3): Fx and Fy of the linear theory
+//!   hold for any combination of creepages (Mz need not: FASTSIM knows no C33), but for L1 ≠ L2 the slip is no
+//!   longer exactly opposite to the traction.
 //! * [`Flexibility::Blended`]: [`Flexibility::Three`] with the flexibilities moved towards one combined value as the
 //!   creepage grows (Vollebregt 2022, CONTACT's default for M = 3 with the creepages prescribed, `simpflex`):
 //!   `L_c = (ξ² + η² + (kφ)²) / (ξ²/L1 + η²/L2 + (kφ)²/L3)` with `k = (πa²/4)/(8a/3)`, weight
@@ -57,8 +59,8 @@
 //! # The traction bound ([`Bound`])
 //!
 //! Kalker's original FASTSIM bounds the traction by μ times the **parabolic** pressure
-//! `pn = (2N/(πab)) (1 − x²/a² − y²/b²)` ([`Bound::Parabolic`], CONTACT's B = 3): the pressure of the simplified
-//! theory itself, and the one whose full-sliding force is μN. [`Bound::Elliptic`] uses Hertz's
+//! `pn = (2N/(πab)) (1 − x²/a² − y²/b²)` ([`Bound::Parabolic`], CONTACT's B = 3), the pressure of the simplified
+//! theory itself. [`Bound::Elliptic`] uses Hertz's
 //! `pn = (3N/(2πab)) √(1 − x²/a² − y²/b²)` (CONTACT's B = 2, the bound CONTACT advises). Both are evaluated at the
 //! element centres as CONTACT does (the discrete Σ pn dx dy is N only in the limit of a fine grid).
 //!

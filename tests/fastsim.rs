@@ -4,7 +4,8 @@
 //! the force is μ Σ pn dA (→ μN); (c) CONTACT's `examples/fastsim.inp` (its FASTSIM cases 2, 3, 5, 6, 8) against
 //! the author's printed output and our CONTACT build's per-element files (`reference/contact3d/fastsim/`, whose
 //! README says which number comes from where). CONTACT's cases 1 (its exact half-space solver) and 4, 7 (FaStrip,
-//! `M = 5`) are other methods, not implemented here: they are not compared.
+//! `M = 5`) are other methods, not implemented here: they are not compared. Also CONTACT's `tractcurv.inp` cases
+//! 61–90 (its original-FASTSIM creep curve).
 
 use rollbem::fastsim::{solve, Bound, Contact, Creepages, Direction, Flexibility, Grid, Options, State};
 use rollbem::theory::kalker::creep_coefficients;
@@ -272,4 +273,59 @@ fn bad_input_is_refused_naming_the_argument() {
         let e = solve(&contact, &cr, &o).unwrap_err();
         assert_eq!(e.argument, arg, "{e:?}");
     }
+}
+
+#[test]
+fn contact_tractcurv_original_fastsim_series_reproduced() {
+    // Expected: CONTACT's tractcurv.inp, cases 61–90 (its third series: "original Fastsim", M = 3 with
+    // K0_MF = ALFAMF = 1, parabolic bound B = 3, Coulomb μ = 0.33, the Eurosprinter creep curve of Polach 2005:
+    // ξ from 1e-5 to 0.25, η = φ = 0): the author's tractcurv.ref_out as printed (FX, FX/FSTAT/FN, PMAX to their
+    // digits; NCON, NADH, NSLIP exactly) and the flexibilities to six digits from our build's .mat files. The
+    // ellipse (IPOTCN = −2: curvature A1 and a/b given, CONTACT solves Hertz) is taken from the .mat grid,
+    // a = MX·DX/(2·1.1), b = MY·DY/(2·1.1), six digits: the flexibilities (∝ a) are compared within half a unit of
+    // their sixth digit plus 1e-6 of their value for it.
+    let mut largest: f64 = 0.0;
+    for row in csv("tractcurv_fastsim_cases.csv") {
+        let case = &row["case"];
+        let (mx, my, scale) = (num(&row, "mx") as usize, num(&row, "my") as usize, num(&row, "scale"));
+        let a = mx as f64 * num(&row, "dx") / (2.0 * scale);
+        let b = my as f64 * num(&row, "dy") / (2.0 * scale);
+        assert!(
+            (a - num(&row, "a")).abs() <= half_unit(&row["a"]) && (b - num(&row, "b")).abs() <= half_unit(&row["b"])
+        );
+        let contact = Contact {
+            a,
+            b,
+            shear_modulus: num(&row, "g"),
+            nu: num(&row, "nu"),
+            mu: num(&row, "mu"),
+            normal_force: num(&row, "fn_input"),
+        };
+        let cr = Creepages { xi: num(&row, "xi"), eta: num(&row, "eta"), phi: num(&row, "phi") };
+        let o = Options {
+            bound: Bound::Parabolic,
+            flexibility: Flexibility::Blended,
+            direction: Direction::PlusX,
+            grid: Grid::contact(mx, my, scale),
+        };
+        assert!((o.grid.size().0 as f64 * num(&row, "dq") - 2.0 * scale * a).abs() < 1e-3, "DQ = DX");
+        let s = solve(&contact, &cr, &o).unwrap();
+        for (i, key) in ["flx1_mat", "flx2_mat", "flx3_mat"].iter().enumerate() {
+            let (got, want) = (s.flexibilities[i], num(&row, key));
+            assert!((got - want).abs() <= half_unit(&row[*key]) + 1e-6 * want, "case {case} {key}: {got} vs {want}");
+        }
+        let fx_rel = s.fx / (contact.mu * contact.normal_force);
+        let pmax = s.elements.iter().map(|e| e.pn).fold(0.0, f64::max);
+        for (key, got) in [("fx", s.fx), ("fy", s.fy), ("mz", s.mz), ("fx_rel", fx_rel), ("pmax", pmax)] {
+            let d = (got - num(&row, key)).abs();
+            assert!(d <= half_unit(&row[key]), "case {case} {key}: {got:.6e} vs printed {}", row[key]);
+            if key == "fx" {
+                largest = largest.max(d / half_unit(&row[key]));
+            }
+        }
+        for (key, got) in [("ncon", s.n_contact), ("nadh", s.n_adhesion), ("nslip", s.n_slip)] {
+            assert_eq!(got, num(&row, key) as usize, "case {case} {key}");
+        }
+    }
+    println!("tractcurv 61–90: largest |ΔFx| {largest:.2} of half a printed unit");
 }
