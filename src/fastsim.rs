@@ -13,7 +13,7 @@
 //!   A positive ξ thus gives a negative Fx: `Fx ≈ −G c² C11 ξ` at small creepage (c = √(ab)).
 //! * The contact rolls along +x ([`Direction::PlusX`], CONTACT's χ = 0: material enters the contact at its leading
 //!   edge x = +a(y) and leaves at −a(y)) or along −x ([`Direction::MinusX`], χ = 180°).
-//! * `Mz = Σ (x py − y px) dx dy` about the ellipse's centre (counter-clockwise seen from +z positive).
+//! * `Mz = Σ (x py − y px) · area` about the ellipse's centre (counter-clockwise seen from +z positive).
 //!
 //! # The simplified theory and the marching
 //!

@@ -329,3 +329,33 @@ fn contact_tractcurv_original_fastsim_series_reproduced() {
     }
     println!("tractcurv 61–90: largest |ΔFx| {largest:.2} of half a printed unit");
 }
+
+#[test]
+fn rolling_along_minus_x_mirrors_rolling_along_plus_x() {
+    // Expected (symmetry): mirroring the problem in x (x → −x) turns rolling along +x with (ξ, η, φ) into rolling
+    // along −x with (−ξ, η, −φ) (the rigid slip's x-component changes sign, its y-component not), so Fx and Mz
+    // change sign and Fy does not; both grids are symmetric in x, so this holds to rounding, with slip and without,
+    // for every flexibility variant and bound. (CONTACT's case 8 of fastsim.inp is the same check on its side.)
+    let contact = kalker_contact(6.0, 4.0, 0.28);
+    for grid in [Grid::Strips { mx: 60, my: 40 }, Grid::contact(60, 40, 1.1)] {
+        for flexibility in [Flexibility::Weighted, Flexibility::Three, Flexibility::Blended] {
+            for bound in [Bound::Parabolic, Bound::Elliptic] {
+                for scale in [1e-7, 1e-3] {
+                    let cr = Creepages { xi: 0.4 * scale, eta: -0.7 * scale, phi: 0.2 * scale };
+                    let mut o = Options { bound, flexibility, direction: Direction::PlusX, grid };
+                    let p = solve(&contact, &cr, &o).unwrap();
+                    o.direction = Direction::MinusX;
+                    let m = solve(&contact, &Creepages { xi: -cr.xi, eta: cr.eta, phi: -cr.phi }, &o).unwrap();
+                    let f = p.fx.abs() + p.fy.abs();
+                    assert!((p.fx + m.fx).abs() < 1e-9 * f, "{grid:?} {flexibility:?}: {} {}", p.fx, m.fx);
+                    assert!((p.fy - m.fy).abs() < 1e-9 * f, "{grid:?} {flexibility:?}: {} {}", p.fy, m.fy);
+                    assert!((p.mz + m.mz).abs() < 1e-9 * f * 6.0, "{grid:?} {flexibility:?}: {} {}", p.mz, m.mz);
+                    assert_eq!((p.n_adhesion, p.n_slip), (m.n_adhesion, m.n_slip));
+                    if scale > 1e-5 {
+                        assert!(p.n_slip > 0 && p.n_adhesion > 0, "both zones present: {} {}", p.n_slip, p.n_adhesion);
+                    }
+                }
+            }
+        }
+    }
+}
