@@ -2,7 +2,7 @@
 """Kalker's creep coefficients computed by CONTACT's exact half-space solver: inputs and extraction for
 reference/contact3d/fastsim/kalker_linear.csv (README.md in this folder).
 
-  python3 kalker_linear.py gen NAME N [SPECS]   writes NAME.inp: steady rolling at vanishing creepage on N x N
+  python3 kalker_linear.py gen NAME MX MY [SPECS]  writes NAME.inp: steady rolling at vanishing creepage on MX x MY
                                                  elements, one case per (a/b, nu) of SPECS (indices into SPECS
                                                  below, comma-separated; default all) and per creepage xi, eta, phi
   CONTACT_BIN 2 NAME < /dev/null                 (run CONTACT in that folder: writes NAME.out)
@@ -22,7 +22,7 @@ SPECS = [(1.0, 0.25), (0.2, 0.25), (5.0, 0.25), (1.0, 0.0), (1.0, 0.5)]
 C = 4.0
 
 
-def case(a, b, nu, n, xi, eta, phi):
+def case(a, b, nu, n, m, xi, eta, phi):
     dx = 2.2 * a / n
     return f""" 3 MODULE
   203100     P-B-T-N-F-S
@@ -34,16 +34,16 @@ def case(a, b, nu, n, xi, eta, phi):
    0.000      {dx:.10f}      30000.                     CHI, DQ, VELOC
    {nu}      {nu}      82000.     82000.          POISS 1,2,  GG 1,2
    -3                                               IPOTCN
-   {n}   {n}     {a:.10f}      {b:.10f}      1.100          MX,MY,AA,BB,SCALE
+   {n}   {m}     {a:.10f}      {b:.10f}      1.100          MX,MY,AA,BB,SCALE
 """
 
 
-def gen(name, n, specs):
+def gen(name, n, m, specs):
     out = []
     for ab, nu in specs:
         a, b = C * ab ** 0.5, C / ab ** 0.5
         for xi, eta, phi in [(1e-6, 0, 0), (0, 1e-6, 0), (0, 0, 1e-6 / C)]:
-            out.append(case(a, b, nu, n, xi, eta, phi))
+            out.append(case(a, b, nu, n, m, xi, eta, phi))
     open(name + ".inp", "w").write("\n".join(out) + "\n 0 MODULE\n")
 
 
@@ -73,8 +73,8 @@ def read(name):
 
 def main():
     if sys.argv[1] == "gen":
-        specs = SPECS if len(sys.argv) < 5 else [SPECS[int(s)] for s in sys.argv[4].split(",")]
-        gen(sys.argv[2], int(sys.argv[3]), specs)
+        specs = SPECS if len(sys.argv) < 6 else [SPECS[int(s)] for s in sys.argv[5].split(",")]
+        gen(sys.argv[2], int(sys.argv[3]), int(sys.argv[4]), specs)
     else:
         path = sys.argv[2]
         cols = ["a", "b", "nu", "mx", "my", "xi", "eta", "phi", "nslip", "fx", "fy", "mz"]
