@@ -279,8 +279,8 @@ pub struct Solution {
     pub n_slip: usize,
 }
 
-/// The largest grid [`solve`] accepts (elements).
-pub const MAX_ELEMENTS: usize = 50_000_000;
+/// The largest grid [`solve`] accepts (elements; about 60 bytes each).
+pub const MAX_ELEMENTS: usize = 10_000_000;
 
 /// Kalker's flexibilities `L1 = 8a/(3 C11 G)`, `L2 = 8a/(3 C22 G)`, `L3 = π a^{3/2}/(4 C23 G √b)` (length³/force;
 /// module docs), unblended.
