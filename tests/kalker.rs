@@ -58,16 +58,17 @@ fn extrapolate(n1: usize, c1: f64, n2: usize, c2: f64) -> f64 {
 
 #[test]
 fn table_e3_agrees_with_contacts_exact_solver() {
-    // Expected: Table E.3 (as transcribed) within 1 % of CONTACT's exact coefficients extrapolated from its two
-    // finest grids of one shape. The series used per ellipse: elements square (dx = dy) where such a series exists,
-    // otherwise MX = MY (square elements for the circle; 5:1 across the rolling direction for a/b = 0.2). For
-    // a/b = 5 the MX = MY series (elements 5:1 along the rolling direction) is printed but not used: from 80 × 80 to
-    // 160 × 160 its C22 and C23 move away from both its coarser values and the table (Fy 10.80 → 10.83 N for η,
-    // 8.721 → 8.793 N for φ), beyond the print's resolution, so no extrapolation of it is meaningful; the square
-    // elements (100 × 20, 200 × 40) converge. The 1 % is the extrapolations' own uncertainty: CONTACT prints its
-    // forces to 4 digits (±0.05 %, doubled by the extrapolation), and the 40/80 and 80/160 extrapolations differ by
-    // up to 1 % (C23 at a/b = 0.2); plus the table's three digits. It tells the ν columns and the two branches
-    // apart (≥ 10 % apart), not neighbouring rows in g (2–3 % apart: theory::kalker's smoothness test does that).
+    // Expected: Table E.3 (as transcribed) within 1 % of CONTACT's exact coefficients extrapolated (first order)
+    // from its two finest grids of one shape. The series used per ellipse: elements square (dx = dy) where such a
+    // series exists, otherwise MX = MY (square elements for the circle; 5:1 across the rolling direction for
+    // a/b = 0.2). For a/b = 5 the MX = MY series (elements 5:1 along the rolling direction) is printed but not used:
+    // from 80 × 80 to 160 × 160 its C22 and C23 move away from its coarser values and from the table (Fy 10.80 →
+    // 10.83 N for η, 8.721 → 8.793 N for φ), by more than the print's resolution; the square elements (100 × 20,
+    // 200 × 40, 400 × 80) change by at most 0.2 % from 200 × 40 to 400 × 80. The 1 % is the extrapolations' own
+    // uncertainty: CONTACT prints its forces to 4 digits (±0.05 %, doubled by the extrapolation), and where three
+    // grids exist the two extrapolations differ by up to 1.4 % (C23 at a/b = 5; 1 % at a/b = 0.2, 0.1 % for the
+    // circle); plus the table's three digits. It tells the ν columns and the two branches apart (≥ 10 % apart), not
+    // neighbouring rows in g (2–3 % apart: theory::kalker's smoothness test does that).
     let mut worst: f64 = 0.0;
     let mut compared = 0;
     for ((a, b, nu), shapes) in computed() {
