@@ -63,8 +63,9 @@ fn table_e3_agrees_with_contacts_exact_solver() {
     // series exists, otherwise MX = MY (square elements for the circle; 5:1 across the rolling direction for
     // a/b = 0.2). For a/b = 5 the MX = MY series (elements 5:1 along the rolling direction) is printed but not used:
     // from 80 × 80 to 160 × 160 its C22 and C23 move away from its coarser values and from the table (Fy 10.80 →
-    // 10.83 N for η, 8.721 → 8.793 N for φ), by more than the print's resolution; the square elements (100 × 20,
-    // 200 × 40, 400 × 80) change by at most 0.2 % from 200 × 40 to 400 × 80. The 1 % is the extrapolations' own
+    // 10.83 N for η, 8.721 → 8.793 N for φ), by more than the print's resolution; on the square elements (100 × 20,
+    // 200 × 40, 400 × 80) C11, C22 and C23 (from Fy) fall monotonically towards the table (by 0.1–0.3 % from
+    // 200 × 40 to 400 × 80), C23 from Mz rises by 0.14 % there. The 1 % is the extrapolations' own
     // uncertainty: CONTACT prints its forces to 4 digits (±0.05 %, doubled by the extrapolation), and where three
     // grids exist the two extrapolations differ by up to 1.4 % (C23 at a/b = 5; 1 % at a/b = 0.2, 0.1 % for the
     // circle); plus the table's three digits. It tells the ν columns and the two branches apart (≥ 10 % apart), not
