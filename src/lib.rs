@@ -69,6 +69,7 @@ pub(crate) mod condition;
 pub(crate) mod diagnostics;
 pub mod error;
 pub mod exit;
+pub mod fastsim;
 pub mod flexibility;
 pub mod formulation;
 pub mod halfplane;

@@ -53,7 +53,8 @@
 //!
 //! One file per theory: [`hertz`] (1. Hertz line contact), [`cattaneo`] (2. Cattaneo–Mindlin),
 //! [`mindlin_deresiewicz`] (3. Mindlin–Deresiewicz), [`carter`] (4. Carter rolling), [`spence`] (5. Spence; [`spence3d`] its axisymmetric counterpart),
-//! [`mcewen`] (6. McEwen subsurface stresses), [`disk`] (7. diametrally compressed disk); [`stress`] holds the
+//! [`mcewen`] (6. McEwen subsurface stresses), [`disk`] (7. diametrally compressed disk); [`kalker`] (Kalker's creep coefficients of 3D
+//! rolling, Table E.3); [`stress`] holds the
 //! stress state they return and [`special`] the special functions. Every item is re-exported here, so
 //! `rollbem::theory::X` names each of them.
 //!
@@ -73,6 +74,7 @@ pub mod cattaneo;
 pub mod disk;
 pub mod hertz;
 pub mod hertz3d;
+pub mod kalker;
 pub mod mcewen;
 pub mod mindlin_deresiewicz;
 pub mod special;
@@ -88,6 +90,7 @@ pub use cattaneo::*;
 pub use disk::*;
 pub use hertz::*;
 pub use hertz3d::*;
+pub use kalker::*;
 pub use mcewen::*;
 pub use mindlin_deresiewicz::*;
 pub use special::*;
