@@ -115,6 +115,35 @@ fn cattaneo_shift_scene_meets_cattaneo_mindlin() {
     assert!(!rows.is_empty() && rows.iter().all(|c| c.kind == CheckKind::ModelComparison));
 }
 
+/// The methods named in `[solvers.half_space]` are the ones that run, and they agree: the Cattaneo shift scene by
+/// the unpreconditioned Polonsky–Keer and FISTA (independent iterations) gives the default methods' forces and
+/// stick counts (the defaults tested against theory above) to 1e-7 of the force, with more iterations.
+#[test]
+fn the_scene_chooses_the_methods() {
+    let base = SpaceScene::from_file(&scene("cattaneo-shift.toml")).unwrap();
+    let text = std::fs::read_to_string(scene("cattaneo-shift.toml")).unwrap();
+    let alt =
+        format!("{text}\n[solvers.half_space]\nnormal_method = \"polonsky_keer\"\ntangential_method = \"fista\"\n");
+    let alt = SpaceScene::from_toml(&alt, &scene("cattaneo-shift.toml")).unwrap();
+    let (a, b) =
+        (rollbem::pipeline::run_space_scene(&base).unwrap(), rollbem::pipeline::run_space_scene(&alt).unwrap());
+    for (x, y) in a.steps.iter().zip(&b.steps) {
+        let scale = x.force[0].hypot(x.force[1]).max(1e-300);
+        assert!(
+            (x.force[0] - y.force[0]).hypot(x.force[1] - y.force[1]) <= 1e-7 * scale,
+            "{:?} {:?}",
+            x.force,
+            y.force
+        );
+        assert_eq!((x.stick, x.slip), (y.stick, y.slip));
+        let its = |s: &rollbem::results::space::SpaceStepResult| (s.iterations_normal, s.iterations_tangential);
+        assert!(its(y).0 >= its(x).0 && its(y).1 >= its(x).1, "{:?} {:?}", its(x), its(y));
+    }
+    let total =
+        |r: &rollbem::results::space::SpaceReport| r.steps.iter().map(|s| s.iterations_tangential).sum::<usize>();
+    assert!(total(&b) > total(&a), "FISTA {} against the CG's {}", total(&b), total(&a));
+}
+
 /// The scene's steps are the library path's steps: the substeps interpolate the load from rest (100 … 800), and
 /// the coupled Spence compression solved through the scene equals `halfspace::Path` called directly (the
 /// library's solver, tested against CONTACT's spence35) bit for bit, with no net tangential force.
@@ -196,6 +225,7 @@ fn bad_input_names_the_key() {
         (good.replace("[drive]\nnormal_load = 100.0\n", "[contact]\nfriction = 0.3\n[[steps]]\nnormal_load = 1.0\ntangential_load = [0.1, 0.0]\n[[steps]]\nnormal_load = 1.0\ntangential_shift = [0.1, 0.0]\n"), "steps[1].tangential_shift"),
         (format!("{good}[solvers]\nuse = [\"lemke\"]\n"), "solvers.use"),
         (good.replace("curvatures = [0.01, 0.01]", "curvatures = [0.01, 0.0]"), "profile.curvatures"),
+        (format!("{good}[solvers.half_space]\ntangential_method = \"newton\"\n"), "tangential_method"),
     ];
     for (text, key) in cases {
         match read(&text) {

@@ -111,7 +111,9 @@ pub enum Stop {
 }
 
 /// The iteration [`solve`] uses (module docs, "Method").
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+/// (Named in scenes as `normal_method = "preconditioned_cg" | "polonsky_keer"`.)
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
 #[non_exhaustive]
 pub enum NormalMethod {
     /// Bound-constrained conjugate gradients on the contact set with the FFT preconditioner (the default).

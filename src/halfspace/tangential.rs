@@ -93,8 +93,9 @@ pub enum TangentialStop {
     GrossSliding,
 }
 
-/// The method of [`solve`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// The method of [`solve`] (named in scenes as `tangential_method = "conjugate_gradient" | "fista"`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
 #[non_exhaustive]
 pub enum TangentialMethod {
     /// The preconditioned nonlinear conjugate-gradient method on the stick and slip sets (after Vollebregt's

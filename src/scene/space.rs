@@ -326,6 +326,12 @@ pub struct HalfSpaceSettingsTable {
     /// The tangential solver's iteration limit (≥ 1; default 100 000).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tangential_max_iterations: Option<usize>,
+    /// The normal solver: `"preconditioned_cg"` (the default) or `"polonsky_keer"`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub normal_method: Option<crate::halfspace::normal::NormalMethod>,
+    /// The tangential solver: `"conjugate_gradient"` (the default) or `"fista"`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tangential_method: Option<crate::halfspace::tangential::TangentialMethod>,
     /// The coupled alternation's tolerance, in (0, 1) (default 1e-9).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub outer_tolerance: Option<f64>,
@@ -345,11 +351,13 @@ impl HalfSpaceSettingsTable {
             normal: NormalSettings::new(
                 self.normal_tolerance.unwrap_or(d.normal.tolerance),
                 self.normal_max_iterations.unwrap_or(d.normal.max_iterations),
-            ),
+            )
+            .with_method(self.normal_method.unwrap_or(d.normal.method)),
             tangential: TangentialSettings::new(
                 self.tangential_tolerance.unwrap_or(d.tangential.tolerance),
                 self.tangential_max_iterations.unwrap_or(d.tangential.max_iterations),
-            ),
+            )
+            .with_method(self.tangential_method.unwrap_or(d.tangential.method)),
             outer_tolerance: self.outer_tolerance.unwrap_or(d.outer_tolerance),
             max_outer: self.max_outer.unwrap_or(d.max_outer),
             residual: self.residual.unwrap_or(d.residual),
