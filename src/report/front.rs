@@ -178,8 +178,10 @@ pub fn changes(prev: &Previous, recs: &str, fronts: &str) -> String {
             m
         };
         let (a, b) = (members(old_fronts), members(&parse(fronts)));
-        let differ: Vec<String> =
-            b.keys().filter(|k| a.get(*k).is_some_and(|v| Some(v) != b.get(*k))).cloned().collect();
+        let differ: Vec<String> = b
+            .iter()
+            .filter_map(|(k, new)| a.get(k).filter(|old| *old != new).map(|old| format!("{k}: {}", moved_by(old, new))))
+            .collect();
         let added = b.keys().filter(|k| !a.contains_key(*k)).count();
         let same = b.len() - differ.len() - added;
         writeln!(
@@ -191,6 +193,23 @@ pub fn changes(prev: &Previous, recs: &str, fronts: &str) -> String {
         listed(&mut md, &differ);
     }
     md
+}
+
+/// How a front's entries moved: the largest relative change of an entry's error when the front kept its number of
+/// entries (in order), else the counts.
+fn moved_by(old: &[String], new: &[String]) -> String {
+    if old.len() != new.len() {
+        return format!("{} → {} entries", old.len(), new.len());
+    }
+    let num = |x: &String| x.parse::<f64>().ok();
+    let change = old.iter().zip(new).try_fold(0.0_f64, |m, (a, b)| {
+        let (a, b) = (num(a)?, num(b)?);
+        Some(m.max((a - b).abs() / a.abs().max(f64::MIN_POSITIVE)))
+    });
+    match change {
+        Some(c) => format!("the same {} entries, errors changed by at most {c:.1e} (relative)", new.len()),
+        None => format!("{} entries, not all numbers", new.len()),
+    }
 }
 
 /// One cell of the front page's table: `constant 50 · active_set: 8.40e-3 in 8.48e-5 s`.
@@ -310,4 +329,21 @@ pub fn scoreboard(reports: &BTreeMap<String, Report>) -> String {
         writeln!(md, "| {reference} | {} | {} | {} | {verdict} |", w.n, w.passed, w.what).unwrap();
     }
     md
+}
+
+#[cfg(test)]
+mod tests {
+    use super::moved_by;
+
+    /// A moved front says by how much (the values by hand: 1.0000001e-3 against 1e-3 is 1e-7 relative), or how its
+    /// membership changed.
+    #[test]
+    fn a_moved_front_says_by_how_much() {
+        let v = |x: &[&str]| x.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+        assert_eq!(
+            moved_by(&v(&["1e-3", "2e-4"]), &v(&["1.0000001e-3", "2e-4"])),
+            "the same 2 entries, errors changed by at most 1.0e-7 (relative)"
+        );
+        assert_eq!(moved_by(&v(&["1e-3", "2e-4"]), &v(&["1e-3", "2e-4", "3e-5"])), "2 → 3 entries");
+    }
 }
