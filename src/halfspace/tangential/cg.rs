@@ -20,10 +20,11 @@
 //! slipping element whose slip has turned along its shear (`s_iᵀ q_i > 0`) sticks. A change of the sets restarts
 //! the conjugation; otherwise it runs on with the new linearisation.
 //!
-//! **The preconditioner.** `B = P S M S P`, with `M = diag(M_xx, M_yy)` the inverses of the circulant embeddings
-//! of `C_xx` and `C_yy` ([`super::Influence::tangential_preconditioner`]) and `S` the diagonal scaling
+//! **The preconditioner.** `B = P S M S P`, with `M = diag(M_xx, M_yy)` the inverses of the compact circulants of
+//! `C_xx` and `C_yy` ([`super::Influence::tangential_preconditioner`]) and `S` the diagonal scaling
 //! `√(d/(d + c_i))` in `S` (`d` the diagonal compliance; 1 in `H`) that accounts for the turn term — symmetric
-//! positive semi-definite, as the method needs. Each step costs two FFT passes: the product `C_tt v` and `M`.
+//! positive semi-definite, as the method needs. Each step costs the product `C_tt v` (one block FFT pass) and `M`
+//! (a quarter of one), each check one more product `C_tt q`.
 //!
 //! **A prescribed force.** The sum `Σ q = F/A` (`A` one element's area) is a linear constraint `Eᵀ q = F/A` whose
 //! multiplier is the shift `w`. The shears are kept on it: the start and every check restore it by one common change
@@ -37,8 +38,8 @@
 //! **Stop.** When a step changes no shear by more than `tolerance · max g`, a check changes neither set, and neither
 //! the fresh residual (as a shear, `max |r_i| / C_xx(0, 0)`) nor (force prescribed) restoring the force asks for a
 //! larger change: a converged linear step alone is not enough, since putting the slipping shears back on their
-//! circles leaves a residual of its own. The
-//! answer is certified by the caller from the final shears (the natural residual of the disc law).
+//! circles leaves a residual of its own. The answer is certified by the caller from the final shears (the natural
+//! residual of the disc law).
 
 use super::super::operator::Influence;
 use crate::cancel::Cancel;
