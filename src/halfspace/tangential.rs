@@ -820,6 +820,23 @@ mod tests {
             .contains("tolerance"));
     }
 
+    /// The oblique-force problems' contact: a sphere pair (E = 210 GPa, ν = 0.3, R* = 50, P = 1 kN) on 21 × 21
+    /// elements over ±1.2a, its discrete pressure: (operators, pressure, Hertz, load).
+    fn sphere_21() -> (Influence, Vec<f64>, Hertz3D, f64) {
+        let (e, nu, load, r_star) = (210e3, 0.3, 1.0e3, 50.0);
+        let body = HalfSpace::new(e, nu).unwrap();
+        let hz = Hertz3D::from_load(0.5 / r_star, 0.5 / r_star, e / (2.0 * (1.0 - nu * nu)), load).unwrap();
+        let m = 21;
+        let d = 2.4 * hz.a_x / m as f64;
+        let o = -((m / 2) as f64) * d;
+        let grid = ContactGrid::new(m, m, d, d, o, o).unwrap();
+        let inf = Influence::new(grid, body.pair(&body), Kernels::Full).unwrap();
+        let h = grid.sample(|x, y| (x * x + y * y) / (2.0 * r_star));
+        let p =
+            normal::solve(&inf, &h, Drive::Load(load), &NormalSettings::default(), &Cancel::never()).unwrap().pressure;
+        (inf, p, hz, load)
+    }
+
     /// Both methods, force prescribed, against an independent solver of the same discrete problem: clarabel's
     /// second-order-cone program on the dense matrices ([`super::super::dense`]), with ν = 0.3 (so `C_xy ≠ 0` and the
     /// shears turn out of the force's direction) and an oblique force 0.6 μP at 30°. Same shears to 1e-6 of μp₀
@@ -834,17 +851,7 @@ mod tests {
 
     fn agree_with_clarabel_under_a_force(method: TangentialMethod) {
         use super::super::dense::{ConeSettings, DenseShift, ShiftDrive};
-        let (e, nu, load, r_star) = (210e3, 0.3, 1.0e3, 50.0);
-        let body = HalfSpace::new(e, nu).unwrap();
-        let hz = Hertz3D::from_load(0.5 / r_star, 0.5 / r_star, e / (2.0 * (1.0 - nu * nu)), load).unwrap();
-        let m = 21;
-        let d = 2.4 * hz.a_x / m as f64;
-        let o = -((m / 2) as f64) * d;
-        let grid = ContactGrid::new(m, m, d, d, o, o).unwrap();
-        let inf = Influence::new(grid, body.pair(&body), Kernels::Full).unwrap();
-        let h = grid.sample(|x, y| (x * x + y * y) / (2.0 * r_star));
-        let p =
-            normal::solve(&inf, &h, Drive::Load(load), &NormalSettings::default(), &Cancel::never()).unwrap().pressure;
+        let (inf, p, _, load) = sphere_21();
         let mu = 0.3;
         let f = (0.6 * mu * load * 30f64.to_radians().cos(), 0.6 * mu * load * 30f64.to_radians().sin());
         let ours = solve(
@@ -882,17 +889,8 @@ mod tests {
     #[test]
     fn conjugate_gradient_agrees_with_clarabel_and_fista() {
         use super::super::dense::{ConeSettings, DenseShift, ShiftDrive};
-        let (e, nu, load, r_star) = (210e3, 0.3, 1.0e3, 50.0);
-        let body = HalfSpace::new(e, nu).unwrap();
-        let hz = Hertz3D::from_load(0.5 / r_star, 0.5 / r_star, e / (2.0 * (1.0 - nu * nu)), load).unwrap();
-        let m = 21;
-        let d = 2.4 * hz.a_x / m as f64;
-        let o = -((m / 2) as f64) * d;
-        let grid = ContactGrid::new(m, m, d, d, o, o).unwrap();
-        let inf = Influence::new(grid, body.pair(&body), Kernels::Full).unwrap();
-        let h = grid.sample(|x, y| (x * x + y * y) / (2.0 * r_star));
-        let p =
-            normal::solve(&inf, &h, Drive::Load(load), &NormalSettings::default(), &Cancel::never()).unwrap().pressure;
+        let (inf, p, hz, load) = sphere_21();
+        let grid = *inf.grid();
         let mu = 0.3;
         let mu_p0 = mu * p.iter().fold(0.0_f64, |m, &v| m.max(v));
         let diff = |a: &TangentialSolution, qx: &[f64], qy: &[f64]| {

@@ -132,7 +132,7 @@ fn figure(alt: &str, t: &str, out: &Path, depth: usize) -> String {
 }
 
 /// The cells of a table row (`\|` is a literal bar inside a cell).
-fn cells(line: &str) -> Vec<String> {
+pub(super) fn cells(line: &str) -> Vec<String> {
     let t = line.trim().trim_start_matches('|');
     let t = t.strip_suffix('|').unwrap_or(t);
     let mut v = vec![String::new()];

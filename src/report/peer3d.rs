@@ -23,7 +23,7 @@ pub(super) struct Row {
 /// The rows of the performance series in the peer table (columns found by their headers; rows whose cells do not
 /// parse are skipped).
 pub(super) fn rows(table: &str) -> Vec<Row> {
-    let cells = |line: &str| line.trim().trim_matches('|').split('|').map(|c| c.trim().to_string()).collect::<Vec<_>>();
+    let cells = super::html::cells;
     let mut lines = table.lines().filter(|l| l.trim_start().starts_with('|'));
     let Some(header) = lines.next().map(cells) else { return Vec::new() };
     let col = |name: &str| header.iter().position(|h| h == name);

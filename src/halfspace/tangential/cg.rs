@@ -309,30 +309,12 @@ impl<'p, 'a> Cg<'p, 'a> {
             let inside = |i: usize| if self.frame.set[i] == Set::Exterior { 0.0 } else { 1.0 };
             let mut unit: Pair = ((0..n).map(|i| e.0 * inside(i)).collect(), (0..n).map(|i| e.1 * inside(i)).collect());
             self.frame.project(&mut unit.0, &mut unit.1);
-            self.apply_b(&unit, k, &mut c)?;
+            apply_b(self.m, &self.frame, &mut self.w, &unit, &mut c.bpe[k])?;
         }
         let (gx, gy) = (sums(&c.bpe[0]), sums(&c.bpe[1]));
         let ok = inverse2([[gx.0, gy.0], [gx.1, gy.1]]).map(|gi| c.ginv = gi).is_some();
         self.constraint = Some(c);
         Ok(ok)
-    }
-
-    /// `c.bpe[k] = B u` (module docs: `B = P S M S P`, `u` already projected).
-    fn apply_b(&mut self, u: &Pair, k: usize, c: &mut Constraint) -> Result<(), ArgumentError> {
-        let (f, w) = (&self.frame, &mut self.w);
-        for i in 0..u.0.len() {
-            w.dx[i] = u.0[i] * f.scale.0[i];
-            w.dy[i] = u.1[i] * f.scale.1[i];
-        }
-        let out = &mut c.bpe[k];
-        self.m[0].apply_into(&w.dx, &mut out.0, &mut w.one)?;
-        self.m[1].apply_into(&w.dy, &mut out.1, &mut w.one)?;
-        for i in 0..u.0.len() {
-            out.0[i] *= f.scale.0[i];
-            out.1[i] *= f.scale.1[i];
-        }
-        f.project(&mut out.0, &mut out.1);
-        Ok(())
     }
 
     /// Force drive: `x ← x − B P E G⁻¹ Eᵀ x`, the part of `x` that changes `Σ q` taken out (B-orthogonally).
@@ -422,21 +404,9 @@ impl<'p, 'a> Cg<'p, 'a> {
         (0..r.0.len()).fold(0.0_f64, |m, i| m.max(r.0[i].hypot(r.1[i]))) / self.d.0.min(self.d.1)
     }
 
-    /// The preconditioned residual `z = P S M S r` (module docs).
+    /// The preconditioned residual `z = B r` (module docs).
     fn precondition(&mut self) -> Result<(), ArgumentError> {
-        let (f, w, r, z) = (&self.frame, &mut self.w, &self.r, &mut self.z);
-        for i in 0..r.0.len() {
-            w.dx[i] = r.0[i] * f.scale.0[i];
-            w.dy[i] = r.1[i] * f.scale.1[i];
-        }
-        self.m[0].apply_into(&w.dx, &mut z.0, &mut w.one)?;
-        self.m[1].apply_into(&w.dy, &mut z.1, &mut w.one)?;
-        for i in 0..r.0.len() {
-            z.0[i] *= f.scale.0[i];
-            z.1[i] *= f.scale.1[i];
-        }
-        f.project(&mut z.0, &mut z.1);
-        Ok(())
+        apply_b(self.m, &self.frame, &mut self.w, &self.r, &mut self.z)
     }
 
     /// `J v = P C_tt v + c ∘ v` into `jv` (module docs).
@@ -491,6 +461,22 @@ pub(super) fn run(
         }
     };
     Ok(Some(Outcome { q: cg.q, shift: cg.shift, iterations, stop }))
+}
+
+/// `out = B u = P S M S P u` (module docs; `u` already projected, `P u = u`).
+fn apply_b(m: &[Toeplitz2d; 2], f: &Frame, w: &mut Work, u: &Pair, out: &mut Pair) -> Result<(), ArgumentError> {
+    for i in 0..u.0.len() {
+        w.dx[i] = u.0[i] * f.scale.0[i];
+        w.dy[i] = u.1[i] * f.scale.1[i];
+    }
+    m[0].apply_into(&w.dx, &mut out.0, &mut w.one)?;
+    m[1].apply_into(&w.dy, &mut out.1, &mut w.one)?;
+    for i in 0..u.0.len() {
+        out.0[i] *= f.scale.0[i];
+        out.1[i] *= f.scale.1[i];
+    }
+    f.project(&mut out.0, &mut out.1);
+    Ok(())
 }
 
 /// Slipping elements whose slip runs along their shear (`s_iᵀ q_i > 0`) return to stick; whether any did.
