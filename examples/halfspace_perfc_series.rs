@@ -18,6 +18,7 @@
 
 use rollbem::cancel::Cancel;
 use rollbem::halfspace::normal::{self, Drive, NormalMethod, NormalSettings};
+use rollbem::halfspace::rolling::{self, RollingDrive, RollingSettings, SteadyRolling};
 use rollbem::halfspace::tangential::{self, ShiftStep, TangentialDrive, TangentialSettings};
 use rollbem::halfspace::{ContactGrid, HalfSpace, Influence, Kernels};
 use std::time::Instant;
@@ -40,30 +41,35 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     } else {
         NormalMethod::PreconditionedCg
     };
-    let mut cases: Vec<(usize, bool)> = args
+    let mut cases: Vec<(usize, char)> = args
         .iter()
         .filter_map(|a| {
             let (k, kind) = a.split_at(a.len().saturating_sub(1));
-            Some((k.parse().ok()?, kind == "s")).filter(|_| kind == "s" || kind == "p")
+            let kind = kind.chars().next()?;
+            Some((k.parse().ok()?, kind)).filter(|_| "pscf".contains(kind))
         })
         .collect();
     if cases.is_empty() {
-        cases = vec![(1, false), (2, false), (4, false)];
+        cases = vec![(1, 'p'), (2, 'p'), (4, 'p')];
     }
     let body = HalfSpace::new(2.0 * 82000.0 * 1.28, 0.28)?;
-    // (level, MX, MY, CONTACT's elements in contact, CONTACT's elements in slip)
-    let series = [(1, 71, 81, 3148, 1730), (2, 143, 163, 12902, 7243), (4, 287, 323, 50796, 28260)];
-    let series = [series.as_slice(), &[(8, 575, 647, 200980, 111191)]].concat();
+    // (level, MX, MY, CONTACT's elements in contact, CONTACT's elements in slip for s, c, f)
+    let series = [
+        (1, 71, 81, 3148, [1730, 1872, 1872]),
+        (2, 143, 163, 12902, [7243, 7735, 7757]),
+        (4, 287, 323, 50796, [28260, 30181, 30263]),
+        (8, 575, 647, 200980, [111191, 0, 0]),
+    ];
     println!("case | grid | in contact (CONTACT) | stick | slip (CONTACT) | FN [N] | FX, FY [N] | iterations n, t | residuals n, t | set-up [s] | normal [s] | tangential [s]");
-    for (k, shift) in cases {
-        let Some(&(_, mx, my, contact, slip)) = series.iter().find(|c| c.0 == k) else {
+    for (k, kind) in cases {
+        let Some(&(_, mx, my, contact, slips)) = series.iter().find(|c| c.0 == k) else {
             eprintln!("level {k}: not one of 1, 2, 4, 8");
             continue;
         };
         let d = 0.1 / k as f64;
         let t0 = Instant::now();
         let grid = ContactGrid::new(mx, my, d, d, -3.55 + 0.5 * d, -6.15 + 0.5 * d)?;
-        let kernels = if shift { Kernels::Full } else { Kernels::Normal };
+        let kernels = if kind == 'p' { Kernels::Normal } else { Kernels::Full };
         let inf = Influence::new(grid, body.pair(&body), kernels)?;
         let h = grid.sample(|x, y| profile(y) + x * x / (2.0 * 483.931));
         let setup = t0.elapsed().as_secs_f64();
@@ -71,25 +77,53 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let t1 = Instant::now();
         let s = normal::solve(&inf, &h, Drive::Approach(0.02084), &settings, &Cancel::never())?;
         let t_norm = t1.elapsed().as_secs_f64();
-        let name = format!("{k}{}", if shift { "s" } else { "p" });
-        let head = format!("{name} | {mx} × {my} | {} ({contact})", s.in_contact);
-        if !shift {
-            println!(
-                "{head} | | | {:.2} | | {}, | {:.1e}, | {setup:.3} | {t_norm:.3} |",
-                s.load, s.iterations, s.residual
-            );
-            continue;
-        }
-        let cphi = 0.0008;
-        let ox: Vec<f64> = grid.centres().iter().map(|c| -cphi * c.1).collect();
-        let oy: Vec<f64> = grid.centres().iter().map(|c| cphi * c.0).collect();
-        let step = ShiftStep::new(&s.pressure, 0.3, TangentialDrive::Shift(0.0005, -0.001)).with_offset(&ox, &oy);
+        let head = format!("{k}{kind} | {mx} × {my} | {} ({contact})", s.in_contact);
         let t2 = Instant::now();
-        let t = tangential::solve(&inf, &step, &TangentialSettings::new(1e-7, 100_000), &Cancel::never())?;
+        let (stick, slip, force, iterations, residual) = match kind {
+            'p' => {
+                println!(
+                    "{head} | | | {:.2} | | {}, | {:.1e}, | {setup:.3} | {t_norm:.3} |",
+                    s.load, s.iterations, s.residual
+                );
+                continue;
+            }
+            's' => {
+                let cphi = 0.0008;
+                let ox: Vec<f64> = grid.centres().iter().map(|c| -cphi * c.1).collect();
+                let oy: Vec<f64> = grid.centres().iter().map(|c| cphi * c.0).collect();
+                let step =
+                    ShiftStep::new(&s.pressure, 0.3, TangentialDrive::Shift(0.0005, -0.001)).with_offset(&ox, &oy);
+                let t = tangential::solve(&inf, &step, &TangentialSettings::new(1e-7, 100_000), &Cancel::never())?;
+                (t.stick, t.slip, t.force, t.iterations, t.residual)
+            }
+            _ => {
+                // CONTACT's tang_problm_kc / kf: CKSI = 0.0005, CETA = 0, CPHI = 0.0003, or FX/(μFN) = −0.573,
+                // FY/(μFN) = −0.327 with the same spin; μ = 0.3, rolling along +x.
+                let drive = if kind == 'c' {
+                    RollingDrive::Creepage(0.0005, 0.0)
+                } else {
+                    RollingDrive::Force(-0.573 * 0.3 * s.load, -0.327 * 0.3 * s.load)
+                };
+                let problem = SteadyRolling::new(&s.pressure, 0.3, 0.0003, drive);
+                let r = rolling::solve(&inf, &problem, &RollingSettings::new(1e-7, 100_000), &Cancel::never())?;
+                eprintln!(
+                    "{k}{kind}: creepage {:.6e}, {:.6e}, moment {:.1}, Newton steps {}, stop {:?}",
+                    r.creepage.0, r.creepage.1, r.moment, r.newton_steps, r.stop
+                );
+                (r.stick, r.slip, r.force, r.products, r.residual)
+            }
+        };
         let t_tang = t2.elapsed().as_secs_f64();
+        let reference = slips[if kind == 's' {
+            0
+        } else if kind == 'c' {
+            1
+        } else {
+            2
+        }];
         println!(
-            "{head} | {} | {} ({slip}) | {:.2} | {:.1}, {:.1} | {}, {} | {:.1e}, {:.1e} | {setup:.3} | {t_norm:.3} | {t_tang:.3}",
-            t.stick, t.slip, s.load, t.force.0, t.force.1, s.iterations, t.iterations, s.residual, t.residual
+            "{head} | {stick} | {slip} ({reference}) | {:.2} | {:.1}, {:.1} | {}, {iterations} | {:.1e}, {residual:.1e} | {setup:.3} | {t_norm:.3} | {t_tang:.3}",
+            s.load, force.0, force.1, s.iterations, s.residual
         );
     }
     Ok(())

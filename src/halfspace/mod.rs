@@ -23,6 +23,8 @@
 //! - [`path`]: the typed 3D problem — bodies, grid, profile, friction, a path of steps — solving each step from the
 //!   previous state, coupling the normal and tangential problems only for a dissimilar pair, with a status per
 //!   step (a contact cut off by the grid's edge is not `Solved`);
+//! - [`rolling`]: steady rolling with creepages and spin (Kalker's exact theory), the creepages or the force
+//!   prescribed;
 //! - [`subsurface`]: the stresses inside a half-space under the grid's tractions (closed form per element: Love's
 //!   and Cerruti's rectangle), with von Mises and Tresca maxima;
 //! - [`dense`]: the small-grid cross-checks with dense influence matrices: the normal problem by Lemke and by
@@ -38,6 +40,7 @@ pub mod kernel;
 pub mod normal;
 mod operator;
 pub mod path;
+pub mod rolling;
 pub mod subsurface;
 pub mod tangential;
 

@@ -64,7 +64,7 @@
 use super::operator::Influence;
 use crate::cancel::Cancel;
 
-mod cg;
+pub(crate) mod cg;
 use crate::error::ArgumentError;
 use crate::toeplitz2d::BlockScratch;
 

@@ -50,10 +50,13 @@ use crate::toeplitz2d::{BlockScratch, Scratch, Toeplitz2d};
 pub(super) const INNER: usize = 4;
 
 /// An element's set.
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum Set {
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub(crate) enum Set {
+    /// No bound: outside the contact.
     Exterior,
+    /// Below the bound, no slip.
     Stick,
+    /// On the bound.
     Slip,
 }
 
@@ -114,18 +117,18 @@ impl Problem<'_> {
 }
 
 /// The linearisation at the current shears: per element its set, `t_i` and `c_i` (module docs).
-struct Frame {
-    set: Vec<Set>,
-    tx: Vec<f64>,
-    ty: Vec<f64>,
-    c: Vec<f64>,
+pub(crate) struct Frame {
+    pub(crate) set: Vec<Set>,
+    pub(crate) tx: Vec<f64>,
+    pub(crate) ty: Vec<f64>,
+    pub(crate) c: Vec<f64>,
     /// The preconditioner's scaling per element and component (module docs).
-    scale: (Vec<f64>, Vec<f64>),
+    pub(crate) scale: (Vec<f64>, Vec<f64>),
 }
 
 impl Frame {
     /// The frame of the current sets at the shears `q` with slips `(sx, sy)`; `d` the diagonal compliances.
-    fn update(&mut self, q: &Pair, s: (&[f64], &[f64]), g: &[f64], d: (f64, f64)) {
+    pub(crate) fn update(&mut self, q: (&[f64], &[f64]), s: (&[f64], &[f64]), g: &[f64], d: (f64, f64)) {
         for i in 0..self.set.len() {
             (self.tx[i], self.ty[i], self.c[i], self.scale.0[i], self.scale.1[i]) = (0.0, 0.0, 0.0, 1.0, 1.0);
             if self.set[i] == Set::Slip {
@@ -139,7 +142,7 @@ impl Frame {
     }
 
     /// `P` in place: exterior to zero, slip to its `t` component.
-    fn project(&self, x: &mut [f64], y: &mut [f64]) {
+    pub(crate) fn project(&self, x: &mut [f64], y: &mut [f64]) {
         for i in 0..x.len() {
             match self.set[i] {
                 Set::Exterior => (x[i], y[i]) = (0.0, 0.0),
@@ -154,7 +157,7 @@ impl Frame {
 }
 
 /// A pair of grid vectors (x and y components).
-type Pair = (Vec<f64>, Vec<f64>);
+pub(crate) type Pair = (Vec<f64>, Vec<f64>);
 
 fn dot(a: &Pair, b: &Pair) -> f64 {
     a.0.iter().zip(&b.0).map(|(x, y)| x * y).sum::<f64>() + a.1.iter().zip(&b.1).map(|(x, y)| x * y).sum::<f64>()
@@ -191,7 +194,7 @@ struct Cg<'p, 'a> {
 }
 
 /// The inverse of a symmetric 2 × 2 matrix, `None` when it is (nearly) singular.
-fn inverse2(m: [[f64; 2]; 2]) -> Option<[[f64; 2]; 2]> {
+pub(crate) fn inverse2(m: [[f64; 2]; 2]) -> Option<[[f64; 2]; 2]> {
     let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
     let scale = (m[0][0].abs() + m[1][1].abs()).powi(2);
     (det > 1e-10 * scale && det.is_finite()).then(|| [[m[1][1] / det, -m[0][1] / det], [-m[1][0] / det, m[0][0] / det]])
@@ -240,7 +243,7 @@ impl<'p, 'a> Cg<'p, 'a> {
             return Ok(None);
         }
         cg.p.slip(&cg.q, cg.shift, &mut cg.w)?;
-        release_wrong_slips(&mut cg.frame.set, &cg.q, (&cg.w.sx, &cg.w.sy));
+        release_wrong_slips(&mut cg.frame.set, (&cg.q.0, &cg.q.1), (&cg.w.sx, &cg.w.sy));
         Ok(cg.linearise()?.then_some(cg))
     }
 
@@ -266,7 +269,7 @@ impl<'p, 'a> Cg<'p, 'a> {
     /// the constraint's Gram matrix is singular (no stick element, every slip direction alike).
     fn linearise(&mut self) -> Result<bool, ArgumentError> {
         let (g, d) = (self.p.bound, self.d);
-        self.frame.update(&self.q, (&self.w.sx, &self.w.sy), g, d);
+        self.frame.update((&self.q.0, &self.q.1), (&self.w.sx, &self.w.sy), g, d);
         if self.constraint.is_some() {
             let (mut a, mut b) = ([[0.0; 2]; 2], (0.0, 0.0));
             let f = &self.frame;
@@ -289,7 +292,7 @@ impl<'p, 'a> Cg<'p, 'a> {
             self.shift = (self.shift.0 + dw.0, self.shift.1 + dw.1);
             self.w.sx.iter_mut().for_each(|v| *v += dw.0);
             self.w.sy.iter_mut().for_each(|v| *v += dw.1);
-            self.frame.update(&self.q, (&self.w.sx, &self.w.sy), g, d);
+            self.frame.update((&self.q.0, &self.q.1), (&self.w.sx, &self.w.sy), g, d);
             if !self.constraint_directions()? {
                 return Ok(false);
             }
@@ -388,7 +391,7 @@ impl<'p, 'a> Cg<'p, 'a> {
         }
         let Some(moved) = self.restore_force() else { return Ok(None) };
         self.p.slip(&self.q, self.shift, &mut self.w)?;
-        changed |= release_wrong_slips(&mut self.frame.set, &self.q, (&self.w.sx, &self.w.sy));
+        changed |= release_wrong_slips(&mut self.frame.set, (&self.q.0, &self.q.1), (&self.w.sx, &self.w.sy));
         if !self.linearise()? {
             return Ok(None);
         }
@@ -480,7 +483,7 @@ fn apply_b(m: &[Toeplitz2d; 2], f: &Frame, w: &mut Work, u: &Pair, out: &mut Pai
 }
 
 /// Slipping elements whose slip runs along their shear (`s_iᵀ q_i > 0`) return to stick; whether any did.
-fn release_wrong_slips(set: &mut [Set], q: &Pair, s: (&[f64], &[f64])) -> bool {
+pub(crate) fn release_wrong_slips(set: &mut [Set], q: (&[f64], &[f64]), s: (&[f64], &[f64])) -> bool {
     let mut changed = false;
     for i in 0..set.len() {
         if set[i] == Set::Slip && s.0[i] * q.0[i] + s.1[i] * q.1[i] > 0.0 {
