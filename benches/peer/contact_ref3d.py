@@ -45,6 +45,8 @@ INPUTS = {
     "subsurf": ("examples", [1, 2]),
     "norm_problm_1p": ("perfc_test", [1]),
     "tang_problm_1s": ("perfc_test", [1]),
+    "tang_problm_1c": ("perfc_test", [1]),
+    "tang_problm_1f": ("perfc_test", [1]),
 }
 
 NUM = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([EeDd][+-]?\d+)?d?$")
@@ -184,13 +186,16 @@ def parse_inp(path):
         for letter, bad in (("X", (1,)), ("V", (1, 2, 3)), ("H", (1, 3)), ("M", (1, 2, 3, 4, 5, 6, 7))):
             if d.get(letter, 0) in bad:
                 raise InputError(f"case {c['case']}: {letter} = {d[letter]} is not decoded here")
-        if d.get("E", 0) == 9 or d.get("G", 0) == 5 or d.get("C", 0) in (3, 4, 9):
-            raise InputError(f"case {c['case']}: E = 9, G = 5 or C = 3, 4, 9 are not decoded here")
+        if d.get("E", 0) == 9 or d.get("C", 0) in (3, 4, 9):
+            raise InputError(f"case {c['case']}: E = 9 or C = 3, 4, 9 are not decoded here")
         if d.get("L", 0) not in (0, 1):
             raise InputError(f"case {c['case']}: friction law L = {d['L']} is not decoded here")
         g = d.get("G", 0)
-        if g in (0, 2, 3, 4):
+        if g in (0, 2, 3, 4, 5):
             state["solver"] = dict(zip(["MAXGS", "MAXIN", "MAXNR", "MAXOUT", "EPS"], r.numbers(5, "MAXGS ... EPS")))
+        if g == 5:
+            # GDsteady's parameters (user guide, G = 5): FDECAY, BETATH, KDOWFB, D_IFC, D_LIN, D_CNS, D_SLP, POW_S
+            state["gdsteady"] = r.numbers(8, "FDECAY ... POW_S")
         if g in (2, 3):
             state["omegas"] = r.numbers(4, "OMEGAH, OMEGAS, INISLP, OMGSLP")
         if g == 4:

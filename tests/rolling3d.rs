@@ -1,0 +1,274 @@
+//! Steady rolling on the half-space (`rollbem::halfspace::rolling`, issue 36) against independent answers:
+//!
+//! - the limit of transient rolling, marched here by the shift solver (`halfspace::tangential`, itself checked
+//!   against clarabel's cone program) with the previous shears carried one element downstream per step — the same
+//!   discrete equations reached by another method;
+//! - the mirror image of a problem rolling the other way (the half-space's reflection symmetry);
+//! - CONTACT's steady-rolling performance inputs `tang_problm_1c` (creepages prescribed) and `1f` (forces
+//!   prescribed), element by element (`reference/contact3d/`, from our MKL build of CONTACT r2707; their slip counts
+//!   equal the author's `perfc_test/get_times.ref_out`);
+//! - Kalker's linear theory: C11, C22, C23 of Table E.3 (`theory::kalker`) in full adhesion, and the reciprocity
+//!   C32 = −C23 (Betti's theorem);
+//! - full sliding: at a creepage far beyond saturation the force tends to μ F_n against the creepage.
+
+use rollbem::cancel::Cancel;
+use rollbem::halfspace::normal::{self, Drive, NormalSettings};
+use rollbem::halfspace::rolling::{self, RollingDirection, RollingDrive, RollingSettings, RollingStop, SteadyRolling};
+use rollbem::halfspace::tangential::{self, ElementState, ShiftStep, TangentialDrive, TangentialSettings};
+use rollbem::halfspace::{ContactGrid, HalfSpace, Influence, Kernels};
+use rollbem::theory::kalker;
+use std::collections::HashMap;
+
+/// One CSV of `reference/contact3d/` as rows of column → text.
+fn csv(name: &str) -> Vec<HashMap<String, String>> {
+    let path = format!("{}/reference/contact3d/{name}", env!("CARGO_MANIFEST_DIR"));
+    let mut r = csv::Reader::from_path(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    let head: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
+    r.records().map(|rec| head.iter().cloned().zip(rec.unwrap().iter().map(String::from)).collect()).collect()
+}
+
+fn num(row: &HashMap<String, String>, key: &str) -> f64 {
+    row[key].trim().parse().unwrap_or_else(|_| panic!("{key} = {:?}", row[key]))
+}
+
+/// A Hertzian ellipse (semi-axes 1 and 0.8, p0 = 0.01, G = 1, ν = 0.28) on a 26 × 22 grid of 0.09: the pressure
+/// sampled from Hertz's formula at the element centres (the tangential problem only needs some pressure).
+fn ellipse() -> (Influence, Vec<f64>) {
+    let h = 0.09;
+    let grid = ContactGrid::new(26, 22, h, h, -12.5 * h, -10.5 * h).unwrap();
+    let body = HalfSpace::new(2.0 * 1.28, 0.28).unwrap();
+    let inf = Influence::new(grid, body.pair(&body), Kernels::Full).unwrap();
+    let p = grid.sample(|x, y| 0.01 * (1.0 - x * x - y * y / 0.64).max(0.0).sqrt());
+    (inf, p)
+}
+
+/// The shears one element downstream: the traction each particle carried one step earlier (rolling along +x the
+/// material moves to smaller x; nothing enters at the leading edge).
+fn carried(q: &[f64], mx: usize) -> Vec<f64> {
+    let mut out = vec![0.0; q.len()];
+    for (row_in, row_out) in q.chunks(mx).zip(out.chunks_mut(mx)) {
+        row_out[..mx - 1].copy_from_slice(&row_in[1..]);
+    }
+    out
+}
+
+/// Kalker's transient rolling, marched from rest by shift steps of one element Δx (CONTACT's T = 2 with DQ = DX):
+/// step n solves the shift problem with the rigid shift Δx·(ξ − φy, η + φ(x + Δx/6)) from the previous shears
+/// carried one element downstream, until a step changes no shear by more than 1e-13 μp₀ (or 600 steps). Its fixed
+/// point satisfies exactly the steady-rolling equations of `halfspace::rolling`.
+#[test]
+fn steady_rolling_is_the_limit_of_transient_rolling() {
+    let (inf, p) = ellipse();
+    let grid = *inf.grid();
+    let (mu, xi, eta, phi) = (0.3, 0.002, -0.001, 0.002);
+    let h = grid.dx();
+    let ox: Vec<f64> = grid.centres().iter().map(|c| -phi * c.1 * h).collect();
+    let oy: Vec<f64> = grid.centres().iter().map(|c| phi * (c.0 + h / 6.0) * h).collect();
+    let n = grid.len();
+    let (mut qx, mut qy) = (vec![0.0; n], vec![0.0; n]);
+    let settings = TangentialSettings::new(1e-13, 100_000);
+    let gmax = mu * 0.01;
+    let mut steps = 0;
+    loop {
+        let (px, py) = (carried(&qx, grid.mx()), carried(&qy, grid.mx()));
+        let step =
+            ShiftStep::new(&p, mu, TangentialDrive::Shift(h * xi, h * eta)).after(&px, &py).with_offset(&ox, &oy);
+        let s = tangential::solve(&inf, &step, &settings, &Cancel::never()).unwrap();
+        let change = (0..n).map(|i| (s.qx[i] - qx[i]).hypot(s.qy[i] - qy[i])).fold(0.0, f64::max);
+        (qx, qy) = (s.qx, s.qy);
+        steps += 1;
+        if change <= 1e-13 * gmax || steps == 600 {
+            break;
+        }
+    }
+    let problem = SteadyRolling::new(&p, mu, phi, RollingDrive::Creepage(xi, eta));
+    let r = rolling::solve(&inf, &problem, &RollingSettings::new(1e-12, 100_000), &Cancel::never()).unwrap();
+    let diff = (0..n).map(|i| (r.qx[i] - qx[i]).hypot(r.qy[i] - qy[i])).fold(0.0, f64::max) / gmax;
+    println!(
+        "transient march: {steps} steps; steady: {} products, {} stick, {} slip, residual {:.1e}; largest difference {diff:.1e} of μp₀",
+        r.products, r.stick, r.slip, r.residual
+    );
+    assert!(steps < 600, "the march did not settle");
+    assert_eq!(r.stop, RollingStop::Converged);
+    assert!(r.stick > 50 && r.slip > 50, "a partial-slip case: {} stick, {} slip", r.stick, r.slip);
+    assert!(r.residual <= 1e-10, "natural residual {:e}", r.residual);
+    assert!(diff <= 1e-8, "steady rolling differs from the transient limit by {diff:e} of μp₀");
+}
+
+/// Reflecting x → −x turns a contact rolling along +x with creepages (ξ, η, φ) into one rolling along −x with
+/// (−ξ, η, −φ), and its shears (q_x, q_y)(x, y) into (−q_x, q_y)(−x, y). The grid and the pressure are symmetric.
+#[test]
+fn rolling_backwards_is_the_mirror_image() {
+    let (inf, p) = ellipse();
+    let grid = *inf.grid();
+    let (mx, n) = (grid.mx(), grid.len());
+    let s = RollingSettings::new(1e-12, 100_000);
+    let fwd = SteadyRolling::new(&p, 0.3, 0.002, RollingDrive::Creepage(0.002, -0.001));
+    let bwd =
+        SteadyRolling::new(&p, 0.3, -0.002, RollingDrive::Creepage(-0.002, -0.001)).rolling(RollingDirection::MinusX);
+    let a = rolling::solve(&inf, &fwd, &s, &Cancel::never()).unwrap();
+    let b = rolling::solve(&inf, &bwd, &s, &Cancel::never()).unwrap();
+    let mirror = |i: usize| (mx - 1 - i % mx) + mx * (i / mx);
+    let diff =
+        (0..n).map(|i| (a.qx[i] + b.qx[mirror(i)]).abs().max((a.qy[i] - b.qy[mirror(i)]).abs())).fold(0.0, f64::max);
+    println!("mirror: largest difference {diff:.1e} (μp₀ = 3e-3)");
+    assert!(diff <= 1e-10 * 0.003, "{diff:e}");
+    assert_eq!((a.stick, a.slip), (b.stick, b.slip));
+}
+
+/// CONTACT's `tang_problm_1c` / `1f`: the normal problem of `norm_problm_1p` (rail–wheel profile, approach
+/// 0.02084 mm, G = 82 000, ν = 0.28, 71 × 81 elements of 0.1 mm), then steady rolling with μ = 0.3, spin
+/// CPHI = 0.0003 rad/mm and CKSI = 0.0005 (1c) or FX/(μFN) = −0.573, FY/(μFN) = −0.327 (1f), χ = 0, DQ = DX,
+/// CONTACT's FACPHI = 1/6.
+fn contact_perfc(name: &str) {
+    let prof: Vec<f64> = csv(&format!("{name}_profile.csv")).iter().map(|r| num(r, "p")).collect();
+    let profile = |y: f64| {
+        let t = ((y + 12.0) / 0.1).clamp(0.0, (prof.len() - 1) as f64);
+        let k = (t.floor() as usize).min(prof.len() - 2);
+        prof[k] + (t - k as f64) * (prof[k + 1] - prof[k])
+    };
+    let grid = ContactGrid::new(71, 81, 0.1, 0.1, -3.55 + 0.05, -6.15 + 0.05).unwrap();
+    let steel = HalfSpace::new(2.0 * 82000.0 * 1.28, 0.28).unwrap();
+    let inf = Influence::new(grid, steel.pair(&steel), Kernels::Full).unwrap();
+    let h = grid.sample(|x, y| profile(y) + x * x / (2.0 * 483.931));
+    let ns = NormalSettings::new(1e-10, 10_000);
+    let n = normal::solve(&inf, &h, Drive::Approach(0.02084), &ns, &Cancel::never()).unwrap();
+    let drive = if name.ends_with('c') {
+        RollingDrive::Creepage(0.0005, 0.0)
+    } else {
+        RollingDrive::Force(-0.573 * 0.3 * n.load, -0.327 * 0.3 * n.load)
+    };
+    let problem = SteadyRolling::new(&n.pressure, 0.3, 0.0003, drive);
+    let r = rolling::solve(&inf, &problem, &RollingSettings::new(1e-10, 100_000), &Cancel::never()).unwrap();
+    assert_eq!(r.stop, RollingStop::Converged);
+    let rows = csv(&format!("{name}_case1_elements.csv"));
+    let pmax = rows.iter().map(|r| num(r, "pn")).fold(0.0, f64::max);
+    let (mut dt, mut states) = (0.0_f64, 0);
+    for row in &rows {
+        let i = (num(row, "ix") as usize - 1) + 71 * (num(row, "iy") as usize - 1);
+        dt = dt.max((r.qx[i] - num(row, "px")).abs().max((r.qy[i] - num(row, "py")).abs()) / pmax);
+        let theirs = if row["state"] == "adhesion" { ElementState::Stick } else { ElementState::Slip };
+        states += usize::from(r.state[i] != theirs);
+    }
+    let c = &csv(&format!("{name}_cases.csv"))[0];
+    println!(
+        "{name}: px, py within {dt:.1e} of pmax; {states} states differ; stick {} slip {}; FX {:.1} FY {:.2} MZ {:.1}; creepage {:.4e}, {:.4e}; {} products",
+        r.stick, r.slip, r.force.0, r.force.1, r.moment, r.creepage.0, r.creepage.1, r.products
+    );
+    // CONTACT stops at EPS = 1e-7 and prints 6 digits per element, 4 in its totals.
+    assert!(dt <= 2e-5, "tractions differ by {dt:e} of pmax");
+    assert_eq!(states, 0);
+    assert_eq!((r.stick, r.slip), (num(c, "nadh") as usize, num(c, "nslip") as usize));
+    let close = |ours: f64, key: &str| {
+        let theirs = num(c, key);
+        assert!((ours - theirs).abs() <= 6e-4 * theirs.abs(), "{key}: {ours} against CONTACT's {theirs}");
+    };
+    close(r.force.0, "fx");
+    close(r.force.1, "fy");
+    close(r.moment, "mz");
+    if name.ends_with('f') {
+        close(r.creepage.0, "creep_x");
+        close(r.creepage.1, "creep_y");
+    }
+}
+
+#[test]
+fn tang_problm_1c_agrees_with_contact() {
+    contact_perfc("tang_problm_1c");
+}
+
+#[test]
+fn tang_problm_1f_agrees_with_contact() {
+    contact_perfc("tang_problm_1f");
+}
+
+/// The force drive finds the creepages that give the force: the creepages of a creepage-prescribed solution from
+/// its own force, and the same shears. A force beyond μ A Σ p is gross sliding, a status. Far beyond saturation the
+/// force of a prescribed creepage tends to μ F_n against it (full sliding; the elastic term's share of the slip
+/// vanishes as the creepage grows).
+#[test]
+fn force_and_creepage_drives_agree() {
+    let (inf, p) = ellipse();
+    let s = RollingSettings::new(1e-12, 100_000);
+    let a = rolling::solve(
+        &inf,
+        &SteadyRolling::new(&p, 0.3, 0.001, RollingDrive::Creepage(0.001, 0.0005)),
+        &s,
+        &Cancel::never(),
+    )
+    .unwrap();
+    let f = RollingDrive::Force(a.force.0, a.force.1);
+    let b = rolling::solve(&inf, &SteadyRolling::new(&p, 0.3, 0.001, f), &s, &Cancel::never()).unwrap();
+    let dq = (0..p.len()).map(|i| (a.qx[i] - b.qx[i]).hypot(a.qy[i] - b.qy[i])).fold(0.0, f64::max);
+    println!("force drive: creepage {:.6e}, {:.6e}; shears within {dq:.1e}", b.creepage.0, b.creepage.1);
+    assert_eq!(b.stop, RollingStop::Converged);
+    assert!((b.creepage.0 - 0.001).abs() <= 1e-9 && (b.creepage.1 - 0.0005).abs() <= 1e-9);
+    assert!(dq <= 1e-9 * 0.003);
+    let area = inf.grid().area();
+    let fn_ = area * p.iter().sum::<f64>();
+    let g = rolling::solve(
+        &inf,
+        &SteadyRolling::new(&p, 0.3, 0.0, RollingDrive::Force(0.31 * fn_, 0.0)),
+        &s,
+        &Cancel::never(),
+    )
+    .unwrap();
+    assert_eq!(g.stop, RollingStop::GrossSliding);
+    assert!(g.creepage.0.is_nan());
+    let full =
+        rolling::solve(&inf, &SteadyRolling::new(&p, 0.3, 0.0, RollingDrive::Creepage(1.0, 0.0)), &s, &Cancel::never())
+            .unwrap();
+    let ratio = -full.force.0 / (0.3 * fn_);
+    println!("full sliding: Fx/(μFn) = {ratio:.6}, {} stick", full.stick);
+    assert!(full.stick == 0 && (ratio - 1.0).abs() <= 1e-3 && full.force.1.abs() <= 1e-3 * 0.3 * fn_);
+}
+
+/// Kalker's creep coefficients from the exact theory in full adhesion: an ellipse of semi-axes a (rolling
+/// direction) and b with G = 1, ν = 0.25, a unit pressure with μ = 1e4 (nothing slips), the creepages one at a time
+/// (spin evaluated at the element centres); `Fx = −G c² C11 ξ`, `Fy = −G c² C22 η − G c³ C23 φ`,
+/// `Mz = −G c³ C32 η`. Against Table E.3 at a/b = 0.2, 1, 5 with 160 elements across the smaller diameter: all
+/// nine within 1 % (measured: largest 0.64 %, C23 at a/b = 1; `examples/kalker_coefficients.rs` prints the
+/// convergence table 20 → 160: e.g. C11 at a/b = 1 +1.9 %, +1.2 %, +0.11 %, +0.014 %). C32 = −C23 by Betti's
+/// reciprocal theorem, to 1e-6.
+#[test]
+fn kalker_coefficients_from_full_adhesion() {
+    for ratio in [0.2, 1.0, 5.0] {
+        let (a, b) = if ratio <= 1.0 { (ratio, 1.0) } else { (1.0, 1.0 / ratio) };
+        let table = kalker::creep_coefficients(a, b, 0.25).unwrap();
+        let coarse = coefficients(a, b, 20);
+        let fine = coefficients(a, b, 160);
+        let err = |c: [f64; 4]| {
+            [(c[0] - table.c11) / table.c11, (c[1] - table.c22) / table.c22, (c[2] - table.c23) / table.c23]
+        };
+        let (e20, e160) = (err(coarse), err(fine));
+        println!(
+            "a/b = {ratio}: errors at 20 across {e20:.3?}, at 160 {e160:.3?}; C32/C23 = {:.8}",
+            fine[3] / fine[2]
+        );
+        for k in 0..3 {
+            assert!(e160[k].abs() <= 0.01, "a/b = {ratio}, coefficient {k}: {:+.2e}", e160[k]);
+        }
+        assert!(e160.iter().map(|e| e.abs()).sum::<f64>() < e20.iter().map(|e| e.abs()).sum::<f64>());
+        assert!((fine[3] / fine[2] + 1.0).abs() <= 1e-6, "C32 = {} against C23 = {}", fine[3], fine[2]);
+    }
+}
+
+/// `[C11, C22, C23, C32]` with `n` elements across `2 min(a, b)` (G = 1, ν = 0.25).
+fn coefficients(a: f64, b: f64, n: usize) -> [f64; 4] {
+    let h = 2.0 * a.min(b) / n as f64;
+    let (mx, my) = ((2.0 * a / h).round() as usize + 2, (2.0 * b / h).round() as usize + 2);
+    let grid = ContactGrid::new(mx, my, h, h, -0.5 * (mx - 1) as f64 * h, -0.5 * (my - 1) as f64 * h).unwrap();
+    let body = HalfSpace::new(2.5, 0.25).unwrap();
+    let inf = Influence::new(grid, body.pair(&body), Kernels::Full).unwrap();
+    let p = grid.sample(|x, y| if (x / a).powi(2) + (y / b).powi(2) < 1.0 { 1.0 } else { 0.0 });
+    let c = (a * b).sqrt();
+    let s = RollingSettings::new(1e-12, 100_000);
+    let solve = |xi: f64, eta: f64, phi: f64| {
+        let problem = SteadyRolling::new(&p, 1e4, phi, RollingDrive::Creepage(xi, eta)).with_spin_lead(0.0);
+        let r = rolling::solve(&inf, &problem, &s, &Cancel::never()).unwrap();
+        assert!(r.slip == 0 && r.stop == RollingStop::Converged);
+        r
+    };
+    let (x, y, z) = (solve(1.0, 0.0, 0.0), solve(0.0, 1.0, 0.0), solve(0.0, 0.0, 1.0 / c));
+    [-x.force.0 / (c * c), -y.force.1 / (c * c), -z.force.1 / (c * c), -y.moment / (c * c * c)]
+}
