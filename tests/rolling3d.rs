@@ -245,8 +245,8 @@ fn kalker_coefficients_from_full_adhesion() {
             "a/b = {ratio}: errors at 20 across {e20:.3?}, at 160 {e160:.3?}; C32/C23 = {:.8}",
             fine[3] / fine[2]
         );
-        for k in 0..3 {
-            assert!(e160[k].abs() <= 0.01, "a/b = {ratio}, coefficient {k}: {:+.2e}", e160[k]);
+        for (k, e) in e160.iter().enumerate() {
+            assert!(e.abs() <= 0.01, "a/b = {ratio}, coefficient {k}: {e:+.2e}");
         }
         assert!(e160.iter().map(|e| e.abs()).sum::<f64>() < e20.iter().map(|e| e.abs()).sum::<f64>());
         assert!((fine[3] / fine[2] + 1.0).abs() <= 1e-6, "C32 = {} against C23 = {}", fine[3], fine[2]);
