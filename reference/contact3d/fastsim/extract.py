@@ -7,7 +7,8 @@ CONTACT_SRC: CONTACT's source tree (examples/NAME.inp, examples/NAME.ref_out).
 RUN_DIR:     a folder where CONTACT was run on a copy of examples/NAME.inp with the Matlab-file digit A raised to 1
              in every case (benches/peer/contact_ref3d.py's raise_matfile_digit), so that it wrote NAME.CASE.mat.
 OUT_DIR:     where the CSVs are written: fastsim_cases.csv and fastsim_caseK_elements.csv (K = 2, 3), or
-             tractcurv_fastsim_cases.csv (tractcurv's cases 61-90, original FASTSIM).
+             tractcurv_fastsim_cases.csv (tractcurv's cases 61-90, original FASTSIM) and tractcurv_exact_cases.csv
+             (its cases 1-30, the exact half-space).
 
 The printed totals are read from the author's NAME.ref_out; the flexibilities and the grid to six digits and the
 per-element results from the run's .mat files. Standard library only.
@@ -58,9 +59,10 @@ def mat_header(path):
     return out
 
 
-def tractcurv(src, run, out):
+def tractcurv(src, run, out, first=61, name="tractcurv_fastsim_cases.csv"):
     """tractcurv.inp's third series (cases 61-90): original FASTSIM (M = 3, B = 3, K0_MF = ALFAMF = 1), Coulomb's
-    law with FSTAT = FKIN = 0.33, ellipse from IPOTCN = -2 (A1 = 0.0008/mm, a/b = 0.5, FN = 106.7 kN), 48 x 44."""
+    law with FSTAT = FKIN = 0.33, ellipse from IPOTCN = -2 (A1 = 0.0008/mm, a/b = 0.5, FN = 106.7 kN), 48 x 44;
+    or (first = 1) its first series, cases 1-30: the exact half-space (M = 0) on the same grid, Coulomb's law."""
     lines = open(os.path.join(src, "examples", "tractcurv.ref_out"), encoding="latin-1").read().split("\n")
     printed, case = {}, None
     for i, line in enumerate(lines):
@@ -88,12 +90,15 @@ def tractcurv(src, run, out):
     header = ["case", "mx", "my", "scale", "xl", "yl", "dx", "dy", "a", "b", "dq", "fn_input", "xi", "eta", "phi",
               "mu", "g", "nu", "flx1", "flx2", "flx3", "flx1_mat", "flx2_mat", "flx3_mat", "fx", "fy", "mz",
               "fx_rel", "pmax", "ncon", "nadh", "nslip"]
-    with open(os.path.join(out, "tractcurv_fastsim_cases.csv"), "w", newline="") as fh:
+    with open(os.path.join(out, name), "w", newline="") as fh:
         w = csv.writer(fh, lineterminator="\n")
         w.writerow(header)
-        for k in range(61, 91):
+        for k in range(first, first + 30):
             p = printed[k]
             m = mat_header(os.path.join(run, f"tractcurv.{k:04d}.mat"))
+            if first == 1:
+                # The exact theory has no flexibilities.
+                m.update(flx1_mat="", flx2_mat="", flx3_mat="")
             w.writerow([k, m["mx"], m["my"], 1.1, m["xl"], m["yl"], m["dx"], m["dy"], p["a"], p["b"], p["dq"],
                         106700.0, p["xi"], p["eta"], p["phi"], 0.33, 82000.0, 0.28, p.get("flx1", ""), p.get("flx2", ""), p.get("flx3", ""),
                         m["flx1_mat"], m["flx2_mat"], m["flx3_mat"], p["fx"], p["fy"], p["mz"], p["fx_rel"],
@@ -104,6 +109,7 @@ def main():
     which, src, run, out = sys.argv[1:5]
     if which == "tractcurv":
         tractcurv(src, run, out)
+        tractcurv(src, run, out, first=1, name="tractcurv_exact_cases.csv")
         return
     ref = printed_cases(os.path.join(src, "examples", "fastsim.ref_out"))
     # The inputs (examples/fastsim.inp): per case, CONTACT's M and B digits, the grid and the kinematics.
