@@ -400,3 +400,65 @@ fn fastsim_inp_exact_case_agrees_with_contact() {
     assert!(r.force.0.abs() <= 0.5, "FX = {} (printed 0.000)", r.force.0);
     assert_eq!((n.in_contact, r.stick, r.slip), (1276, 356, 920));
 }
+
+/// CONTACT's `catt_to_cart.inp`, cases 1–57: the onset of rolling, "from Cattaneo to Carter" (Kalker 1990,
+/// §5.2.2.5). A sphere pair (G = 1, ν = 0.28, h = 0.002963 (x² + y²), FN = 0.4705, μ = 0.4013) on 34 × 33 elements
+/// of 0.25 from (−4.125, −4.125); case 1 a Cattaneo shift from rest to FX = −0.657 μFN; cases 2–57 transient rolling
+/// (`rolling::transient_step`), one element DQ = DX along +x per case, FX kept, the creepage found each step. Expected:
+/// the author's `catt_to_cart.ref_out` as printed (`reference/contact3d/catt_to_cart_cases.csv`): the shift of case 1
+/// and the creepage of every case within half a printed unit plus 1e-6 of the value (CONTACT's EPS = 1e-7), NADH and
+/// NSLIP where printed exactly, and cases 2 and 57 element by element (our build's .mat files, 6 digits) to 1e-5 of
+/// pmax.
+#[test]
+fn catt_to_cart_agrees_with_contact() {
+    let cases = csv("catt_to_cart_cases.csv");
+    let grid = ContactGrid::new(34, 33, 0.25, 0.25, -4.125 + 0.125, -4.125 + 0.125).unwrap();
+    let body = HalfSpace::new(2.0 * 1.28, 0.28).unwrap();
+    let inf = Influence::new(grid, body.pair(&body), Kernels::Full).unwrap();
+    let h = grid.sample(|x, y| 0.002963 * (x * x + y * y));
+    let n =
+        normal::solve(&inf, &h, Drive::Load(0.4705), &NormalSettings::new(1e-12, 10_000), &Cancel::never()).unwrap();
+    let (mu, fx) = (0.4013, -0.657 * 0.4013 * 0.4705);
+    let settings = TangentialSettings::new(1e-12, 100_000);
+    let shift = ShiftStep::new(&n.pressure, mu, TangentialDrive::Force(fx, 0.0));
+    let mut q = tangential::solve(&inf, &shift, &settings, &Cancel::never()).unwrap();
+    let within = |got: f64, printed: &str, what: String| {
+        let d = (got - printed.trim().parse::<f64>().unwrap()).abs();
+        assert!(d <= half_unit(printed) + 1e-6 * got.abs(), "{what}: {got:.6e} against CONTACT's {printed}");
+    };
+    within(q.shift.0, &cases[0]["shift_x"], "case 1 shift".into());
+    let mut worst: f64 = 0.0;
+    for (k, row) in cases.iter().enumerate().take(57) {
+        if k > 0 {
+            let problem = SteadyRolling::new(&n.pressure, mu, 0.0, RollingDrive::Force(fx, 0.0));
+            let next =
+                rolling::transient_step(&inf, &problem, Some((&q.qx, &q.qy)), &settings, &Cancel::never()).unwrap();
+            q = next;
+            within(rolling::transient_creepage(&grid, &q).0, &row["creep_x"], format!("case {} creepage", k + 1));
+        }
+        within(q.force.0, &row["fx"], format!("case {} FX", k + 1));
+        if !row["nadh"].is_empty() {
+            assert_eq!((q.stick, q.slip), (num(row, "nadh") as usize, num(row, "nslip") as usize), "case {}", k + 1);
+        }
+        if matches!(k + 1, 1 | 2 | 57) {
+            let rows = csv(&format!("catt_to_cart_case{}_elements.csv", k + 1));
+            let pmax = rows.iter().map(|r| num(r, "pn")).fold(0.0, f64::max);
+            for r in &rows {
+                let i = (num(r, "ix") as usize - 1) + 34 * (num(r, "iy") as usize - 1);
+                worst = worst.max((q.qx[i] - num(r, "px")).abs().max((q.qy[i] - num(r, "py")).abs()) / pmax);
+            }
+        }
+    }
+    // Two contact diameters on, the transient has nearly reached Carter's steady state (it approaches it
+    // asymptotically; marched to the end it equals it, `steady_rolling_is_the_limit_of_transient_rolling`): measured
+    // 1.2e-5 from the steady solver's creepage.
+    let steady = SteadyRolling::new(&n.pressure, mu, 0.0, RollingDrive::Force(fx, 0.0));
+    let s = rolling::solve(&inf, &steady, &RollingSettings::new(1e-12, 100_000), &Cancel::never()).unwrap();
+    let xi = rolling::transient_creepage(&grid, &q).0;
+    println!(
+        "catt_to_cart 1–57: tractions of cases 1, 2, 57 within {worst:.1e} of pmax; creepage at case 57 {xi:.6e}, steady {:.6e}",
+        s.creepage.0
+    );
+    assert!(worst <= 1e-5, "{worst:e}");
+    assert!((xi - s.creepage.0).abs() <= 2e-5 * xi.abs(), "transient {xi:e} against steady {:e}", s.creepage.0);
+}

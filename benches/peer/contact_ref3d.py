@@ -47,6 +47,7 @@ INPUTS = {
     "tang_problm_1s": ("perfc_test", [1]),
     "tang_problm_1c": ("perfc_test", [1]),
     "tang_problm_1f": ("perfc_test", [1]),
+    "catt_to_cart": ("examples", [1, 2, 57]),
 }
 
 NUM = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([EeDd][+-]?\d+)?d?$")

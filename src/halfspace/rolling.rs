@@ -44,6 +44,13 @@
 //! The normal–tangential coupling is left out, as for the shift problem: exact for identical materials (Dundurs'
 //! β = 0) and for ν = 0; for a dissimilar pair this is the decoupled approximation.
 //!
+//! ## Transient rolling
+//!
+//! [`transient_step`] rolls the contact one element `Δx` on from a previous state (Kalker's "from Cattaneo to
+//! Carter", CONTACT's `T = 2` with `DQ = DX`): a shift step ([`super::tangential`]) whose rigid shift is `Δx w_i`
+//! and whose previous shears are those each particle carried one element upstream ([`carried`]). Its fixed point,
+//! marched from rest, is the steady state above (tested to 1e-12 in `tests/rolling3d.rs`).
+//!
 //! ## What `converged` certifies
 //!
 //! The iteration stops when a fresh slip changes neither set and its residual asks for no shear change above
@@ -55,8 +62,8 @@
 
 mod newton;
 
-use super::operator::Influence;
-use super::tangential::{disc_law_residual, ElementState};
+use super::operator::{ContactGrid, Influence};
+use super::tangential::{self, disc_law_residual, ElementState, ShiftStep, TangentialDrive, TangentialSettings};
 use crate::cancel::Cancel;
 use crate::error::ArgumentError;
 
@@ -352,4 +359,66 @@ fn check(op: &Influence, problem: &SteadyRolling<'_>, s: &RollingSettings) -> Re
         return bad("settings", "max_products and krylov ≥ 1".into());
     }
     Ok(())
+}
+
+/// The shears one element `Δx` downstream: what each particle carried one step earlier, rolling along
+/// `direction` (the material moves against it; nothing enters at the leading edge). Grid order.
+///
+/// # Errors
+/// An [`ArgumentError`] when `q` is not one value per element of `grid`.
+pub fn carried(grid: &ContactGrid, direction: RollingDirection, q: &[f64]) -> Result<Vec<f64>, ArgumentError> {
+    let mx = grid.mx();
+    if q.len() != grid.len() {
+        let msg = format!("one value per element ({}), got {}", grid.len(), q.len());
+        return Err(ArgumentError::new("halfspace::rolling::carried", "q", msg));
+    }
+    let mut out = vec![0.0; q.len()];
+    for (row_in, row_out) in q.chunks(mx).zip(out.chunks_mut(mx)) {
+        match direction {
+            RollingDirection::PlusX => row_out[..mx - 1].copy_from_slice(&row_in[1..]),
+            RollingDirection::MinusX => row_out[1..].copy_from_slice(&row_in[..mx - 1]),
+        }
+    }
+    Ok(out)
+}
+
+/// One step of transient rolling (module docs, "Transient rolling"): the pressures of this step, the friction,
+/// the spin, the creepages or the force, the direction and the spin lead of `problem` (its `start` is ignored),
+/// from the shears `previous` of the step before (`None`: from rest). The answer's `shift` is `Δx (ξ, η)`: prescribed,
+/// or found from the force; [`transient_creepage`] divides it out.
+///
+/// # Errors
+/// As [`solve`] and [`super::tangential::solve`].
+pub fn transient_step(
+    influence: &Influence,
+    problem: &SteadyRolling<'_>,
+    previous: Option<(&[f64], &[f64])>,
+    settings: &TangentialSettings,
+    cancel: &Cancel,
+) -> Result<tangential::TangentialSolution, ArgumentError> {
+    check(influence, problem, &RollingSettings::default())?;
+    let grid = influence.grid();
+    let h = grid.dx();
+    let sign = if problem.direction == RollingDirection::PlusX { 1.0 } else { -1.0 };
+    let lead = problem.spin_lead * h * sign;
+    let phi = problem.spin;
+    let ox: Vec<f64> = grid.centres().iter().map(|c| -phi * c.1 * h).collect();
+    let oy: Vec<f64> = grid.centres().iter().map(|c| phi * (c.0 + lead) * h).collect();
+    let drive = match problem.drive {
+        RollingDrive::Creepage(xi, eta) => TangentialDrive::Shift(h * xi, h * eta),
+        RollingDrive::Force(fx, fy) => TangentialDrive::Force(fx, fy),
+    };
+    let step = ShiftStep::new(problem.pressure, problem.friction, drive).with_offset(&ox, &oy);
+    match previous {
+        Some((qx, qy)) => {
+            let (px, py) = (carried(grid, problem.direction, qx)?, carried(grid, problem.direction, qy)?);
+            tangential::solve(influence, &step.after(&px, &py), settings, cancel)
+        }
+        None => tangential::solve(influence, &step, settings, cancel),
+    }
+}
+
+/// The creepages `(ξ, η)` of a [`transient_step`]'s answer on `grid`: its shift over `Δx`.
+pub fn transient_creepage(grid: &ContactGrid, step: &tangential::TangentialSolution) -> (f64, f64) {
+    (step.shift.0 / grid.dx(), step.shift.1 / grid.dx())
 }
