@@ -60,7 +60,10 @@
 //! steady solution: [`RollingStop::GrossSliding`] with every element at its bound along the force and the creepages
 //! not determined (NaN).
 
+mod linear;
 mod newton;
+
+pub use linear::{linear_coefficients, LinearCoefficients};
 
 use super::operator::{ContactGrid, Influence};
 use super::tangential::{self, disc_law_residual, ElementState, ShiftStep, TangentialDrive, TangentialSettings};

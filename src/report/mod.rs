@@ -41,6 +41,7 @@ mod physics;
 mod plot_csv;
 mod plot_result;
 mod rolling;
+mod rolling3d;
 mod space;
 mod table;
 
@@ -265,6 +266,9 @@ fn compute(
     rolling::seed_vs_steady(reports, out, &mut roll_md, &mut path_figs)?;
     let mut f3 = String::new();
     let found = friction3d::section(&mut f3)?;
+    let mut sink3 = Figs::new(out, "figures/");
+    rolling3d::section(&mut f3, &mut sink3)?;
+    path_figs.extend(sink3.list);
     family.entry(Family::Space3d).or_default().push_str(&f3);
     if !path_md.is_empty() {
         family.insert(Family::Paths, path_md);

@@ -58,6 +58,32 @@ impl Hertz3D {
         let (a_x, a_y) = if curv_a <= curv_b { (a, b) } else { (b, a) };
         Some(Hertz3D { a_x, a_y, p0, approach, load })
     }
+
+    /// The curvatures `(A, B)` of the separation `A x² + B y²` (1/length) whose Hertz ellipse at contact modulus
+    /// `e_star` and load `load` has the semi-axes `a_x` along x and `a_y` along y (the inverse of [`Self::from_load`],
+    /// as CONTACT's IPOTCN = −3 poses a contact): the ratio `B/A` by bisection on the semi-axes' ratio (monotone),
+    /// then the scale from `a ∝ A^(−1/3)` at a fixed ratio. `None` for arguments out of range.
+    pub fn curvatures_for(a_x: f64, a_y: f64, e_star: f64, load: f64) -> Option<(f64, f64)> {
+        let ok = |v: f64| v.is_finite() && v > 0.0;
+        if !(ok(a_x) && ok(a_y) && ok(e_star) && ok(load)) {
+            return None;
+        }
+        let target = a_x / a_y;
+        // a_x/a_y grows with B/A: 1 at B = A; bracket the root in log B/A.
+        let ratio_of = |k: f64| Hertz3D::from_load(1.0, k, e_star, load).map(|h| h.a_x / h.a_y);
+        let (mut lo, mut hi) = (1e-12_f64, 1e12_f64);
+        for _ in 0..200 {
+            let mid = (lo * hi).sqrt();
+            if ratio_of(mid)? < target {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        let k = (lo * hi).sqrt();
+        let curv_a = (Hertz3D::from_load(1.0, k, e_star, load)?.a_x / a_x).powi(3);
+        Some((curv_a, k * curv_a))
+    }
 }
 
 /// The eccentricity e of the contact ellipse whose curvature ratio is `ratio = B/A ≥ 1`: the root of
@@ -125,5 +151,17 @@ mod tests {
         let n = Hertz3D::from_load(0.05, 0.05 * (1.0 + 1e-9), 1e5, 100.0).unwrap();
         assert!((c.p0 - n.p0).abs() <= 1e-8 * c.p0 && (c.a_x - n.a_x).abs() <= 1e-8 * c.a_x);
         assert!(Hertz3D::from_load(0.0, 1.0, 1.0, 1.0).is_none());
+    }
+
+    /// `curvatures_for` inverts `from_load`: the semi-axes of the curvatures it returns are those asked for, at
+    /// a/b from 0.1 to 10 (a round trip through the closed form).
+    #[test]
+    fn curvatures_for_inverts_from_load() {
+        for (ax, ay) in [(8.0, 4.0), (6.304, 12.61), (1.0, 1.0), (0.3, 3.0), (10.0, 1.0)] {
+            let (ca, cb) = Hertz3D::curvatures_for(ax, ay, 113_888.0, 82_000.0).unwrap();
+            let h = Hertz3D::from_load(ca, cb, 113_888.0, 82_000.0).unwrap();
+            assert!((h.a_x - ax).abs() <= 1e-9 * ax && (h.a_y - ay).abs() <= 1e-9 * ay, "{ax} {ay}: {h:?}");
+        }
+        assert!(Hertz3D::curvatures_for(-1.0, 1.0, 1.0, 1.0).is_none());
     }
 }
