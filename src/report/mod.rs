@@ -208,8 +208,10 @@ pub fn generate(opts: &ReportOptions) -> Result<PathBuf> {
         pages.push((fam.page(), format!("# {}\n\n{NAV}\n{}", fam.title(), body)));
     }
     // The CONTACT 3D peer table's figure (when the table is present and has the performance series).
-    let peer3d_rows =
-        std::fs::read_to_string(out.join("peer-contact3d.md")).map(|t| peer3d::rows(&t)).unwrap_or_default();
+    let peer3d_rows: Vec<peer3d::Row> = ["peer-contact3d.md", "peer-contact3d-rolling.md"]
+        .iter()
+        .flat_map(|f| std::fs::read_to_string(out.join(f)).map(|t| peer3d::rows(&t)).unwrap_or_default())
+        .collect();
     if !peer3d_rows.is_empty() {
         peer3d::figure(&peer3d_rows).write(&out.join(peer3d::FIGURE)).map_err(plot_err)?;
         parts.figures.push(("CONTACT's performance series: CPU against elements".into(), peer3d::FIGURE.into()));
@@ -328,10 +330,16 @@ fn peer_pages(out: &Path, peer3d_rows: &[peer3d::Row]) -> Vec<(String, String, S
         ("peer-lcp.md", "siconos", "Side by side with Siconos numerics", "run.sh"),
         ("peer-contact.md", "contact-2d", "Side by side with CONTACT (Vollebregt), 2D Carter", "contact.sh"),
         ("peer-contact3d.md", "contact-3d", "Side by side with CONTACT (Vollebregt), 3D half-space", "contact3d.sh"),
+        (
+            "peer-contact3d-rolling.md",
+            "contact-3d-rolling",
+            "Side by side with CONTACT (Vollebregt), 3D steady rolling",
+            "contact3d.sh",
+        ),
     ] {
         let peer = out.join(file);
         if let Ok(table) = std::fs::read_to_string(&peer) {
-            let figure = if page == "contact-3d" && !peer3d_rows.is_empty() {
+            let figure = if page.starts_with("contact-3d") && !peer3d_rows.is_empty() {
                 peer3d::caption(peer3d_rows)
             } else {
                 String::new()
