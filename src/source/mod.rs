@@ -8,6 +8,7 @@
 
 pub mod bem_wheel;
 pub(crate) mod half_plane;
+pub mod two_body;
 
 use crate::error::Result;
 use crate::flexibility::Flexibility;
