@@ -260,20 +260,62 @@ fn global_blocks(model: &super::bem_wheel::Model, sol: &Mat<f64>, factor: f64) -
 
 /// The exact initial gap of each pair: from the wheel's node along its outward normal to the counter-body's
 /// boundary as meshed (wheel units).
-fn initial_gaps(m: &Models, circle: ([f64; 2], f64)) -> Vec<f64> {
+fn initial_gaps(m: &Models, circle: ([f64; 2], f64), normals: &[[f64; 2]]) -> Vec<f64> {
     let (w, c) = (&m.wheel.mesh, &m.counter.mesh);
     let to_wheel = |p: [f64; 2]| [m.centre[0] + m.scale * p[0], m.centre[1] + m.scale * p[1]];
     w.contact_nodes
         .iter()
         .zip(&c.contact_nodes)
-        .map(|(&i, &j)| {
-            let node = &w.nodes[i];
+        .zip(normals)
+        .map(|((&i, &j), nv)| {
+            let (p, d) = (w.nodes[i].pos, [-nv[0], -nv[1]]);
             match c.elements[c.nodes[j].element].shape {
-                Shape::Straight { a, b } => ray_chord(node.pos, node.normal, to_wheel(a), to_wheel(b)),
-                Shape::Arc(_) => ray_circle(node.pos, node.normal, circle.0, circle.1).unwrap_or(f64::NAN),
+                Shape::Straight { a, b } => ray_chord(p, d, to_wheel(a), to_wheel(b)),
+                Shape::Arc(_) => ray_circle(p, d, circle.0, circle.1).unwrap_or(f64::NAN),
             }
         })
         .collect()
+}
+
+/// The pair's normal N_i: the bisector of the two bodies' normals at the paired nodes, normalize(n₂ − n₁) — the
+/// normal of the interface the two surfaces meet on (for two equal discs exactly the flat's N = y; for a bore the
+/// wheel's inward normal to O(ΔR/R)). The frame of the pair's slip must be the interface's, not one body's: with the
+/// wheel's own normal the frame would turn by 1/R₁ per unit length along a flat interface, and the steady-rolling
+/// slip ∂u_T/∂x would pick up the rigid approach times 1/R₁ (a spurious creepage of order δ/R₁).
+fn pair_normals(w: &Mesh, c: &Mesh) -> Vec<[f64; 2]> {
+    w.contact_nodes
+        .iter()
+        .zip(&c.contact_nodes)
+        .map(|(&i, &j)| {
+            let (n1, n2) = (w.nodes[i].normal, c.nodes[j].normal);
+            let v = [n2[0] - n1[0], n2[1] - n1[1]];
+            let len = v[0].hypot(v[1]);
+            [v[0] / len, v[1] / len]
+        })
+        .collect()
+}
+
+/// The steady-rolling slip operator of a pair of finite bodies rolling in direction `direction` (±1): the upwind
+/// difference of [`crate::formulation::SlipOperator::steady`] on the contact nodes' x, plus the frame's turning.
+/// The slip is the tangential component of the derivative of the relative displacement vector,
+/// T·∂Δu/∂x = ∂u_T/∂x − κ u_N with κ = dψ/dx the rate at which the pair's frame turns (ψ the angle of T); in contact
+/// the relative normal displacement (rigid motion included) is u_N = −g₀, so the offset is c_i = −dir κ_i g₀,i
+/// (zero for two equal discs, whose interface is flat; where a node is separated its slip carries no traction).
+pub fn steady_slip(flex: &Flexibility, direction: i32) -> crate::formulation::SlipOperator {
+    let mut op = crate::formulation::SlipOperator::steady(&flex.x, direction);
+    let Some(normals) = &flex.normals else { return op };
+    let n = flex.n();
+    let angle = |i: usize| normals[i][0].atan2(normals[i][1]) * -1.0;
+    let kappa = |i: usize| {
+        let (lo, hi) = (i.saturating_sub(1), (i + 1).min(n - 1));
+        if hi == lo {
+            0.0
+        } else {
+            (angle(hi) - angle(lo)) / (flex.x[hi] - flex.x[lo])
+        }
+    };
+    op.offset = Some((0..n).map(|i| -f64::from(direction) * kappa(i) * flex.g0[i]).collect());
+    op
 }
 
 /// Build the flexibility of a pair of finite bodies with the blocks asked for (see the module docs). A pair it
@@ -288,7 +330,7 @@ pub fn build(bodies: &TwoBodies, blocks: Blocks) -> Result<Built> {
     let k1 = global_blocks(&m.wheel, &sol1, 1.0);
     let k2 = global_blocks(&m.counter, &sol2, m.wheel.modulus / m.counter.modulus);
     let k = k1 + k2;
-    let normals: Vec<[f64; 2]> = wm.contact_nodes.iter().map(|&i| wm.nodes[i].normal).map(|v| [-v[0], -v[1]]).collect();
+    let normals = pair_normals(wm, cm);
     let tangent = |v: [f64; 2]| [v[1], -v[0]];
     let project = |a: &dyn Fn(usize) -> [f64; 2], b: &dyn Fn(usize) -> [f64; 2]| {
         Mat::from_fn(n, n, |i, j| {
@@ -322,7 +364,7 @@ pub fn build(bodies: &TwoBodies, blocks: Blocks) -> Result<Built> {
         mode(ModeKind::Rotation, &|i| rotation[i]),
     ];
     let (c2, r2, _) = bodies.circle();
-    let g0 = initial_gaps(&m, (c2, r2));
+    let g0 = initial_gaps(&m, (c2, r2), &normals);
     let flex = Flexibility {
         k_nn: project(&nn, &nn),
         k_nt: coupled.then(|| project(&nn, &tt)),
