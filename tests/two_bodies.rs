@@ -231,3 +231,119 @@ fn twin_disc_departure_from_hertz_measured_against_load() {
         }
     }
 }
+
+fn two_body_scene(name: &str) -> rollbem::scene::Scene {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/two_bodies").join(name);
+    rollbem::scene::Scene::from_file(&path).expect("a valid scene")
+}
+
+fn run_of<'a>(r: &'a rollbem::results::Report, solver: &str) -> &'a rollbem::results::SolverRun {
+    r.runs.iter().find(|x| x.solver == solver).unwrap()
+}
+
+#[test]
+fn twin_disc_scenes_run_with_hertz_and_carter_of_the_pair() {
+    // Expected: the scene's Hertz reference is the pair's (R* = R/2: a = 0.4 mm at P = 725 N/mm) and every check
+    // passes; the rolling scene is within 1 % of μP of Carter (Q/(μP) = −0.51 at 0.3 of the critical creepage).
+    let scene = two_body_scene("twin-disc-hertz.toml");
+    assert!((scene.contact_radius() - 20.0).abs() < 1e-12);
+    let report = rollbem::pipeline::run_scene(&scene).unwrap();
+    let h = report.references.hertz.expect("Hertz applies to a twin disc");
+    assert!((h.a / 0.4 - 1.0).abs() < 1e-9, "{h:?}");
+    assert!(report.all_pass(), "{:?}", report.checks.iter().filter(|c| !c.pass).collect::<Vec<_>>());
+    let scene = two_body_scene("twin-disc-creep.toml");
+    let report = rollbem::pipeline::run_scene(&scene).unwrap();
+    let run = run_of(&report, "active_set");
+    let load = run.resultants.unwrap().normal;
+    let q = run.resultants.unwrap().tangential / (0.3 * load);
+    eprintln!("twin-disc-creep: Q/(μP) = {q:.5}");
+    assert!((q + 0.51).abs() < 0.01, "Q/(μP) = {q}");
+    assert!(report.all_pass(), "{:?}", report.checks.iter().filter(|c| !c.pass).collect::<Vec<_>>());
+}
+
+#[test]
+fn pin_in_bore_scene_gives_persson_half_angle_and_peak() {
+    // Expected: theory::pin_bore at b = 45° (P = 817.43 N/mm, clearance 0.01 mm): the loaded arc ends within one
+    // element beyond 45° and the peak pressure on the axis is 72.11 MPa within 1 %.
+    let scene = two_body_scene("pin-in-bore.toml");
+    let report = rollbem::pipeline::run_scene(&scene).unwrap();
+    assert!(report.references.hertz.is_none(), "Hertz is not this conformal contact's reference");
+    let run = run_of(&report, "lemke");
+    let theory = PinBore::at_half_angle(45f64.to_radians(), 64);
+    let p0_theory = theory.peak_times_radius_over_load() * 817.43 / 10.0;
+    let axis = run.nodes.iter().min_by(|a, b| a.x.abs().total_cmp(&b.x.abs())).unwrap();
+    assert!((axis.pressure / p0_theory - 1.0).abs() < 0.01, "p0 {} against {p0_theory}", axis.pressure);
+    let last = run.nodes.iter().filter(|n| n.pressure > 0.0).map(|n| n.x.atan2(-n.y)).fold(0.0, f64::max);
+    let element = 112.5 / 61.0;
+    assert!(
+        last.to_degrees() < 45.0 && last.to_degrees() > 45.0 - element,
+        "last loaded node at {}°",
+        last.to_degrees()
+    );
+    assert!(report.all_pass(), "{:?}", report.checks.iter().filter(|c| !c.pass).collect::<Vec<_>>());
+}
+
+#[test]
+fn a_one_wheel_scene_pays_nothing_for_the_second_body() {
+    // Expected: a scene without a second finite body builds exactly the one-wheel flexibility as before (the BEM
+    // wheel condensed alone: the same blocks bit for bit, the flat's frame, no slip offset), so nothing of the
+    // two-body machinery is computed for it.
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/scenes/carter-steady-rolling.toml"),
+    )
+    .unwrap();
+    let scene = rollbem::scene::Scene::from_toml(&text, std::path::Path::new("carter.toml")).unwrap();
+    for scene in [scene, two_body_scene("twin-disc-hertz.toml").edit(|d| d.counter_body = Default::default()).unwrap()]
+    {
+        let blocks = rollbem::pipeline::stages::blocks_for(&scene);
+        let built = rollbem::source::build(&scene, blocks).unwrap();
+        assert!(built.flex.normals.is_none(), "{}: the flat's frame", scene.name());
+        let op = rollbem::pipeline::stages::slip_operator(&scene, &built.flex);
+        assert!(op.offset.is_none());
+        if let Some(model) = rollbem::source::bem_wheel::Model::of_scene(&scene).unwrap() {
+            let (alone, _, _) = rollbem::source::bem_wheel::condense(&model, blocks).unwrap();
+            assert_eq!(alone.k_nn, built.flex.k_nn, "{}: K_NN as the wheel alone", scene.name());
+            assert_eq!(alone.k_tt, built.flex.k_tt);
+            assert_eq!(alone.g0, built.flex.g0);
+        }
+    }
+}
+
+#[test]
+fn bad_second_bodies_are_refused_naming_the_key() {
+    // Expected: each bad value is refused when the scene is read, the error naming its key (exit 2 on the CLI).
+    let base = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/two_bodies/pin-in-bore.toml"),
+    )
+    .unwrap();
+    let cases = [
+        ("radius = 10.01", "radius = 9.9", "counter_body.radius"),
+        ("outer_radius = 300.0", "outer_radius = 10.0", "counter_body.outer_radius"),
+        ("outer_elements = 64", "outer_elements = 4", "counter_body.outer_elements"),
+        ("other_elements = 60\nouter", "other_elements = 2\nouter", "counter_body.other_elements"),
+        ("[drive]", "[rolling]\nmode = \"steady\"\ncreepage = 1e-3\n[contact]\nfriction = 0.3\n[drive]", "rolling"),
+        ("[drive]", "[stresses]\nx = [-1.0, 1.0]\ndepth = [0.5, 2.0]\npoints = [3, 3]\n[drive]", "stresses"),
+        ("support = { kind = \"hub\", radius = 0.5 }", "model = \"half_plane\"", "counter_body.kind"),
+    ];
+    for (from, to, key) in cases {
+        assert!(base.contains(from), "{from}");
+        let mut text = base.replacen(from, to, 1);
+        if key == "counter_body.kind" {
+            // A well-formed half-plane wheel otherwise: constant elements, no other_elements.
+            text = text.replacen("element = \"quadratic\"", "element = \"constant\"", 1);
+            text = text.replacen("other_elements = 60\n\n[drive]", "\n[drive]", 1);
+        }
+        let err = rollbem::scene::Scene::from_toml(&text, std::path::Path::new("bad.toml")).unwrap_err();
+        assert!(err.to_string().contains(key), "{key}: {err}");
+    }
+    let disc = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/two_bodies/twin-disc-hertz.toml"),
+    )
+    .unwrap();
+    let text = disc.replacen("radius = 8.0 }\nother", "radius = 80.0 }\nother", 1);
+    let err = rollbem::scene::Scene::from_toml(&text, std::path::Path::new("bad.toml")).unwrap_err();
+    assert!(err.to_string().contains("counter_body.support.radius"), "{err}");
+    let text = disc.replacen("contact_arc_deg = 2.2918311805232928", "contact_arc_deg = 120.0", 1);
+    let err = rollbem::scene::Scene::from_toml(&text, std::path::Path::new("bad.toml")).unwrap_err();
+    assert!(err.to_string().contains("mesh.contact_arc_deg"), "{err}");
+}

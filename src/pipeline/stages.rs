@@ -51,7 +51,8 @@ pub fn rolling_post(scene: &Scene) -> Option<RollingPost> {
 /// The slip operator of a scene on a flexibility: steady rolling's upwind slip velocity, or the static slip.
 pub fn slip_operator(scene: &Scene, flex: &crate::flexibility::Flexibility) -> SlipOperator {
     match scene.rolling() {
-        Some(Rolling::Steady { direction }) => SlipOperator::steady(&flex.x, *direction),
+        // The flat's upwind operator; with two finite bodies plus the turning of the pair's frame.
+        Some(Rolling::Steady { direction }) => crate::source::two_body::steady_slip(flex, *direction),
         _ => SlipOperator::static_slip(),
     }
 }
