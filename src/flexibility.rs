@@ -92,7 +92,7 @@ pub struct Flexibility {
     /// The contact frame at each node when it is not the flat's: the unit vector N_i (global x, y) along which the
     /// pressure acts on the wheel and the gap is measured, with T_i = (N_y, −N_x) (so N = (0, 1) gives T = (1, 0),
     /// the flat's frame). `None`: the flat's frame N = y, T = x at every node (every source but two finite bodies,
-    /// [`crate::source::two_body`], whose conformal contacts turn the frame with the wheel's normal).
+    /// [`crate::source::two_body`], whose frame follows the interface of the two curved surfaces).
     pub normals: Option<Vec<[f64; 2]>>,
     /// The scales that make it dimensionless.
     pub scales: Scales,

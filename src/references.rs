@@ -125,7 +125,7 @@ pub fn half_space_counterpart(scene: &Scene) -> Option<crate::Result<Scene>> {
     if decoupled_domain(scene) != Domain::FiniteBody || !compared || scene.friction() == 0.0 {
         return None;
     }
-    let pair = scene.counter_body().finite().map(|c| {
+    let pair = crate::source::two_body::counter_of(scene.counter_body()).map(|(c, _)| {
         let m = *c.material();
         (scene.contact_radius(), m, scene.zone().half_width(scene.radius()))
     });

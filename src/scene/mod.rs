@@ -285,18 +285,6 @@ impl CounterBody {
             | CounterBody::Bore { material, .. } => Some(material),
         }
     }
-
-    /// The second finite body, when it is one (a disc or a bore: [`crate::source::two_body`]).
-    pub fn finite(&self) -> Option<crate::source::two_body::Counter> {
-        use crate::source::two_body::Counter;
-        match *self {
-            CounterBody::Disc { material, radius, support, .. } => Some(Counter::Disc { radius, material, support }),
-            CounterBody::Bore { material, radius, outer_radius, outer_elements, .. } => {
-                Some(Counter::Bore { radius, outer_radius, outer_elements, material })
-            }
-            _ => None,
-        }
-    }
 }
 
 /// How the support is driven.

@@ -476,6 +476,12 @@ impl SceneDocument {
                 c.bad("stresses", format!("interior stresses are not computed for two finite bodies (a {kind})"))
             );
         }
+        self.validate_counter_geometry(c, radius, nu)
+    }
+
+    /// The second body's geometry against the wheel's zone, and its support ([`Self::validate_finite_counter`]).
+    fn validate_counter_geometry(&self, c: &Checker, radius: f64, nu: f64) -> Result<()> {
+        let r = self.wheel.radius;
         // The zone's half-angle on the wheel.
         let half = match (self.mesh.contact_arc_deg, self.mesh.contact_half_width) {
             (Some(deg), _) => 0.5 * deg.to_radians(),

@@ -81,12 +81,7 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
         let _stage = crate::progress::stage(|| format!("building the half-plane influence matrices ({n} elements)"));
         return half_plane::build(scene, blocks);
     };
-    if let Some(counter) = scene.counter_body().finite() {
-        let other = match *scene.counter_body() {
-            crate::scene::CounterBody::Disc { other_elements, .. }
-            | crate::scene::CounterBody::Bore { other_elements, .. } => other_elements,
-            _ => unreachable!("a finite counter-body"),
-        };
+    if let Some((counter, other)) = two_body::counter_of(scene.counter_body()) {
         let bodies = two_body::TwoBodies::new(*scene.wheel(), support, spec, counter, other);
         return two_body::build(&bodies, blocks);
     }

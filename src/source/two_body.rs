@@ -12,11 +12,13 @@
 //! **Pairs.** Each wheel contact vertex at polar angle θ casts the ray from the wheel's centre through it; the
 //! counter-body's contact vertices are where these rays meet its circle, so that its contact elements face the
 //! wheel's one for one and node i of one body (in increasing x) faces node i of the other. The pair's frame is the
-//! wheel's normal at its node: N_i = −n_i (the pressure on the wheel acts along N_i), T_i = (N_y, −N_x) (the flat's
-//! frame N = y, T = x at the bottom point), so the frame turns with a contact arc of any width
+//! interface's: N_i = normalize(n₂ − n₁), the bisector of the two bodies' outward normals at the paired nodes (the
+//! pressure on the wheel acts along N_i), T_i = (N_y, −N_x): the flat's frame N = y, T = x for two equal discs, the
+//! wheel's inward normal in a bore, so the frame turns with a contact arc of any width
 //! ([`crate::flexibility::Flexibility::normals`]). The **initial gap** is exact: the distance from the wheel's node
-//! along its outward normal to the counter-body's boundary as meshed (its circle for quadratic elements, its chord
-//! for constant ones: a chord's sagitta is part of the gap, as on the wheel), never x²/2R.
+//! along −N_i to the counter-body's boundary as meshed (its circle for quadratic elements, its chord for constant
+//! ones: a chord's sagitta is part of the gap, as on the wheel), never x²/2R. Steady rolling takes the slip of the
+//! pair's turning frame ([`steady_slip`]).
 //!
 //! **Flexibility.** Each body is condensed with both traction columns, giving the global 2 × 2 block of
 //! displacement per unit nodal force at every pair of contact nodes, K₁ and K₂. A nodal force F on the wheel is −F on
@@ -64,6 +66,21 @@ pub enum Counter {
         /// Its material.
         material: Material,
     },
+}
+
+/// The scene's second finite body with the number of elements on its boundary beyond the contact zone, when the
+/// counter-body is one (`kind = "disc"` or `"bore"`).
+pub fn counter_of(body: &crate::scene::CounterBody) -> Option<(Counter, usize)> {
+    use crate::scene::CounterBody;
+    match *body {
+        CounterBody::Disc { material, radius, support, other_elements } => {
+            Some((Counter::Disc { radius, material, support }, other_elements))
+        }
+        CounterBody::Bore { material, radius, outer_radius, other_elements, outer_elements } => {
+            Some((Counter::Bore { radius, outer_radius, outer_elements, material }, other_elements))
+        }
+        _ => None,
+    }
 }
 
 impl Counter {
@@ -305,7 +322,7 @@ pub fn steady_slip(flex: &Flexibility, direction: i32) -> crate::formulation::Sl
     let mut op = crate::formulation::SlipOperator::steady(&flex.x, direction);
     let Some(normals) = &flex.normals else { return op };
     let n = flex.n();
-    let angle = |i: usize| normals[i][0].atan2(normals[i][1]) * -1.0;
+    let angle = |i: usize| -normals[i][0].atan2(normals[i][1]);
     let kappa = |i: usize| {
         let (lo, hi) = (i.saturating_sub(1), (i + 1).min(n - 1));
         if hi == lo {

@@ -1,5 +1,5 @@
-//! 8. The pin in a bore (Persson 1964; Ciavarella & Decuzzi, IJSS 38, 2001): a frictionless pin of radius R in a
-//! circular hole of radius R + ΔR of an infinite plate of the same material (plane strain), pressed by a force P
+//! Theory 8, the pin in a bore (Persson 1964; Ciavarella & Decuzzi, IJSS 38, 2001): a frictionless pin of radius R
+//! in a circular hole of radius R + ΔR of an infinite plate of the same material (plane strain), pressed by a force P
 //! per unit thickness. The contact arc |θ| ≤ b (θ from the line of the load) grows from Hertzian (b of a few
 //! degrees) to conformal (tens of degrees); at zero clearance b is independent of the load.
 //!
