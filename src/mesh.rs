@@ -737,6 +737,62 @@ mod tests {
         }
     }
 
+    /// The angle a closed boundary's elements subtend about `c`, summed in traversal order (2π counter-clockwise).
+    fn turning(m: &Mesh, c: [f64; 2], radius: f64) -> f64 {
+        m.elements
+            .iter()
+            .filter_map(|e| match e.shape {
+                Shape::Straight { a, b } if ((a[0] - c[0]).hypot(a[1] - c[1]) - radius).abs() < 1e-12 => {
+                    let (u, v) = ([a[0] - c[0], a[1] - c[1]], [b[0] - c[0], b[1] - c[1]]);
+                    Some((u[0] * v[1] - u[1] * v[0]).atan2(u[0] * v[0] + u[1] * v[1]))
+                }
+                _ => None,
+            })
+            .sum()
+    }
+
+    #[test]
+    fn counter_disc_and_bore_plate_close_and_face_their_zone() {
+        // Expected (geometry): a counter-disc's circle closes counter-clockwise (2π), its contact nodes lie on the
+        // zone in increasing x with outward normals; a bore closes clockwise (−2π), its normals point into the hole
+        // (out of the plate), and its clamped outer circle closes counter-clockwise.
+        let c = [0.0, -1.0];
+        let zone: Vec<f64> = (0..=10).map(|k| PI / 2.0 - 0.05 + 0.01 * k as f64).collect();
+        let d = Mesh::counter_disc(ElementKind::Constant, c, 0.5, &zone, 40, Support::Hub { radius: 0.1 }).unwrap();
+        assert!((turning(&d, c, 0.5) - 2.0 * PI).abs() < 1e-12);
+        assert!((turning(&d, c, 0.1) + 2.0 * PI).abs() < 1e-12, "the hub clockwise");
+        assert_eq!(d.contact_nodes.len(), 10);
+        let xs: Vec<f64> = d.contact_nodes.iter().map(|&i| d.nodes[i].pos[0]).collect();
+        assert!(xs.windows(2).all(|w| w[0] < w[1]));
+        for &i in &d.contact_nodes {
+            let n = d.nodes[i];
+            let r = [n.pos[0] - c[0], n.pos[1] - c[1]];
+            assert!((n.normal[0] * r[0] + n.normal[1] * r[1]) / r[0].hypot(r[1]) > 0.999, "outward");
+        }
+        let zone: Vec<f64> = (0..=10).map(|k| -PI / 2.0 - 0.5 + 0.1 * k as f64).collect();
+        let b = Mesh::bore_plate(ElementKind::Quadratic, c, 0.02, &zone, 30, 0.5, 32).unwrap();
+        assert_eq!(b.contact_nodes.len(), 30);
+        for n in &b.nodes {
+            let r = [n.pos[0] - c[0], n.pos[1] - c[1]];
+            let radial = (n.normal[0] * r[0] + n.normal[1] * r[1]) / r[0].hypot(r[1]);
+            if r[0].hypot(r[1]) < 0.1 {
+                assert!((radial + 1.0).abs() < 1e-12, "the bore's normal points into the hole");
+            } else {
+                assert!((radial - 1.0).abs() < 1e-12 && n.bc == Bc::Support);
+            }
+        }
+        let bc = Mesh::bore_plate(ElementKind::Constant, c, 0.02, &zone, 30, 0.5, 32).unwrap();
+        assert!((turning(&bc, c, 0.02) + 2.0 * PI).abs() < 1e-12, "the bore clockwise");
+        assert!((turning(&bc, c, 0.5) - 2.0 * PI).abs() < 1e-12);
+        // Refusals name the argument.
+        let bad = Mesh::bore_plate(ElementKind::Constant, c, 0.02, &zone, 30, 0.01, 32).unwrap_err();
+        assert_eq!(bad.argument, "outer_radius");
+        let bad = Mesh::counter_disc(ElementKind::Constant, c, 0.5, &zone[..1], 40, Support::Hub { radius: 0.1 });
+        assert_eq!(bad.unwrap_err().argument, "zone");
+        let bad = Mesh::counter_disc(ElementKind::Constant, c, 0.5, &zone, 40, Support::Hub { radius: 0.6 });
+        assert_eq!(bad.unwrap_err().argument, "support");
+    }
+
     #[test]
     fn hub_mesh_normals_point_out_of_the_annulus() {
         let m = Mesh::wheel(2.0, Support::Hub { radius: 0.5 }, &spec(ElementKind::Quadratic)).unwrap();
