@@ -89,6 +89,11 @@ pub struct Flexibility {
     pub g0: Vec<f64>,
     /// Tributary lengths w (∫N ds): nodal force = w × traction.
     pub weights: Vec<f64>,
+    /// The contact frame at each node when it is not the flat's: the unit vector N_i (global x, y) along which the
+    /// pressure acts on the wheel and the gap is measured, with T_i = (N_y, −N_x) (so N = (0, 1) gives T = (1, 0),
+    /// the flat's frame). `None`: the flat's frame N = y, T = x at every node (every source but two finite bodies,
+    /// [`crate::source::two_body`], whose frame follows the interface of the two curved surfaces).
+    pub normals: Option<Vec<[f64; 2]>>,
     /// The scales that make it dimensionless.
     pub scales: Scales,
     /// This flexibility's identity ([`FlexId`]): a solver's state from a solve on it is used only on it.
@@ -222,10 +227,45 @@ impl Flexibility {
             x: pick(&self.x),
             y: pick(&self.y),
             g0: pick(&self.g0),
+            normals: self.normals.as_ref().map(|v| idx.iter().map(|&i| v[i]).collect()),
             weights,
             scales: self.scales,
             id: FlexId::new(),
             derived: Derived::default(),
+        }
+    }
+
+    /// The contact frame (N_i, T_i) of node `i` in global (x, y) components: the flat's ((0, 1), (1, 0)) unless the
+    /// source gives per-node frames ([`Flexibility::normals`]).
+    pub fn frame(&self, i: usize) -> ([f64; 2], [f64; 2]) {
+        match &self.normals {
+            Some(v) => (v[i], [v[i][1], -v[i][0]]),
+            None => ([0.0, 1.0], [1.0, 0.0]),
+        }
+    }
+
+    /// The equilibrium rows of a rigid mode's load on the nodal forces (row_n on f, row_t on h): the resultant
+    /// conjugate to the mode, by virtual work. Shift: the force on the wheel along +x, Σ (N_x f + T_x h); approach:
+    /// the load P pressing the wheel onto the counter-body, Σ (N_y f + T_y h); rotation: the counter-clockwise
+    /// moment about the wheel's centre, Σ (x F_y − y F_x). In the flat's frame these are exactly the rows 0/1, 1/0
+    /// and x/−y.
+    pub fn load_rows(&self, kind: ModeKind) -> (Vec<f64>, Vec<f64>) {
+        let n = self.n();
+        let Some(normals) = &self.normals else {
+            return match kind {
+                ModeKind::Shift => (vec![0.0; n], vec![1.0; n]),
+                ModeKind::Approach => (vec![1.0; n], vec![0.0; n]),
+                ModeKind::Rotation => (self.x.clone(), self.y.iter().map(|y| -y).collect()),
+            };
+        };
+        let row = |c: &dyn Fn(usize, [f64; 2]) -> f64| -> Vec<f64> { (0..n).map(|i| c(i, normals[i])).collect() };
+        let (x, y) = (&self.x, &self.y);
+        match kind {
+            ModeKind::Shift => (row(&|_, nv| nv[0]), row(&|_, nv| nv[1])),
+            ModeKind::Approach => (row(&|_, nv| nv[1]), row(&|_, nv| -nv[0])),
+            ModeKind::Rotation => {
+                (row(&|i, nv| x[i] * nv[1] - y[i] * nv[0]), row(&|i, nv| x[i] * (-nv[0]) - y[i] * nv[1]))
+            }
         }
     }
 

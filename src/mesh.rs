@@ -248,6 +248,93 @@ pub fn contact_vertex_angles(radius: f64, zone: &ContactZone) -> Vec<f64> {
     }
 }
 
+/// Continue a circle's increasing vertex angles from the end of its contact zone (`angles` holds the zone's
+/// vertices, `classes` its elements) around to the zone's start: `no` elements graded from the zone's end size `h0`
+/// (the zone subtends `alpha`), all free, or with a clamped arc of `clamp` radians centred opposite the zone, its
+/// uniform elements' count chosen to continue the grading. The last angle is left for the caller to close exactly.
+fn close_circle(angles: &mut Vec<f64>, classes: &mut Vec<Bc>, h0: f64, alpha: f64, no: usize, clamp: Option<f64>) {
+    let mut a = *angles.last().expect("a zone has vertices");
+    let mut push = |h: f64, bc: Bc, angles: &mut Vec<f64>| {
+        a += h;
+        angles.push(a);
+        classes.push(bc);
+    };
+    let Some(beta) = clamp else {
+        let nr = no.div_ceil(2);
+        let nl = no - nr;
+        let span = PI - alpha / 2.0;
+        let right = graded_sizes(h0, span, nr);
+        let left = graded_sizes(h0, span, nl);
+        for h in right.iter().chain(left.iter().rev()) {
+            push(*h, Bc::Free, angles);
+        }
+        return;
+    };
+    let span = PI - alpha / 2.0 - beta / 2.0;
+    // Choose how many uniform elements the clamped arc gets so that their size continues the grading.
+    let mut best: Option<(f64, usize)> = None;
+    for ntop in 1..=no.saturating_sub(2).max(1) {
+        let nr = (no - ntop).div_ceil(2);
+        let nl = no - ntop - nr;
+        if nl == 0 {
+            continue;
+        }
+        let Some(&last) = graded_sizes(h0, span, nr).last() else { continue };
+        let mismatch = ((beta / ntop as f64) / last).ln().abs();
+        if best.is_none_or(|(m, _)| mismatch < m) {
+            best = Some((mismatch, ntop));
+        }
+    }
+    let ntop = best.map(|b| b.1).unwrap_or(1);
+    let nr = (no - ntop).div_ceil(2);
+    let nl = no - ntop - nr;
+    let right = graded_sizes(h0, span, nr);
+    let left = graded_sizes(h0, span, nl);
+    for h in &right {
+        push(*h, Bc::Free, angles);
+    }
+    for _ in 0..ntop {
+        push(beta / ntop as f64, Bc::Support, angles);
+    }
+    for h in left.iter().rev() {
+        push(*h, Bc::Free, angles);
+    }
+}
+
+/// The domain of a counter-body's zone (see [`Mesh::counter_disc`]).
+fn check_counter_zone(
+    f: &'static str,
+    kind: ElementKind,
+    radius: f64,
+    zone: &[f64],
+    other: usize,
+) -> Result<(), ArgumentError> {
+    if !(radius > 0.0 && radius.is_finite()) {
+        return Err(ArgumentError::new(f, "radius", format!("must be finite and > 0, got {radius}")));
+    }
+    let increasing = zone.windows(2).all(|w| w[1] - w[0] >= MIN_CONTACT_ELEMENT_ANGLE);
+    if zone.len() < 2 || !increasing || !zone.iter().all(|t| t.is_finite()) || zone[zone.len() - 1] - zone[0] >= PI {
+        return Err(ArgumentError::new(
+            f,
+            "zone",
+            "must be at least two finite increasing vertex angles, each element subtending at least \
+             MIN_CONTACT_ELEMENT_ANGLE, spanning less than 180 degrees"
+                .to_string(),
+        ));
+    }
+    if other < 4 {
+        return Err(ArgumentError::new(f, "other_elements", format!("must be at least 4, got {other}")));
+    }
+    let per = match kind {
+        ElementKind::Constant => 1,
+        ElementKind::Quadratic => 3,
+    };
+    if (zone.len() - 1).saturating_add(other).saturating_mul(per) > MAX_NODES {
+        return Err(ArgumentError::new(f, "zone", format!("more than the {MAX_NODES} nodes a BEM body may have")));
+    }
+    Ok(())
+}
+
 /// The domain of [`Mesh::wheel`]: a wheel it can mesh, with the bounds a scene's validation applies to the same
 /// quantities (`crate::scene`, with errors naming the scene's keys).
 fn check_wheel(radius: f64, support: Support, spec: &MeshSpec) -> Result<(), ArgumentError> {
@@ -332,61 +419,12 @@ impl Mesh {
             ZoneExtent::Arc { .. } => alpha / nc as f64,
             ZoneExtent::HalfWidth { .. } | ZoneExtent::Span { .. } => angles[nc] - angles[nc - 1],
         };
+        let clamp = match support {
+            Support::Hub { .. } => None,
+            Support::TopArc { angle_deg } => Some(angle_deg.to_radians()),
+        };
         let no = spec.other_elements;
-        match support {
-            Support::Hub { .. } => {
-                let nr = no.div_ceil(2);
-                let nl = no - nr;
-                let span = PI - alpha / 2.0;
-                let right = graded_sizes(h0, span, nr);
-                let left = graded_sizes(h0, span, nl);
-                let mut a = angles[nc];
-                for h in right.iter().chain(left.iter().rev()) {
-                    a += h;
-                    angles.push(a);
-                    classes.push(Bc::Free);
-                }
-            }
-            Support::TopArc { angle_deg } => {
-                let beta = angle_deg.to_radians();
-                let span = PI - alpha / 2.0 - beta / 2.0;
-                // Choose how many uniform elements the clamped arc gets so that their size continues the grading.
-                let mut best: Option<(f64, usize)> = None;
-                for ntop in 1..=no.saturating_sub(2).max(1) {
-                    let nr = (no - ntop).div_ceil(2);
-                    let nl = no - ntop - nr;
-                    if nl == 0 {
-                        continue;
-                    }
-                    let Some(&last) = graded_sizes(h0, span, nr).last() else { continue };
-                    let mismatch = ((beta / ntop as f64) / last).ln().abs();
-                    if best.is_none_or(|(m, _)| mismatch < m) {
-                        best = Some((mismatch, ntop));
-                    }
-                }
-                let ntop = best.map(|b| b.1).unwrap_or(1);
-                let nr = (no - ntop).div_ceil(2);
-                let nl = no - ntop - nr;
-                let right = graded_sizes(h0, span, nr);
-                let left = graded_sizes(h0, span, nl);
-                let mut a = angles[nc];
-                for h in &right {
-                    a += h;
-                    angles.push(a);
-                    classes.push(Bc::Free);
-                }
-                for _ in 0..ntop {
-                    a += beta / ntop as f64;
-                    angles.push(a);
-                    classes.push(Bc::Support);
-                }
-                for h in left.iter().rev() {
-                    a += h;
-                    angles.push(a);
-                    classes.push(Bc::Free);
-                }
-            }
-        }
+        close_circle(&mut angles, &mut classes, h0, alpha, no, clamp);
         // Close the circle exactly.
         if let Some(last) = angles.last_mut() {
             *last = start + 2.0 * PI;
@@ -410,6 +448,149 @@ impl Mesh {
         mesh.contact_nodes = (0..mesh.nodes.len()).filter(|&i| mesh.nodes[i].bc == Bc::Contact).collect();
         mesh.contact_nodes.sort_by(|&a, &b| mesh.nodes[a].pos[0].total_cmp(&mesh.nodes[b].pos[0]));
         Ok(mesh)
+    }
+
+    /// The boundary of a counter-disc ([`crate::source::two_body`]): a circle of radius `radius` about `centre`
+    /// (counter-clockwise), whose potential contact zone has the vertex angles `zone` (polar angles about `centre`,
+    /// increasing, symmetric about their middle angle, the zone's elements `Bc::Contact`), the rest of the circle in
+    /// `other_elements` elements graded from the zone's end size, and the support: a hub (a clamped concentric circle
+    /// of that radius, clockwise) or a clamped arc of `angle_deg` centred opposite the zone. Node gaps are 0 (a
+    /// counter-body's gap is the pair's, [`crate::source::two_body`]). Refused, naming the argument: a zone of fewer
+    /// than two vertices or spanning 180° or more, fewer than 4 other elements, more than [`MAX_NODES`] nodes, a hub
+    /// outside the disc, a clamped arc outside (0°, 180°) or leaving no free boundary.
+    pub fn counter_disc(
+        kind: ElementKind,
+        centre: [f64; 2],
+        radius: f64,
+        zone: &[f64],
+        other_elements: usize,
+        support: Support,
+    ) -> Result<Mesh, ArgumentError> {
+        check_counter_zone("Mesh::counter_disc", kind, radius, zone, other_elements)?;
+        let (alpha, nc) = (zone[zone.len() - 1] - zone[0], zone.len() - 1);
+        let clamp = match support {
+            Support::Hub { radius: rh } if !(rh > 0.0 && rh < radius) => {
+                return Err(ArgumentError::new(
+                    "Mesh::counter_disc",
+                    "support",
+                    format!("a hub's radius must lie in (0, radius = {radius}), got {rh}"),
+                ))
+            }
+            Support::Hub { .. } => None,
+            Support::TopArc { angle_deg } => {
+                if !(angle_deg > 0.0 && angle_deg < 180.0) || alpha.to_degrees() + angle_deg >= 300.0 {
+                    return Err(ArgumentError::new(
+                        "Mesh::counter_disc",
+                        "support",
+                        format!("a clamped arc must lie in (0, 180) degrees and leave free boundary, got {angle_deg}"),
+                    ));
+                }
+                Some(angle_deg.to_radians())
+            }
+        };
+        let mut angles = zone.to_vec();
+        let mut classes = vec![Bc::Contact; nc];
+        close_circle(&mut angles, &mut classes, zone[nc] - zone[nc - 1], alpha, other_elements, clamp);
+        if let Some(last) = angles.last_mut() {
+            *last = zone[0] + 2.0 * PI;
+        }
+        let mut mesh = Mesh { kind, radius, elements: Vec::new(), nodes: Vec::new(), contact_nodes: Vec::new() };
+        for (k, bc) in classes.iter().enumerate() {
+            mesh.push_circle_element(centre, radius, angles[k], angles[k + 1], *bc);
+        }
+        if let Support::Hub { radius: rh } = support {
+            let mean_other = (2.0 * PI - alpha) * radius / other_elements as f64;
+            let nh = ((2.0 * PI * rh / mean_other).round() as usize).max(12);
+            let dh = 2.0 * PI / nh as f64;
+            for k in 0..nh {
+                let t0 = PI / 2.0 - dh * k as f64;
+                mesh.push_circle_element(centre, rh, t0, t0 - dh, Bc::Support);
+            }
+        }
+        mesh.sort_contact_nodes();
+        Ok(mesh)
+    }
+
+    /// The boundary of a plate with a circular bore ([`crate::source::two_body`]): the bore, a circle of radius
+    /// `radius` about `centre` traversed clockwise (the plate lies outside it), with the potential contact zone of
+    /// vertex angles `zone` (as [`Mesh::counter_disc`]) and the rest of the bore free in `other_elements` graded
+    /// elements; and the plate's outer boundary, a concentric circle of radius `outer_radius` clamped to the rigid
+    /// frame, in `outer_elements` uniform elements (counter-clockwise). Refused as [`Mesh::counter_disc`], and for an
+    /// outer radius not beyond the bore or fewer than 8 outer elements.
+    pub fn bore_plate(
+        kind: ElementKind,
+        centre: [f64; 2],
+        radius: f64,
+        zone: &[f64],
+        other_elements: usize,
+        outer_radius: f64,
+        outer_elements: usize,
+    ) -> Result<Mesh, ArgumentError> {
+        const F: &str = "Mesh::bore_plate";
+        check_counter_zone(F, kind, radius, zone, other_elements.saturating_add(outer_elements))?;
+        if !(outer_radius > radius && outer_radius.is_finite()) {
+            let m = format!("must be finite and beyond the bore's radius {radius}, got {outer_radius}");
+            return Err(ArgumentError::new(F, "outer_radius", m));
+        }
+        if outer_elements < 8 {
+            return Err(ArgumentError::new(F, "outer_elements", format!("must be at least 8, got {outer_elements}")));
+        }
+        let (alpha, nc) = (zone[zone.len() - 1] - zone[0], zone.len() - 1);
+        let mut angles = zone.to_vec();
+        let mut classes = vec![Bc::Contact; nc];
+        close_circle(&mut angles, &mut classes, zone[nc] - zone[nc - 1], alpha, other_elements, None);
+        if let Some(last) = angles.last_mut() {
+            *last = zone[0] + 2.0 * PI;
+        }
+        let mut mesh =
+            Mesh { kind, radius: outer_radius, elements: Vec::new(), nodes: Vec::new(), contact_nodes: Vec::new() };
+        let d = 2.0 * PI / outer_elements as f64;
+        for k in 0..outer_elements {
+            let t0 = -PI / 2.0 + d * k as f64;
+            mesh.push_circle_element(centre, outer_radius, t0, t0 + d, Bc::Support);
+        }
+        // Clockwise: the elements of the increasing angle list in reverse, each from its larger angle.
+        for k in (0..classes.len()).rev() {
+            mesh.push_circle_element(centre, radius, angles[k + 1], angles[k], classes[k]);
+        }
+        mesh.sort_contact_nodes();
+        Ok(mesh)
+    }
+
+    /// List the contact nodes in increasing x.
+    fn sort_contact_nodes(&mut self) {
+        self.contact_nodes = (0..self.nodes.len()).filter(|&i| self.nodes[i].bc == Bc::Contact).collect();
+        let nodes = &self.nodes;
+        self.contact_nodes.sort_by(|&a, &b| nodes[a].pos[0].total_cmp(&nodes[b].pos[0]));
+    }
+
+    /// One element on the circle of radius `rho` about `centre`, from angle `t0` to `t1` (counter-clockwise when
+    /// t1 > t0), its nodes' gaps 0 (a counter-body's mesh).
+    fn push_circle_element(&mut self, centre: [f64; 2], rho: f64, t0: f64, t1: f64, bc: Bc) {
+        let e = self.elements.len();
+        let first = self.nodes.len();
+        match self.kind {
+            ElementKind::Constant => {
+                let a = [centre[0] + rho * t0.cos(), centre[1] + rho * t0.sin()];
+                let b = [centre[0] + rho * t1.cos(), centre[1] + rho * t1.sin()];
+                let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+                let len = dx.hypot(dy);
+                let t = [dx / len, dy / len];
+                let pos = [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])];
+                self.nodes.push(Node { pos, normal: [t[1], -t[0]], weight: len, element: e, bc, gap: 0.0 });
+                self.elements.push(Element { shape: Shape::Straight { a, b }, bc, first_node: first, n_nodes: 1 });
+            }
+            ElementKind::Quadratic => {
+                let arc = ArcElement { centre, radius: rho, theta0: t0, theta1: t1 };
+                let w = arc.node_weights();
+                for (j, &xi) in XI_NODES.iter().enumerate() {
+                    let node =
+                        Node { pos: arc.position(xi), normal: arc.normal(xi), weight: w[j], element: e, bc, gap: 0.0 };
+                    self.nodes.push(node);
+                }
+                self.elements.push(Element { shape: Shape::Arc(arc), bc, first_node: first, n_nodes: 3 });
+            }
+        }
     }
 
     fn push_element(&mut self, rho: f64, t0: f64, t1: f64, bc: Bc) {
@@ -554,6 +735,62 @@ mod tests {
             let r = w[1].weight / w[0].weight;
             assert!(r < 1.4 && r > 1.0 / 1.4, "size jump {r}");
         }
+    }
+
+    /// The angle a closed boundary's elements subtend about `c`, summed in traversal order (2π counter-clockwise).
+    fn turning(m: &Mesh, c: [f64; 2], radius: f64) -> f64 {
+        m.elements
+            .iter()
+            .filter_map(|e| match e.shape {
+                Shape::Straight { a, b } if ((a[0] - c[0]).hypot(a[1] - c[1]) - radius).abs() < 1e-12 => {
+                    let (u, v) = ([a[0] - c[0], a[1] - c[1]], [b[0] - c[0], b[1] - c[1]]);
+                    Some((u[0] * v[1] - u[1] * v[0]).atan2(u[0] * v[0] + u[1] * v[1]))
+                }
+                _ => None,
+            })
+            .sum()
+    }
+
+    #[test]
+    fn counter_disc_and_bore_plate_close_and_face_their_zone() {
+        // Expected (geometry): a counter-disc's circle closes counter-clockwise (2π), its contact nodes lie on the
+        // zone in increasing x with outward normals; a bore closes clockwise (−2π), its normals point into the hole
+        // (out of the plate), and its clamped outer circle closes counter-clockwise.
+        let c = [0.0, -1.0];
+        let zone: Vec<f64> = (0..=10).map(|k| PI / 2.0 - 0.05 + 0.01 * k as f64).collect();
+        let d = Mesh::counter_disc(ElementKind::Constant, c, 0.5, &zone, 40, Support::Hub { radius: 0.1 }).unwrap();
+        assert!((turning(&d, c, 0.5) - 2.0 * PI).abs() < 1e-12);
+        assert!((turning(&d, c, 0.1) + 2.0 * PI).abs() < 1e-12, "the hub clockwise");
+        assert_eq!(d.contact_nodes.len(), 10);
+        let xs: Vec<f64> = d.contact_nodes.iter().map(|&i| d.nodes[i].pos[0]).collect();
+        assert!(xs.windows(2).all(|w| w[0] < w[1]));
+        for &i in &d.contact_nodes {
+            let n = d.nodes[i];
+            let r = [n.pos[0] - c[0], n.pos[1] - c[1]];
+            assert!((n.normal[0] * r[0] + n.normal[1] * r[1]) / r[0].hypot(r[1]) > 0.999, "outward");
+        }
+        let zone: Vec<f64> = (0..=10).map(|k| -PI / 2.0 - 0.5 + 0.1 * k as f64).collect();
+        let b = Mesh::bore_plate(ElementKind::Quadratic, c, 0.02, &zone, 30, 0.5, 32).unwrap();
+        assert_eq!(b.contact_nodes.len(), 30);
+        for n in &b.nodes {
+            let r = [n.pos[0] - c[0], n.pos[1] - c[1]];
+            let radial = (n.normal[0] * r[0] + n.normal[1] * r[1]) / r[0].hypot(r[1]);
+            if r[0].hypot(r[1]) < 0.1 {
+                assert!((radial + 1.0).abs() < 1e-12, "the bore's normal points into the hole");
+            } else {
+                assert!((radial - 1.0).abs() < 1e-12 && n.bc == Bc::Support);
+            }
+        }
+        let bc = Mesh::bore_plate(ElementKind::Constant, c, 0.02, &zone, 30, 0.5, 32).unwrap();
+        assert!((turning(&bc, c, 0.02) + 2.0 * PI).abs() < 1e-12, "the bore clockwise");
+        assert!((turning(&bc, c, 0.5) - 2.0 * PI).abs() < 1e-12);
+        // Refusals name the argument.
+        let bad = Mesh::bore_plate(ElementKind::Constant, c, 0.02, &zone, 30, 0.01, 32).unwrap_err();
+        assert_eq!(bad.argument, "outer_radius");
+        let bad = Mesh::counter_disc(ElementKind::Constant, c, 0.5, &zone[..1], 40, Support::Hub { radius: 0.1 });
+        assert_eq!(bad.unwrap_err().argument, "zone");
+        let bad = Mesh::counter_disc(ElementKind::Constant, c, 0.5, &zone, 40, Support::Hub { radius: 0.6 });
+        assert_eq!(bad.unwrap_err().argument, "support");
     }
 
     #[test]

@@ -510,9 +510,24 @@ fn resultants(problem: &ContactProblem, sol: &Solution) -> Resultants {
     let flex = problem.flex;
     let (f, h) = (&sol.f, sol.h.as_deref());
     let sc = flex.scales;
-    let fsum: f64 = f.iter().sum();
-    let hsum: f64 = h.map(|h| h.iter().sum()).unwrap_or(0.0);
-    let msum: f64 = (0..flex.n()).map(|i| flex.x[i] * f[i] - flex.y[i] * h.map(|h| h[i]).unwrap_or(0.0)).sum();
+    let (fsum, hsum, msum) = if flex.normals.is_some() {
+        // Per-node frames (two finite bodies): the global force on the wheel, F = f N + h T at each node.
+        let (mut fx, mut fy, mut m) = (0.0, 0.0, 0.0);
+        for i in 0..flex.n() {
+            let (nv, tv) = flex.frame(i);
+            let hi = h.map(|h| h[i]).unwrap_or(0.0);
+            let (gx, gy) = (f[i] * nv[0] + hi * tv[0], f[i] * nv[1] + hi * tv[1]);
+            fx += gx;
+            fy += gy;
+            m += flex.x[i] * gy - flex.y[i] * gx;
+        }
+        (fy, fx, m)
+    } else {
+        let fsum: f64 = f.iter().sum();
+        let hsum: f64 = h.map(|h| h.iter().sum()).unwrap_or(0.0);
+        let msum: f64 = (0..flex.n()).map(|i| flex.x[i] * f[i] - flex.y[i] * h.map(|h| h[i]).unwrap_or(0.0)).sum();
+        (fsum, hsum, msum)
+    };
     let (e, l0) = (sc.modulus, sc.length);
     Resultants { normal: fsum * e * l0, tangential: hsum * e * l0, moment: msum * e * l0 * l0 }
 }

@@ -70,9 +70,10 @@ pub struct Metrics {
     pub carter_creepage_err: Option<f64>,
 }
 
-/// Hertz at load `p` with the scene's wheel radius and pair modulus E*.
+/// Hertz at load `p` with the scene's effective radius R* ([`Scene::contact_radius`]: the wheel's on a flat) and
+/// pair modulus E*.
 pub fn hertz_at(scene: &Scene, p: f64) -> Hertz2D {
-    Hertz2D::from_load(p, scene.radius(), scene.contact_modulus())
+    Hertz2D::from_load(p, scene.contact_radius(), scene.contact_modulus())
 }
 
 /// Where a half-space theory of the decoupled problem (Cattaneo–Mindlin, Carter) stands for a scene.
@@ -115,15 +116,31 @@ pub fn carter_applies(scene: &Scene, p: f64) -> bool {
 /// The model the half-space theories assume, for a finite-wheel scene they are compared with
 /// ([`Domain::FiniteBody`]): the same material, radius (a circular profile), counter-body, contact law, drive,
 /// rolling and candidate zone, with the wheel modelled as an elastic half-plane (constant elements; a quadratic
-/// mesh's nodes become as many constant elements on the same zone), solved by `active_set`. `None` when the
-/// scene is not compared with a half-space theory on the finite wheel.
+/// mesh's nodes become as many constant elements on the same zone), solved by `active_set`. With a second finite
+/// body (a counter-disc) the counterpart is the pair of half-planes the theories assume: the wheel's radius the
+/// effective R* ([`Scene::contact_radius`]), the counter-disc an elastic half-plane of its material, the zone the
+/// same width in x. `None` when the scene is not compared with a half-space theory on the finite wheel.
 pub fn half_space_counterpart(scene: &Scene) -> Option<crate::Result<Scene>> {
     let compared = cattaneo_applies(scene) || matches!(scene.rolling(), Some(Rolling::Steady { .. }));
     if decoupled_domain(scene) != Domain::FiniteBody || !compared || scene.friction() == 0.0 {
         return None;
     }
+    let pair = crate::source::two_body::counter_of(scene.counter_body()).map(|(c, _)| {
+        let m = *c.material();
+        (scene.contact_radius(), m, scene.zone().half_width(scene.radius()))
+    });
     Some(scene.edit(|d| {
         d.name = format!("{}-half-space", d.name);
+        if let Some((r_star, m, half_width)) = pair {
+            d.wheel.radius = r_star;
+            d.counter_body = crate::scene::document::CounterBodyTable::HalfPlane {
+                youngs_modulus: m.youngs_modulus,
+                poisson_ratio: m.poisson_ratio,
+                datum_depth: None,
+            };
+            d.mesh.contact_arc_deg = None;
+            d.mesh.contact_half_width = Some(half_width);
+        }
         d.wheel.model = BodyModel::HalfPlane;
         d.wheel.support = None;
         d.wheel.profile = None;
@@ -175,7 +192,7 @@ pub(crate) fn carter_solution(scene: &Scene, run: &SolverRun) -> Option<CarterRe
         return None;
     }
     let direction = f64::from(scene.rolling()?.direction());
-    let (mu, r) = (scene.friction(), scene.radius());
+    let (mu, r) = (scene.friction(), scene.contact_radius());
     let hertz = hertz_at(scene, p);
     let (c_over_a, creepage) = match scene.drive()?.tangential {
         Dof::Displacement(xi) => (theory::carter_c_over_a_of_creepage(&hertz, mu, r, xi), xi),
@@ -189,7 +206,8 @@ pub(crate) fn carter_solution(scene: &Scene, run: &SolverRun) -> Option<CarterRe
 /// Whether Hertz is compared with a scene: frictionless, and in plane strain (not on a strip of half-spaces,
 /// `[mesh] strip_width`).
 pub fn hertz_applies(scene: &Scene) -> bool {
-    scene.friction() == 0.0 && scene.strip_width().is_none()
+    let conformal = matches!(scene.counter_body(), crate::scene::CounterBody::Bore { .. });
+    scene.friction() == 0.0 && scene.strip_width().is_none() && !conformal
 }
 
 /// Hertz at the run's load P, when [`hertz_applies`] and the run solved with P > 0.

@@ -508,7 +508,7 @@ impl<'a> StressEvaluator<'a> {
                 let scale = |v: &[f64]| v.iter().map(|x| x * l0).collect::<Vec<f64>>();
                 Some((scale(&g.a), scale(&g.b), material.poisson_ratio))
             }
-            crate::scene::CounterBody::Rigid => None,
+            _ => None,
         };
         Ok(Some(StressEvaluator {
             grid,

@@ -151,11 +151,12 @@ pub(crate) fn rigid_dofs(flex: &Flexibility, drive: &Drive, slip: &SlipOperator)
             continue;
         }
         let Some(mode) = flex.mode(kind) else { continue };
-        let (drive, row_n, row_t) = match kind {
-            ModeKind::Shift => (scaled(user, sc.length, sc.force()), vec![0.0; n], vec![1.0; n]),
-            ModeKind::Approach => (scaled(user, sc.length, sc.force()), vec![1.0; n], vec![0.0; n]),
-            ModeKind::Rotation => (scaled(user, 1.0, sc.moment()), flex.x.clone(), flex.y.iter().map(|y| -y).collect()),
+        let drive = match kind {
+            ModeKind::Shift | ModeKind::Approach => scaled(user, sc.length, sc.force()),
+            ModeKind::Rotation => scaled(user, 1.0, sc.moment()),
         };
+        // The resultant conjugate to the mode (the flat's rows 0/1, 1/0, x/−y; turned with per-node frames).
+        let (row_n, row_t) = flex.load_rows(kind);
         out.push(RigidDof {
             kind: kind.into(),
             drive,

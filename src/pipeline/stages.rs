@@ -51,7 +51,8 @@ pub fn rolling_post(scene: &Scene) -> Option<RollingPost> {
 /// The slip operator of a scene on a flexibility: steady rolling's upwind slip velocity, or the static slip.
 pub fn slip_operator(scene: &Scene, flex: &crate::flexibility::Flexibility) -> SlipOperator {
     match scene.rolling() {
-        Some(Rolling::Steady { direction }) => SlipOperator::steady(&flex.x, *direction),
+        // The flat's upwind operator; with two finite bodies plus the turning of the pair's frame.
+        Some(Rolling::Steady { direction }) => crate::source::two_body::steady_slip(flex, *direction),
         _ => SlipOperator::static_slip(),
     }
 }
@@ -180,7 +181,12 @@ pub fn effects(scene: &Scene) -> (Vec<String>, Vec<EffectNote>) {
     let rolling = scene.rolling().map(|r| format!("{:?} rolling", r.mode()).to_lowercase());
     note("rolling", rolling.is_some(), rolling.is_some(), rolling.unwrap_or_else(|| "static (no `[rolling]`)".into()));
     let elastic = *scene.counter_body() != CounterBody::Rigid;
-    let what = if elastic { "an elastic half-plane counter-body" } else { "a rigid flat" };
+    let what = match scene.counter_body() {
+        CounterBody::Rigid => "a rigid flat",
+        CounterBody::Disc { .. } => "a finite elastic counter-disc (BEM)",
+        CounterBody::Bore { .. } => "a plate with a bore (BEM)",
+        _ => "an elastic half-plane counter-body",
+    };
     note("counter_body", elastic, elastic, what.into());
     let steps = scene.steps().len();
     let what = if steps > 0 { format!("a load path of {steps} steps") } else { "one step from rest".into() };

@@ -98,6 +98,35 @@ pub enum CounterBodyTable {
         #[serde(default, skip_serializing_if = "Option::is_none")]
         datum_depth: Option<f64>,
     },
+    /// A finite elastic disc below the wheel (the twin-disc rig), a BEM body like the wheel: BEM wheel only.
+    Disc {
+        /// Its radius R₂ (length unit).
+        radius: f64,
+        /// Its Young's modulus (stress unit).
+        youngs_modulus: f64,
+        /// Its Poisson's ratio, 0 ≤ ν ≤ 0.5.
+        poisson_ratio: f64,
+        /// How it is held: `{ kind = "hub", radius }` or `{ kind = "top_arc", angle_deg }` (the arc centred
+        /// opposite the contact).
+        support: Support,
+        /// Elements on its circle beyond the contact zone (≥ 4).
+        other_elements: usize,
+    },
+    /// A plate with a circular bore around the wheel (the pin in a bore), its outer circle clamped: BEM wheel only.
+    Bore {
+        /// The bore's radius R_b ≥ the wheel's radius (clearance R_b − R, zero allowed).
+        radius: f64,
+        /// The plate's outer radius (> R_b).
+        outer_radius: f64,
+        /// Its Young's modulus (stress unit).
+        youngs_modulus: f64,
+        /// Its Poisson's ratio, 0 ≤ ν ≤ 0.5.
+        poisson_ratio: f64,
+        /// Elements on the bore beyond the contact zone (≥ 4).
+        other_elements: usize,
+        /// Elements on the outer circle (≥ 8).
+        outer_elements: usize,
+    },
 }
 
 /// `[mesh]`: the boundary-element mesh of the wheel, or the contact grid of the half-plane. The potential contact

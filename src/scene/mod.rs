@@ -248,6 +248,31 @@ pub enum CounterBody {
         /// Depth of its datum point below the contact centre (length unit).
         datum_depth: f64,
     },
+    /// A finite elastic disc below the wheel, a BEM body like the wheel (the twin-disc rig,
+    /// [`crate::source::two_body`]).
+    Disc {
+        /// Its material.
+        material: Material,
+        /// Its radius R₂ (length unit).
+        radius: f64,
+        /// How it is held: a hub, or a clamped arc centred opposite the contact.
+        support: Support,
+        /// Elements on its circle beyond the contact zone.
+        other_elements: usize,
+    },
+    /// A plate with a circular bore around the wheel (the pin in a bore), a BEM body ([`crate::source::two_body`]).
+    Bore {
+        /// Its material.
+        material: Material,
+        /// The bore's radius R_b ≥ R (clearance R_b − R).
+        radius: f64,
+        /// The plate's outer radius (its outer circle clamped).
+        outer_radius: f64,
+        /// Elements on the bore beyond the contact zone.
+        other_elements: usize,
+        /// Elements on the outer circle.
+        outer_elements: usize,
+    },
 }
 
 impl CounterBody {
@@ -255,7 +280,9 @@ impl CounterBody {
     pub fn material(&self) -> Option<&Material> {
         match self {
             CounterBody::Rigid => None,
-            CounterBody::HalfPlane { material, .. } => Some(material),
+            CounterBody::HalfPlane { material, .. }
+            | CounterBody::Disc { material, .. }
+            | CounterBody::Bore { material, .. } => Some(material),
         }
     }
 }
@@ -935,6 +962,17 @@ impl Scene {
     /// The subsurface stress grid, when the scene asks for stresses.
     pub fn stresses(&self) -> Option<&StressSpec> {
         self.document.stresses.as_ref()
+    }
+
+    /// The effective radius R* of the contact, 1/R* = 1/R + 1/R₂: the wheel's radius on a flat, R R₂/(R + R₂) on a
+    /// counter-disc, R R_b/(R_b − R) in a bore (∞ at zero clearance): the radius of Hertz's and Carter's theories.
+    pub fn contact_radius(&self) -> f64 {
+        let r = self.wheel.radius;
+        match self.counter_body {
+            CounterBody::Disc { radius, .. } => r * radius / (r + radius),
+            CounterBody::Bore { radius, .. } => r * radius / (radius - r),
+            _ => r,
+        }
     }
 
     /// The plane-strain contact modulus of the pair, E* ([`crate::material::contact_modulus`]).

@@ -60,6 +60,23 @@ pub(super) fn build(mut document: SceneDocument, path: &Path) -> Result<Scene> {
             material: Material { youngs_modulus, poisson_ratio },
             datum_depth: datum_depth.unwrap_or(w.radius),
         },
+        CounterBodyTable::Disc { radius, youngs_modulus, poisson_ratio, support, other_elements } => {
+            CounterBody::Disc { material: Material { youngs_modulus, poisson_ratio }, radius, support, other_elements }
+        }
+        CounterBodyTable::Bore {
+            radius,
+            outer_radius,
+            youngs_modulus,
+            poisson_ratio,
+            other_elements,
+            outer_elements,
+        } => CounterBody::Bore {
+            material: Material { youngs_modulus, poisson_ratio },
+            radius,
+            outer_radius,
+            other_elements,
+            outer_elements,
+        },
     };
     let rolling = d.rolling.as_ref().map(|r| match r.mode {
         RollingMode::Steady => Rolling::Steady { direction: r.direction },
@@ -384,6 +401,7 @@ impl SceneDocument {
     }
 
     fn validate_counter_body(&self, c: &Checker) -> Result<()> {
+        self.validate_finite_counter(c)?;
         if let CounterBodyTable::HalfPlane { youngs_modulus, poisson_ratio, datum_depth } = self.counter_body {
             c.positive("counter_body.youngs_modulus", youngs_modulus)?;
             c.poisson("counter_body.poisson_ratio", poisson_ratio)?;
@@ -411,6 +429,124 @@ impl SceneDocument {
             }
         }
         Ok(())
+    }
+
+    /// A second finite body (`kind = "disc"` or `"bore"`, [`crate::source::two_body`]): a BEM wheel's, its values in
+    /// range, its zone on the wheel's rays, no interior stresses, no rolling in a bore.
+    fn validate_finite_counter(&self, c: &Checker) -> Result<()> {
+        let (radius, e, nu, other, kind) = match self.counter_body {
+            CounterBodyTable::Disc { radius, youngs_modulus, poisson_ratio, other_elements, .. } => {
+                (radius, youngs_modulus, poisson_ratio, other_elements, "disc")
+            }
+            CounterBodyTable::Bore { radius, youngs_modulus, poisson_ratio, other_elements, .. } => {
+                (radius, youngs_modulus, poisson_ratio, other_elements, "bore")
+            }
+            _ => return Ok(()),
+        };
+        let r = self.wheel.radius;
+        if self.wheel.model != BodyModel::Bem {
+            return Err(c.bad(
+                "counter_body.kind",
+                format!(
+                    "a {kind} is a finite BEM body: it meets a BEM wheel (wheel.model = \"bem\"), not a half-plane"
+                ),
+            ));
+        }
+        c.positive("counter_body.radius", radius)?;
+        c.scaled_length("counter_body.radius", radius, r)?;
+        c.positive("counter_body.youngs_modulus", e)?;
+        c.poisson("counter_body.poisson_ratio", nu)?;
+        if !(e / self.wheel.youngs_modulus).is_normal() {
+            return Err(c.bad(
+                "counter_body.youngs_modulus",
+                format!("{e:e}: its ratio to the wheel's is not a normal double"),
+            ));
+        }
+        if other < 4 {
+            return Err(c.bad("counter_body.other_elements", format!("must be at least 4, got {other}")));
+        }
+        let per = if self.mesh.element == ElementKind::Quadratic { 3 } else { 1 };
+        if (self.mesh.contact_elements.saturating_add(other)).saturating_mul(per) > MAX_NODES {
+            return Err(
+                c.bad("counter_body.other_elements", format!("more than the {MAX_NODES} nodes a BEM body may have"))
+            );
+        }
+        if self.stresses.is_some() {
+            return Err(
+                c.bad("stresses", format!("interior stresses are not computed for two finite bodies (a {kind})"))
+            );
+        }
+        self.validate_counter_geometry(c, radius, nu)
+    }
+
+    /// The second body's geometry against the wheel's zone, and its support ([`Self::validate_finite_counter`]).
+    fn validate_counter_geometry(&self, c: &Checker, radius: f64, nu: f64) -> Result<()> {
+        let r = self.wheel.radius;
+        // The zone's half-angle on the wheel.
+        let half = match (self.mesh.contact_arc_deg, self.mesh.contact_half_width) {
+            (Some(deg), _) => 0.5 * deg.to_radians(),
+            (None, Some(w)) => (w / r).clamp(-1.0, 1.0).asin(),
+            _ => 0.0,
+        };
+        match self.counter_body {
+            CounterBodyTable::Disc { support, .. } => {
+                if half.sin() >= 0.99 * radius / (r + radius) {
+                    return Err(c.bad(
+                        "mesh.contact_arc_deg",
+                        format!(
+                            "the wheel's contact zone reaches beyond the counter-disc of radius {radius}: narrow it"
+                        ),
+                    ));
+                }
+                match support {
+                    Support::Hub { radius: rh } if !(rh > 0.0 && rh < radius) => Err(c.bad(
+                        "counter_body.support.radius",
+                        format!("a hub's radius must lie in (0, counter_body.radius = {radius}), got {rh}"),
+                    )),
+                    Support::Hub { .. } if nu == 0.5 => Err(c.bad(
+                        "counter_body.poisson_ratio",
+                        "ν = 0.5 with a hub support is degenerate (the hub pressure is undetermined)".into(),
+                    )),
+                    Support::TopArc { angle_deg } if !(angle_deg > 0.0 && angle_deg < 180.0) => Err(c.bad(
+                        "counter_body.support.angle_deg",
+                        format!("a clamped arc must lie in (0, 180) degrees, got {angle_deg}"),
+                    )),
+                    _ => Ok(()),
+                }
+            }
+            CounterBodyTable::Bore { outer_radius, outer_elements, .. } => {
+                if radius < r {
+                    return Err(c.bad(
+                        "counter_body.radius",
+                        format!("a bore's radius must be at least the wheel's (the pin's) {r}, got {radius}"),
+                    ));
+                }
+                if !(outer_radius > radius && outer_radius.is_finite()) {
+                    return Err(c.bad(
+                        "counter_body.outer_radius",
+                        format!("must be finite and beyond the bore's radius {radius}, got {outer_radius}"),
+                    ));
+                }
+                c.scaled_length("counter_body.outer_radius", outer_radius, r)?;
+                if outer_elements < 8 {
+                    return Err(
+                        c.bad("counter_body.outer_elements", format!("must be at least 8, got {outer_elements}"))
+                    );
+                }
+                if nu == 0.5 {
+                    return Err(c.bad(
+                        "counter_body.poisson_ratio",
+                        "ν = 0.5 with the plate's outer circle clamped is degenerate (its pressure is undetermined)"
+                            .into(),
+                    ));
+                }
+                if self.rolling.is_some() {
+                    return Err(c.bad("rolling", "rolling in a bore is not modelled (a twin disc rolls)".into()));
+                }
+                Ok(())
+            }
+            _ => Ok(()),
+        }
     }
 
     /// The candidate zone: exactly one of `contact_arc_deg`, `contact_half_width`, `contact_x`, in range.

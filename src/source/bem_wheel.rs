@@ -295,6 +295,7 @@ pub fn solve_system_with_response(model: &Model, sys: &System) -> Result<(Flexib
         y: mesh.contact_nodes.iter().map(|&i| mesh.nodes[i].pos[1]).collect(),
         g0: mesh.contact_nodes.iter().map(|&i| mesh.nodes[i].gap).collect(),
         weights,
+        normals: None,
         scales: Scales { length: model.length, modulus: model.modulus },
         id: Default::default(),
         derived: Default::default(),

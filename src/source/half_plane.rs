@@ -167,6 +167,7 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
         x: grid.xc.clone(),
         g0,
         weights,
+        normals: None,
         scales: Scales { length: l0, modulus: w.material.youngs_modulus },
         id: Default::default(),
         derived: Default::default(),

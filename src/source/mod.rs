@@ -8,6 +8,7 @@
 
 pub mod bem_wheel;
 pub(crate) mod half_plane;
+pub mod two_body;
 
 use crate::error::Result;
 use crate::flexibility::Flexibility;
@@ -80,6 +81,10 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
         let _stage = crate::progress::stage(|| format!("building the half-plane influence matrices ({n} elements)"));
         return half_plane::build(scene, blocks);
     };
+    if let Some((counter, other)) = two_body::counter_of(scene.counter_body()) {
+        let bodies = two_body::TwoBodies::new(*scene.wheel(), support, spec, counter, other);
+        return two_body::build(&bodies, blocks);
+    }
     let model = bem_wheel::Model::new(scene.wheel(), support, &spec)?;
     let (mut flex, health, t, response) = bem_wheel::condense_with_response(&model, blocks)?;
     half_plane::add_counter_body(&mut flex, scene, &half_plane::Grid::of(scene))?;

@@ -550,6 +550,14 @@ fn plane_costs(scene: &Scene) -> Costs {
         build_s += half_plane.0;
         model_bytes += half_plane.1;
     }
+    // A second finite body (disc or bore): its own BEM system, of its contact zone and other elements (a bore's outer
+    // circle and a disc's hub add about as many again: counted twice).
+    if let Some((_, other)) = crate::source::two_body::counter_of(scene.counter_body()) {
+        let nodes = (scene.zone().elements + 2 * other) as f64 * per_element(scene.element());
+        let n = 2.0 * nodes;
+        build_s += 8e-7 * nodes * nodes + 2.5e-10 * n * n * n;
+        model_bytes += 24.0 * n * n;
+    }
     let contact = strips * per_element(scene.element());
     let m = if Model::needs(scene).0 > crate::source::Blocks::Normal { 3.0 * contact + 2.0 } else { contact + 2.0 };
     let set = scene.solvers();

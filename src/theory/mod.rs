@@ -53,7 +53,7 @@
 //!
 //! One file per theory: [`hertz`] (1. Hertz line contact), [`cattaneo`] (2. Cattaneo–Mindlin),
 //! [`mindlin_deresiewicz`] (3. Mindlin–Deresiewicz), [`carter`] (4. Carter rolling), [`spence`] (5. Spence; [`spence3d`] its axisymmetric counterpart),
-//! [`mcewen`] (6. McEwen subsurface stresses), [`disk`] (7. diametrally compressed disk); [`kalker`] (Kalker's creep coefficients of 3D
+//! [`mcewen`] (6. McEwen subsurface stresses), [`disk`] (7. diametrally compressed disk), [`pin_bore`] (8. the pin in a bore, Persson); [`kalker`] (Kalker's creep coefficients of 3D
 //! rolling, Table E.3); [`stress`] holds the
 //! stress state they return and [`special`] the special functions. Every item is re-exported here, so
 //! `rollbem::theory::X` names each of them.
@@ -77,6 +77,7 @@ pub mod hertz3d;
 pub mod kalker;
 pub mod mcewen;
 pub mod mindlin_deresiewicz;
+pub mod pin_bore;
 pub mod special;
 pub mod spence;
 pub mod spence3d;
@@ -93,6 +94,7 @@ pub use hertz3d::*;
 pub use kalker::*;
 pub use mcewen::*;
 pub use mindlin_deresiewicz::*;
+pub use pin_bore::PinBore;
 pub use special::*;
 pub use spence::*;
 pub use spence3d::*;
