@@ -100,6 +100,7 @@ pub fn write_figure(
     stem: &str,
 ) -> Result<Vec<PathBuf>> {
     let [nn, na, ..] = table.axes.shape();
+    std::fs::create_dir_all(dir).map_err(|source| Error::Write { path: dir.to_path_buf(), source })?;
     let mut files = Vec::new();
     let ellipses: Vec<[usize; 2]> = (0..nn).flat_map(|i| (0..na).map(move |j| [i, j])).collect();
     let step = ellipses.len().div_ceil(12).max(1);
