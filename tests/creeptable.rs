@@ -137,6 +137,10 @@ fn kalker_linear_entries_equal_coefficients_times_creepages() {
     assert_eq!(rows.len(), 36);
     for r in &rows {
         let [c11, c22, c23] = table_e3(r.a_over_b);
+        for (got, want) in [(r.c11, c11), (r.c22, c22), (r.c23, c23)] {
+            // The table's nodes up to the round-off of its interpolation in ν.
+            assert!((got - want).abs() < 1e-14 * want, "case {}: the CSV's coefficient {got} vs {want}", r.case);
+        }
         let close = |got: Option<f64>, want: f64| {
             let got = got.unwrap();
             assert!((got - want).abs() <= 1e-12 * want.abs().max(1.0), "case {}: {got} vs {want}", r.case);
@@ -163,8 +167,8 @@ fn layout_is_the_documented_one_and_the_readers_round_trip() {
     // fastest, then η', ξ', a/b, ν; the .npz holds forces (nν, n_ab, nξ, nη, nφ, 3), status, the axes and the
     // coefficients; the CSV and the .npz read back to the same table, bit for bit, and the .npz written again is the
     // same bytes.
-    let documented = "case,nu,a_over_b,xi_n,eta_n,phi_n,status,fx_n,fy_n,mz_n,engine,a,b,xi,eta,phi,fx,fy,mz,\
-                      residual,contact_elements,slip_elements,case_digest,message";
+    let documented = "case,nu,a_over_b,xi_n,eta_n,phi_n,status,fx_n,fy_n,mz_n,engine,a,b,c11,c22,c23,xi,eta,phi,\
+                      fx,fy,mz,residual,contact_elements,slip_elements,case_digest,message";
     assert_eq!(TABLE_COLUMNS.join(","), documented);
     let readme = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
     assert!(

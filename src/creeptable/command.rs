@@ -76,6 +76,14 @@ fn refusal(e: ArgumentError) -> Error {
 }
 
 impl FastsimArgs {
+    /// Solves the case: its contact, creepages, options and FASTSIM's solution. Errors: bad input naming the flag
+    /// (`--a`, `--normal-force`, ...: FASTSIM's and Kalker's refusals mapped to the flag they came from).
+    pub fn solve(&self) -> Result<(Contact, Creepages, Options, fastsim::Solution)> {
+        let (contact, creepages, options) = self.problem()?;
+        let s = fastsim::solve(&contact, &creepages, &options).map_err(refusal)?;
+        Ok((contact, creepages, options, s))
+    }
+
     /// The contact, creepages and options of the arguments. Errors: an unknown variant name, naming its flag.
     pub fn problem(&self) -> Result<(Contact, Creepages, Options)> {
         let flexibility = match self.flexibility.as_str() {
@@ -117,8 +125,7 @@ impl FastsimArgs {
 /// Runs `rollbem fastsim`: the text it prints, after writing `--json` and `--csv`. Errors: bad input naming the
 /// flag (exit 2), an output that cannot be written (exit 3).
 pub fn fastsim_command(args: &FastsimArgs) -> Result<String> {
-    let (contact, creepages, options) = args.problem()?;
-    let s = fastsim::solve(&contact, &creepages, &options).map_err(refusal)?;
+    let (contact, creepages, options, s) = args.solve()?;
     let (mx, my) = options.grid.size();
     let k = s.coefficients;
     let mu_n = contact.mu * contact.normal_force;

@@ -1,15 +1,39 @@
 //! Figures of a creep table's force surfaces (SVG through [`crate::plot`]): for one ellipse (ν, a/b), two families
 //! of sections through the surfaces — Fx/(μN) against ξ' with one curve per η' (at the φ' nearest 0), and
 //! Fy/(μN) against η' with one curve per φ' (at the ξ' nearest 0) — each with a reference table's curves dashed
-//! beside them when one is given (Kalker's linear theory, say).
+//! beside them in the same colours when one is given (Kalker's linear theory, say), cut where it leaves 1.25 times
+//! the engine's largest |F'| (the linear theory grows without bound).
 
 use super::table::CreepTable;
 use crate::error::{Error, Result};
-use crate::plot::{Chart, Series, Style};
+use crate::plot::{Appearance, Chart, Series, Style};
 use std::path::{Path, PathBuf};
 
 /// At most this many curves per family (evenly picked from the axis).
 const MAX_CURVES: usize = 6;
+
+/// A reference curve cut where it leaves |y| ≤ `limit` (at the crossing, interpolated; a NaN breaks the line), so
+/// that a linear theory growing without bound does not set the chart's scale.
+fn clip(points: &[(f64, f64)], limit: f64) -> Vec<(f64, f64)> {
+    let mut out = Vec::with_capacity(points.len());
+    for (i, &(x, y)) in points.iter().enumerate() {
+        let inside = y.abs() <= limit;
+        if let Some(&(x0, y0)) = i.checked_sub(1).and_then(|j| points.get(j)) {
+            if inside != (y0.abs() <= limit) {
+                let edge = if y.abs() > limit { limit.copysign(y) } else { limit.copysign(y0) };
+                let t = (edge - y0) / (y - y0);
+                out.push((x0 + t * (x - x0), edge));
+                if !inside {
+                    out.push((x, f64::NAN));
+                }
+            }
+        }
+        if inside {
+            out.push((x, y));
+        }
+    }
+    out
+}
 
 /// The index of the axis value nearest `x`.
 fn nearest(axis: &[f64], x: f64) -> usize {
@@ -75,13 +99,26 @@ pub fn creep_surface_svg(
     for (slot, (comp, along, per, title, xl, yl, per_name, fixed_name)) in specs.into_iter().enumerate() {
         let title = format!("{title}: {engine}, a/b = {ab}, ν = {nu} ({fixed_name} nearest 0)");
         let mut chart = Chart::new(title, xl, yl).x_unit("1").y_unit("1").size(900, 560);
-        for (v, pts) in family(table, ellipse, comp, along, per) {
-            chart = chart.add(Series::new(format!("{engine}, {per_name} = {v}"), pts, Style::LineMarkers));
+        let curves = family(table, ellipse, comp, along, per);
+        let limit = 1.25 * curves.iter().flat_map(|(_, p)| p.iter().map(|q| q.1.abs())).fold(1.0, f64::max);
+        for (i, (v, pts)) in curves.iter().enumerate() {
+            let s = Series::new(format!("{engine}, {per_name} = {v}"), pts.clone(), Style::LineMarkers);
+            chart = chart.add(s.with_appearance(Appearance::for_index(i)));
         }
         if let Some((name, r)) = reference {
             let (rn, ra) = (nearest(&r.axes.nu, nu), nearest(&r.axes.a_over_b, ab));
-            for (v, pts) in family(r, [rn, ra], comp, along, per) {
-                chart = chart.add(Series::new(format!("{name}, {per_name} = {v}"), pts, Style::Dashed));
+            let refs = family(r, [rn, ra], comp, along, per);
+            let bits = |p: &[(f64, f64)]| p.iter().map(|q| (q.0.to_bits(), q.1.to_bits())).collect::<Vec<_>>();
+            if refs.len() > 1 && refs.windows(2).all(|w| bits(&w[0].1) == bits(&w[1].1)) {
+                // One curve for the whole family (the linear theory's Fx' does not depend on η').
+                let label = format!("{name} (every {per_name})");
+                let s = Series::new(label, clip(&refs[0].1, limit), Style::Dashed);
+                chart = chart.add(s.with_appearance(Appearance::for_index(curves.len())));
+            } else {
+                for (i, (v, pts)) in refs.iter().enumerate() {
+                    let s = Series::new(format!("{name}, {per_name} = {v}"), clip(pts, limit), Style::Dashed);
+                    chart = chart.add(s.with_appearance(Appearance::for_index(i)));
+                }
             }
         }
         out[slot] =

@@ -49,7 +49,8 @@
 //!   shortest round-trip form so a reader gets the same bits; an empty cell is a value the engine did not give):
 //!   `case, nu, a_over_b, xi_n, eta_n, phi_n` (the case and its normalised coordinates), `status` (`solved`,
 //!   `gross_sliding`, `not_converged`, `refused`), `fx_n, fy_n, mz_n` (the normalised forces), `engine`, then the
-//!   physical case `a, b, xi, eta, phi, fx, fy, mz` (the spec's units), `residual`, `contact_elements`,
+//!   physical case `a, b` (the semi-axes), `c11, c22, c23` (Kalker's coefficients that normalise this ellipse),
+//!   `xi, eta, phi, fx, fy, mz` (the spec's units), `residual`, `contact_elements`,
 //!   `slip_elements`, `case_digest` (a digest of everything the case's answer depends on: the engine and its
 //!   settings, the spec's contact, grid and the case's coordinates; merges check it) and `message`.
 //! * **NPZ** (NumPy's `.npz`: a ZIP archive of `.npy` arrays, stored uncompressed; `numpy.load` reads it, and each

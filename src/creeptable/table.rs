@@ -6,7 +6,7 @@ use crate::error::{Error, Result};
 use std::path::Path;
 
 /// The CSV's columns, in order (module docs of `creeptable`, "Files").
-pub const TABLE_COLUMNS: [&str; 24] = [
+pub const TABLE_COLUMNS: [&str; 27] = [
     "case",
     "nu",
     "a_over_b",
@@ -20,6 +20,9 @@ pub const TABLE_COLUMNS: [&str; 24] = [
     "engine",
     "a",
     "b",
+    "c11",
+    "c22",
+    "c23",
     "xi",
     "eta",
     "phi",
@@ -65,6 +68,12 @@ pub struct TableRow {
     pub a: f64,
     /// Semi-axis b (length).
     pub b: f64,
+    /// Kalker's C11 at (a/b, ν) (Table E.3), which normalises ξ.
+    pub c11: f64,
+    /// Kalker's C22, which normalises η.
+    pub c22: f64,
+    /// Kalker's C23, which normalises φ.
+    pub c23: f64,
     /// ξ (physical, CONTACT's sign).
     pub xi: f64,
     /// η (physical).
@@ -136,6 +145,9 @@ impl TableRow {
             engine: engine.to_string(),
             a,
             b,
+            c11: norm.coefficients[0],
+            c22: norm.coefficients[1],
+            c23: norm.coefficients[2],
             xi: creepages.xi,
             eta: creepages.eta,
             phi: creepages.phi,
@@ -185,6 +197,9 @@ impl TableRow {
             self.engine.clone(),
             n(self.a),
             n(self.b),
+            n(self.c11),
+            n(self.c22),
+            n(self.c23),
             n(self.xi),
             n(self.eta),
             n(self.phi),
@@ -241,17 +256,20 @@ impl TableRow {
             engine: cell(10).to_string(),
             a: num(11)?,
             b: num(12)?,
-            xi: num(13)?,
-            eta: num(14)?,
-            phi: num(15)?,
-            fx: onum(16)?,
-            fy: onum(17)?,
-            mz: onum(18)?,
-            residual: onum(19)?,
-            contact_elements: ocount(20)?,
-            slip_elements: ocount(21)?,
-            case_digest: cell(22).to_string(),
-            message: cell(23).to_string(),
+            c11: num(13)?,
+            c22: num(14)?,
+            c23: num(15)?,
+            xi: num(16)?,
+            eta: num(17)?,
+            phi: num(18)?,
+            fx: onum(19)?,
+            fy: onum(20)?,
+            mz: onum(21)?,
+            residual: onum(22)?,
+            contact_elements: ocount(23)?,
+            slip_elements: ocount(24)?,
+            case_digest: cell(25).to_string(),
+            message: cell(26).to_string(),
         })
     }
 
@@ -352,11 +370,16 @@ impl CreepTable {
                 forces[3 * r.case + k] = f.unwrap_or(f64::NAN);
             }
         }
-        let mut coefficients = Vec::with_capacity(3 * axes.nu.len() * axes.a_over_b.len());
-        for &nu in &axes.nu {
-            for &r in &axes.a_over_b {
-                let k = crate::theory::kalker::creep_coefficients(r, 1.0, nu).map_err(|e| e.to_string())?;
-                coefficients.extend([k.c11, k.c22, k.c23]);
+        // The coefficients of each ellipse, from its rows (every row of an ellipse holds the same).
+        let mut coefficients = vec![f64::NAN; 3 * axes.nu.len() * axes.a_over_b.len()];
+        for r in rows {
+            let [inu, iab, ..] = axes.coords(r.case);
+            let at = 3 * (iab + axes.a_over_b.len() * inu);
+            let c = [r.c11, r.c22, r.c23];
+            if coefficients[at].is_nan() {
+                coefficients[at..at + 3].copy_from_slice(&c);
+            } else if coefficients[at..at + 3].iter().zip(c).any(|(a, b)| a.to_bits() != b.to_bits()) {
+                return Err(format!("case {}: its C11, C22, C23 differ from its ellipse's other rows", r.case));
             }
         }
         Ok(CreepTable { axes, forces, status, coefficients })
