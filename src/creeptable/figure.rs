@@ -164,3 +164,40 @@ pub fn plot_table(csv: &Path, dir: &Path) -> Result<Vec<PathBuf>> {
     let stem = csv.file_stem().map_or("creep-table".into(), |s| s.to_string_lossy().into_owned());
     write_figure(&table, reference, engine, dir, &stem)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::creeptable::Axes;
+
+    #[test]
+    fn clip_cuts_at_the_crossing_and_breaks_the_line() {
+        // Expected: y = 2x leaves |y| ≤ 1.25 at x = 0.625 (computed by hand); the next point is a break (NaN).
+        let c = clip(&[(0.0, 0.0), (1.0, 2.0), (2.0, 4.0)], 1.25);
+        assert_eq!(&c[..2], &[(0.0, 0.0), (0.625, 1.25)]);
+        assert!(c[2].1.is_nan() && c.len() == 3);
+        // Coming back inside: the crossing, then the inside point.
+        let c = clip(&[(0.0, 2.0), (1.0, 0.0)], 1.0);
+        assert_eq!(c, vec![(0.5, 1.0), (1.0, 0.0)]);
+    }
+
+    #[test]
+    fn the_figure_draws_each_family_and_the_linear_theory_once() {
+        // Expected: the engine's curves per η' (and per φ'), the linear theory's Fx' once (it does not depend on η'),
+        // the same SVG for the same table, and an ellipse outside the table refused.
+        let axes =
+            Axes { nu: vec![0.25], a_over_b: vec![1.0], xi: vec![0.0, 0.5, 1.0], eta: vec![0.0, 0.5], phi: vec![0.0] };
+        let linear = CreepTable::linear(&axes);
+        let mut table = linear.clone();
+        table.forces.iter_mut().for_each(|f| *f = f.clamp(-1.0, 1.0));
+        let [fx, fy] = creep_surface_svg(&table, Some(("linear theory", &linear)), "clamped", [0, 0]).unwrap();
+        assert!(fx.contains("clamped, η&apos; = 0.5") || fx.contains("clamped, η' = 0.5"), "{fx}");
+        assert!(fx.contains("linear theory (every η"));
+        assert!(fy.contains("clamped, φ"));
+        assert_eq!(
+            creep_surface_svg(&table, None, "clamped", [0, 0]).unwrap()[0],
+            creep_surface_svg(&table, None, "clamped", [0, 0]).unwrap()[0]
+        );
+        assert!(creep_surface_svg(&table, None, "x", [1, 0]).is_err());
+    }
+}

@@ -70,6 +70,7 @@ mod engines;
 mod figure;
 mod npz;
 mod run;
+mod section;
 mod spec;
 mod table;
 
@@ -77,6 +78,7 @@ pub use command::{fastsim_command, FastsimArgs};
 pub use engines::{Fastsim, KalkerLinear};
 pub use figure::{creep_surface_svg, plot_table, write_figure};
 pub use run::{is_table_csv, is_table_spec, merge_tables, run_table, TableOptions, TableOutcome};
+pub use section::markdown_section;
 pub use spec::{Axes, Normalisation, TableSpec, MAX_CASES};
 pub use table::{CreepTable, TableRow, TABLE_COLUMNS};
 
