@@ -127,10 +127,14 @@ fn kalker_linear_entries_equal_coefficients_times_creepages() {
     let p = spec(dir.path(), "lin", "kalker_linear", extra, axes);
     let out = dir.path().join("lin.csv");
     run_table(&p, &out, &whole()).unwrap();
-    let table_e3 = |r: f64| match r {
-        x if x == 1.0 => [4.12, 3.67, 1.47],
-        x if x == 5.0 => [7.78, 8.14, 6.63],
-        _ => [3.37, 2.63, 0.603],
+    let table_e3 = |r: f64| {
+        if r == 1.0 {
+            [4.12, 3.67, 1.47]
+        } else if r == 5.0 {
+            [7.78, 8.14, 6.63]
+        } else {
+            [3.37, 2.63, 0.603]
+        }
     };
     let (g, c) = (2.0, 1.5);
     let rows = TableRow::read_csv(&out).unwrap();

@@ -58,6 +58,8 @@ __all__ = [
     "run",
     "run3d",
     "register_solver",
+    "fastsim",
+    "creep_table",
     "_rust_creep_curve",
     "_sweep_rows",
     "NODE_STATES",

@@ -29,7 +29,7 @@ fn as_key(e: rollbem::Error) -> rollbem::Error {
 /// fastest. Errors: `InputError` naming the argument.
 #[pyfunction]
 #[pyo3(signature = (*, a, b, shear_modulus, nu, mu, normal_force, xi = 0.0, eta = 0.0, phi = 0.0,
-    flexibility = "weighted".to_string(), bound = "parabolic".to_string(), direction = "+x".to_string(), mx = 100,
+    flexibility = "weighted", bound = "parabolic", direction = "+x", mx = 100,
     my = 100, contact_grid = None, elements = false))]
 #[allow(clippy::too_many_arguments)]
 pub fn fastsim<'py>(
@@ -43,9 +43,9 @@ pub fn fastsim<'py>(
     xi: f64,
     eta: f64,
     phi: f64,
-    flexibility: String,
-    bound: String,
-    direction: String,
+    flexibility: &str,
+    bound: &str,
+    direction: &str,
     mx: usize,
     my: usize,
     contact_grid: Option<f64>,
@@ -61,9 +61,9 @@ pub fn fastsim<'py>(
         xi,
         eta,
         phi,
-        flexibility,
-        bound,
-        direction,
+        flexibility: flexibility.to_string(),
+        bound: bound.to_string(),
+        direction: direction.to_string(),
         mx,
         my,
         contact_grid,

@@ -75,7 +75,7 @@ impl CreepEngine for Fastsim {
 
 /// Builds [`Fastsim`] from `[options]`: `flexibility` (`weighted` | `three` | `blended`), `bound` (`parabolic` |
 /// `elliptic`).
-fn build_fastsim(options: &toml::Table) -> Result<Box<dyn CreepEngine>, (String, String)> {
+fn build_fastsim(options: &toml::Table) -> super::Built {
     let mut engine = Fastsim::default();
     for (key, value) in options {
         let text = value.as_str().ok_or_else(|| (key.clone(), format!("must be a string, is {value}")))?;
@@ -142,7 +142,7 @@ impl CreepEngine for KalkerLinear {
         let (g, c) = (case.shear_modulus, case.size());
         let fx = -g * c * c * k.c11 * cr.xi;
         let fy = -g * c * c * (k.c22 * cr.eta + c * k.c23 * cr.phi);
-        let mz = (cr.phi == 0.0).then(|| g * c * c * c * k.c23 * cr.eta);
+        let mz = (cr.phi == 0.0).then_some(g * c * c * c * k.c23 * cr.eta);
         Ok(CreepResult {
             status: CaseStatus::Solved,
             forces: Some(Forces { fx, fy, mz }),
@@ -153,7 +153,7 @@ impl CreepEngine for KalkerLinear {
     }
 }
 
-fn build_kalker_linear(options: &toml::Table) -> Result<Box<dyn CreepEngine>, (String, String)> {
+fn build_kalker_linear(options: &toml::Table) -> super::Built {
     match options.keys().next() {
         Some(key) => Err((key.clone(), "engine kalker_linear takes no options".into())),
         None => Ok(Box::new(KalkerLinear)),

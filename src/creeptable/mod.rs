@@ -234,6 +234,9 @@ pub trait CreepEngine: Send + Sync {
     fn forces(&self, case: &CreepCase) -> Result<CreepResult, ArgumentError>;
 }
 
+/// What an engine's `build` returns: the engine, or the `[options]` key it refuses and why.
+pub type Built = Result<Box<dyn CreepEngine>, (String, String)>;
+
 /// A registered engine: its name, what it is, and how a table spec's `[options]` table builds it.
 #[derive(Clone, Copy)]
 pub struct EngineEntry {
@@ -243,7 +246,7 @@ pub struct EngineEntry {
     pub describe: &'static str,
     /// Builds the engine from the spec's `[options]` table (empty when the spec has none). Errors: an unknown or
     /// invalid option, as `(key, message)` with the key relative to `[options]`.
-    pub build: fn(&toml::Table) -> Result<Box<dyn CreepEngine>, (String, String)>,
+    pub build: fn(&toml::Table) -> Built,
 }
 
 /// The engines a table spec can name.
