@@ -392,3 +392,22 @@ fn fastsim_command_prints_and_writes_the_library_answer() {
         assert!(err.contains(&format!("`{flag}`")) || (flag == "--b" && err.contains("`--a`")), "{flag}: {err}");
     }
 }
+
+#[test]
+fn a_cancelled_table_keeps_its_journal_and_resumes() {
+    // Expected: a raised cancel stops the run before its next chunk (Error::Cancelled, exit 130) with the journal
+    // kept and no output; --resume then writes the table a plain run writes, byte for byte.
+    let dir = tempfile::tempdir().unwrap();
+    let p = spec(dir.path(), "cn", "kalker_linear", "", SMALL_AXES);
+    let out = dir.path().join("cn.csv");
+    let cancel = rollbem::cancel::Cancel::new();
+    cancel.cancel();
+    let e = rollbem::creeptable::run_table_with(&p, &out, &whole(), &cancel).unwrap_err();
+    assert_eq!(e.exit_code(), 130);
+    assert!(!out.exists() && dir.path().join("cn.csv.partial").exists());
+    let o = run_table(&p, &out, &TableOptions { resume: true, ..whole() }).unwrap();
+    assert_eq!((o.resumed, o.ran), (0, 216));
+    let plain = dir.path().join("plain.csv");
+    run_table(&p, &plain, &whole()).unwrap();
+    assert_eq!(std::fs::read(&out).unwrap(), std::fs::read(&plain).unwrap());
+}

@@ -7,7 +7,7 @@ use crate::worker;
 use numpy::{IntoPyArray, PyArray1};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use rollbem::creeptable::{run_table, FastsimArgs, TableOptions};
+use rollbem::creeptable::{run_table_with, FastsimArgs, TableOptions};
 use rollbem::sweep::Shard;
 use std::path::PathBuf;
 
@@ -120,7 +120,8 @@ pub fn fastsim<'py>(
 /// Runs a creep-table spec (README "Creep-force tables") into `out` (a CSV, with the `.npz` beside it for a whole
 /// table): all of it or `shard` "k/n", resumed from its journal with `resume=True`. Returns a dict: `total`,
 /// `cases`, `ran`, `resumed`, `statuses` (solved, gross_sliding, not_converged, refused), `npz` (its path or None).
-/// Errors: `InputError` naming the spec's key, `OutputError`.
+/// Errors: `InputError` naming the spec's key, `OutputError`. Ctrl-C stops it before its next chunk of cases (the
+/// journal keeps the finished ones: `resume=True` goes on).
 #[pyfunction]
 #[pyo3(signature = (spec, out, *, shard = None, resume = false, allow_large = false))]
 pub fn creep_table<'py>(
@@ -139,7 +140,7 @@ pub fn creep_table<'py>(
         })?),
     };
     let options = TableOptions { shard, resume, allow_large, dry_run: false };
-    let o = worker::run(py, move |_cancel| Ok(run_table(&spec, &out, &options)?))?;
+    let o = worker::run(py, move |cancel| Ok(run_table_with(&spec, &out, &options, cancel)?))?;
     let d = PyDict::new(py);
     for (k, v) in [("total", o.total), ("cases", o.cases), ("ran", o.ran), ("resumed", o.resumed)] {
         d.set_item(k, v)?;

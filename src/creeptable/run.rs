@@ -18,8 +18,10 @@
 use super::spec::TableSpec;
 use super::table::{header_line, rows_of, CreepTable, TableRow};
 use super::CreepEngine;
+use crate::cancel::Cancel;
 use crate::error::{Error, Result};
 use crate::sweep::Shard;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -149,11 +151,17 @@ fn read_journal(
 /// no `.npz`). Errors: bad spec (exit 2, naming the key), a journal of another table, an output that cannot be
 /// written (exit 3).
 pub fn run_table(spec_path: &Path, out: &Path, opts: &TableOptions) -> Result<TableOutcome> {
+    run_table_with(spec_path, out, opts, &Cancel::never())
+}
+
+/// [`run_table`], stopping before its next chunk of cases once `cancel` is raised ([`Error::Cancelled`]; the journal
+/// keeps every case finished, for `--resume`). A bar of cases shows on stderr when [`crate::progress`] is on.
+pub fn run_table_with(spec_path: &Path, out: &Path, opts: &TableOptions, cancel: &Cancel) -> Result<TableOutcome> {
     let spec = TableSpec::from_file(spec_path)?;
     let engine = spec.engine(spec_path)?;
     let settings = engine.settings();
     let total = spec.len();
-    if total > super::MAX_CASES && !opts.allow_large {
+    if total > super::MAX_CASES && !opts.allow_large && !opts.dry_run {
         let msg = format!("{total} cases, more than {} (pass --allow-large to run it)", super::MAX_CASES);
         return Err(invalid(spec_path, "axes", msg));
     }
@@ -203,7 +211,9 @@ pub fn run_table(spec_path: &Path, out: &Path, opts: &TableOptions) -> Result<Ta
     let pending: Vec<usize> = cases.iter().copied().filter(|&i| !seen[i]).collect();
     outcome.resumed = kept.len();
     let mut last_sync = Instant::now();
+    let bar = progress_bar(pending.len());
     for chunk in pending.chunks(256) {
+        cancel.check()?;
         let rows = compute_all(&spec, engine.as_ref(), &settings, chunk)?;
         let text: String = rows.iter().map(TableRow::line).collect();
         file.write_all(text.as_bytes()).map_err(|source| Error::Write { path: journal.clone(), source })?;
@@ -212,12 +222,26 @@ pub fn run_table(spec_path: &Path, out: &Path, opts: &TableOptions) -> Result<Ta
             last_sync = Instant::now();
         }
         outcome.ran += rows.len();
+        bar.inc(rows.len() as u64);
         kept.extend(rows);
     }
+    bar.finish_and_clear();
     drop(file);
     let outcome = finish(out, kept, whole, outcome)?;
     let _ = std::fs::remove_file(&journal);
     Ok(outcome)
+}
+
+/// A bar of `len` cases on stderr, or a hidden one when progress is off.
+fn progress_bar(len: usize) -> ProgressBar {
+    if !crate::progress::enabled() {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::with_draw_target(Some(len as u64), ProgressDrawTarget::stderr());
+    if let Ok(style) = ProgressStyle::with_template("creep table {bar:30} {pos}/{len} cases [{elapsed} < {eta}]") {
+        bar.set_style(style);
+    }
+    bar
 }
 
 /// The rows of a finished output when it holds exactly `cases` (each checked), else `None` (run afresh).
