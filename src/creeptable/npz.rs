@@ -9,6 +9,8 @@
 
 use super::spec::Axes;
 use super::table::CreepTable;
+use crate::error::{Error, Result as IoResult};
+use std::path::Path;
 
 /// One array: its name, NumPy dtype (`<f8` or `|i1`), shape and little-endian bytes.
 struct Array {
@@ -93,6 +95,20 @@ fn zip(files: &[(String, Vec<u8>)]) -> Vec<u8> {
     out.extend_from_slice(&cd_offset.to_le_bytes());
     out.extend_from_slice(&0u16.to_le_bytes());
     out
+}
+
+impl CreepTable {
+    /// Reads a table's `.npz` (as rollbem writes it: stored members, no ZIP64). Errors: the file cannot be read, a
+    /// member is missing or not of the layout (its name and why).
+    pub fn read_npz(path: &Path) -> IoResult<CreepTable> {
+        let bytes = std::fs::read(path).map_err(|source| Error::Io { path: path.to_path_buf(), source })?;
+        read_table(&bytes).map_err(|message| Error::Parse { path: path.to_path_buf(), message })
+    }
+
+    /// Writes the table as `.npz` (by the rules of [`crate::io::write_output`]: nothing half-written).
+    pub fn write_npz(&self, path: &Path) -> IoResult<()> {
+        crate::io::write_output_bytes(path, &write_table(self))
+    }
 }
 
 /// The `.npz` bytes of a table.

@@ -414,18 +414,6 @@ impl CreepTable {
         CreepTable::from_rows(&rows).map_err(|message| Error::Parse { path: path.to_path_buf(), message })
     }
 
-    /// Reads a table's `.npz` (as rollbem writes it: stored members, no ZIP64). Errors: the file cannot be read, a
-    /// member is missing or not of the layout (its name and why).
-    pub fn read_npz(path: &Path) -> Result<CreepTable> {
-        let bytes = std::fs::read(path).map_err(|source| Error::Io { path: path.to_path_buf(), source })?;
-        super::npz::read_table(&bytes).map_err(|message| Error::Parse { path: path.to_path_buf(), message })
-    }
-
-    /// Writes the table as `.npz` (by the rules of [`crate::io::write_output`]: nothing half-written).
-    pub fn write_npz(&self, path: &Path) -> Result<()> {
-        crate::io::write_output_bytes(path, &super::npz::write_table(self))
-    }
-
     /// The forces (Fx', Fy', Mz') at grid point (iν, i_ab, iξ, iη, iφ).
     pub fn at(&self, idx: [usize; 5]) -> Option<[f64; 3]> {
         let s = self.axes.shape();
