@@ -139,6 +139,9 @@ enum Cmd {
         #[arg(long)]
         scene: Option<PathBuf>,
     },
+    /// One steady-rolling case of an elliptic contact by FASTSIM (Kalker's simplified theory), CONTACT's
+    /// conventions: creepages of body 1 relative to body 2, forces on body 1, rolling along +x by default.
+    Fastsim(crate::creeptable::FastsimArgs),
     /// Run every requested solver on each scene and check them against theory, against each other and against
     /// the scene's declared expectations; print a pass/fail table; exit 1 if any check fails.
     Check {
@@ -476,6 +479,40 @@ fn sweep(spec: &Path, out: &Path, options: &crate::sweep::SweepOptions, dry_run:
     }
 }
 
+/// Whether `sweep-merge` joins creep tables: its spec is one, or (without a spec) its first input is one.
+fn is_creep_merge(spec: Option<&Path>, inputs: &[PathBuf]) -> bool {
+    match spec {
+        Some(s) => crate::creeptable::is_table_spec(s),
+        None => inputs.first().is_some_and(|p| crate::creeptable::is_table_csv(p)),
+    }
+}
+
+/// `rollbem sweep` of a creep-table spec: run it (or its shard), print what was done.
+fn creep_table(spec: &Path, out: &Path, options: &crate::creeptable::TableOptions) -> ExitCode {
+    match crate::creeptable::run_table(spec, out, options) {
+        Ok(o) => {
+            let [solved, sliding, not_converged, refused] = o.statuses;
+            let npz = o.npz.map(|p| format!(" and {}", p.display())).unwrap_or_default();
+            let line = if options.dry_run {
+                format!("creep table: {} cases, {} in this run (dry run: nothing run)", o.total, o.cases)
+            } else {
+                format!(
+                    "creep table: {} of {} cases written to {}{npz} ({} run now, {} resumed; {solved} solved, \
+                     {sliding} gross sliding, {not_converged} not converged, {refused} refused)",
+                    o.cases,
+                    o.total,
+                    out.display(),
+                    o.ran,
+                    o.resumed
+                )
+            };
+            eprintln!("{line}");
+            ExitCode::SUCCESS
+        }
+        Err(e) => fail(&e),
+    }
+}
+
 /// `rollbem plot`: a result document, or a CSV table (with its analysis or its scene).
 fn plot(
     input: &Path,
@@ -483,6 +520,11 @@ fn plot(
     analysis: Option<String>,
     scene: Option<PathBuf>,
 ) -> crate::Result<crate::report::Plotted> {
+    if crate::creeptable::is_table_csv(input) {
+        let dir = input.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+        return crate::creeptable::plot_table(input, out.unwrap_or(dir))
+            .map(|files| crate::report::Plotted { files, skipped: Vec::new() });
+    }
     if input.extension().is_some_and(|e| e == "csv") {
         let analysis = analysis.map(|a| crate::sweep::Analysis::from_name(&a, input)).transpose()?;
         let scene = scene.map(|p| Scene::from_file(&p)).transpose()?;
@@ -550,6 +592,10 @@ pub fn main() -> ExitCode {
                 Some(s) => spec.with_extension(format!("shard-{}-of-{}.csv", s.k, s.n)),
                 None => spec.with_extension("csv"),
             });
+            if crate::creeptable::is_table_spec(&spec) {
+                let options = crate::creeptable::TableOptions { shard, resume, allow_large, dry_run };
+                return creep_table(&spec, &out, &options);
+            }
             let options = crate::sweep::SweepOptions {
                 shard,
                 resume,
@@ -559,6 +605,27 @@ pub fn main() -> ExitCode {
             };
             sweep(&spec, &out, &options, dry_run)
         }
+        Cmd::SweepMerge { out, inputs, spec } if is_creep_merge(spec.as_deref(), &inputs) => {
+            match crate::creeptable::merge_tables(&inputs, &out, spec.as_deref()) {
+                Ok(rows) => {
+                    say!("{rows} rows written to {}", out.display());
+                    ExitCode::SUCCESS
+                }
+                Err(e) => fail(&e),
+            }
+        }
+        Cmd::Fastsim(args) => match crate::creeptable::fastsim_command(&args) {
+            Ok(text) => {
+                let to_stdout = [&args.json, &args.csv].into_iter().flatten().any(|p| crate::io::is_stdout(p));
+                if to_stdout {
+                    eprint!("{text}");
+                } else {
+                    say!("{}", text.trim_end());
+                }
+                ExitCode::SUCCESS
+            }
+            Err(e) => fail(&e),
+        },
         Cmd::SweepMerge { out, inputs, spec } => match crate::sweep::merge_checked(&inputs, &out, spec.as_deref()) {
             Ok(rows) => {
                 let line = format!("{rows} rows written to {}", out.display());

@@ -22,10 +22,15 @@ pub fn is_stdout(path: &Path) -> bool {
 
 /// Write `text` to `path` by the rules of the module docs.
 pub fn write_output(path: &Path, text: &str) -> Result<()> {
+    write_output_bytes(path, text.as_bytes())
+}
+
+/// Write `bytes` to `path` by the rules of the module docs (a binary output: a creep table's `.npz`).
+pub fn write_output_bytes(path: &Path, text: &[u8]) -> Result<()> {
     let werr = |source: std::io::Error| Error::Write { path: path.to_path_buf(), source };
     if is_stdout(path) {
         let mut out = std::io::stdout().lock();
-        return out.write_all(text.as_bytes()).and_then(|_| out.flush()).map_err(werr);
+        return out.write_all(text).and_then(|_| out.flush()).map_err(werr);
     }
     let target = resolve(path)?;
     match std::fs::metadata(&target) {
@@ -33,7 +38,7 @@ pub fn write_output(path: &Path, text: &str) -> Result<()> {
         Ok(m) if !m.is_file() => {
             // A FIFO, a device or a socket: write through, never replace it.
             let mut f = std::fs::OpenOptions::new().write(true).open(&target).map_err(werr)?;
-            f.write_all(text.as_bytes()).and_then(|_| f.flush()).map_err(werr)
+            f.write_all(text).and_then(|_| f.flush()).map_err(werr)
         }
         _ => replace(&target, text).map_err(werr),
     }
@@ -69,7 +74,7 @@ fn resolve(path: &Path) -> Result<PathBuf> {
 }
 
 /// Replace a regular file (or create it) atomically: a temporary file beside it, then a rename.
-fn replace(target: &Path, text: &str) -> std::io::Result<()> {
+fn replace(target: &Path, text: &[u8]) -> std::io::Result<()> {
     let dir = target.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
     let name = target.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| "out".into());
     let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));

@@ -66,6 +66,7 @@ pub mod cancel;
 pub mod checks;
 pub mod cli;
 pub(crate) mod condition;
+pub mod creeptable;
 pub(crate) mod diagnostics;
 pub mod error;
 pub mod exit;

@@ -88,6 +88,7 @@ fn readme_documents_every_flag_of_every_command() {
         &["solvers"],
         &["sweep"],
         &["sweep-merge"],
+        &["fastsim"],
         &["report"],
         &["plot"],
         &["lcp", "export"],

@@ -11,6 +11,8 @@
 //! choose another sweep for the first part (default `reference/sweeps/finite-vs-half-plane.toml`, 3 shards); the
 //! recovery runs a sweep of its own ([`slow_spec`]), whose timing it needs. Between the two, the 3D reference sweep
 //! `cattaneo3d-load` (issue 32) runs as an array of 3 shards whose merge must equal its serial CSV.
+//! A second test (issue 36) runs the creep-force table `reference/creep-tables/fastsim-usetab.toml` (7 000 cases) as
+//! an array of 4 shards: the merged CSV and `.npz` must be the serial run's byte for byte.
 
 #[path = "common/sweep_cli.rs"]
 mod common;
@@ -232,5 +234,42 @@ fn a_job_array_merges_to_the_serial_sweep_and_a_cancelled_shard_resumes() {
         seen.held,
         t.elapsed().as_secs_f64(),
         dependency_line = dependency.lines().find(|l| l.contains("Dependency=")).unwrap_or("").trim(),
+    );
+}
+
+#[test]
+#[ignore = "needs a SLURM cluster: scripts/slurm/cluster.sh start (CI runs it)"]
+fn a_creep_table_as_a_job_array_equals_the_serial_table_byte_for_byte() {
+    // Issue 36: a creep-force table of at least 3 000 cases (reference/creep-tables/fastsim-usetab.toml: 7 000
+    // FASTSIM cases on 100 × 100 strips, about 2 s of CPU) through `scripts/slurm/submit.sh`, unchanged (the sweep
+    // commands dispatch on the spec's `kind = "creep_table"`), as an array of 4 shards and the merge job. Expected:
+    // the merged CSV and .npz are the serial run's byte for byte (a row depends on its case alone; the table has no
+    // timing columns), and the merge holds every case once (`sweep-merge --spec` checks it).
+    assert!(std::env::var_os("SLURM_CONF").is_some(), "no SLURM_CONF: start a cluster with scripts/slurm/cluster.sh");
+    let spec = root().join("reference/creep-tables/fastsim-usetab.toml");
+    let dir = tempfile::tempdir().unwrap();
+    let serial = dir.path().join("serial.csv");
+    run(bin().arg("sweep").arg(&spec).arg("--out").arg(&serial));
+    let t = Instant::now();
+    let array_dir = dir.path().join("table");
+    let (array, merge) = submit(&spec, 4, &array_dir);
+    wait(&[&array, &merge]);
+    let merged = array_dir.join("merged.csv");
+    let log = std::fs::read_to_string(array_dir.join("merge.log"));
+    assert!(merged.exists(), "no merged table: {log:?}");
+    let rows = std::fs::read_to_string(&merged).unwrap().lines().count() - 1;
+    assert!(rows >= 3000, "{rows} cases");
+    assert!(std::fs::read(&merged).unwrap() == std::fs::read(&serial).unwrap(), "merged CSV differs: {log:?}");
+    assert!(
+        std::fs::read(array_dir.join("merged.npz")).unwrap() == std::fs::read(serial.with_extension("npz")).unwrap(),
+        "merged .npz differs"
+    );
+    for k in 1..=4 {
+        assert!(!partial(&array_dir.join(format!("shard-{k}-of-4.csv"))).exists(), "shard {k} left its journal");
+    }
+    eprintln!(
+        "creep table of {rows} cases as a job array of 4 shards and merge: {:.1} s; merged CSV and .npz = serial, \
+         byte for byte",
+        t.elapsed().as_secs_f64()
     );
 }

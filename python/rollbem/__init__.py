@@ -59,11 +59,14 @@ from ._core import (
     Step,
     Stresses,
     __version__,
+    creep_table,
+    fastsim,
     register_solver,
     run,
     run3d,
 )
 from ._core import _sweep_rows
+from . import creeptable
 from .errors import InputError, InternalError, NumericalError, OutputError, RollbemError, SolveError
 
 __all__ = [
@@ -82,6 +85,9 @@ __all__ = [
     "run3d",
     "register_solver",
     "sweep",
+    "fastsim",
+    "creep_table",
+    "creeptable",
     "NODE_STATES",
     "ELEMENT_STATES",
     "SCHEMA_VERSION",

@@ -58,6 +58,8 @@ __all__ = [
     "run",
     "run3d",
     "register_solver",
+    "fastsim",
+    "creep_table",
     "_rust_creep_curve",
     "_sweep_rows",
     "NODE_STATES",
@@ -649,3 +651,50 @@ class SpaceReport:
 
 def run3d(scene: SpaceScene) -> SpaceReport:
     """Build and solve a half-space scene once."""
+
+
+def fastsim(
+    *,
+    a: float,
+    b: float,
+    shear_modulus: float,
+    nu: float,
+    mu: float,
+    normal_force: float,
+    xi: float = 0.0,
+    eta: float = 0.0,
+    phi: float = 0.0,
+    flexibility: str = "weighted",
+    bound: str = "parabolic",
+    direction: str = "+x",
+    mx: int = 100,
+    my: int = 100,
+    contact_grid: Optional[float] = None,
+    elements: bool = False,
+) -> Dict[str, Any]:
+    """One steady-rolling case of an elliptic contact by FASTSIM (Kalker's simplified theory), CONTACT's conventions:
+    semi-axes ``a`` (rolling direction x) and ``b``, combined modulus of rigidity ``shear_modulus`` G and Poisson
+    ratio ``nu``, friction ``mu``, normal force ``normal_force`` (units consistent, e.g. mm, N, N/mm^2); creepages
+    ``xi``, ``eta`` (dimensionless) and spin ``phi`` (rad/length) of body 1 relative to body 2 (rigid slip
+    (xi - phi*y, eta + phi*x)); forces on body 1, so xi > 0 gives fx < 0. ``flexibility``: weighted (Kalker's
+    original), three or blended (CONTACT's M = 3); ``bound``: parabolic (Kalker's) or elliptic (Hertz);
+    ``direction``: "+x" or "-x"; ``my`` strips of ``mx`` elements, or CONTACT's rectangle of mx x my elements over
+    [-s a, s a] x [-s b, s b] with ``contact_grid=s``.
+
+    Returns a dict: the inputs, ``fx``, ``fy`` (force), ``mz`` (force*length), ``fn_discrete``, ``n_contact``,
+    ``n_adhesion``, ``n_slip``, ``flexibilities`` [L1, L2, L3], ``coefficients`` [C11, C22, C23]; with
+    ``elements=True`` also float64 arrays ``x``, ``y``, ``pn``, ``px``, ``py`` and int8 ``state`` (0 exterior, 1
+    adhesion, 2 slip), x fastest. Raises :class:`InputError` naming the argument (``key``)."""
+
+def creep_table(
+    spec: Union[str, "os.PathLike[str]"],
+    out: Union[str, "os.PathLike[str]"],
+    *,
+    shard: Optional[str] = None,
+    resume: bool = False,
+    allow_large: bool = False,
+) -> Dict[str, Any]:
+    """Run a creep-table spec (``kind = "creep_table"``; README "Creep-force tables") into the CSV ``out`` (and the
+    ``.npz`` beside it for a whole table), as ``rollbem sweep SPEC --out OUT`` does; ``shard="k/n"`` runs one shard,
+    ``resume=True`` goes on from its journal. Returns ``total``, ``cases``, ``ran``, ``resumed``, ``statuses`` (a dict
+    of counts) and ``npz`` (its path, or None). Read the table with :mod:`rollbem.creeptable`."""

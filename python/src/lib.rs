@@ -13,6 +13,7 @@
 #![allow(rustdoc::private_intra_doc_links)]
 
 mod convert;
+mod creep;
 mod drive;
 mod errors;
 mod model;
@@ -46,6 +47,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(model::_rust_creep_curve, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::_sweep_rows, m)?)?;
     m.add_function(wrap_pyfunction!(plugin::register_solver, m)?)?;
+    m.add_function(wrap_pyfunction!(creep::fastsim, m)?)?;
+    m.add_function(wrap_pyfunction!(creep::creep_table, m)?)?;
     m.add("NODE_STATES", report::NODE_STATES.to_vec())?;
     m.add("SCHEMA_VERSION", rollbem::results::SCHEMA_VERSION)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
