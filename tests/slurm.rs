@@ -240,13 +240,21 @@ fn a_job_array_merges_to_the_serial_sweep_and_a_cancelled_shard_resumes() {
 #[test]
 #[ignore = "needs a SLURM cluster: scripts/slurm/cluster.sh start (CI runs it)"]
 fn a_creep_table_as_a_job_array_equals_the_serial_table_byte_for_byte() {
+    table_through_array("fastsim-usetab.toml");
+    // The exact theory (`reference/creep-tables/exact-usetab.toml`: 3 000 cases of `halfspace::rolling` on 32 × 32
+    // elements, about 14 s of CPU), the same way.
+    table_through_array("exact-usetab.toml");
+}
+
+/// The table `reference/creep-tables/NAME` as an array of 4 shards and the merge job, against its serial run.
+fn table_through_array(name: &str) {
     // Issue 36: a creep-force table of at least 3 000 cases (reference/creep-tables/fastsim-usetab.toml: 7 000
     // FASTSIM cases on 100 × 100 strips, about 2 s of CPU) through `scripts/slurm/submit.sh`, unchanged (the sweep
     // commands dispatch on the spec's `kind = "creep_table"`), as an array of 4 shards and the merge job. Expected:
     // the merged CSV and .npz are the serial run's byte for byte (a row depends on its case alone; the table has no
     // timing columns), and the merge holds every case once (`sweep-merge --spec` checks it).
     assert!(std::env::var_os("SLURM_CONF").is_some(), "no SLURM_CONF: start a cluster with scripts/slurm/cluster.sh");
-    let spec = root().join("reference/creep-tables/fastsim-usetab.toml");
+    let spec = root().join("reference/creep-tables").join(name);
     let dir = tempfile::tempdir().unwrap();
     let serial = dir.path().join("serial.csv");
     run(bin().arg("sweep").arg(&spec).arg("--out").arg(&serial));
@@ -268,8 +276,8 @@ fn a_creep_table_as_a_job_array_equals_the_serial_table_byte_for_byte() {
         assert!(!partial(&array_dir.join(format!("shard-{k}-of-4.csv"))).exists(), "shard {k} left its journal");
     }
     eprintln!(
-        "creep table of {rows} cases as a job array of 4 shards and merge: {:.1} s; merged CSV and .npz = serial, \
-         byte for byte",
+        "creep table {name} of {rows} cases as a job array of 4 shards and merge: {:.1} s; merged CSV and .npz = \
+         serial, byte for byte",
         t.elapsed().as_secs_f64()
     );
 }

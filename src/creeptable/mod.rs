@@ -67,6 +67,7 @@
 
 mod command;
 mod engines;
+mod exact;
 mod figure;
 mod npz;
 mod run;
@@ -76,6 +77,7 @@ mod table;
 
 pub use command::{fastsim_command, FastsimArgs};
 pub use engines::{Fastsim, KalkerLinear};
+pub use exact::Exact;
 pub use figure::{creep_surface_svg, plot_table, write_figure};
 pub use run::{is_table_csv, is_table_spec, merge_tables, run_table, run_table_with, TableOptions, TableOutcome};
 pub use section::markdown_section;
@@ -250,7 +252,7 @@ pub struct EngineEntry {
 }
 
 /// The engines a table spec can name.
-pub const BUILT_IN: &[EngineEntry] = &[engines::FASTSIM_ENTRY, engines::KALKER_LINEAR_ENTRY];
+pub const BUILT_IN: &[EngineEntry] = &[engines::FASTSIM_ENTRY, engines::KALKER_LINEAR_ENTRY, exact::EXACT_ENTRY];
 
 /// The registered engine of that name.
 pub fn engine_entry(name: &str) -> Option<&'static EngineEntry> {

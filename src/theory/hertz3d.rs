@@ -155,7 +155,7 @@ mod tests {
 
     /// `curvatures_for` inverts `from_load`: the semi-axes of the curvatures it returns are those asked for, at
     /// a/b from 0.1 to 10 (a round trip through the closed form), to 1e-8 (measured 2.3e-9 at a/b = 1, where a/b is
-    /// flat in the eccentricity that `from_load` finds by bisection; 1e-12 elsewhere).
+    /// flat in the eccentricity that `from_load` finds by bisection).
     #[test]
     fn curvatures_for_inverts_from_load() {
         for (ax, ay) in [(8.0, 4.0), (6.304, 12.61), (1.0, 1.0), (0.3, 3.0), (10.0, 1.0)] {
