@@ -51,7 +51,7 @@ pub fn rolling_post(scene: &Scene) -> Option<RollingPost> {
 /// The slip operator of a scene on a flexibility: steady rolling's upwind slip velocity, or the static slip.
 pub fn slip_operator(scene: &Scene, flex: &crate::flexibility::Flexibility) -> SlipOperator {
     match scene.rolling() {
-        Some(Rolling::Steady { direction }) => SlipOperator::steady(&flex.x, *direction),
+        Some(Rolling::Steady { direction, .. }) => SlipOperator::steady(&flex.x, *direction),
         _ => SlipOperator::static_slip(),
     }
 }
