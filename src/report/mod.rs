@@ -43,6 +43,7 @@ mod plot_result;
 mod rolling;
 mod space;
 mod table;
+mod visco;
 
 pub use paths::{md_curve, md_pattern, md_shift, path_figures};
 pub use plot_csv::plot_csv;
@@ -266,6 +267,9 @@ fn compute(
     let mut f3 = String::new();
     let found = friction3d::section(&mut f3)?;
     family.entry(Family::Space3d).or_default().push_str(&f3);
+    let mut visco_md = String::new();
+    visco::section(&mut visco_md)?;
+    family.entry(Family::Carter).or_default().push_str(&visco_md);
     if !path_md.is_empty() {
         family.insert(Family::Paths, path_md);
     }
