@@ -98,6 +98,7 @@ pub mod toeplitz;
 pub mod toeplitz2d;
 pub mod tolerances;
 pub(crate) mod validity;
+pub mod veldep;
 pub mod viscoelastic;
 
 pub use error::{Error, Result};
