@@ -28,8 +28,11 @@
 //! kinetic coefficient (`Above`, INISLP < 0). The outcome names its start; a run that does not converge is a status
 //! with its residual ([`SteadyStatus::NotConverged`]), not a solution.
 //!
-//! Not yet done (issue 33, item 2): transient rolling, the friction memory (CONTACT's MEMDST, MEM_S0), the scene
-//! keys, the pipeline and the CLI. Nothing in rollbem's scenes calls this module: Coulomb scenes are unchanged.
+//! A time step of transient rolling is the same problem with another matrix and an offset ([`transient_step`]).
+//!
+//! Not yet done (issue 33, item 2): the friction memory (CONTACT's MEMDST, MEM_S0), a driver for many time steps,
+//! the scene keys, the pipeline and the CLI. Nothing in rollbem's scenes calls this module: Coulomb scenes are
+//! unchanged. Tested against CONTACT's `veldep_fric.inp` (tests/veldep.rs).
 
 use crate::error::ArgumentError;
 use faer::linalg::solvers::Solve;
@@ -212,6 +215,9 @@ pub struct SteadyProblem<'a> {
     pub normal: &'a [f64],
     /// The creepage ξ (ξ > 0 braking).
     pub creepage: f64,
+    /// A per-node offset added to the slip, `s = ξ + c + M h` (`None`: zero). A time step of transient rolling
+    /// ([`transient_step`]) is this problem with `M = K_TT/Δq` and `c` from the previous step's displacements.
+    pub offset: Option<&'a [f64]>,
     /// The rolling speed V (length/s): the absolute slip velocity is `V |s|`.
     pub velocity: f64,
     /// The friction law.
@@ -321,8 +327,12 @@ pub fn solve_steady(
             }
         })
         .collect();
+    if p.offset.is_some_and(|c| c.len() != n) {
+        return Err(ArgumentError::new(F, "offset", format!("must have {n} entries")));
+    }
+    let offset = |i: usize| p.offset.map_or(0.0, |c| c[i]);
     let slip_of = |h: &[f64]| -> Vec<f64> {
-        (0..n).map(|i| p.creepage + (0..n).map(|j| m[(i, j)] * h[j]).sum::<f64>()).collect()
+        (0..n).map(|i| p.creepage + offset(i) + (0..n).map(|j| m[(i, j)] * h[j]).sum::<f64>()).collect()
     };
     for iteration in 1..=max_iterations {
         newton(p, &law, &state, &mut h, &slip_of);
@@ -352,6 +362,36 @@ pub fn solve_steady(
     let stick: Vec<bool> = state.iter().map(|&st| st == 1).collect();
     let status = SteadyStatus::NotConverged { iterations: max_iterations, residual };
     Ok(SteadyOutcome { status, start, tangential: h, slip: s, stick })
+}
+
+/// One time step of transient rolling (CONTACT's T = 2 with a shift Δq per step): the slip velocity of node i is
+/// `s_i = ξ + (u_i − u_prev(x_i + dir·Δq))/Δq`, the material at `x_i` having been at `x_i + dir·Δq` one step earlier.
+/// On a uniform grid with `Δq` = the element length this is node `up(i)` of the previous step, so the step is a
+/// [`SteadyProblem`] with `M = K_TT/Δq` and the offset `c_i = −u_prev,up(i)/Δq` (`u_prev = K_TT h_prev`; 0 for the
+/// leading-edge node, whose upstream material was outside the grid). Returns `(M, c)`. `k_tt` n × n, `h_prev` of n,
+/// `dq > 0`, `direction` ±1; refused otherwise.
+pub fn transient_step(
+    k_tt: &Mat<f64>,
+    h_prev: &[f64],
+    dq: f64,
+    direction: i32,
+) -> Result<(Mat<f64>, Vec<f64>), ArgumentError> {
+    const F: &str = "veldep::transient_step";
+    let n = h_prev.len();
+    if k_tt.nrows() != n || k_tt.ncols() != n {
+        return Err(ArgumentError::new(F, "k_tt", format!("must be {n} × {n}")));
+    }
+    if !(dq > 0.0 && dq.is_finite()) || direction.abs() != 1 {
+        return Err(ArgumentError::new(
+            F,
+            "dq",
+            format!("needs dq finite > 0 and direction ±1, got {dq}, {direction}"),
+        ));
+    }
+    let u_prev: Vec<f64> = (0..n).map(|r| (0..n).map(|c| k_tt[(r, c)] * h_prev[c]).sum()).collect();
+    let up = |i: usize| if direction > 0 { (i + 1 < n).then_some(i + 1) } else { i.checked_sub(1) };
+    let offset = (0..n).map(|i| up(i).map_or(0.0, |j| -u_prev[j] / dq)).collect();
+    Ok((Mat::from_fn(n, n, |i, j| k_tt[(i, j)] / dq), offset))
 }
 
 /// The steady problem solved from both starts ([`solve_steady`]): the two outcomes, and whether they are two
@@ -414,18 +454,48 @@ fn newton(p: &SteadyProblem, law: &FrictionLaw, state: &[i8], h: &mut [f64], sli
             }
         }
         let d = j.partial_piv_lu().solve(&r);
-        let mut big = 0.0f64;
-        for i in 0..n {
-            if d[(i, 0)].is_finite() {
-                h[i] += d[(i, 0)];
-                big = big.max(d[(i, 0)].abs());
-            }
+        if (0..n).any(|i| !d[(i, 0)].is_finite()) {
+            break;
         }
+        // Damped: halve the step until the equations' residual falls (a falling law can throw a full step far).
+        let norm = |h: &[f64]| set_residual(p, law, state, h, &slip_of(h));
+        let before = norm(h);
+        let mut lambda = 1.0;
+        let mut trial: Vec<f64> = (0..n).map(|i| h[i] + d[(i, 0)]).collect();
+        for _ in 0..40 {
+            if norm(&trial) < before {
+                break;
+            }
+            lambda *= 0.5;
+            trial = (0..n).map(|i| h[i] + lambda * d[(i, 0)]).collect();
+        }
+        let big = (0..n).fold(0.0f64, |a, i| a.max((trial[i] - h[i]).abs()));
+        h.copy_from_slice(&trial);
         let hmax = h.iter().fold(0.0f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
         if big <= 1e-15 * hmax {
             break;
         }
     }
+}
+
+/// The sum of squares of the fixed-set equations of [`newton`] at `h` (with its slip `s`).
+fn set_residual(p: &SteadyProblem, law: &FrictionLaw, state: &[i8], h: &[f64], s: &[f64]) -> f64 {
+    (0..h.len())
+        .map(|i| match state[i] {
+            0 => h[i] * h[i],
+            1 => {
+                // Scaled to a force by the row's diagonal, so that stick and slip rows weigh alike.
+                let v = s[i] / p.slip_matrix[(i, i)];
+                v * v
+            }
+            st => {
+                let sigma = f64::from(st.signum());
+                let t = (sigma * s[i]).max(0.0);
+                let v = h[i] + law.mu(p.velocity * t) * p.normal[i] * sigma;
+                v * v
+            }
+        })
+        .sum()
 }
 
 #[cfg(test)]

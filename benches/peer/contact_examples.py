@@ -159,9 +159,8 @@ def main():
     print()
     print("CONTACT's printed CREEP X has 4 digits and PMAX 4: a relative difference below about 5e-4 is within its "
           "printing. veldep_fric (slip-velocity-dependent friction, Vollebregt & Schuttelaars 2012) is run by CONTACT "
-          "only: rollbem's friction laws of the slip velocity are a library-level steady solver so far (src/veldep.rs; "
-          "tests/veldep.rs reproduces case 1: FX/(μ FN) = 0.5941, NCON 81, NADH 45), not a scene, and it has no transient "
-          "rolling, so the input is not posed here.")
+          "only: rollbem's friction laws of the slip velocity are a library-level solver so far (src/veldep.rs: steady rolling and single time steps; "
+          "tests/veldep.rs reproduces cases 1, 2 and 4), not a scene, so the input is not posed here.")
     return 0
 
 
