@@ -227,6 +227,12 @@ pub fn make_checks(
             ),
         ));
     }
+    if scene.is_viscoelastic() {
+        out.push(not_applicable(
+            "elastic theories (Hertz, Cattaneo–Mindlin, Carter)".into(),
+            "not compared: a body is viscoelastic (`viscoelastic = { ... }`), the theories are elastic".into(),
+        ));
+    }
     if crate::references::cattaneo_applies(scene) {
         out.extend(cattaneo_checks(scene, runs, model));
     }

@@ -61,7 +61,10 @@ pub fn diagnose(flex: &Flexibility, info: &SourceInfo, asymmetry: f64) -> Diagno
     if asymmetry > tol::ASYMMETRY_WARN {
         // A source without a BEM system is the half-plane: its asymmetry is the datum's rank-one column term (see
         // [`crate::pipeline::stages::normal_asymmetry`]; measured only when the approach is prescribed), which no mesh removes.
-        let what = if info.system_size.is_none() {
+        let what = if info.viscoelastic {
+            "it is the viscoelastic memory (a load deforms the material that has passed it, not the material ahead: \
+             physics, not the mesh); use lemke or active_set, which do not assume symmetry"
+        } else if info.system_size.is_none() {
             "it is the half-plane's datum term (displacements relative to a point at depth datum_depth add the datum's \
              motion under each load to every node: physics, not the mesh), which a prescribed load would absorb \
              into the approach; prescribe the load, or use lemke or active_set, which do not assume symmetry"

@@ -181,6 +181,7 @@
 
 use crate::error::ArgumentError;
 use crate::material::Material;
+use crate::viscoelastic::{memory_integral, Memory};
 use std::f64::consts::{FRAC_2_PI, FRAC_PI_2, PI};
 
 /// A displacement `(u_x, u_z)` in the body's own axes (`u_z` positive INTO the body), relative to
@@ -219,6 +220,8 @@ pub struct HalfPlane {
     datum_depth: f64,
     /// The strip's width across the rolling direction ([`HalfPlane::strip`]); `None` in plane strain.
     strip_width: Option<f64>,
+    /// A viscoelastic body's steady-rolling memory ([`HalfPlane::viscoelastic`]); `None`: elastic.
+    memory: Option<Memory>,
 }
 
 /// A mesh of contiguous surface strips with their collocation points.
@@ -417,7 +420,12 @@ fn xlog(t: f64, d: f64) -> f64 {
 /// `L = ta·ln(|ta|/d) − tb·ln(|tb|/d)`, cancellation-free in the far field where `ta ≈ tb`
 /// (there `L = (ta−tb)·ln(|ta|/d) + tb·ln(1 + (ta−tb)/tb)`, `ta − tb` exact by Sterbenz).
 fn log_term(ta: f64, tb: f64, d: f64) -> f64 {
-    let w = ta - tb;
+    log_term_w(ta, tb, ta - tb, d)
+}
+
+/// [`log_term`] with the element's width `w = ta − tb` given (the memory integral shifts `ta` and `tb` by a
+/// distance that can dwarf `w`: the width is then taken from before the shift, not from the rounded difference).
+fn log_term_w(ta: f64, tb: f64, w: f64, d: f64) -> f64 {
     if ta * tb > 0.0 && w.abs() <= 0.5 * tb.abs() {
         w * (ta.abs() / d).ln() + tb * (w / tb).ln_1p()
     } else {
@@ -437,6 +445,8 @@ struct Kernel {
     c_sgn: f64,
     /// Half the strip's width, `h = w/2` ([`HalfPlane::strip`]); `None` in plane strain.
     strip_half: Option<f64>,
+    /// The viscoelastic memory ([`HalfPlane::viscoelastic`]) when it changes anything (`f > 0`, a deformable body).
+    memory: Option<Memory>,
 }
 
 /// `X·asinh(h/|X|)` with the limit `0` at `X = 0`; past `h/|X| = 1e150` (where `h/|X|` may overflow) by
@@ -463,8 +473,43 @@ fn x_atan(x: f64, h: f64) -> f64 {
 }
 
 impl Kernel {
-    /// Position-dependent (Toeplitz) parts `[T_xx, T_xz, T_zx, T_zz]` for `ta = x − a`, `tb = x − b`.
+    /// Position-dependent (Toeplitz) parts `[T_xx, T_xz, T_zx, T_zz]` for `ta = x − a`, `tb = x − b`: the elastic
+    /// ones, plus the viscoelastic memory `f ∫₀^∞ e^{−η} T(ta + Lη, tb + Lη) dη` of a viscoelastic body
+    /// ([`crate::viscoelastic`]; the integrand has kinks where an element end passes the point, `η = −t/L`).
     fn toeplitz(&self, ta: f64, tb: f64) -> [f64; 4] {
+        let elastic = self.elastic_toeplitz(ta, tb);
+        let Some(Memory { ratio, distance }) = self.memory else { return elastic };
+        let memory = if distance == 0.0 {
+            elastic
+        } else if distance.is_infinite() {
+            // Frozen creep: the far field, the same for every point; a constant the approach absorbs (module docs
+            // of crate::viscoelastic). Its x-independent value is dropped.
+            [0.0; 4]
+        } else {
+            let w = ta - tb;
+            memory_integral(
+                |eta| self.shifted_toeplitz(ta + distance * eta, tb + distance * eta, w),
+                &[-ta / distance, -tb / distance],
+            )
+        };
+        std::array::from_fn(|i| elastic[i] + ratio * memory[i])
+    }
+
+    /// The elastic Toeplitz parts at `(ta, tb)` shifted far from the element, whose width `w` is given: in plane
+    /// strain the far field `w ln|t|` keeps `w` exact (the strip's far field decays, its rounding stays below its
+    /// own size, which is negligible there).
+    fn shifted_toeplitz(&self, ta: f64, tb: f64, w: f64) -> [f64; 4] {
+        if self.strip_half.is_some() {
+            return self.elastic_toeplitz(ta, tb);
+        }
+        let tl = self.c_log * log_term_w(ta, tb, w, self.d);
+        let s = if ta * tb > 0.0 { ta.signum() * w } else { ta.abs() - tb.abs() };
+        let ts = self.c_sgn * s;
+        [tl, -ts, ts, tl]
+    }
+
+    /// The elastic Toeplitz parts (see [`Kernel::toeplitz`]).
+    fn elastic_toeplitz(&self, ta: f64, tb: f64) -> [f64; 4] {
         if let Some(h) = self.strip_half {
             return self.strip(ta, tb, h);
         }
@@ -499,6 +544,12 @@ impl Kernel {
         if self.strip_half.is_some() {
             return [0.0; 4];
         }
+        let scale = self.memory.map_or(1.0, |m| 1.0 + m.ratio);
+        self.elastic_datum(a, b).map(|v| scale * v)
+    }
+
+    /// The elastic datum parts (see [`Kernel::datum`]).
+    fn elastic_datum(&self, a: f64, b: f64) -> [f64; 4] {
         let (d, nu, k) = (self.d, self.nu, self.k);
         let w = b - a;
         let dh = 0.5 * (b * (b / d).powi(2).ln_1p() - a * (a / d).powi(2).ln_1p());
@@ -537,7 +588,7 @@ impl HalfPlane {
         if !(datum_depth > 0.0 && datum_depth.is_finite()) {
             return Err(ArgumentError::new(F, "datum_depth", format!("must be finite and > 0, got {datum_depth}")));
         }
-        Ok(Self { e, nu, datum_depth, strip_width: None })
+        Ok(Self { e, nu, datum_depth, strip_width: None, memory: None })
     }
 
     /// The same material as a strip of `width` (`> 0`, finite, the unit of all coordinates) across the rolling
@@ -554,6 +605,27 @@ impl HalfPlane {
             ));
         }
         Ok(Self { strip_width: Some(width), ..self })
+    }
+
+    /// The same body as a viscoelastic standard linear solid in steady rolling ([`crate::viscoelastic`]): its
+    /// glassy modulus is this `E`, and every surface coefficient becomes `A(x) + f ∫₀^∞ e^{−η} A(x + Lη) dη` with
+    /// `memory.ratio = f` (finite, `≥ 0`) and `memory.distance = L` (the signed relaxation distance, in the unit of
+    /// the coordinates; not NaN, `±∞` allowed). The datum part, a constant per element, is multiplied by `1 + f`.
+    /// [`HalfPlane::line_load_displacement`] and the interior stresses stay elastic. Another value is refused.
+    pub fn viscoelastic(self, memory: Memory) -> Result<Self, ArgumentError> {
+        const F: &str = "HalfPlane::viscoelastic";
+        if !(memory.ratio >= 0.0 && memory.ratio.is_finite()) {
+            return Err(ArgumentError::new(F, "memory.ratio", format!("must be finite and ≥ 0, got {}", memory.ratio)));
+        }
+        if memory.distance.is_nan() {
+            return Err(ArgumentError::new(F, "memory.distance", "must not be NaN"));
+        }
+        Ok(Self { memory: Some(memory), ..self })
+    }
+
+    /// The viscoelastic memory ([`HalfPlane::viscoelastic`]), `None` for an elastic body.
+    pub fn memory(&self) -> Option<Memory> {
+        self.memory
     }
 
     /// The strip's width ([`HalfPlane::strip`]), `None` in plane strain.
@@ -615,7 +687,7 @@ impl HalfPlane {
         }
         let same = |a: f64, b: f64| (a - b).abs() <= 4.0 * f64::EPSILON * a.abs().max(b.abs());
         let (f1, f2) = (factors(Some(self)), factors(counter));
-        if counter.is_some_and(|c| c.strip_width != self.strip_width) {
+        if counter.is_some_and(|c| c.strip_width != self.strip_width || c.memory != self.memory) {
             return false;
         }
         match self.strip_width {
@@ -636,6 +708,7 @@ impl HalfPlane {
             c_log: -2.0 * (1.0 - self.nu) * k,
             c_sgn: (1.0 - 2.0 * self.nu) * FRAC_PI_2 * k,
             strip_half: self.strip_width.map(|w| 0.5 * w),
+            memory: self.memory.filter(|m| m.ratio > 0.0 && self.e.is_finite()),
         }
     }
 

@@ -99,6 +99,8 @@ pub mod toeplitz;
 pub mod toeplitz2d;
 pub mod tolerances;
 pub(crate) mod validity;
+pub mod veldep;
+pub mod viscoelastic;
 
 pub use error::{Error, Result};
 /// `rollbem plot` on a result document (JSON) or a CSV: part of [`report`], re-exported at the root.

@@ -88,15 +88,15 @@ pub enum Domain {
     /// stick zone by a fixed length that no mesh refinement removes. Compared with the theory as a model
     /// comparison, with the model error computed on the half-plane counterpart ([`half_space_counterpart`]).
     FiniteBody,
-    /// β ≠ 0 with the coupling on, or a strip of half-spaces (`[mesh] strip_width`, not the theory's plane
-    /// strain): the theory's problem is not this one; no comparison.
+    /// β ≠ 0 with the coupling on, a strip of half-spaces (`[mesh] strip_width`, not the theory's plane
+    /// strain) or a viscoelastic body: the theory's problem is not this one; no comparison.
     Outside,
 }
 
 /// The domain of the decoupled half-space theories for a scene ([`Domain`]).
 pub fn decoupled_domain(scene: &Scene) -> Domain {
     let decoupled = !scene.law().coupling || scene.dundurs_beta().abs() < 1e-12;
-    if scene.strip_width().is_some() {
+    if scene.strip_width().is_some() || scene.is_viscoelastic() {
         return Domain::Outside;
     }
     match (decoupled, scene.model()) {
@@ -137,6 +137,7 @@ pub fn half_space_counterpart(scene: &Scene) -> Option<crate::Result<Scene>> {
                 youngs_modulus: m.youngs_modulus,
                 poisson_ratio: m.poisson_ratio,
                 datum_depth: None,
+                viscoelastic: None,
             };
             d.mesh.contact_arc_deg = None;
             d.mesh.contact_half_width = Some(half_width);
@@ -207,7 +208,7 @@ pub(crate) fn carter_solution(scene: &Scene, run: &SolverRun) -> Option<CarterRe
 /// `[mesh] strip_width`).
 pub fn hertz_applies(scene: &Scene) -> bool {
     let conformal = matches!(scene.counter_body(), crate::scene::CounterBody::Bore { .. });
-    scene.friction() == 0.0 && scene.strip_width().is_none() && !conformal
+    scene.friction() == 0.0 && scene.strip_width().is_none() && !conformal && !scene.is_viscoelastic()
 }
 
 /// Hertz at the run's load P, when [`hertz_applies`] and the run solved with P > 0.

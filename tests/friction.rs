@@ -264,6 +264,7 @@ fn rolling_slip_velocity_only_when_asked() {
                 mode: rollbem::scene::RollingMode::Seed,
                 creepage: Some(0.002),
                 direction: 1,
+                velocity: None,
             })
         })
         .unwrap();

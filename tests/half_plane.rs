@@ -131,6 +131,7 @@ fn cattaneo_on_the_half_plane_with_coupling_off_and_on_two_identical_half_planes
                     poisson_ratio: 0.3,
 
                     datum_depth: None,
+                    viscoelastic: None,
                 }
             })
             .unwrap();
@@ -163,6 +164,7 @@ fn identical_half_planes_have_no_coupling_and_tangential_tractions_independent_o
                     poisson_ratio: nu,
 
                     datum_depth: None,
+                    viscoelastic: None,
                 }
             })
             .unwrap();

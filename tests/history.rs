@@ -513,6 +513,7 @@ fn md_loop_of_a_steel_on_steel_pair() {
                 youngs_modulus: 210000.0,
                 poisson_ratio: 0.3,
                 datum_depth: None,
+                viscoelastic: None,
             };
             // The pair is twice as compliant: a = 10.08 mm; the zone grows with it at the same element size.
             d.mesh.contact_half_width = Some(13.5);

@@ -196,6 +196,7 @@ impl SceneParams {
                 support: Some(support),
                 datum_depth: None,
                 profile: None,
+                viscoelastic: None,
             },
             mesh: MeshTable {
                 element: if self.quadratic { ElementKind::Quadratic } else { ElementKind::Constant },
@@ -214,6 +215,7 @@ impl SceneParams {
                 mode: RollingMode::Seed,
                 creepage: Some(creepage),
                 direction: 1,
+                velocity: None,
             }),
             solvers: SolversTable::using(&["all"]),
             checks: None,

@@ -26,6 +26,8 @@
 #                                  CONTACT's strip of width DY towards the plane strain rollbem solves, at the same
 #                                  pressure: how much of a difference is the strip's finite width; the timed runs
 #                                  keep the input's)
+#       EXAMPLES=1                 also run CONTACT's examples bentall, visc_cylindr and veldep_fric beside rollbem,
+#                                  case by case (contact_examples.py), in a second table; EXAMPLES=0 skips them
 #       KEEP=DIR                   keep the work folder (CONTACT build, inputs, outputs, scenes) in DIR
 #       ROLLBEM=PATH               use this rollbem binary instead of building one
 #       CONTACT_BIN=PATH           use this CONTACT executable instead of building one (it is checked all the same)
@@ -533,4 +535,12 @@ fi
   echo "Machine: $(nproc) cores, shared; load average $load_start at the start, $(loadavg) at the end (other work inflates times, CONTACT's and rollbem's alike)."
   echo "CONTACT build checked against its reference output before timing (contact_refcmp.py): ${contact_ref_summary[*]}"
   for note in "${notes[@]}"; do echo "Note: $note"; done
+  if [[ ${EXAMPLES:-1} == 1 ]]; then
+    echo
+    echo "### CONTACT's other 2D examples, case by case (benches/peer/contact_examples.py)"
+    echo
+    say "CONTACT's examples bentall, visc_cylindr, veldep_fric beside rollbem"
+    python3 "$here/contact_examples.py" "$contact_bin" "$contact_src/examples" "$rollbem" "$work/examples" ||
+      die "contact_examples.py failed"
+  fi
 } | tee "$table_out"

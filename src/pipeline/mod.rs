@@ -349,6 +349,8 @@ fn source_difference(a: &Scene, b: &Scene) -> Option<(&'static str, &'static str
         Some(("mesh", "the candidate contact zone or its elements"))
     } else if a.counter_body() != b.counter_body() {
         Some(("counter_body", "the counter-body"))
+    } else if a.viscoelastic_memories() != b.viscoelastic_memories() {
+        Some(("rolling.velocity", "the viscoelastic bodies' relaxation distance (rolling speed or direction)"))
     } else {
         None
     }

@@ -52,7 +52,7 @@ pub fn rolling_post(scene: &Scene) -> Option<RollingPost> {
 pub fn slip_operator(scene: &Scene, flex: &crate::flexibility::Flexibility) -> SlipOperator {
     match scene.rolling() {
         // The flat's upwind operator; with two finite bodies plus the turning of the pair's frame.
-        Some(Rolling::Steady { direction }) => crate::source::two_body::steady_slip(flex, *direction),
+        Some(Rolling::Steady { direction, .. }) => crate::source::two_body::steady_slip(flex, *direction),
         _ => SlipOperator::static_slip(),
     }
 }

@@ -44,6 +44,7 @@ mod rolling;
 mod rolling3d;
 mod space;
 mod table;
+mod visco;
 
 pub use paths::{md_curve, md_pattern, md_shift, path_figures};
 pub use plot_csv::plot_csv;
@@ -272,6 +273,9 @@ fn compute(
     rolling3d::section(&mut f3, &mut sink3)?;
     path_figs.extend(sink3.list);
     family.entry(Family::Space3d).or_default().push_str(&f3);
+    let mut visco_md = String::new();
+    visco::section(&mut visco_md)?;
+    family.entry(Family::Carter).or_default().push_str(&visco_md);
     if !path_md.is_empty() {
         family.insert(Family::Paths, path_md);
     }

@@ -235,7 +235,7 @@ pub fn md_shift(s: &Scene, p: f64) -> impl Fn(TangentialPath, f64) -> f64 {
     let log_datum = |d: f64, nu: f64| d * (0.5 / (1.0 - nu)).exp();
     let w = s.wheel().material;
     let mut bodies = vec![(w.plane_strain_modulus(), log_datum(wheel_datum, w.poisson_ratio))];
-    if let CounterBody::HalfPlane { material, datum_depth } = s.counter_body() {
+    if let CounterBody::HalfPlane { material, datum_depth, .. } = s.counter_body() {
         bodies.push((material.plane_strain_modulus(), log_datum(*datum_depth, material.poisson_ratio)));
     }
     move |path: TangentialPath, q: f64| {

@@ -78,6 +78,31 @@ pub struct WheelTable {
     /// `parabola` (g₀ = x²/(2R), Hertz's geometry and the seed's eq. 5).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub profile: Option<Profile>,
+    /// Half-plane only, steady rolling only: the wheel as a viscoelastic standard linear solid
+    /// ([`crate::viscoelastic`]) whose glassy modulus is `youngs_modulus`. Absent (the default): elastic.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub viscoelastic: Option<ViscoelasticTable>,
+}
+
+/// `viscoelastic = { ... }` of `[wheel]` or `[counter_body]`: a standard linear solid ([`crate::viscoelastic`]) in
+/// exactly one of its two documented parameter sets: CONTACT's `compliance_ratio` (FG = (E_g − E_r)/E_r ≥ 0) and
+/// `creep_time` (TC = τ_C ≥ 0, s), or the stress-relaxation form `relaxed_modulus` (E_r, 0 < E_r ≤ the body's
+/// `youngs_modulus` = E_g) and `relaxation_time` (τ_E ≥ 0, s).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ViscoelasticTable {
+    /// FG = C_v/C_g = (E_g − E_r)/E_r ≥ 0 (dimensionless).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub compliance_ratio: Option<f64>,
+    /// TC = τ_C ≥ 0, the creep relaxation time (s).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub creep_time: Option<f64>,
+    /// E_r, the relaxed (rubbery) Young's modulus (stress unit).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub relaxed_modulus: Option<f64>,
+    /// τ_E ≥ 0, the stress relaxation time (s).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub relaxation_time: Option<f64>,
 }
 
 /// The counter-body the wheel meets.
@@ -97,6 +122,10 @@ pub enum CounterBodyTable {
         /// Depth of its datum point below the contact centre (length unit; default R).
         #[serde(default, skip_serializing_if = "Option::is_none")]
         datum_depth: Option<f64>,
+        /// Steady rolling only: the counter-body as a viscoelastic standard linear solid (as `[wheel]
+        /// viscoelastic`; its glassy modulus is this `youngs_modulus`).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        viscoelastic: Option<ViscoelasticTable>,
     },
     /// A finite elastic disc below the wheel (the twin-disc rig), a BEM body like the wheel: BEM wheel only.
     Disc {
@@ -305,6 +334,10 @@ pub struct RollingTable {
     pub creepage: Option<f64>,
     /// The rolling direction: +1 towards +x (the leading edge is at +x), −1 towards −x.
     pub direction: i32,
+    /// The rolling speed V (length unit per second, > 0): steady rolling of a viscoelastic body only, whose
+    /// relaxation distance is V·τ_C. Required there, refused elsewhere.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub velocity: Option<f64>,
 }
 
 /// `[solvers]`: which solvers to run (`use = [...]`, registry names or `"all"`), with their settings tables

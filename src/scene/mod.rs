@@ -41,12 +41,14 @@ pub mod document;
 pub mod space;
 mod space_validate;
 mod validate;
+mod visco;
 
 use crate::error::{Error, Result};
 pub use crate::formulation::{ContactLaw, Dof, Drive};
 pub use crate::material::Material;
 use crate::solvers::{SolverId, SolverSettings};
 use crate::status::Status;
+use crate::viscoelastic::{Memory, StandardLinearSolid};
 use document::SceneDocument;
 use serde::{Deserialize, Serialize};
 pub use space::{AnyScene, SpaceDocument, SpaceScene, SpaceStatus, SpaceStep};
@@ -134,6 +136,8 @@ pub enum Body {
         /// `Some(w)`: the contact is a strip of width w (length unit) on two half-spaces, CONTACT's 2D model
         /// (`[mesh] strip_width`, [`crate::halfplane::HalfPlane::strip`]); `None`: plane strain.
         strip_width: Option<f64>,
+        /// A viscoelastic wheel (`[wheel] viscoelastic`, steady rolling only); `None`: elastic.
+        viscoelastic: Option<crate::viscoelastic::StandardLinearSolid>,
     },
 }
 
@@ -247,6 +251,8 @@ pub enum CounterBody {
         material: Material,
         /// Depth of its datum point below the contact centre (length unit).
         datum_depth: f64,
+        /// A viscoelastic counter-body (`[counter_body] viscoelastic`, steady rolling only); `None`: elastic.
+        viscoelastic: Option<crate::viscoelastic::StandardLinearSolid>,
     },
     /// A finite elastic disc below the wheel, a BEM body like the wheel (the twin-disc rig,
     /// [`crate::source::two_body`]).
@@ -320,6 +326,8 @@ pub enum Rolling {
     Steady {
         /// ±1.
         direction: i32,
+        /// The rolling speed V (length/s), given only with a viscoelastic body (`[rolling] velocity`).
+        velocity: Option<f64>,
     },
     /// The seed's formulation: a static solve, then the slip velocity of eq. 12 at the creepage.
     Seed {
@@ -350,9 +358,9 @@ impl Rolling {
     /// The rolling direction, ±1.
     pub fn direction(&self) -> i32 {
         match *self {
-            Rolling::Steady { direction } | Rolling::Seed { direction, .. } | Rolling::Transient { direction, .. } => {
-                direction
-            }
+            Rolling::Steady { direction, .. }
+            | Rolling::Seed { direction, .. }
+            | Rolling::Transient { direction, .. } => direction,
         }
     }
 }
@@ -865,6 +873,39 @@ impl Scene {
             Body::HalfPlane { strip_width, .. } => strip_width,
             Body::Bem { .. } => None,
         }
+    }
+
+    /// The viscoelastic solids of the wheel and the counter-body (`[wheel] viscoelastic`, `[counter_body]
+    /// viscoelastic`); `(None, None)` for elastic bodies.
+    pub fn viscoelastic(&self) -> (Option<StandardLinearSolid>, Option<StandardLinearSolid>) {
+        let wheel = match self.body {
+            Body::HalfPlane { viscoelastic, .. } => viscoelastic,
+            Body::Bem { .. } => None,
+        };
+        let counter = match self.counter_body {
+            CounterBody::HalfPlane { viscoelastic, .. } => viscoelastic,
+            CounterBody::Rigid | CounterBody::Disc { .. } | CounterBody::Bore { .. } => None,
+        };
+        (wheel, counter)
+    }
+
+    /// Whether a body is viscoelastic (then the scene rolls steadily at `[rolling] velocity`).
+    pub fn is_viscoelastic(&self) -> bool {
+        let (w, c) = self.viscoelastic();
+        w.is_some() || c.is_some()
+    }
+
+    /// The steady-rolling memories ([`crate::viscoelastic::Memory`]) of the wheel and the counter-body, lengths in
+    /// wheel diameters (the models' unit); `None` for an elastic body.
+    pub fn viscoelastic_memories(&self) -> (Option<Memory>, Option<Memory>) {
+        let (w, c) = self.viscoelastic();
+        let (velocity, direction) = match self.rolling {
+            Some(Rolling::Steady { direction, velocity }) => (velocity.unwrap_or(0.0), direction),
+            _ => (0.0, 1),
+        };
+        let l0 = 2.0 * self.radius();
+        let memory = |s: Option<StandardLinearSolid>| s.map(|s| s.memory(velocity, direction, l0));
+        (memory(w), memory(c))
     }
 
     /// The wheel's model.

@@ -38,6 +38,7 @@ pub(super) fn build(mut document: SceneDocument, path: &Path) -> Result<Scene> {
             datum_depth: w.datum_depth.unwrap_or(w.radius),
             profile: w.profile.unwrap_or(Profile::Circle),
             strip_width: d.mesh.strip_width,
+            viscoelastic: super::visco::solid(w.viscoelastic, w.youngs_modulus),
         },
         (BodyModel::Bem, None, _) => {
             return Err(Error::Invalid {
@@ -56,10 +57,13 @@ pub(super) fn build(mut document: SceneDocument, path: &Path) -> Result<Scene> {
     };
     let counter_body = match d.counter_body {
         CounterBodyTable::Rigid => CounterBody::Rigid,
-        CounterBodyTable::HalfPlane { youngs_modulus, poisson_ratio, datum_depth } => CounterBody::HalfPlane {
-            material: Material { youngs_modulus, poisson_ratio },
-            datum_depth: datum_depth.unwrap_or(w.radius),
-        },
+        CounterBodyTable::HalfPlane { youngs_modulus, poisson_ratio, datum_depth, viscoelastic } => {
+            CounterBody::HalfPlane {
+                material: Material { youngs_modulus, poisson_ratio },
+                datum_depth: datum_depth.unwrap_or(w.radius),
+                viscoelastic: super::visco::solid(viscoelastic, youngs_modulus),
+            }
+        }
         CounterBodyTable::Disc { radius, youngs_modulus, poisson_ratio, support, other_elements } => {
             CounterBody::Disc { material: Material { youngs_modulus, poisson_ratio }, radius, support, other_elements }
         }
@@ -79,7 +83,7 @@ pub(super) fn build(mut document: SceneDocument, path: &Path) -> Result<Scene> {
         },
     };
     let rolling = d.rolling.as_ref().map(|r| match r.mode {
-        RollingMode::Steady => Rolling::Steady { direction: r.direction },
+        RollingMode::Steady => Rolling::Steady { direction: r.direction, velocity: r.velocity },
         RollingMode::Seed => Rolling::Seed { creepage: r.creepage.unwrap_or(0.0), direction: r.direction },
         RollingMode::Transient => Rolling::Transient { creepage: r.creepage.unwrap_or(0.0), direction: r.direction },
     });
@@ -249,6 +253,7 @@ impl SceneDocument {
         self.validate_wheel(&c)?;
         self.validate_mesh(&c)?;
         self.validate_counter_body(&c)?;
+        self.validate_viscoelastic(path)?;
         let mu = self.contact.friction;
         if !mu.is_finite() || mu < 0.0 {
             return Err(c.bad("contact.friction", format!("must be a finite number ≥ 0 (got {mu})")));
@@ -402,7 +407,7 @@ impl SceneDocument {
 
     fn validate_counter_body(&self, c: &Checker) -> Result<()> {
         self.validate_finite_counter(c)?;
-        if let CounterBodyTable::HalfPlane { youngs_modulus, poisson_ratio, datum_depth } = self.counter_body {
+        if let CounterBodyTable::HalfPlane { youngs_modulus, poisson_ratio, datum_depth, .. } = self.counter_body {
             c.positive("counter_body.youngs_modulus", youngs_modulus)?;
             c.poisson("counter_body.poisson_ratio", poisson_ratio)?;
             if let Some(d) = datum_depth {

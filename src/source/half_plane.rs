@@ -28,6 +28,11 @@
 //! width on half-spaces, CONTACT's model of its 2D cases ([`crate::halfplane`], "Strip of half-spaces"). They are
 //! absolute displacements, so the datum plays no part: a shift and an approach are those of points far away.
 //!
+//! **Viscoelastic bodies** (`viscoelastic = { ... }` of `[wheel]` or `[counter_body]`, steady rolling at `[rolling]
+//! velocity`): each body's coefficients carry its memory, `A(x) + f ∫₀^∞ e^{−η} A(x + Lη) dη` with `L = direction ·
+//! V·τ_C / 2R` ([`crate::viscoelastic`], [`HalfPlane::viscoelastic`]); the glassy modulus is the body's
+//! `youngs_modulus`. An elastic scene builds exactly the elastic coefficients (no memory, no quadrature).
+//!
 //! Units: dimensionless as every flexibility ([`crate::flexibility`]): lengths / L0 (L0 = 2R), stresses / E.
 
 use super::{Blocks, Built, SourceInfo, SourceTiming};
@@ -184,6 +189,7 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
             pivot_ratio: None,
             condition: None,
             contact_element_length: scene.zone().element_length(w.radius),
+            viscoelastic: scene.is_viscoelastic(),
         },
         timing: SourceTiming { assembly, condensation: 0.0 },
         boundary: None,
@@ -195,15 +201,27 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
 fn wheel_half_plane(scene: &Scene) -> std::result::Result<Option<HalfPlane>, ArgumentError> {
     let Body::HalfPlane { datum_depth, .. } = *scene.body() else { return Ok(None) };
     let l0 = 2.0 * scene.radius();
-    in_strip(HalfPlane::new(1.0, scene.wheel().material.poisson_ratio, datum_depth / l0)?, scene, l0).map(Some)
+    let hp = in_strip(HalfPlane::new(1.0, scene.wheel().material.poisson_ratio, datum_depth / l0)?, scene, l0)?;
+    with_memory(hp, scene.viscoelastic_memories().0).map(Some)
+}
+
+/// A half-plane with the viscoelastic memory of its body, if it has one ([`HalfPlane::viscoelastic`]).
+fn with_memory(
+    hp: HalfPlane,
+    memory: Option<crate::viscoelastic::Memory>,
+) -> std::result::Result<HalfPlane, ArgumentError> {
+    match memory {
+        Some(m) => hp.viscoelastic(m),
+        None => Ok(hp),
+    }
 }
 
 /// The elastic counter-body as a half-plane in the wheel's units (E / E_wheel, lengths / 2R), if there is one.
 fn counter_half_plane(scene: &Scene) -> std::result::Result<Option<HalfPlane>, ArgumentError> {
-    let CounterBody::HalfPlane { material, datum_depth } = *scene.counter_body() else { return Ok(None) };
+    let CounterBody::HalfPlane { material, datum_depth, .. } = *scene.counter_body() else { return Ok(None) };
     let (l0, e) = (2.0 * scene.radius(), scene.wheel().material.youngs_modulus);
     let hp = HalfPlane::new(material.youngs_modulus / e, material.poisson_ratio, datum_depth / l0)?;
-    in_strip(hp, scene, l0).map(Some)
+    with_memory(in_strip(hp, scene, l0)?, scene.viscoelastic_memories().1).map(Some)
 }
 
 /// Whether the scene's normal–tangential cross flexibilities K_NT, K_TN vanish identically, whatever the loads:

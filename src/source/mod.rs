@@ -47,6 +47,8 @@ pub struct SourceInfo {
     pub condition: Option<f64>,
     /// Smallest contact element length (user's unit).
     pub contact_element_length: f64,
+    /// Whether a body is viscoelastic ([`crate::viscoelastic`]): its memory makes the flexibility nonsymmetric.
+    pub viscoelastic: bool,
 }
 
 /// Wall-clock time of a source's two stages, seconds.
@@ -104,6 +106,7 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
             pivot_ratio: Some(health.pivot_ratio),
             condition: Some(health.system_condition),
             contact_element_length: scene.zone().element_length(scene.radius()),
+            viscoelastic: false,
         },
         flex,
         timing: SourceTiming { assembly: t.assembly, condensation: t.condensation },

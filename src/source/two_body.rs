@@ -407,6 +407,7 @@ pub fn build(bodies: &TwoBodies, blocks: Blocks) -> Result<Built> {
             pivot_ratio: Some(h1.pivot_ratio.max(h2.pivot_ratio)),
             condition: Some(h1.system_condition.max(h2.system_condition)),
             contact_element_length: bodies.spec.zone.element_length(bodies.wheel.radius),
+            viscoelastic: false,
         },
         flex,
         timing: SourceTiming { assembly: t1.assembly + t2.assembly, condensation: t1.condensation + t2.condensation },
