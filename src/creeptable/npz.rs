@@ -105,7 +105,7 @@ impl CreepTable {
         read_table(&bytes).map_err(|message| Error::Parse { path: path.to_path_buf(), message })
     }
 
-    /// Writes the table as `.npz` (by the rules of [`crate::io::write_output`]: nothing half-written).
+    /// Writes the table as `.npz` (by the rules of `crate::io::write_output`: nothing half-written).
     pub fn write_npz(&self, path: &Path) -> IoResult<()> {
         crate::io::write_output_bytes(path, &write_table(self))
     }

@@ -155,7 +155,7 @@ pub fn run_table(spec_path: &Path, out: &Path, opts: &TableOptions) -> Result<Ta
 }
 
 /// [`run_table`], stopping before its next chunk of cases once `cancel` is raised ([`Error::Cancelled`]; the journal
-/// keeps every case finished, for `--resume`). A bar of cases shows on stderr when [`crate::progress`] is on.
+/// keeps every case finished, for `--resume`). A bar of cases shows on stderr when `crate::progress` is on.
 pub fn run_table_with(spec_path: &Path, out: &Path, opts: &TableOptions, cancel: &Cancel) -> Result<TableOutcome> {
     let spec = TableSpec::from_file(spec_path)?;
     let engine = spec.engine(spec_path)?;

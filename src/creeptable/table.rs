@@ -323,7 +323,7 @@ pub struct CreepTable {
     pub axes: Axes,
     /// Fx', Fy', Mz' per case, case-major: `forces[3·index + k]` (NaN where the engine gave none).
     pub forces: Vec<f64>,
-    /// Status code per case ([`STATUS_CODES`]).
+    /// Status code per case (`STATUS_CODES`).
     pub status: Vec<i8>,
     /// C11, C22, C23 per ellipse: `coefficients[3·(i_ab + n_ab·iν) + k]`.
     pub coefficients: Vec<f64>,
