@@ -12,19 +12,10 @@ use rollbem::cancel::Cancel;
 use rollbem::halfspace::normal::Drive;
 use rollbem::halfspace::tangential::{ElementState, TangentialDrive};
 use rollbem::halfspace::{ContactGrid, HalfSpace, Path, PathSettings, PathStatus, Profile, Step, StepOutcome};
-use std::collections::HashMap;
 
-/// One CSV of `reference/contact3d/` as rows of column → text.
-fn csv(name: &str) -> Vec<HashMap<String, String>> {
-    let path = format!("{}/reference/contact3d/{name}", env!("CARGO_MANIFEST_DIR"));
-    let mut r = csv::Reader::from_path(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    let head: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
-    r.records().map(|rec| head.iter().cloned().zip(rec.unwrap().iter().map(String::from)).collect()).collect()
-}
-
-fn num(row: &HashMap<String, String>, key: &str) -> f64 {
-    row[key].trim().parse().unwrap_or_else(|_| panic!("{key} = {:?}", row[key]))
-}
+#[path = "common/contact_ref.rs"]
+mod contact_ref;
+use contact_ref::{csv, num};
 
 /// CONTACT's material input (G, ν) as a half-space (E = 2G(1 + ν)).
 fn body(g: f64, nu: f64) -> HalfSpace {

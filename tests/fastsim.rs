@@ -12,27 +12,13 @@ use rollbem::theory::kalker::creep_coefficients;
 use std::collections::HashMap;
 use std::f64::consts::PI;
 
-fn csv(name: &str) -> Vec<HashMap<String, String>> {
-    let path = format!("{}/reference/contact3d/fastsim/{name}", env!("CARGO_MANIFEST_DIR"));
-    let mut r = csv::Reader::from_path(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    let head: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
-    r.records().map(|rec| head.iter().cloned().zip(rec.unwrap().iter().map(String::from)).collect()).collect()
-}
+#[path = "common/contact_ref.rs"]
+mod contact_ref;
+use contact_ref::{half_unit, num};
 
-fn num(row: &HashMap<String, String>, key: &str) -> f64 {
-    row[key].trim().parse().unwrap_or_else(|_| panic!("{key} = {:?}", row[key]))
-}
-
-/// Half a unit of the last digit of a number as CONTACT prints it ("-1.505E+04": 5; "0.000": 5e-4; "1629.": 0.5;
-/// "0.493738E-04": 5e-11).
-fn half_unit(printed: &str) -> f64 {
-    let s = printed.trim();
-    let (mantissa, exp) = match s.find(['E', 'e']) {
-        Some(k) => (&s[..k], s[k + 1..].parse::<i32>().unwrap()),
-        None => (s, 0),
-    };
-    let decimals = mantissa.find('.').map_or(0, |k| mantissa.len() - k - 1) as i32;
-    0.5 * 10f64.powi(exp - decimals)
+/// One CSV of `reference/contact3d/fastsim/`.
+fn csv(name: &str) -> Vec<std::collections::HashMap<String, String>> {
+    contact_ref::csv(&format!("fastsim/{name}"))
 }
 
 /// CONTACT's material and load of `fastsim.inp`.

@@ -9,17 +9,14 @@
 
 use rollbem::theory::kalker::creep_coefficients;
 use std::collections::BTreeMap;
-use std::collections::HashMap;
 
-fn csv(name: &str) -> Vec<HashMap<String, String>> {
-    let path = format!("{}/reference/contact3d/fastsim/{name}", env!("CARGO_MANIFEST_DIR"));
-    let mut r = csv::Reader::from_path(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    let head: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
-    r.records().map(|rec| head.iter().cloned().zip(rec.unwrap().iter().map(String::from)).collect()).collect()
-}
+#[path = "common/contact_ref.rs"]
+mod contact_ref;
+use contact_ref::num;
 
-fn num(row: &HashMap<String, String>, key: &str) -> f64 {
-    row[key].trim().parse().unwrap_or_else(|_| panic!("{key} = {:?}", row[key]))
+/// One CSV of `reference/contact3d/fastsim/`.
+fn csv(name: &str) -> Vec<std::collections::HashMap<String, String>> {
+    contact_ref::csv(&format!("fastsim/{name}"))
 }
 
 /// Per (a, b, ν), per grid shape (MY per MX, as text) and per MX: [C11, C22, C23 from Fy(φ), C23 from Mz(η)]

@@ -17,19 +17,10 @@ use rollbem::halfspace::rolling::{self, RollingDirection, RollingDrive, RollingS
 use rollbem::halfspace::tangential::{self, ElementState, ShiftStep, TangentialDrive, TangentialSettings};
 use rollbem::halfspace::{ContactGrid, HalfSpace, Influence, Kernels};
 use rollbem::theory::kalker;
-use std::collections::HashMap;
 
-/// One CSV of `reference/contact3d/` as rows of column → text.
-fn csv(name: &str) -> Vec<HashMap<String, String>> {
-    let path = format!("{}/reference/contact3d/{name}", env!("CARGO_MANIFEST_DIR"));
-    let mut r = csv::Reader::from_path(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    let head: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
-    r.records().map(|rec| head.iter().cloned().zip(rec.unwrap().iter().map(String::from)).collect()).collect()
-}
-
-fn num(row: &HashMap<String, String>, key: &str) -> f64 {
-    row[key].trim().parse().unwrap_or_else(|_| panic!("{key} = {:?}", row[key]))
-}
+#[path = "common/contact_ref.rs"]
+mod contact_ref;
+use contact_ref::{csv, half_unit, num};
 
 /// A Hertzian ellipse (semi-axes 1 and 0.8, p0 = 0.01, G = 1, ν = 0.28) on a 26 × 22 grid of 0.09: the pressure
 /// sampled from Hertz's formula at the element centres (the tangential problem only needs some pressure).
@@ -223,9 +214,9 @@ fn force_and_creepage_drives_agree() {
     assert!(full.stick == 0 && (ratio - 1.0).abs() <= 1e-3 && full.force.1.abs() <= 1e-3 * 0.3 * fn_);
 }
 
-/// Kalker's creep coefficients from the exact theory in full adhesion: an ellipse of semi-axes a (rolling
-/// direction) and b with G = 1, ν = 0.25, a unit pressure with μ = 1e4 (nothing slips), the creepages one at a time
-/// (spin evaluated at the element centres); `Fx = −G c² C11 ξ`, `Fy = −G c² C22 η − G c³ C23 φ`,
+/// Kalker's creep coefficients from the exact theory in full adhesion (`rolling::linear_coefficients`: an ellipse
+/// of semi-axes a (rolling direction) and b with G = 1, ν = 0.25, a unit pressure with μ = 1e4 (nothing slips), the
+/// creepages one at a time, spin evaluated at the element centres); `Fx = −G c² C11 ξ`, `Fy = −G c² C22 η − G c³ C23 φ`,
 /// `Mz = −G c³ C32 η`. Against Table E.3 at a/b = 0.2, 1, 5 with 160 elements across the smaller diameter: all
 /// nine within 1 % (measured: largest 0.64 %, C23 at a/b = 1; `examples/kalker_coefficients.rs` prints the
 /// convergence table 20 → 160: e.g. C11 at a/b = 1 +1.9 %, +1.2 %, +0.11 %, +0.014 %). C32 = −C23 by Betti's
@@ -235,8 +226,9 @@ fn kalker_coefficients_from_full_adhesion() {
     for ratio in [0.2, 1.0, 5.0] {
         let (a, b) = if ratio <= 1.0 { (ratio, 1.0) } else { (1.0, 1.0 / ratio) };
         let table = kalker::creep_coefficients(a, b, 0.25).unwrap();
-        let coarse = coefficients(a, b, 20);
-        let fine = coefficients(a, b, 160);
+        let k = |n| rolling::linear_coefficients(a, b, 0.25, n, &Cancel::never()).unwrap();
+        let (k20, k160) = (k(20), k(160));
+        let (coarse, fine) = ([k20.c11, k20.c22, k20.c23, k20.c32], [k160.c11, k160.c22, k160.c23, k160.c32]);
         let err = |c: [f64; 4]| {
             [(c[0] - table.c11) / table.c11, (c[1] - table.c22) / table.c22, (c[2] - table.c23) / table.c23]
         };
@@ -250,40 +242,9 @@ fn kalker_coefficients_from_full_adhesion() {
     }
 }
 
-/// `[C11, C22, C23, C32]` with `n` elements across `2 min(a, b)` (G = 1, ν = 0.25).
-fn coefficients(a: f64, b: f64, n: usize) -> [f64; 4] {
-    let h = 2.0 * a.min(b) / n as f64;
-    let (mx, my) = ((2.0 * a / h).round() as usize + 2, (2.0 * b / h).round() as usize + 2);
-    let grid = ContactGrid::new(mx, my, h, h, -0.5 * (mx - 1) as f64 * h, -0.5 * (my - 1) as f64 * h).unwrap();
-    let body = HalfSpace::new(2.5, 0.25).unwrap();
-    let inf = Influence::new(grid, body.pair(&body), Kernels::Full).unwrap();
-    let p = grid.sample(|x, y| if (x / a).powi(2) + (y / b).powi(2) < 1.0 { 1.0 } else { 0.0 });
-    let c = (a * b).sqrt();
-    let s = RollingSettings::new(1e-12, 100_000);
-    let solve = |xi: f64, eta: f64, phi: f64| {
-        let problem = SteadyRolling::new(&p, 1e4, phi, RollingDrive::Creepage(xi, eta)).with_spin_lead(0.0);
-        let r = rolling::solve(&inf, &problem, &s, &Cancel::never()).unwrap();
-        assert!(r.slip == 0 && r.stop == RollingStop::Converged);
-        r
-    };
-    let (x, y, z) = (solve(1.0, 0.0, 0.0), solve(0.0, 1.0, 0.0), solve(0.0, 0.0, 1.0 / c));
-    [-x.force.0 / (c * c), -y.force.1 / (c * c), -z.force.1 / (c * c), -y.moment / (c * c * c)]
-}
-
-/// Half a unit of the last printed digit of a number as CONTACT prints it (`-9112.`, `-1.670E+04`, `0.2588`).
-fn half_unit(printed: &str) -> f64 {
-    let s = printed.trim();
-    let (mantissa, exp) = match s.find(['E', 'e']) {
-        Some(k) => (&s[..k], s[k + 1..].parse::<i32>().unwrap()),
-        None => (s, 0),
-    };
-    let decimals = mantissa.find('.').map_or(0, |k| mantissa.len() - k - 1) as i32;
-    0.5 * 10f64.powi(exp - decimals)
-}
-
 /// CONTACT's `tractcurv.inp`, first series (cases 1–30): the Eurosprinter creep curve of Polach (2005) by the exact
 /// theory. A Hertzian profile `A x² + B y²` with A = 0.0008/mm and B such that Hertz's ellipse has a/b = 0.5
-/// (CONTACT's IPOTCN = −2; B found here by bisection on `theory::hertz3d`, CONTACT prints 0.2814e-3), FN = 106.7 kN
+/// (CONTACT's IPOTCN = −2; B/A from `theory::hertz3d`'s `curvatures_for`, CONTACT prints B = 0.2814e-3), FN = 106.7 kN
 /// prescribed, G = 82 000, ν = 0.28 on both bodies, μ = 0.33, ξ from 1e-5 to 0.25, η = φ = 0, rolling along +x, on
 /// CONTACT's 48 × 44 grid over 1.1 times the ellipse (its six-digit grid from our build's .mat files). Expected:
 /// CONTACT's reference output `tractcurv.ref_out` as printed (`reference/contact3d/fastsim/tractcurv_exact_cases.csv`):
@@ -291,26 +252,13 @@ fn half_unit(printed: &str) -> f64 {
 /// NSLIP exactly.
 #[test]
 fn tractcurv_exact_series_agrees_with_contact() {
-    let path = format!("{}/reference/contact3d/fastsim/tractcurv_exact_cases.csv", env!("CARGO_MANIFEST_DIR"));
-    let mut reader = csv::Reader::from_path(&path).unwrap();
-    let head: Vec<String> = reader.headers().unwrap().iter().map(String::from).collect();
-    let rows: Vec<HashMap<String, String>> =
-        reader.records().map(|r| head.iter().cloned().zip(r.unwrap().iter().map(String::from)).collect()).collect();
+    let rows = csv("fastsim/tractcurv_exact_cases.csv");
     let r0 = &rows[0];
     let (g, nu, fn_) = (num(r0, "g"), num(r0, "nu"), num(r0, "fn_input"));
     let e_star = 2.0 * g * (1.0 + nu) / (2.0 * (1.0 - nu * nu));
-    let curv_a = 0.0008;
-    let (mut lo, mut hi) = (1e-6 * curv_a, curv_a);
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        let h = rollbem::theory::hertz3d::Hertz3D::from_load(curv_a, mid, e_star, fn_).unwrap();
-        if h.a_x / h.a_y > 0.5 {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-    }
-    let curv_b = 0.5 * (lo + hi);
+    // B/A of Hertz's ellipse with a/b = 0.5 (any size), then A = 0.0008.
+    let (ca, cb) = rollbem::theory::hertz3d::Hertz3D::curvatures_for(0.5, 1.0, e_star, fn_).unwrap();
+    let (curv_a, curv_b) = (0.0008, 0.0008 * cb / ca);
     assert!((curv_b - 0.2814e-3).abs() <= 0.5e-7, "B = {curv_b:e}, CONTACT prints 0.2814E-03");
     let (mx, my) = (num(r0, "mx") as usize, num(r0, "my") as usize);
     let (dx, dy) = (num(r0, "dx"), num(r0, "dy"));
@@ -344,38 +292,21 @@ fn tractcurv_exact_series_agrees_with_contact() {
 }
 
 /// CONTACT's `fastsim.inp`, case 1: the exact theory on Hertz's ellipse a = 8, b = 4 mm (IPOTCN = −3: the profile
-/// `A x² + B y²` whose Hertz ellipse at FN = 82 kN has these semi-axes, A and B found here from
-/// `theory::hertz3d`), G = 82 000, ν = 0.28, μ = 0.3, η = −0.000625, φ = 0.000625 rad/mm, ξ = 0, on 44 × 44
+/// `A x² + B y²` whose Hertz ellipse at FN = 82 kN has these semi-axes, A and B from
+/// `theory::hertz3d`'s `curvatures_for`), G = 82 000, ν = 0.28, μ = 0.3, η = −0.000625, φ = 0.000625 rad/mm, ξ = 0, on 44 × 44
 /// elements over [−1.1a, 1.1a] × [−1.1b, 1.1b]. Expected: the author's `fastsim.ref_out` as printed
 /// (`reference/contact3d/fastsim/fastsim_cases.csv`, case 1): FY, MZ, FY/(μFN) and PMAX within half a unit of their
 /// last digit plus CONTACT's EPS = 1e-6 of the value, NCON, NADH, NSLIP exactly. FASTSIM's cases 2–8 on the same
 /// contact are `tests/fastsim.rs`'s; their error against this answer is the report's.
 #[test]
 fn fastsim_inp_exact_case_agrees_with_contact() {
-    let path = format!("{}/reference/contact3d/fastsim/fastsim_cases.csv", env!("CARGO_MANIFEST_DIR"));
-    let mut reader = csv::Reader::from_path(&path).unwrap();
-    let head: Vec<String> = reader.headers().unwrap().iter().map(String::from).collect();
-    let row: HashMap<String, String> =
-        head.iter().cloned().zip(reader.records().next().unwrap().unwrap().iter().map(String::from)).collect();
+    let row = csv("fastsim/fastsim_cases.csv").swap_remove(0);
     assert_eq!(row["case"], "1");
     let (a, b, fn_, g, nu) = (num(&row, "a"), num(&row, "b"), num(&row, "fn"), num(&row, "g"), num(&row, "nu"));
     let e_star = 2.0 * g * (1.0 + nu) / (2.0 * (1.0 - nu * nu));
-    // The curvature ratio B/A that gives a/b (bisection), then the scale that gives a: a ∝ A^(−1/3) at fixed B/A.
-    let hz = |ca: f64, cb: f64| rollbem::theory::hertz3d::Hertz3D::from_load(ca, cb, e_star, fn_).unwrap();
-    let (mut lo, mut hi) = (1.0_f64, 1e3_f64);
-    for _ in 0..200 {
-        let mid = (lo * hi).sqrt();
-        let h = hz(1e-3, 1e-3 * mid);
-        if h.a_x / h.a_y < a / b {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    let k = (lo * hi).sqrt();
-    let ca = 1e-3 * (hz(1e-3, 1e-3 * k).a_x / a).powi(3);
-    let (cb, hertz) = (k * ca, hz(ca, k * ca));
-    assert!((hertz.a_x - a).abs() <= 1e-9 * a && (hertz.a_y - b).abs() <= 1e-9 * b);
+    let (ca, cb) = rollbem::theory::hertz3d::Hertz3D::curvatures_for(a, b, e_star, fn_).unwrap();
+    let hertz = rollbem::theory::hertz3d::Hertz3D::from_load(ca, cb, e_star, fn_).unwrap();
+    assert!((hertz.a_x - a).abs() <= 1e-8 * a && (hertz.a_y - b).abs() <= 1e-8 * b);
     let (mx, my) = (num(&row, "mx") as usize, num(&row, "my") as usize);
     let (dx, dy) = (2.2 * a / mx as f64, 2.2 * b / my as f64);
     let grid = ContactGrid::new(mx, my, dx, dy, -1.1 * a + 0.5 * dx, -1.1 * b + 0.5 * dy).unwrap();
