@@ -229,10 +229,7 @@ pub fn solve(
     let grid = influence.grid();
     let n = grid.len();
     let bound: Vec<f64> = problem.pressure.iter().map(|&p| problem.friction * p).collect();
-    let centres = grid.centres();
-    let phi = problem.spin;
-    let lead = problem.spin_lead * grid.dx() * if problem.direction == RollingDirection::PlusX { 1.0 } else { -1.0 };
-    let rigid = (centres.iter().map(|c| -phi * c.1).collect(), centres.iter().map(|c| phi * (c.0 + lead)).collect());
+    let rigid = spin_slip(grid, problem);
     let zeros = vec![0.0; n];
     let start = problem.start.unwrap_or((&zeros, &zeros));
     let drive = match problem.drive {
@@ -249,6 +246,16 @@ pub fn solve(
     let p = newton::Problem { op: influence, bound: &bound, rigid, drive, plus_x, start };
     let out = newton::run(&p, settings.tolerance, settings.max_products, settings.krylov, cancel)?;
     finish(&p, out.q, out.creepage, (out.products, out.steps), out.stop)
+}
+
+/// The spin's rigid slip per element, `(−φ y_i, φ (x_i + f Δx))` with the lead `f` along the rolling direction
+/// (module docs, "The spin"; dimensionless, per rolled distance).
+fn spin_slip(grid: &ContactGrid, problem: &SteadyRolling<'_>) -> (Vec<f64>, Vec<f64>) {
+    let phi = problem.spin;
+    let sign = if problem.direction == RollingDirection::PlusX { 1.0 } else { -1.0 };
+    let lead = problem.spin_lead * grid.dx() * sign;
+    let centres = grid.centres();
+    (centres.iter().map(|c| -phi * c.1).collect(), centres.iter().map(|c| phi * (c.0 + lead)).collect())
 }
 
 /// Every element at its bound along the force: the gross-sliding outcome.
@@ -402,11 +409,8 @@ pub fn transient_step(
     check(influence, problem, &RollingSettings::default())?;
     let grid = influence.grid();
     let h = grid.dx();
-    let sign = if problem.direction == RollingDirection::PlusX { 1.0 } else { -1.0 };
-    let lead = problem.spin_lead * h * sign;
-    let phi = problem.spin;
-    let ox: Vec<f64> = grid.centres().iter().map(|c| -phi * c.1 * h).collect();
-    let oy: Vec<f64> = grid.centres().iter().map(|c| phi * (c.0 + lead) * h).collect();
+    let (mut ox, mut oy) = spin_slip(grid, problem);
+    ox.iter_mut().chain(oy.iter_mut()).for_each(|v| *v *= h);
     let drive = match problem.drive {
         RollingDrive::Creepage(xi, eta) => TangentialDrive::Shift(h * xi, h * eta),
         RollingDrive::Force(fx, fy) => TangentialDrive::Force(fx, fy),

@@ -31,7 +31,7 @@
 //! met to the same tolerance. The caller certifies the answer from the final shears (the natural residual).
 
 use super::super::operator::Influence;
-use super::super::tangential::cg::{release_wrong_slips, Frame, Set};
+use super::super::tangential::cg::{release_wrong_slips, start_sets, Frame, Set};
 use crate::cancel::Cancel;
 use crate::error::ArgumentError;
 use crate::toeplitz2d::{BlockScratch, Scratch};
@@ -200,17 +200,7 @@ impl<'p, 'a> Newton<'p, 'a> {
         let m = p.op.tangential_preconditioner()?;
         let d = p.diagonals();
         let z = || vec![0.0; n];
-        let mut q = (z(), z());
-        let mut set = vec![Set::Exterior; n];
-        for i in (0..n).filter(|&i| g[i] > 0.0) {
-            let (x, y) = (p.start.0[i], p.start.1[i]);
-            let r = x.hypot(y);
-            if r >= g[i] && r > 0.0 {
-                (q.0[i], q.1[i], set[i]) = (x * g[i] / r, y * g[i] / r, Set::Slip);
-            } else {
-                (q.0[i], q.1[i], set[i]) = (x, y, Set::Stick);
-            }
-        }
+        let (q, set) = start_sets(p.start, g);
         let (creep, force) = match p.drive {
             Drive::Creepage(a, b) => ((a, b), None),
             Drive::Force(a, b) => {

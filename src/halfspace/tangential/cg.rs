@@ -213,17 +213,7 @@ impl<'p, 'a> Cg<'p, 'a> {
         let d = p.op.kernel_table().get(0, 0).map_or((1.0, 1.0), |c| (c.xx, c.yy));
         let z = || vec![0.0; n];
         let w = Work { sx: z(), sy: z(), dx: z(), dy: z(), block: BlockScratch::default(), one: Scratch::default() };
-        let mut q = (z(), z());
-        let mut set = vec![Set::Exterior; n];
-        for i in (0..n).filter(|&i| g[i] > 0.0) {
-            let (x, y) = (p.prev.0[i], p.prev.1[i]);
-            let r = x.hypot(y);
-            if r >= g[i] && r > 0.0 {
-                (q.0[i], q.1[i], set[i]) = (x * g[i] / r, y * g[i] / r, Set::Slip);
-            } else {
-                (q.0[i], q.1[i], set[i]) = (x, y, Set::Stick);
-            }
-        }
+        let (q, mut set) = start_sets(p.prev, g);
         // A prescribed force needs stick elements to carry it: when every previous shear is at its bound, all start
         // in stick (the first check moves those beyond their bound back to slip).
         if matches!(p.drive, Drive::Force(..)) && !set.contains(&Set::Stick) {
@@ -480,6 +470,23 @@ fn apply_b(m: &[Toeplitz2d; 2], f: &Frame, w: &mut Work, u: &Pair, out: &mut Pai
     }
     f.project(&mut out.0, &mut out.1);
     Ok(())
+}
+
+/// The start of the stick and slip iterations from the shears `prev`: each projected onto its disc `|q| ≤ g`, those
+/// on or beyond their bound in slip, the others in stick, elements without a bound exterior (and zero).
+pub(crate) fn start_sets(prev: (&[f64], &[f64]), g: &[f64]) -> (Pair, Vec<Set>) {
+    let n = g.len();
+    let (mut q, mut set) = ((vec![0.0; n], vec![0.0; n]), vec![Set::Exterior; n]);
+    for i in (0..n).filter(|&i| g[i] > 0.0) {
+        let (x, y) = (prev.0[i], prev.1[i]);
+        let r = x.hypot(y);
+        if r >= g[i] && r > 0.0 {
+            (q.0[i], q.1[i], set[i]) = (x * g[i] / r, y * g[i] / r, Set::Slip);
+        } else {
+            (q.0[i], q.1[i], set[i]) = (x, y, Set::Stick);
+        }
+    }
+    (q, set)
 }
 
 /// Slipping elements whose slip runs along their shear (`s_iᵀ q_i > 0`) return to stick; whether any did.
