@@ -83,6 +83,9 @@
 
 use crate::error::ArgumentError;
 use crate::theory::kalker::{self, CreepCoefficients};
+
+mod fastrip;
+pub use fastrip::fastrip;
 use std::f64::consts::PI;
 
 /// The elliptic contact and its material: semi-axes, combined shear modulus and Poisson ratio, friction, load.
@@ -277,6 +280,9 @@ pub struct Solution {
     pub n_adhesion: usize,
     /// Elements in slip.
     pub n_slip: usize,
+    /// The largest |p|/(μ pn) over the elements in contact (0 where μ pn = 0): at most 1 when the traction bound
+    /// holds everywhere, as FASTSIM ensures by construction; [`fastrip`]'s strip tractions can exceed it (its docs).
+    pub bound_ratio: f64,
 }
 
 /// The largest grid [`solve`] accepts (elements; about 60 bytes each).
@@ -410,14 +416,17 @@ pub fn solve(contact: &Contact, creepages: &Creepages, options: &Options) -> Res
             }
         }
     }
-    Ok(totals(elements, coefficients, l))
+    Ok(totals(elements, coefficients, l, contact.mu))
 }
 
 /// The forces and counts of the solved elements.
-fn totals(elements: Vec<Element>, coefficients: CreepCoefficients, flexibilities: [f64; 3]) -> Solution {
+fn totals(elements: Vec<Element>, coefficients: CreepCoefficients, flexibilities: [f64; 3], mu: f64) -> Solution {
     let (mut fx, mut fy, mut mz, mut fn_discrete) = (0.0, 0.0, 0.0, 0.0);
-    let (mut n_adhesion, mut n_slip) = (0, 0);
+    let (mut n_adhesion, mut n_slip, mut bound_ratio) = (0, 0, 0.0f64);
     for e in &elements {
+        if e.state != State::Exterior && mu * e.pn > 0.0 {
+            bound_ratio = bound_ratio.max(e.px.hypot(e.py) / (mu * e.pn));
+        }
         fx += e.px * e.area;
         fy += e.py * e.area;
         mz += (e.x * e.py - e.y * e.px) * e.area;
@@ -439,6 +448,7 @@ fn totals(elements: Vec<Element>, coefficients: CreepCoefficients, flexibilities
         n_contact: n_adhesion + n_slip,
         n_adhesion,
         n_slip,
+        bound_ratio,
     }
 }
 

@@ -79,7 +79,9 @@ pub use command::{fastsim_command, FastsimArgs};
 pub use engines::{Fastsim, KalkerLinear};
 pub use exact::Exact;
 pub use figure::{creep_surface_svg, plot_table, write_figure};
-pub use run::{is_table_csv, is_table_spec, merge_tables, run_table, run_table_with, TableOptions, TableOutcome};
+pub use run::{
+    compute_table, is_table_csv, is_table_spec, merge_tables, run_table, run_table_with, TableOptions, TableOutcome,
+};
 pub use section::markdown_section;
 pub use spec::{Axes, Normalisation, TableSpec, MAX_CASES};
 pub use table::{CreepTable, TableRow, TABLE_COLUMNS};

@@ -102,6 +102,21 @@ fn compute_all(spec: &TableSpec, engine: &dyn CreepEngine, settings: &str, cases
     cases.par_iter().map(|&i| compute(spec, engine, settings, i)).collect()
 }
 
+/// Computes the whole table of the spec at `spec_path` in memory (no file written; for the report): the table and its
+/// engine's name. Errors: a bad spec (exit 2, naming the key), more than [`super::MAX_CASES`] cases.
+pub fn compute_table(spec_path: &Path) -> Result<(CreepTable, String)> {
+    let spec = TableSpec::from_file(spec_path)?;
+    let engine = spec.engine(spec_path)?;
+    if spec.len() > super::MAX_CASES {
+        let msg = format!("{} cases, more than {}", spec.len(), super::MAX_CASES);
+        return Err(invalid(spec_path, "axes", msg));
+    }
+    let cases: Vec<usize> = (0..spec.len()).collect();
+    let rows = compute_all(&spec, engine.as_ref(), &engine.settings(), &cases)?;
+    let table = CreepTable::from_rows(&rows).map_err(|m| invalid(spec_path, "axes", m))?;
+    Ok((table, engine.name().to_string()))
+}
+
 /// Checks that a kept row is case `row.case` of this table (its coordinates and digest) and in the shard.
 fn check_row(
     spec: &TableSpec,

@@ -270,7 +270,7 @@ fn compute(
     let mut f3 = String::new();
     let found = friction3d::section(&mut f3)?;
     let mut sink3 = Figs::new(out, "figures/");
-    rolling3d::section(&mut f3, &mut sink3)?;
+    rolling3d::section(&mut f3, &mut sink3, &opts.reference)?;
     path_figs.extend(sink3.list);
     family.entry(Family::Space3d).or_default().push_str(&f3);
     let mut visco_md = String::new();

@@ -6,7 +6,7 @@ Usage: python3 extract.py fastsim|tractcurv CONTACT_SRC RUN_DIR OUT_DIR
 CONTACT_SRC: CONTACT's source tree (examples/NAME.inp, examples/NAME.ref_out).
 RUN_DIR:     a folder where CONTACT was run on a copy of examples/NAME.inp with the Matlab-file digit A raised to 1
              in every case (benches/peer/contact_ref3d.py's raise_matfile_digit), so that it wrote NAME.CASE.mat.
-OUT_DIR:     where the CSVs are written: fastsim_cases.csv and fastsim_caseK_elements.csv (K = 2, 3), or
+OUT_DIR:     where the CSVs are written: fastsim_cases.csv and fastsim_caseK_elements.csv (K = 2, 3, 4), or
              tractcurv_fastsim_cases.csv (tractcurv's cases 61-90, original FASTSIM) and tractcurv_exact_cases.csv
              (its cases 1-30, the exact half-space).
 
@@ -144,7 +144,7 @@ def main():
         w = csv.writer(fh, lineterminator="\n")
         w.writerow(header)
         w.writerows(rows)
-    for k in (2, 3):
+    for k in (2, 3, 4):
         grid, elems = c.parse_mat(os.path.join(run, f"fastsim.{k:04d}.mat"))
         with open(os.path.join(out, f"fastsim_case{k}_elements.csv"), "w", newline="") as fh:
             w = csv.writer(fh, lineterminator="\n")
