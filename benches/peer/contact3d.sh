@@ -32,6 +32,13 @@
 #   - each perfc_test input's first timed run against the author's perfc_test/get_times.ref_out: the number of
 #     elements in contact (norm_problm_*, NCON) or in slip (tang_problm_*, NSLIP) must be equal.
 #
+# Examples with rollbem beside (EXAMPLES3D, e.g. "fastsim tractcurv:30 catt_to_cart:57"; none by default): CONTACT's
+# example NAME, cut after its case K when given as NAME:K (its first K cases and the closing "0 MODULE": the cases
+# rollbem reproduces), timed as above and checked against the reference output's cases 1..K; rollbem's time is that
+# of the tests which compute the same cases and check them against the author's printed results
+# (tests/rolling3d.rs, tests/fastsim.rs; their test binaries run one test each, pinned, median of REPEATS). A second
+# table. CASES3D="" with EXAMPLES3D runs only the examples.
+#
 # rollbem beside it: each perfc_test input (norm_problm_kp, tang_problm_ks, kc, kf) is also timed as rollbem's
 # `examples/halfspace_perfc_series` (built here with cargo; the same discrete problem: grid, profile, materials,
 # approach, shift, EPS) under the same conditions (pinned, GNU time, median of REPEATS); its elements in contact and
@@ -46,7 +53,7 @@ fi
 table_out=$1
 contact_src=${2:-${CONTACT_SRC:-}}
 here=$(cd "$(dirname "$0")" && pwd)
-cases=${CASES3D:-"cattaneo spence35 subsurf norm_problm_1p norm_problm_2p norm_problm_4p norm_problm_8p tang_problm_1s tang_problm_2s tang_problm_4s tang_problm_8s"}
+cases=${CASES3D-"cattaneo spence35 subsurf norm_problm_1p norm_problm_2p norm_problm_4p norm_problm_8p tang_problm_1s tang_problm_2s tang_problm_4s tang_problm_8s"}
 repeats=${REPEATS:-3}
 once_over=${ONCE_OVER:-180}
 cpu=${CPU:-0}
@@ -250,20 +257,104 @@ for name in $cases; do
   say "$name: $tcells"
 done
 
+# Examples with rollbem beside (EXAMPLES3D): the tests of rollbem that compute and check each example's cases.
+examples=${EXAMPLES3D-}
+ex_rows=()
+ex_notes=()
+# "NAME:K": the rollbem tests (binary test-name) that compute and check these cases; empty: none.
+example_tests() {
+  case $1 in
+    fastsim) echo "fastsim:contact_fastsim_cases_reproduced_to_the_printed_digits fastsim:contact_fastrip_cases_reproduced_to_the_printed_digits rolling3d:fastsim_inp_exact_case_agrees_with_contact" ;;
+    tractcurv:30) echo "rolling3d:tractcurv_exact_series_agrees_with_contact" ;;
+    catt_to_cart:57) echo "rolling3d:catt_to_cart_agrees_with_contact" ;;
+    *) echo "" ;;
+  esac
+}
+if [[ -n $examples ]]; then
+  ((with_rollbem)) || die "EXAMPLES3D needs rollbem (ROLLBEM=1)"
+  say "building rollbem's tests rolling3d and fastsim"
+  json=$(cd "$here/../.." && cargo test --release --no-run --test rolling3d --test fastsim --message-format=json 2>/dev/null) ||
+    die "cargo test --no-run failed"
+  test_bin() {
+    python3 -c 'import json, sys
+for line in sys.stdin:
+    m = json.loads(line)
+    if m.get("reason") == "compiler-artifact" and m.get("executable") and m["target"]["name"] == sys.argv[1]:
+        print(m["executable"])' "$1" <<<"$json" | head -n 1
+  }
+  declare -A bins=([rolling3d]=$(test_bin rolling3d) [fastsim]=$(test_bin fastsim))
+  for spec in $examples; do
+    name=${spec%%:*} upto=""
+    [[ $spec == *:* ]] && upto=${spec#*:}
+    tests=$(example_tests "$spec")
+    [[ -n $tests ]] || die "EXAMPLES3D: no rollbem tests for $spec (known: fastsim, tractcurv:30, catt_to_cart:57)"
+    inp=$contact_src/examples/$name.inp
+    [[ -f $inp ]] || die "no input $inp"
+    d="$work/examples/$name${upto:+_1-$upto}"
+    rm -rf "$d"
+    mkdir -p "$d"
+    if [[ -n $upto ]]; then
+      awk -v k="$upto" '$0 !~ /^[ \t]*%/ && $1 == 3 && tolower($2) == "module" { n++ } n > k { exit } { print }' \
+        "$inp" >"$d/$name.inp"
+      echo " 0  MODULE" >>"$d/$name.inp"
+    else
+      cp "$inp" "$d/"
+    fi
+    say "$spec: CONTACT"
+    runs=$(time_input "$d" "$name") || exit 1
+    check=$(python3 "$here/contact_refcmp.py" "$d/$name.out" "$contact_src/examples/$name.ref_out" ${upto:+--cases "$upto"}) || {
+      echo "$check" >&2
+      die "$spec: CONTACT's answers differ from $name.ref_out beyond the printed digits"
+    }
+    read -r tcpu _ _ trss <<<"$(median_run "$d")"
+    rcpu=0 rrss=0
+    for t in $tests; do
+      bin=${bins[${t%%:*}]} test=${t#*:}
+      mkdir -p "$d/rollbem-$test"
+      : >"$d/rollbem-$test/times"
+      say "$spec: rollbem's $test"
+      for ((r = 0; r < repeats; r++)); do
+        taskset -c "$cpu" /usr/bin/time -o "$d/rollbem-$test/time.tmp" -f '%U %S %M' "$bin" --exact "$test" \
+          --test-threads=1 >"$d/rollbem-$test/out.txt" 2>&1 || die "$spec: rollbem's $test failed (see $d/rollbem-$test/out.txt)"
+        grep -q "test result: ok. 1 passed" "$d/rollbem-$test/out.txt" || die "$spec: $test did not run"
+        tail -n 1 "$d/rollbem-$test/time.tmp" >>"$d/rollbem-$test/times"
+      done
+      read -r c _ _ m <<<"$(median_run "$d/rollbem-$test")"
+      rcpu=$(awk -v a="$rcpu" -v b="$c" 'BEGIN { printf "%.2f", a + b }')
+      rrss=$(awk -v a="$rrss" -v b="$m" 'BEGIN { print (b > a) ? b : a }')
+    done
+    ratio=$(awk -v a="$tcpu" -v b="$rcpu" 'BEGIN { if (b > 0) printf "%.1f", a / b; else print "n/a (rollbem under 0.01 s)" }')
+    ex_rows+=("| $name${upto:+ (cases 1–$upto)} | $(inp_cases "$d/$name.inp") | = $name.ref_out ($(echo "$check" | awk '{ print $1 }') numbers) | $tcpu | $trss | $runs | $(echo "$tests" | sed -E 's/([a-z0-9]+):([a-z0-9_]+)/`\1::\2`/g; s/ /, /g') | $rcpu | $rrss | $ratio |")
+    ex_notes+=("$spec: $check.")
+  done
+fi
+
 {
-  if ((malloc_tuned)); then
+  if ((${#rows[@]} == 0)); then
+    :
+  elif ((malloc_tuned)); then
     echo "| input | grid MX × MY (first case) | NPOT | cases | NCON | NADH | NSLIP | check of this run | CPU user+sys [s] | user [s] | sys [s] | peak RSS [MiB] | runs | with malloc tunables: CPU user+sys [s] | user [s] | sys [s] | peak RSS [MiB] | runs | CONTACT's own timers, CPU total / NORM / TANG [s] | rollbem: contact / slip | rollbem CPU [s] | rollbem peak RSS [MiB] | CONTACT best ÷ rollbem |"
     echo "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|"
   else
     echo "| input | grid MX × MY (first case) | NPOT | cases | NCON | NADH | NSLIP | check of this run | CPU user+sys [s] | user [s] | sys [s] | peak RSS [MiB] | runs | CONTACT's own timers, CPU total / NORM / TANG [s] | rollbem: contact / slip | rollbem CPU [s] | rollbem peak RSS [MiB] | CONTACT best ÷ rollbem |"
     echo "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|"
   fi
-  printf '%s\n' "${rows[@]}"
-  echo
+  if ((${#rows[@]})); then
+    printf '%s\n' "${rows[@]}"
+    echo
+  fi
+  if ((${#ex_rows[@]})); then
+    echo "| example | cases | check of this run | CONTACT CPU [s] | CONTACT peak RSS [MiB] | runs | rollbem: the tests computing and checking the same cases | rollbem CPU [s] | rollbem peak RSS [MiB] | CONTACT ÷ rollbem |"
+    echo "|---|---:|---|---:|---:|---:|---|---:|---:|---:|"
+    printf '%s\n' "${ex_rows[@]}"
+    echo
+    echo "Examples: CONTACT's input as shipped, or cut after case K (NAME:K, its first K cases, the cases rollbem reproduces); CONTACT's time as above (pinned, GNU time, median, glibc's defaults). rollbem's: the test binaries (\`cargo test --release\`) running each named test alone (\`--exact NAME --test-threads=1\`), pinned, median of $repeats, summed over the tests; each test computes the example's cases and asserts the author's printed results (so the time includes reading the reference CSVs and the checks, and catt_to_cart's also a steady-rolling solve for its final comparison)."
+    for note in "${ex_notes[@]}"; do echo "Note: $note"; done
+  fi
   echo "**CONTACT build measured: $contact_build.** CONTACT $contact_rev, commit $contact_commit, $gfortran_version."
-  echo "Element counts (NPOT potential contact, NCON contact, NADH adhesion, NSLIP slip) are those CONTACT prints for the last case of each input."
+  ((${#rows[@]})) && echo "Element counts (NPOT potential contact, NCON contact, NADH adhesion, NSLIP slip) are those CONTACT prints for the last case of each input."
   echo "Times: CPU (user + sys) and peak RSS of the whole process (GNU time), pinned to core $cpu (taskset), one thread (OPENMP= build, MKL sequential), median of $repeats runs (one run when the first took over $once_over s); the input as shipped: \`contact_linux64 2 NAME\` in a folder holding NAME.inp. CONTACT's own timers are from the last run with glibc's defaults (its .out, rounded to 0.1 s)."
-  ((malloc_tuned)) && echo "With malloc tunables: the same runs with \`GLIBC_TUNABLES=$tunables\` (glibc's malloc serves every block from its heap and keeps freed memory instead of returning it to the kernel, so CONTACT's repeated allocations of large work arrays are not zero-filled by the kernel again each time); each such run's printed results equal the default run's to every digit (contact_refcmp.py). CONTACT's best time is the smaller of the two."
+  ((malloc_tuned && ${#rows[@]})) && echo "With malloc tunables: the same runs with \`GLIBC_TUNABLES=$tunables\` (glibc's malloc serves every block from its heap and keeps freed memory instead of returning it to the kernel, so CONTACT's repeated allocations of large work arrays are not zero-filled by the kernel again each time); each such run's printed results equal the default run's to every digit (contact_refcmp.py). CONTACT's best time is the smaller of the two."
   [[ -n $rollbem_ex ]] && echo "rollbem: \`target/release/examples/halfspace_perfc_series kp|ks|kc|kf\` (rollbem $(awk -F'"' '/^version/ { print $2; exit }' "$here/../../Cargo.toml"), commit $(git -C "$here/../.." rev-parse --short HEAD 2>/dev/null || echo unknown)), the same discrete problem; normal problem by the FFT-preconditioned CG, the shift by the preconditioned nonlinear CG on the stick and slip sets (TangCG-type, halfspace::tangential), steady rolling (kc: creepages, kf: forces prescribed) by the semismooth Newton method with preconditioned GMRES (halfspace::rolling), tolerance 1e-7; the same pinning, GNU time and median; the whole process (reading the profile, building the influence operators, solving)."
   echo "Build check before timing (contact_refcmp.py, every printed result to one unit of its last digit): $(printf '%s. ' "${contact_ref_summary[@]}")"
   echo "Machine: $(nproc) cores, shared; load average $load_start at the start, $(loadavg) at the end."
@@ -278,4 +369,5 @@ done
       printf "Growth (%s, NPOT %d → %d, %.0f×): rollbem CPU ∝ N^%.2f (%s → %s s), CONTACT best ∝ N^%.2f (%s → %s s); N log N would be N^%.2f.\n",
         s, n0[s], n1[s], n1[s] / n0[s], log(r1[s] / r0[s]) / log(n1[s] / n0[s]), r0[s], r1[s],
         log(c1[s] / c0[s]) / log(n1[s] / n0[s]), c0[s], c1[s], 1 + log(log(n1[s]) / log(n0[s])) / log(n1[s] / n0[s]) }'
+  : # (the block's status is not that of an empty list's test above: pipefail)
 } | tee "$table_out"

@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """Compare a CONTACT output file (.out) with CONTACT's shipped reference output (.ref_out), number by number.
 
-Usage: python3 contact_refcmp.py OUT REF_OUT [--units N]
+Usage: python3 contact_refcmp.py OUT REF_OUT [--units N] [--cases K]
+
+--cases K compares the reference's cases 1..K only (OUT from an input cut after its case K: contact3d.sh's
+examples mode).
 
 Used by benches/peer/contact_build.sh (contact_ref_check) to refuse a CONTACT build that does not reproduce the
 author's answers. Standard library only.
@@ -82,10 +85,17 @@ def main():
         i = args.index("--units")
         units = float(args[i + 1])
         del args[i : i + 2]
+    first_cases = None
+    if "--cases" in args:
+        i = args.index("--cases")
+        first_cases = int(args[i + 1])
+        del args[i : i + 2]
     if len(args) != 2:
         print(__doc__.split("\n\n")[1], file=sys.stderr)
         return 2
     out, ref = result_parts(args[0]), result_parts(args[1])
+    if first_cases is not None:
+        ref = {k: v for k, v in ref.items() if k <= first_cases}
     errors = []
     if sorted(out) != sorted(ref):
         errors.append(f"cases with printed results differ: {sorted(out)} against the reference's {sorted(ref)}")
