@@ -345,3 +345,49 @@ fn plot_of_a_path_csv_draws_the_loop_less_its_chord_and_readable_ticks() {
         assert!(approach.iter().any(|(_, t)| t.contains("constant to round-off")), "{approach:?}");
     }
 }
+
+/// `rollbem plot` on a 3D half-space sweep's CSV (the report's `reports/sweeps/hertz3d-convergence.csv`, whose spec
+/// says `analysis = "table"`): `--analysis table` draws its fronts against time, one figure per error measure the
+/// CSV carries (it drew nothing before); a 2D analysis on its 3D rows, or `table` on a 2D sweep's CSV, is bad input
+/// naming `--analysis` (exit 2) with nothing written (the accuracy analysis used to fail with exit 3 after writing a
+/// figure).
+#[test]
+fn plot_draws_a_3d_sweep_csv_and_refuses_an_analysis_that_does_not_fit_its_rows() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let csv3d = root.join("reports/sweeps/hertz3d-convergence.csv");
+    let csv2d = root.join("reports/sweeps/hertz-accuracy.csv");
+    let bin = env!("CARGO_BIN_EXE_rollbem");
+    let dir = tempfile::tempdir().unwrap();
+    let plot = |csv: &Path, analysis: &str, out: &Path| {
+        Command::new(bin).arg("plot").arg(csv).args(["--analysis", analysis, "--out"]).arg(out).output().unwrap()
+    };
+    // The measures the CSV carries, from its header and rows.
+    let text = std::fs::read_to_string(&csv3d).unwrap();
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    let carried: Vec<&str> = ["hertz_p0_err", "hertz_approach_err", "cm_transfer_err"]
+        .into_iter()
+        .filter(|m| {
+            let i = header.iter().position(|h| h == m).unwrap();
+            text.lines().skip(1).any(|l| l.split(',').nth(i).is_some_and(|c| !c.is_empty()))
+        })
+        .collect();
+    assert!(!carried.is_empty());
+    let out = dir.path().join("table");
+    let o = plot(&csv3d, "table", &out);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    for m in &carried {
+        let svg = std::fs::read_to_string(out.join(format!("hertz3d-convergence-{m}-vs-time.svg"))).unwrap();
+        assert!(svg.contains("mx"), "{m}: series labelled by their grids");
+    }
+    for (csv, analysis, says) in
+        [(&csv3d, "accuracy", "`table`"), (&csv3d, "creep_curve", "`table`"), (&csv2d, "table", "no half_space rows")]
+    {
+        let out = dir.path().join(format!("refused-{analysis}"));
+        let o = plot(csv, analysis, &out);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{analysis}: {err}");
+        assert!(err.contains("--analysis") && err.contains(says), "{analysis}: {err}");
+        let written = std::fs::read_dir(&out).map(|d| d.count()).unwrap_or(0);
+        assert_eq!(written, 0, "{analysis}: nothing written");
+    }
+}

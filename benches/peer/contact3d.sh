@@ -326,6 +326,8 @@ for line in sys.stdin:
     ratio=$(awk -v a="$tcpu" -v b="$rcpu" 'BEGIN { if (b > 0) printf "%.1f", a / b; else print "n/a (rollbem under 0.01 s)" }')
     ex_rows+=("| $name${upto:+ (cases 1–$upto)} | $(inp_cases "$d/$name.inp") | = $name.ref_out ($(echo "$check" | awk '{ print $1 }') numbers) | $tcpu | $trss | $runs | $(echo "$tests" | sed -E 's/([a-z0-9]+):([a-z0-9_]+)/`\1::\2`/g; s/ /, /g') | $rcpu | $rrss | $ratio |")
     ex_notes+=("$spec: $check.")
+    awk -v r="$rcpu" 'BEGIN { exit !(r < 0.1) }' &&
+      ex_notes+=("$spec: rollbem's $rcpu s is the sum of $(echo "$tests" | wc -w) processes each timed to GNU time's 0.01 s: the ratio is rough (±0.01 s per process).")
   done
 fi
 
@@ -353,9 +355,9 @@ fi
   fi
   echo "**CONTACT build measured: $contact_build.** CONTACT $contact_rev, commit $contact_commit, $gfortran_version."
   ((${#rows[@]})) && echo "Element counts (NPOT potential contact, NCON contact, NADH adhesion, NSLIP slip) are those CONTACT prints for the last case of each input."
-  echo "Times: CPU (user + sys) and peak RSS of the whole process (GNU time), pinned to core $cpu (taskset), one thread (OPENMP= build, MKL sequential), median of $repeats runs (one run when the first took over $once_over s); the input as shipped: \`contact_linux64 2 NAME\` in a folder holding NAME.inp. CONTACT's own timers are from the last run with glibc's defaults (its .out, rounded to 0.1 s)."
+  echo "Times: CPU (user + sys) and peak RSS of the whole process (GNU time, resolution 0.01 s), pinned to core $cpu (taskset), one thread (OPENMP= build, MKL sequential), median of $repeats runs (one run when the first took over $once_over s); \`contact_linux64 2 NAME\` in a folder holding NAME.inp.$( ((${#rows[@]})) && echo " CONTACT's own timers are from the last run with glibc's defaults (its .out, rounded to 0.1 s).")"
   ((malloc_tuned && ${#rows[@]})) && echo "With malloc tunables: the same runs with \`GLIBC_TUNABLES=$tunables\` (glibc's malloc serves every block from its heap and keeps freed memory instead of returning it to the kernel, so CONTACT's repeated allocations of large work arrays are not zero-filled by the kernel again each time); each such run's printed results equal the default run's to every digit (contact_refcmp.py). CONTACT's best time is the smaller of the two."
-  [[ -n $rollbem_ex ]] && echo "rollbem: \`target/release/examples/halfspace_perfc_series kp|ks|kc|kf\` (rollbem $(awk -F'"' '/^version/ { print $2; exit }' "$here/../../Cargo.toml"), commit $(git -C "$here/../.." rev-parse --short HEAD 2>/dev/null || echo unknown)), the same discrete problem; normal problem by the FFT-preconditioned CG, the shift by the preconditioned nonlinear CG on the stick and slip sets (TangCG-type, halfspace::tangential), steady rolling (kc: creepages, kf: forces prescribed) by the semismooth Newton method with preconditioned GMRES (halfspace::rolling), tolerance 1e-7; the same pinning, GNU time and median; the whole process (reading the profile, building the influence operators, solving)."
+  [[ -n $rollbem_ex && ${#rows[@]} -gt 0 ]] && echo "rollbem: \`target/release/examples/halfspace_perfc_series kp|ks|kc|kf\` (rollbem $(awk -F'"' '/^version/ { print $2; exit }' "$here/../../Cargo.toml"), commit $(git -C "$here/../.." rev-parse --short HEAD 2>/dev/null || echo unknown)), the same discrete problem; normal problem by the FFT-preconditioned CG, the shift by the preconditioned nonlinear CG on the stick and slip sets (TangCG-type, halfspace::tangential), steady rolling (kc: creepages, kf: forces prescribed) by the semismooth Newton method with preconditioned GMRES (halfspace::rolling), tolerance 1e-7; the same pinning, GNU time and median; the whole process (reading the profile, building the influence operators, solving)."
   echo "Build check before timing (contact_refcmp.py, every printed result to one unit of its last digit): $(printf '%s. ' "${contact_ref_summary[@]}")"
   echo "Machine: $(nproc) cores, shared; load average $load_start at the start, $(loadavg) at the end."
   for note in "${notes[@]}"; do echo "Note: $note"; done

@@ -269,7 +269,8 @@ pub fn figure(all: &Families, found: &Found) -> Chart {
         .size(1100, 700);
     for (_, s) in all.iter().filter(|(_, s)| !s.front.is_empty()) {
         let p = if s.problem.is_empty() { String::new() } else { format!(" ({})", s.problem) };
-        chart = chart.add(Series::new(format!("{}: {}{p}", s.sweep, s.measure), s.front.clone(), Style::LineMarkers));
+        // The measure's words (the recommendation table's), not its CSV column name.
+        chart = chart.add(Series::new(format!("{}: {}{p}", s.sweep, s.label), s.front.clone(), Style::LineMarkers));
     }
     let pts: Vec<(f64, f64)> = found.lines.iter().filter(|l| l.1 > 0.0).map(|l| (l.2, l.1)).collect();
     if !pts.is_empty() {

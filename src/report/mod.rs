@@ -54,6 +54,8 @@ pub use table::Units;
 /// A sweep's rows read from its CSV, drawn as its analysis draws them (what `rollbem plot SWEEP.csv` does).
 pub struct SweepFigures {
     sweep: table::Sweep,
+    /// The CSV read (named by errors).
+    source: PathBuf,
 }
 
 impl SweepFigures {
@@ -68,17 +70,31 @@ impl SweepFigures {
                 keys: header.keys,
                 rows,
             },
+            source: path.to_path_buf(),
         })
     }
 
     /// Draw the figures of an analysis into `figs` (the Markdown the report would write beside them is dropped).
+    /// Errors, before anything is drawn: a 3D half-space sweep's rows (`half_space` runs) with an analysis of the 2D
+    /// wheel, or `table` (the 3D sweeps' analysis: their Pareto fronts against time) without 3D rows
+    /// ([`Error::Invalid`] naming `--analysis`, exit 2).
     pub fn draw(mut self, analysis: Analysis, figs: &mut Figs) -> Result<()> {
         let mut md = String::new();
+        let space = self.sweep.rows.iter().filter(|r| r.kind == crate::sweep::Kind::Space).count();
+        let wrong = |message: String| Error::Invalid { path: self.source.clone(), field: "--analysis".into(), message };
         match analysis {
+            Analysis::Table if space == 0 => {
+                Err(wrong("`table` draws a 3D half-space sweep's fronts; this CSV has no half_space rows".into()))
+            }
+            Analysis::Table => accuracy::fronts_3d(&self.sweep, &mut md, figs).map(|_| ()),
+            _ if space > 0 && space == self.sweep.rows.len() => Err(wrong(format!(
+                "this CSV's rows are 3D half-space runs: their analysis is `table` (the fronts against time), not \
+                 `{}`",
+                analysis.name()
+            ))),
             Analysis::CreepCurve => physics::creep_curves(&self.sweep, &mut md, figs),
             Analysis::FiniteVsHalfPlane => physics::finite_vs_half_plane(&self.sweep, &mut md, figs),
             Analysis::Accuracy => accuracy::sections(&mut self.sweep, &mut md, figs).map(|_| ()),
-            Analysis::Table => Ok(()),
         }
     }
 }
@@ -340,10 +356,16 @@ fn peer_pages(out: &Path, peer3d_rows: &[peer3d::Row]) -> Vec<(String, String, S
             "Side by side with CONTACT (Vollebregt), 3D steady rolling",
             "contact3d.sh",
         ),
+        (
+            "peer-contact3d-examples.md",
+            "contact-3d-examples",
+            "Side by side with CONTACT (Vollebregt), its 3D rolling examples (fastsim, tractcurv, catt_to_cart)",
+            "contact3d.sh",
+        ),
     ] {
         let peer = out.join(file);
         if let Ok(table) = std::fs::read_to_string(&peer) {
-            let figure = if page.starts_with("contact-3d") && !peer3d_rows.is_empty() {
+            let figure = if matches!(page, "contact-3d" | "contact-3d-rolling") && !peer3d_rows.is_empty() {
                 peer3d::caption(peer3d_rows)
             } else {
                 String::new()

@@ -95,8 +95,8 @@ pub fn relink(md: &str, depth: usize) -> String {
 
 /// Files the report reads from its output folder and never removes: the peer tables the scripts of
 /// `benches/peer/` write there (`run.sh`, `contact.sh`, `contact3d.sh`), run separately from `report`.
-pub const DECLARED_INPUTS: [&str; 4] =
-    ["peer-lcp.md", "peer-contact.md", "peer-contact3d.md", "peer-contact3d-rolling.md"];
+pub const DECLARED_INPUTS: [&str; 5] =
+    ["peer-lcp.md", "peer-contact.md", "peer-contact3d.md", "peer-contact3d-rolling.md", "peer-contact3d-examples.md"];
 
 /// The sub-folders the report owns: every file in them that a run did not write is removed by [`clean`].
 pub const OWNED_FOLDERS: [&str; 6] = ["runs", "sweeps", "figures", "families", "peers", "html"];
