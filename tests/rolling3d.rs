@@ -394,6 +394,69 @@ fn catt_to_cart_agrees_with_contact() {
     assert!((xi - s.creepage.0).abs() <= 2e-5 * xi.abs(), "transient {xi:e} against steady {:e}", s.creepage.0);
 }
 
+/// CONTACT's `catt_to_cart.inp`, cases 58–171: the same onset of rolling as cases 1–57, now as shifts (T = 1) in
+/// world-fixed coordinates, the approach PEN = 0.07258 mm prescribed after each sequence's first case and
+/// FX/(FSTAT FN) = −0.657. Cases 58–114: a fixed 90 × 33 grid, the profile `0.002963 ((x − 0.25k)² + y²)` moved
+/// one element DX = 0.25 mm per case, the previous shears where they were. Cases 115–171: a 34 × 33 window moving
+/// with the profile, so each element's previous shear is the one of its right neighbour (`rolling::carried`).
+/// Expected: the author's `catt_to_cart.ref_out` as printed (`reference/contact3d/catt_to_cart_cases.csv`): the
+/// shift and FN within one unit of their last digit (why: in the test) plus 1e-6 of the value, and the counts in
+/// adhesion and slip exactly (those of our build's `.mat` files, which equal the printed ones where printed).
+#[test]
+fn catt_to_cart_world_fixed_sequences_agree_with_contact() {
+    let cases = csv("catt_to_cart_cases.csv");
+    let (mu, fx_rel, pen) = (0.4013, -0.657, 0.07258);
+    let body = HalfSpace::new(2.0 * 1.28, 0.28).unwrap();
+    let settings = TangentialSettings::new(1e-12, 100_000);
+    // Within one unit of the last printed digit (plus 1e-6 of the value): the agreement CONTACT's own build check
+    // asks between two builds (benches/peer/contact_refcmp.py), not half a unit as for cases 1–57. The shift of a
+    // step is a small difference of large displacements (7.7e-4 against 1.8e-2 mm), and 10 of the 114 shifts here
+    // differ from the printed ones by 0.58–0.74 of a unit; CONTACT run with EPS = 1e-12 prints the same digits, so
+    // it is not its tolerance, and every count agrees. The origin of the difference was not found.
+    let mut worst: f64 = 0.0;
+    let mut within = |got: f64, printed: &str, what: String| {
+        let d = (got - printed.trim().parse::<f64>().unwrap()).abs();
+        worst = worst.max(d / (2.0 * half_unit(printed)));
+        assert!(d <= 2.0 * half_unit(printed) + 1e-6 * got.abs(), "{what}: {got:.6e} against CONTACT's {printed}");
+    };
+    for (first, mx, moving) in [(58, 90, false), (115, 34, true)] {
+        let grid = ContactGrid::new(mx, 33, 0.25, 0.25, -4.125 + 0.125, -4.125 + 0.125).unwrap();
+        let inf = Influence::new(grid, body.pair(&body), Kernels::Full).unwrap();
+        let (mut qx, mut qy) = (Vec::new(), Vec::new());
+        for k in 0..57 {
+            let row = &cases[first - 1 + k];
+            assert_eq!(row["case"], (first + k).to_string());
+            // The profile as the input writes it: `B1 x² + B3 y² + B4 x + B6` in world coordinates, the profile moved
+            // by 0.25k, B4 = −2 B1 (0.25k) and B6 = B1 (0.25k)² rounded to the input's 7 decimals (the rounding of B6,
+            // up to 5e-8 mm of the 0.07 mm approach, moves the shift by up to 7e-5 of itself: case 72 prints
+            // 8.508E-04, 8.507E-04 with the exact profile). The moving window's x is the world's less 0.25k.
+            let (b1, c) = (0.002963, 0.25 * k as f64);
+            let round7 = |v: f64| (v * 1e7).round() / 1e7;
+            let (b4, b6) = (round7(-2.0 * b1 * c), round7(b1 * c * c));
+            let origin = if moving { c } else { 0.0 };
+            let h = grid.sample(|x, y| b1 * ((x + origin).powi(2) + y * y) + b4 * (x + origin) + b6);
+            let drive = if k == 0 { Drive::Load(0.4705) } else { Drive::Approach(pen) };
+            let n = normal::solve(&inf, &h, drive, &NormalSettings::new(1e-12, 10_000), &Cancel::never()).unwrap();
+            let step = ShiftStep::new(&n.pressure, mu, TangentialDrive::Force(fx_rel * mu * n.load, 0.0));
+            let q = if k == 0 {
+                tangential::solve(&inf, &step, &settings, &Cancel::never()).unwrap()
+            } else if moving {
+                let (px, py) = (carried(&qx, mx), carried(&qy, mx));
+                tangential::solve(&inf, &step.after(&px, &py), &settings, &Cancel::never()).unwrap()
+            } else {
+                tangential::solve(&inf, &step.after(&qx, &qy), &settings, &Cancel::never()).unwrap()
+            };
+            let case = first + k;
+            within(n.load, &row["fn"], format!("case {case} FN"));
+            within(q.shift.0, &row["shift_x"], format!("case {case} shift"));
+            let counts = (num(row, "nadh_mat") as usize, num(row, "nslip_mat") as usize);
+            assert_eq!((q.stick, q.slip), counts, "case {case}: adhesion and slip");
+            (qx, qy) = (q.qx, q.qy);
+        }
+    }
+    println!("catt_to_cart 58–171: largest difference in FN and the shifts {worst:.2} of a printed unit");
+}
+
 /// The creep-table engine `exact` (`creeptable::Exact`, Hertz's pressure on the case's grid) against theory: at a
 /// small creepage it follows Kalker's linear theory (Table E.3, `creeptable::KalkerLinear`) within the grid's
 /// discretisation (3 % at 48 × 48 over 1.1 times a circle; measured +0.68 %), and far beyond saturation every element
