@@ -80,11 +80,14 @@
 //!   O(dy²) across the strips, the spin to O(dx²).
 //!
 //! Forces are `Σ p · area` over the elements (midpoint rule); `Σ pn · area` → N as the grid refines.
+//!
+//! FaStrip, the strip theory combined with FASTSIM (Sichani et al. 2016, CONTACT's M = 5), is [`fastrip()`]; its
+//! module [`mod@fastrip`] documents the method, its decisions and that its tractions can exceed the traction bound.
 
 use crate::error::ArgumentError;
 use crate::theory::kalker::{self, CreepCoefficients};
 
-mod fastrip;
+pub mod fastrip;
 pub use fastrip::fastrip;
 use std::f64::consts::PI;
 
@@ -280,8 +283,9 @@ pub struct Solution {
     pub n_adhesion: usize,
     /// Elements in slip.
     pub n_slip: usize,
-    /// The largest |p|/(μ pn) over the elements in contact (0 where μ pn = 0): at most 1 when the traction bound
-    /// holds everywhere, as FASTSIM ensures by construction; [`fastrip`]'s strip tractions can exceed it (its docs).
+    /// The largest |p|/(μ pn) over the elements in contact with μ pn > 0 (0 without such elements): at most 1 when
+    /// the traction bound holds everywhere, as FASTSIM ensures by construction; FaStrip's strip tractions can exceed
+    /// it ([`fastrip`](mod@fastrip)'s module docs: 3.4× in CONTACT's own case 4 of `fastsim.inp`).
     pub bound_ratio: f64,
 }
 

@@ -68,6 +68,39 @@ fn fastsim_entries_equal_direct_calls() {
     assert_eq!(at(0.1, 0.0, 0.0).status, "solved");
 }
 
+#[test]
+fn fastrip_entries_equal_direct_calls() {
+    // Expected: each row is `fastsim::fastrip` (FaStrip with CONTACT's blended flexibilities, Hertz's pressure as the
+    // bound, on the table's 30 × 20 strips) called here on the physical case the row states (its a, b and creepages;
+    // the normalisation itself is checked by `fastsim_entries_equal_direct_calls`), to the bit.
+    let dir = tempfile::tempdir().unwrap();
+    let p = spec(dir.path(), "fr", "fastrip", "[grid]\nmx = 30\nmy = 20", SMALL_AXES);
+    let out = dir.path().join("fr.csv");
+    run_table(&p, &out, &whole()).unwrap();
+    let rows = TableRow::read_csv(&out).unwrap();
+    let grid = fastsim::Grid::Strips { mx: 30, my: 20 };
+    let options = fastsim::Options {
+        bound: fastsim::Bound::Elliptic,
+        flexibility: fastsim::Flexibility::Blended,
+        direction: fastsim::Direction::PlusX,
+        grid,
+    };
+    let mut slipping = 0;
+    for r in &rows {
+        let contact = Contact { a: r.a, b: r.b, shear_modulus: 1.0, nu: r.nu, mu: 1.0, normal_force: 1.0 };
+        let s = fastsim::fastrip(&contact, &Creepages { xi: r.xi, eta: r.eta, phi: r.phi }, &options).unwrap();
+        assert_eq!([r.fx, r.fy, r.mz], [Some(s.fx), Some(s.fy), Some(s.mz)], "case {}", r.case);
+        assert_eq!(r.engine, "fastrip");
+        slipping += usize::from(r.status == "gross_sliding");
+    }
+    assert!(slipping > 0, "the grid reaches full sliding");
+    // A bad option is refused naming it.
+    let bad = spec(dir.path(), "bad", "fastrip", "[options]\nbound = \"parabolic\"", SMALL_AXES);
+    let o = bin().arg("sweep").arg(&bad).arg("--out").arg(dir.path().join("bad.csv")).output().unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("options.bound"), "{}", String::from_utf8_lossy(&o.stderr));
+}
+
 /// Kalker's simplified theory with one flexibility and the parabolic bound, ξ alone, in closed form per strip: a strip
 /// of half-length l = a√(1 − y²/b²) adheres from its leading edge while l + x > d, d = (9π/16) ξ' a, and carries
 /// μp0/a² (2l²d − l d² + d³/6) (4l³/3 where d ≥ 2l: all slip), p0 = 2N/(πab); Fx' is the integral over y divided by

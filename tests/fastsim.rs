@@ -49,6 +49,21 @@ fn options_of(row: &HashMap<String, String>) -> Options {
     Options { bound, flexibility: Flexibility::Blended, direction, grid }
 }
 
+/// The printed totals of a `fastsim.inp` case against a solution: FX, FY, MZ, FY/FSTAT/FN and PMAX within half a
+/// unit of their last printed digit, NCON, NADH, NSLIP exactly.
+fn assert_printed(row: &HashMap<String, String>, s: &rollbem::fastsim::Solution) {
+    let case = &row["case"];
+    let fy_rel = s.fy / (num(row, "mu") * num(row, "fn"));
+    let pmax = s.elements.iter().map(|e| e.pn).fold(0.0, f64::max);
+    for (key, got) in [("fx", s.fx), ("fy", s.fy), ("mz", s.mz), ("fy_rel", fy_rel), ("pmax", pmax)] {
+        let d = (got - num(row, key)).abs();
+        assert!(d <= half_unit(&row[key]), "case {case} {key}: {got:.6e} vs printed {}", row[key]);
+    }
+    for (key, got) in [("ncon", s.n_contact), ("nadh", s.n_adhesion), ("nslip", s.n_slip)] {
+        assert_eq!(got, num(row, key) as usize, "case {case} {key}");
+    }
+}
+
 #[test]
 fn contact_fastsim_cases_reproduced_to_the_printed_digits() {
     // Expected: the author's fastsim.ref_out as printed (FX, FY, MZ, FY/FSTAT/FN, PMAX to 4 digits, NCON, NADH,
@@ -66,15 +81,7 @@ fn contact_fastsim_cases_reproduced_to_the_printed_digits() {
             let d = (s.flexibilities[i] - num(&row, key)).abs();
             assert!(d <= half_unit(&row[*key]), "case {case} {key}: {} vs {}", s.flexibilities[i], row[*key]);
         }
-        let fy_rel = s.fy / (num(&row, "mu") * num(&row, "fn"));
-        let pmax = s.elements.iter().map(|e| e.pn).fold(0.0, f64::max);
-        for (key, got) in [("fx", s.fx), ("fy", s.fy), ("mz", s.mz), ("fy_rel", fy_rel), ("pmax", pmax)] {
-            let d = (got - num(&row, key)).abs();
-            assert!(d <= half_unit(&row[key]), "case {case} {key}: {got:.6e} vs printed {}", row[key]);
-        }
-        for (key, got) in [("ncon", s.n_contact), ("nadh", s.n_adhesion), ("nslip", s.n_slip)] {
-            assert_eq!(got, num(&row, key) as usize, "case {case} {key}");
-        }
+        assert_printed(&row, &s);
         println!("case {case}: Fy {:.6e} (printed {}), Mz {:.6e} (printed {})", s.fy, row["fy"], s.mz, row["mz"]);
         compared += 1;
     }
@@ -409,7 +416,7 @@ fn fastrip_small_creepage_reproduces_kalkers_linear_theory() {
     // (C_ij from Table E.3, theory::kalker). At vanishing creepage the strip tractions have the linear theory's
     // square-root singularity at the trailing edge, ∝ √((a_j − x)/(a_j + x)), and the grid's midpoint sums of it err
     // by C h^{1/2} (h the element length): the error must shrink by √2 per halving of h (checked to 3 %), and the
-    // Richardson extrapolation with that rate, (√2 F(2n) − F(n))/(√2 − 1), must agree with Kalker within 0.1 %. The
+    // Richardson extrapolation with that rate, (√2 F(2n) − F(n))/(√2 − 1), must agree with Kalker within 2e-4. The
     // spin's lateral traction has no such singularity (its leading term is φ' √((a_j − d)² − (x − d)²)): its error
     // must fall with h and be below 0.1 % at 400 strips of 400.
     let contact = kalker_contact(6.0, 4.0, 0.28);
@@ -444,7 +451,7 @@ fn fastrip_small_creepage_reproduces_kalkers_linear_theory() {
             for w in errors.windows(2) {
                 assert!((w[0] / w[1] / r2 - 1.0).abs() < 0.03, "{cr:?}: not the h^1/2 rate: {errors:?}");
             }
-            assert!((extrapolated / linear - 1.0).abs() < 1e-3, "{cr:?}: extrapolated {extrapolated} vs {linear}");
+            assert!((extrapolated / linear - 1.0).abs() < 2e-4, "{cr:?}: extrapolated {extrapolated} vs {linear}");
         } else {
             assert!(errors.windows(2).all(|w| w[1].abs() < w[0].abs()), "{cr:?}: not converging {errors:?}");
             assert!(errors[2].abs() < 1e-3, "{cr:?}: {errors:?}");
@@ -519,6 +526,7 @@ fn fastrip_rolling_along_minus_x_is_the_point_reflection() {
 fn fastrip_refuses_a_parabolic_bound_naming_it() {
     // Expected (fastsim::fastrip's module docs): the strip theory presumes Hertz's pressure.
     let contact = kalker_contact(6.0, 4.0, 0.28);
-    let e = fastrip(&contact, &Creepages { xi: 1e-3, eta: 0.0, phi: 0.0 }, &Options::default()).unwrap_err();
-    assert!(e.to_string().contains("bound"), "{e}");
+    let parabolic = Options { bound: Bound::Parabolic, ..Options::default() };
+    let e = fastrip(&contact, &Creepages { xi: 1e-3, eta: 0.0, phi: 0.0 }, &parabolic).unwrap_err();
+    assert!(e.to_string().contains("bound") && e.to_string().contains("Bound::Elliptic"), "{e}");
 }

@@ -408,16 +408,18 @@ fn catt_to_cart_world_fixed_sequences_agree_with_contact() {
     let (mu, fx_rel, pen) = (0.4013, -0.657, 0.07258);
     let body = HalfSpace::new(2.0 * 1.28, 0.28).unwrap();
     let settings = TangentialSettings::new(1e-12, 100_000);
-    // Within one unit of the last printed digit (plus 1e-6 of the value): the agreement CONTACT's own build check
+    // The shifts within one unit of the last printed digit (plus 1e-6 of the value): the agreement CONTACT's own build check
     // asks between two builds (benches/peer/contact_refcmp.py), not half a unit as for cases 1–57. The shift of a
     // step is a small difference of large displacements (7.7e-4 against 1.8e-2 mm), and 10 of the 114 shifts here
     // differ from the printed ones by 0.58–0.74 of a unit; CONTACT run with EPS = 1e-12 prints the same digits, so
     // it is not its tolerance, and every count agrees. The origin of the difference was not found.
+    // FN (not a difference of large quantities) within half a unit as everywhere else.
     let mut worst: f64 = 0.0;
-    let mut within = |got: f64, printed: &str, what: String| {
+    let mut within = |got: f64, printed: &str, units: f64, what: String| {
         let d = (got - printed.trim().parse::<f64>().unwrap()).abs();
         worst = worst.max(d / (2.0 * half_unit(printed)));
-        assert!(d <= 2.0 * half_unit(printed) + 1e-6 * got.abs(), "{what}: {got:.6e} against CONTACT's {printed}");
+        let allowed = units * 2.0 * half_unit(printed) + 1e-6 * got.abs();
+        assert!(d <= allowed, "{what}: {got:.6e} against CONTACT's {printed}");
     };
     for (first, mx, moving) in [(58, 90, false), (115, 34, true)] {
         let grid = ContactGrid::new(mx, 33, 0.25, 0.25, -4.125 + 0.125, -4.125 + 0.125).unwrap();
@@ -447,8 +449,8 @@ fn catt_to_cart_world_fixed_sequences_agree_with_contact() {
                 tangential::solve(&inf, &step.after(&qx, &qy), &settings, &Cancel::never()).unwrap()
             };
             let case = first + k;
-            within(n.load, &row["fn"], format!("case {case} FN"));
-            within(q.shift.0, &row["shift_x"], format!("case {case} shift"));
+            within(n.load, &row["fn"], 0.5, format!("case {case} FN"));
+            within(q.shift.0, &row["shift_x"], 1.0, format!("case {case} shift"));
             let counts = (num(row, "nadh_mat") as usize, num(row, "nslip_mat") as usize);
             assert_eq!((q.stick, q.slip), counts, "case {case}: adhesion and slip");
             (qx, qy) = (q.qx, q.qy);

@@ -54,6 +54,10 @@ table_out=$1
 contact_src=${2:-${CONTACT_SRC:-}}
 here=$(cd "$(dirname "$0")" && pwd)
 cases=${CASES3D-"cattaneo spence35 subsurf norm_problm_1p norm_problm_2p norm_problm_4p norm_problm_8p tang_problm_1s tang_problm_2s tang_problm_4s tang_problm_8s"}
+if [[ -z $cases && -z ${EXAMPLES3D-} ]]; then
+  echo "[contact3d] error: nothing to time: CASES3D and EXAMPLES3D are both empty" >&2
+  exit 2
+fi
 repeats=${REPEATS:-3}
 once_over=${ONCE_OVER:-180}
 cpu=${CPU:-0}
@@ -273,8 +277,8 @@ example_tests() {
 if [[ -n $examples ]]; then
   ((with_rollbem)) || die "EXAMPLES3D needs rollbem (ROLLBEM=1)"
   say "building rollbem's tests rolling3d and fastsim"
-  json=$(cd "$here/../.." && cargo test --release --no-run --test rolling3d --test fastsim --message-format=json 2>/dev/null) ||
-    die "cargo test --no-run failed"
+  json=$(cd "$here/../.." && cargo test --release --no-run --test rolling3d --test fastsim --message-format=json \
+    2>"$work/cargo-test.log") || die "cargo test --no-run failed (see $work/cargo-test.log)"
   test_bin() {
     python3 -c 'import json, sys
 for line in sys.stdin:
@@ -283,6 +287,7 @@ for line in sys.stdin:
         print(m["executable"])' "$1" <<<"$json" | head -n 1
   }
   declare -A bins=([rolling3d]=$(test_bin rolling3d) [fastsim]=$(test_bin fastsim))
+  [[ -x ${bins[rolling3d]} && -x ${bins[fastsim]} ]] || die "no test binaries rolling3d and fastsim in cargo's output"
   for spec in $examples; do
     name=${spec%%:*} upto=""
     [[ $spec == *:* ]] && upto=${spec#*:}

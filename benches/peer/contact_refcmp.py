@@ -88,6 +88,9 @@ def main():
     first_cases = None
     if "--cases" in args:
         i = args.index("--cases")
+        if i + 1 >= len(args) or not args[i + 1].isdigit():
+            print("--cases needs a whole number K (compare the reference's cases 1..K)", file=sys.stderr)
+            return 2
         first_cases = int(args[i + 1])
         del args[i : i + 2]
     if len(args) != 2:

@@ -1,4 +1,5 @@
-//! The built-in creep engines: FASTSIM ([`Fastsim`]) and Kalker's linear theory ([`KalkerLinear`]).
+//! The built-in creep engines: FASTSIM ([`Fastsim`]), FaStrip ([`Fastrip`]) and Kalker's linear theory
+//! ([`KalkerLinear`]).
 
 use super::{CaseStatus, CreepCase, CreepEngine, CreepResult, EngineEntry, Forces};
 use crate::error::ArgumentError;
@@ -80,14 +81,7 @@ fn build_fastsim(options: &toml::Table) -> super::Built {
     for (key, value) in options {
         let text = value.as_str().ok_or_else(|| (key.clone(), format!("must be a string, is {value}")))?;
         match key.as_str() {
-            "flexibility" => {
-                engine.flexibility = match text {
-                    "weighted" => Flexibility::Weighted,
-                    "three" => Flexibility::Three,
-                    "blended" => Flexibility::Blended,
-                    _ => return Err((key.clone(), format!("must be weighted, three or blended, is {text:?}"))),
-                }
-            }
+            "flexibility" => engine.flexibility = parse_flexibility(key, text)?,
             "bound" => {
                 engine.bound = match text {
                     "parabolic" => Bound::Parabolic,
@@ -107,6 +101,78 @@ pub(super) const FASTSIM_ENTRY: EngineEntry = EngineEntry {
     describe: "Kalker's FASTSIM (simplified theory); options flexibility = weighted|three|blended, \
                bound = parabolic|elliptic",
     build: build_fastsim,
+};
+
+/// FaStrip ([`crate::fastsim::fastrip()`]: FASTSIM, then the strip theory in every strip's adhesion area) on `my`
+/// strips of `mx` elements (the case's [`super::Resolution`]), Hertz's pressure as the traction bound, rolling along
+/// +x, with the flexibilities chosen (default: CONTACT's blended three, as its M = 5). Status: as [`Fastsim`]'s;
+/// Mz is FaStrip's.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Fastrip {
+    /// The flexibilities of the FASTSIM pass.
+    pub flexibility: Flexibility,
+}
+
+impl Default for Fastrip {
+    fn default() -> Fastrip {
+        Fastrip { flexibility: Flexibility::Blended }
+    }
+}
+
+impl CreepEngine for Fastrip {
+    fn name(&self) -> &str {
+        "fastrip"
+    }
+
+    fn settings(&self) -> String {
+        format!("flexibility={}", flexibility_name(self.flexibility))
+    }
+
+    fn forces(&self, case: &CreepCase) -> Result<CreepResult, ArgumentError> {
+        let grid = Grid::Strips { mx: case.resolution.mx, my: case.resolution.my };
+        let options =
+            Options { bound: Bound::Elliptic, flexibility: self.flexibility, direction: Direction::PlusX, grid };
+        let s = fastsim::fastrip(&case.contact(), &case.creepages, &options)?;
+        let status = if s.n_contact > 0 && s.n_adhesion == 0 { CaseStatus::GrossSliding } else { CaseStatus::Solved };
+        Ok(CreepResult {
+            status,
+            forces: Some(Forces { fx: s.fx, fy: s.fy, mz: Some(s.mz) }),
+            residual: None,
+            contact_elements: Some(s.n_contact),
+            slip_elements: Some(s.n_slip),
+        })
+    }
+}
+
+/// The flexibility named `text` (`weighted` | `three` | `blended`), or the option's refusal.
+fn parse_flexibility(key: &str, text: &str) -> Result<Flexibility, (String, String)> {
+    match text {
+        "weighted" => Ok(Flexibility::Weighted),
+        "three" => Ok(Flexibility::Three),
+        "blended" => Ok(Flexibility::Blended),
+        _ => Err((key.to_string(), format!("must be weighted, three or blended, is {text:?}"))),
+    }
+}
+
+/// Builds [`Fastrip`] from `[options]`: `flexibility` (`weighted` | `three` | `blended`).
+fn build_fastrip(options: &toml::Table) -> super::Built {
+    let mut engine = Fastrip::default();
+    for (key, value) in options {
+        let text = value.as_str().ok_or_else(|| (key.clone(), format!("must be a string, is {value}")))?;
+        match key.as_str() {
+            "flexibility" => engine.flexibility = parse_flexibility(key, text)?,
+            _ => return Err((key.clone(), "unknown option of engine fastrip (flexibility)".into())),
+        }
+    }
+    Ok(Box::new(engine))
+}
+
+/// FaStrip's entry in [`super::BUILT_IN`].
+pub(super) const FASTRIP_ENTRY: EngineEntry = EngineEntry {
+    name: "fastrip",
+    describe: "FaStrip (Sichani et al. 2016: FASTSIM and the strip theory, Hertz's pressure as bound); option \
+               flexibility = weighted|three|blended (default blended)",
+    build: build_fastrip,
 };
 
 /// Kalker's linear theory (no slip; [`crate::theory::kalker`]): `Fx = −G c² C11 ξ`, `Fy = −G c² (C22 η + c C23 φ)`,

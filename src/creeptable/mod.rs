@@ -76,11 +76,12 @@ mod spec;
 mod table;
 
 pub use command::{fastsim_command, FastsimArgs};
-pub use engines::{Fastsim, KalkerLinear};
+pub use engines::{Fastrip, Fastsim, KalkerLinear};
 pub use exact::Exact;
 pub use figure::{creep_surface_svg, plot_table, write_figure};
 pub use run::{
-    compute_table, is_table_csv, is_table_spec, merge_tables, run_table, run_table_with, TableOptions, TableOutcome,
+    compute_spec, compute_table, is_table_csv, is_table_spec, merge_tables, run_table, run_table_with, TableOptions,
+    TableOutcome,
 };
 pub use section::markdown_section;
 pub use spec::{Axes, Normalisation, TableSpec, MAX_CASES};
@@ -254,7 +255,8 @@ pub struct EngineEntry {
 }
 
 /// The engines a table spec can name.
-pub const BUILT_IN: &[EngineEntry] = &[engines::FASTSIM_ENTRY, engines::KALKER_LINEAR_ENTRY, exact::EXACT_ENTRY];
+pub const BUILT_IN: &[EngineEntry] =
+    &[engines::FASTSIM_ENTRY, engines::FASTRIP_ENTRY, engines::KALKER_LINEAR_ENTRY, exact::EXACT_ENTRY];
 
 /// The registered engine of that name.
 pub fn engine_entry(name: &str) -> Option<&'static EngineEntry> {

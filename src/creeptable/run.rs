@@ -105,14 +105,29 @@ fn compute_all(spec: &TableSpec, engine: &dyn CreepEngine, settings: &str, cases
 /// Computes the whole table of the spec at `spec_path` in memory (no file written; for the report): the table and its
 /// engine's name. Errors: a bad spec (exit 2, naming the key), more than [`super::MAX_CASES`] cases.
 pub fn compute_table(spec_path: &Path) -> Result<(CreepTable, String)> {
-    let spec = TableSpec::from_file(spec_path)?;
+    compute_spec(&TableSpec::from_file(spec_path)?, spec_path)
+}
+
+/// Every ellipse of the spec has Kalker's coefficients (ν and a/b within Table E.3), or the refusal naming `axes`.
+fn check_normalisations(spec: &TableSpec, spec_path: &Path) -> Result<()> {
+    for inu in 0..spec.axes.nu.len() {
+        for iab in 0..spec.axes.a_over_b.len() {
+            spec.normalisation(inu, iab).map_err(|e| invalid(spec_path, "axes", e.to_string()))?;
+        }
+    }
+    Ok(())
+}
+
+/// [`compute_table`] of a spec already read (`spec_path` names it in errors).
+pub fn compute_spec(spec: &TableSpec, spec_path: &Path) -> Result<(CreepTable, String)> {
     let engine = spec.engine(spec_path)?;
     if spec.len() > super::MAX_CASES {
         let msg = format!("{} cases, more than {}", spec.len(), super::MAX_CASES);
         return Err(invalid(spec_path, "axes", msg));
     }
+    check_normalisations(spec, spec_path)?;
     let cases: Vec<usize> = (0..spec.len()).collect();
-    let rows = compute_all(&spec, engine.as_ref(), &engine.settings(), &cases)?;
+    let rows = compute_all(spec, engine.as_ref(), &engine.settings(), &cases)?;
     let table = CreepTable::from_rows(&rows).map_err(|m| invalid(spec_path, "axes", m))?;
     Ok((table, engine.name().to_string()))
 }
@@ -180,11 +195,7 @@ pub fn run_table_with(spec_path: &Path, out: &Path, opts: &TableOptions, cancel:
         let msg = format!("{total} cases, more than {} (pass --allow-large to run it)", super::MAX_CASES);
         return Err(invalid(spec_path, "axes", msg));
     }
-    for inu in 0..spec.axes.nu.len() {
-        for iab in 0..spec.axes.a_over_b.len() {
-            spec.normalisation(inu, iab).map_err(|e| invalid(spec_path, "axes", e.to_string()))?;
-        }
-    }
+    check_normalisations(&spec, spec_path)?;
     let cases: Vec<usize> = (0..total).filter(|&i| opts.shard.is_none_or(|s| s.contains(i))).collect();
     let mut outcome = TableOutcome { total, cases: cases.len(), ran: 0, resumed: 0, statuses: [0; 4], npz: None };
     if opts.dry_run {

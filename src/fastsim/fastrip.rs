@@ -36,7 +36,8 @@
 //! unchanged where the strip tractions would exceed μ pmax at one of its adhesion elements; so does this one. That
 //! check is against the peak pressure, not the local bound μ pn: with spin, the strip theory's adhesion tractions
 //! can exceed the local bound near the strips' ends, and neither program corrects them. In `fastsim.inp`'s case 4
-//! (44 × 44) 38 adhesion elements exceed it, the worst by 3.4×; in case 7 (220 × 220) 226, the worst by 7.2×.
+//! (44 × 44) 38 adhesion elements exceed it, the worst by 3.4× (CONTACT's own per-element output shows the same,
+//! tests/fastsim.rs); in case 7 (220 × 220) the worst is 7.2× (the report's spin table).
 //! [`super::Solution::bound_ratio`] reports the worst ratio |p|/(μ pn), so a caller sees it.
 //!
 //! # Decisions (each needed to reproduce CONTACT's numbers, or taken where CONTACT is silent)
@@ -103,7 +104,8 @@ impl StripTheory {
     fn strip(&self, y: f64) -> (Option<f64>, [f64; 3]) {
         let (xi, eta, phi_x, phi_y) = (self.xi, self.eta, self.phi, self.sense * self.phi);
         let long = xi - phi_x * y / self.a;
-        let d = if (phi_x - 1.0).abs() <= 1e-6 {
+        // |φ'| = 1 (CONTACT tests φ' = 1 alone; φ' = −1 divides by zero below and also slides): the strip slides.
+        let d = if (1.0 - phi_x * phi_x).abs() <= 2e-6 {
             None
         } else {
             let discr = eta * eta + (1.0 - phi_x * phi_x) * long * long;
@@ -118,8 +120,9 @@ impl StripTheory {
 }
 
 /// Solves the steady rolling problem by FaStrip (module docs): FASTSIM with `options`, then the strip theory in the
-/// adhesion areas. Errors: those of [`solve`], a parabolic bound (`bound`), and the equivalent ellipse's a/b outside
-/// Kalker's table.
+/// adhesion areas (Sichani et al. 2016, as CONTACT's M = 5). Units and signs as [`solve`]'s. The strip tractions
+/// can exceed the traction bound μ pn (module docs); [`Solution::bound_ratio`] reports the worst ratio. Errors:
+/// those of [`solve`], a parabolic bound (`bound`), and the equivalent ellipse's a/b outside Kalker's table.
 pub fn fastrip(contact: &Contact, creepages: &Creepages, options: &Options) -> Result<Solution, ArgumentError> {
     if options.bound != Bound::Elliptic {
         let msg = "FaStrip's strip theory presumes Hertz's pressure: use Bound::Elliptic (CONTACT's B = 2)";
@@ -178,6 +181,7 @@ fn strip(theory: &StripTheory, row: &mut [Element], dy: f64) {
     let dx = row[first].area / dy;
     let aj = (0.5 * (row[last].x - row[first].x + dx)).max(1e-10);
     let (d, [kappa, lambda, lambda_a]) = theory.strip(row[first].y);
+    // A strip that slides entirely: a slip area longer than the strip (no element is in x > −a_j + 2d).
     let d = d.unwrap_or(aj + 1.0);
     // x in the frame where rolling is along +x: the adhesion area is x > −a_j + 2d at the leading edge.
     let sticks = |x: f64| theory.sense * x > -aj + 2.0 * d;

@@ -86,7 +86,16 @@ impl SweepFigures {
             Analysis::Table if space == 0 => {
                 Err(wrong("`table` draws a 3D half-space sweep's fronts; this CSV has no half_space rows".into()))
             }
-            Analysis::Table => accuracy::fronts_3d(&self.sweep, &mut md, figs).map(|_| ()),
+            Analysis::Table => {
+                let before = figs.list.len();
+                accuracy::fronts_3d(&self.sweep, &mut md, figs)?;
+                if figs.list.len() == before {
+                    let msg = "no solved half_space row carries an error measure (hertz_p0_err, hertz_approach_err, \
+                               cm_transfer_err): nothing to draw";
+                    return Err(wrong(msg.into()));
+                }
+                Ok(())
+            }
             _ if space > 0 && space == self.sweep.rows.len() => Err(wrong(format!(
                 "this CSV's rows are 3D half-space runs: their analysis is `table` (the fronts against time), not \
                  `{}`",
