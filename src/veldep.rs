@@ -30,9 +30,15 @@
 //!
 //! A time step of transient rolling is the same problem with another matrix and an offset ([`transient_step`]).
 //!
-//! Not yet done (issue 33, item 2): the friction memory (CONTACT's MEMDST, MEM_S0), a driver for many time steps,
-//! the scene keys, the pipeline and the CLI. Nothing in rollbem's scenes calls this module: Coulomb scenes are
-//! unchanged. Tested against CONTACT's `veldep_fric.inp` (tests/veldep.rs).
+//! ## In scenes
+//!
+//! `[contact] friction_law` (README, "Scenes") poses a falling law in steady rolling; `crate::pipeline` solves it
+//! from both starts ([`solve_both`]) at the normal problem's pressure and reports both ([`BranchReport`]). Only such
+//! a scene reaches this module: a Coulomb scene (and a constant law, which is Coulomb's) never does
+//! ([`solves_on_this_thread`] counts the solves).
+//!
+//! Not done: the friction memory (CONTACT's MEMDST, MEM_S0). Tested against CONTACT's `veldep_fric.inp`
+//! (tests/veldep.rs).
 
 use crate::error::ArgumentError;
 use faer::linalg::solvers::Solve;
@@ -197,9 +203,11 @@ pub fn slip_roots(law: &FrictionLaw, v: f64, bf: f64, c: f64) -> (f64, f64, bool
 }
 
 /// Where the iteration starts (module docs): it picks the branch where the steady problem has several solutions.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum Start {
     /// Every contact node sticking (the slip grown from zero; CONTACT's INISLP > 0).
+    #[default]
     Below,
     /// Every contact node sliding at the kinetic coefficient, against the creepage (CONTACT's INISLP < 0).
     Above,
@@ -280,6 +288,18 @@ fn law_residual(p: &SteadyProblem, h: &[f64], s: &[f64], state: &[i8], scale: f6
     worst
 }
 
+thread_local! {
+    /// Calls of [`solve_steady`] that got past the argument checks, on this thread.
+    static SOLVES: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+}
+
+/// How many times [`solve_steady`] has started a solve on the calling thread (a time step and each start of
+/// [`solve_both`] count one each): the evidence that a Coulomb scene's path never reaches this module (its count
+/// does not move; tests/veldep.rs). Per thread, so that tests running side by side do not see each other's solves.
+pub fn solves_on_this_thread() -> usize {
+    SOLVES.with(std::cell::Cell::get)
+}
+
 /// Solve the steady problem (module docs) from `start`; the law's residual must fall below `tolerance`; at most
 /// `max_iterations` active-set iterations (each with up to 30 Newton steps). Refused: shapes that differ, a speed
 /// that is not finite and > 0, a creepage that is not finite, an invalid law.
@@ -302,6 +322,7 @@ pub fn solve_steady(
         return Err(ArgumentError::new(F, "creepage", format!("must be finite, got {}", p.creepage)));
     }
     let law = p.law.validated()?;
+    SOLVES.with(|c| c.set(c.get() + 1));
     let mu0 = law.static_coefficient();
     let scale = p.normal.iter().fold(0.0f64, |a, &f| a.max(mu0 * f)).max(f64::MIN_POSITIVE);
     let sigma0: i8 = if p.creepage < 0.0 { -2 } else { 2 };
@@ -418,6 +439,105 @@ pub fn solve_both(p: &SteadyProblem, tolerance: f64, max_iterations: usize) -> R
     let gap = below.tangential.iter().zip(&above.tangential).fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
     let distinct = converged(&below) && converged(&above) && gap > tolerance * scale;
     Ok(Branches { below, above, distinct })
+}
+
+/// A scene's friction of the slip velocity (`[contact] friction_law` with `[rolling] velocity`, steady rolling): a
+/// law that is not constant, the rolling speed V (length/s) and the start whose solution the runs carry.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SceneFriction {
+    /// The law (validated; not constant: a constant law is Coulomb and the scene says so).
+    pub law: FrictionLaw,
+    /// The rolling speed V (length/s, > 0): the absolute slip velocity is V |s|.
+    pub velocity: f64,
+    /// The start whose solution the runs carry (both are solved).
+    pub start: Start,
+}
+
+/// One start's outcome, as a scene's run reports it (user's units).
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct BranchFigures {
+    /// The start.
+    pub start: Start,
+    /// Whether it converged (else it is not a solution, and only its residual is reported).
+    pub converged: bool,
+    /// Active-set iterations taken.
+    pub iterations: usize,
+    /// The law's largest residual at the end ([`solve_steady`]).
+    pub residual: f64,
+    /// The tangential force Q = Σ h (force per unit thickness, on the wheel); null when not converged.
+    pub tangential: Option<f64>,
+    /// Sticking contact nodes (null when not converged).
+    pub nodes_stick: Option<usize>,
+}
+
+/// Both starts of a scene's steady problem with a falling law, and which one the run carries: where they differ
+/// the problem has (at least) two solutions here, and both are reported, never one silently.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct BranchReport {
+    /// The start whose solution the run's nodes, resultants and status are (`[contact.friction_law] start`).
+    pub carried: Start,
+    /// From every node sticking.
+    pub below: BranchFigures,
+    /// From every node sliding.
+    pub above: BranchFigures,
+    /// Both converged to different solutions ([`Branches::distinct`]).
+    pub distinct: bool,
+}
+
+impl BranchFigures {
+    /// The figures of an outcome; `force` converts a dimensionless force to the user's (E·L0).
+    pub fn of(o: &SteadyOutcome, force: f64) -> BranchFigures {
+        let (converged, iterations, residual) = match o.status {
+            SteadyStatus::Converged { iterations, residual } => (true, iterations, residual),
+            SteadyStatus::NotConverged { iterations, residual } => (false, iterations, residual),
+        };
+        BranchFigures {
+            start: o.start,
+            converged,
+            iterations,
+            residual,
+            tangential: converged.then(|| o.tangential.iter().sum::<f64>() * force),
+            nodes_stick: converged.then(|| o.stick.iter().filter(|&&s| s).count()),
+        }
+    }
+
+    fn line(&self) -> String {
+        let name = match self.start {
+            Start::Below => "from below (all stick)",
+            Start::Above => "from above (all slide)",
+        };
+        match (self.tangential, self.nodes_stick) {
+            (Some(q), Some(n)) if self.converged => {
+                format!("{name}: Q = {q:.6e}, {n} stick, residual {:.1e}", self.residual)
+            }
+            _ => format!(
+                "{name}: not converged in {} iterations, residual {:.3e} (not a solution)",
+                self.iterations, self.residual
+            ),
+        }
+    }
+}
+
+impl BranchReport {
+    /// One line for people: both starts, and whether they found two solutions.
+    pub fn describe(&self) -> String {
+        let verdict = if self.distinct {
+            "two different solutions: the steady problem is not unique here"
+        } else if self.below.converged && self.above.converged {
+            "the same solution"
+        } else {
+            "uniqueness not decided (a start did not converge)"
+        };
+        let carried = match self.carried {
+            Start::Below => "below",
+            Start::Above => "above",
+        };
+        format!(
+            "slip-velocity friction (run carries the start {carried}): {}; {}; {verdict}",
+            self.below.line(),
+            self.above.line()
+        )
+    }
 }
 
 /// Newton's method on the equations of fixed sets `state` (out of contact `h_i = 0`, stick `s_i = 0`, slip

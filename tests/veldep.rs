@@ -183,3 +183,199 @@ fn veldep_fric_time_steps_against_contact() {
         }
     }
 }
+
+// ---- The scene keys (`[contact] friction_law`, `[rolling] velocity`) and the pipeline -------------------------------
+
+/// veldep_fric.inp's scene (as [`scene`]) without `[contact]` and `[rolling]`.
+const BASE: &str = r#"
+name = "veldep-fric"
+[wheel]
+radius = 460
+youngs_modulus = 209920
+poisson_ratio = 0.28
+model = "half_plane"
+profile = "circle"
+[counter_body]
+kind = "half_plane"
+youngs_modulus = 209920
+poisson_ratio = 0.28
+[mesh]
+element = "constant"
+contact_x = [-4.65, 4.55]
+contact_elements = 92
+strip_width = 200
+[drive]
+normal_load = 3111.08
+[solvers]
+use = ["active_set"]
+"#;
+
+/// [`BASE`] with `[contact]` and `[rolling]` given by the caller.
+fn scene_with(contact: &str, rolling: &str) -> Result<Scene, rollbem::Error> {
+    let text = format!("{BASE}\n[contact]\n{contact}\n[rolling]\n{rolling}\n");
+    Scene::from_toml(&text, std::path::Path::new("veldep-scene.toml"))
+}
+
+const EXPONENTIAL: &str = r#"friction_law = { kind = "exponential", kinetic = 0.18, first = [0.12, 100.0] }"#;
+const STEADY: &str = "mode = \"steady\"\ncreepage = -0.0009999\ndirection = 1\nvelocity = 45000";
+
+/// CONTACT's case 1 as a scene: the run carries the start from below, FX/(μ FN), NCON, NADH to CONTACT's printed
+/// digits (0.5941, 81, 45); both starts are reported, converged, and the same solution (one branch here); the node
+/// states are the law's (45 stick, 36 slip; CONTACT's NSLIP 36), Carter is not compared (a note says why).
+#[test]
+fn a_falling_law_scene_runs_case_1() {
+    let s = scene_with(EXPONENTIAL, STEADY).unwrap();
+    assert!(s.slip_velocity_friction().is_some());
+    assert_eq!(s.friction(), 0.3, "friction is the law's μ(0)");
+    let before = rollbem::veldep::solves_on_this_thread();
+    let report = run_scene(&s).unwrap();
+    assert_eq!(rollbem::veldep::solves_on_this_thread() - before, 2, "one solve per start");
+    let run = &report.runs[0];
+    assert_eq!(run.status, Status::Solved, "{}", run.explanation());
+    let q = run.resultants.unwrap().tangential / (0.3 * 3111.08);
+    assert_eq!((q * 1e4).round() / 1e4, 0.5941, "{q}");
+    let c = run.contact.as_ref().unwrap();
+    assert_eq!((c.nodes_contact, c.nodes_stick, c.nodes_slip), (81, 45, 36));
+    let b = run.branches.unwrap();
+    assert!(b.below.converged && b.above.converged && !b.distinct, "{b:?}");
+    assert_eq!(b.carried, Start::Below);
+    assert_eq!((b.below.nodes_stick, b.above.nodes_stick), (Some(45), Some(45)));
+    assert!((b.below.tangential.unwrap() - run.resultants.unwrap().tangential).abs() < 1e-9 * 3111.08);
+    assert!(run.residuals.unwrap().friction.unwrap() < 1e-10);
+    let text = rollbem::results::render::run_table(&report);
+    assert!(text.contains("from below (all stick)") && text.contains("the same solution"), "{text}");
+    assert!(report.checks.iter().all(|c| c.pass), "{:?}", report.checks);
+}
+
+/// A constant law (both terms 0) is Coulomb's μ = kinetic, posed to the same solver on the same problem: every
+/// nodal value and resultant is bit for bit the Coulomb scene's (the reason: it IS the Coulomb scene, normalised when
+/// read), and neither run reaches `rollbem::veldep` (its per-thread solve count does not move).
+#[test]
+fn a_constant_law_scene_is_coulomb_bit_for_bit() {
+    let steady = "mode = \"steady\"\ncreepage = -0.0009999\ndirection = 1";
+    let coulomb = scene_with("friction = 0.3", steady).unwrap();
+    let constant = scene_with(
+        r#"friction_law = { kind = "rational", kinetic = 0.3, first = [0.0, 0.0], second = [0.0, 0.0] }"#,
+        &format!("{steady}\nvelocity = 45000"),
+    )
+    .unwrap();
+    assert!(constant.slip_velocity_friction().is_none());
+    let before = rollbem::veldep::solves_on_this_thread();
+    let (a, b) = (run_scene(&coulomb).unwrap(), run_scene(&constant).unwrap());
+    assert_eq!(rollbem::veldep::solves_on_this_thread(), before, "a Coulomb path called the veldep solver");
+    let (ra, rb) = (&a.runs[0], &b.runs[0]);
+    assert_eq!(ra.status, Status::Solved);
+    assert!(rb.branches.is_none());
+    let bits = |r: &rollbem::results::SolverRun| -> Vec<u64> {
+        let res = r.resultants.unwrap();
+        r.nodes
+            .iter()
+            .flat_map(|n| [n.pressure, n.shear, n.gap, n.slip_velocity.unwrap_or(0.0)])
+            .chain([res.normal, res.tangential, res.moment])
+            .map(f64::to_bits)
+            .collect()
+    };
+    assert_eq!(bits(ra), bits(rb));
+    assert!(ra.nodes.iter().zip(&rb.nodes).all(|(x, y)| x.state == y.state));
+}
+
+/// The rational law's two branches at CKSI = −0.0009999 through a scene: both starts reported, distinct, each with
+/// its force and stick count (the library's figures of `falling_friction_has_two_branches_and_says_so`), the run
+/// carrying the start the scene names; the table says "two different solutions".
+#[test]
+fn a_scene_reports_both_branches() {
+    let rational = |start: &str| {
+        format!(
+            r#"friction_law = {{ kind = "rational", kinetic = 0.18, first = [0.06, 100.0], second = [0.06, 0.3162], start = "{start}" }}"#
+        )
+    };
+    for (start, carried, stick) in [("below", Start::Below, 40), ("above", Start::Above, 39)] {
+        let report = run_scene(&scene_with(&rational(start), STEADY).unwrap()).unwrap();
+        let run = &report.runs[0];
+        assert_eq!(run.status, Status::Solved, "{}", run.explanation());
+        let b = run.branches.unwrap();
+        assert!(b.distinct && b.carried == carried, "{b:?}");
+        assert_eq!((b.below.nodes_stick, b.above.nodes_stick), (Some(40), Some(39)));
+        assert_eq!(run.contact.as_ref().unwrap().nodes_stick, stick);
+        let text = rollbem::results::render::run_table(&report);
+        assert!(text.contains("two different solutions"), "{text}");
+    }
+}
+
+/// Bad keys and values are refused when the scene is read, naming the key (exit 2 through the CLI: below).
+#[test]
+fn bad_friction_law_keys_are_refused_naming_them() {
+    let law = |body: &str| format!("friction_law = {{ {body} }}");
+    let cases = [
+        (law(r#"kind = "exponential", kinetic = 0.0, first = [0.12, 100.0]"#), STEADY.to_string(), "kinetic"),
+        (law(r#"kind = "linear", kinetic = 0.18, first = [-0.1, 100.0]"#), STEADY.into(), "friction_law.first"),
+        (law(r#"kind = "rational", kinetic = 0.18, first = [0.1, 0.0]"#), STEADY.into(), "friction_law.first"),
+        (
+            law(r#"kind = "rational", kinetic = 0.18, first = [0.1, 1.0], second = [0.1, -1.0]"#),
+            STEADY.into(),
+            "friction_law.second",
+        ),
+        (law(r#"kind = "cubic", kinetic = 0.18, first = [0.1, 1.0]"#), STEADY.into(), "kind"),
+        (law(r#"kind = "linear", kinetic = 0.18, first = [0.1, 1.0], memory = 1.0"#), STEADY.into(), "memory"),
+        (format!("friction = 0.2\n{EXPONENTIAL}"), STEADY.into(), "contact.friction"),
+        (EXPONENTIAL.into(), "mode = \"steady\"\ncreepage = -0.001\ndirection = 1".into(), "rolling.velocity"),
+        (
+            EXPONENTIAL.into(),
+            "mode = \"steady\"\ncreepage = -0.001\ndirection = 1\nvelocity = 0".into(),
+            "rolling.velocity",
+        ),
+        (
+            EXPONENTIAL.into(),
+            "mode = \"steady\"\ncreepage = -0.001\ndirection = 1\nvelocity = -1".into(),
+            "rolling.velocity",
+        ),
+        (
+            EXPONENTIAL.into(),
+            "mode = \"seed\"\ncreepage = -0.001\ndirection = 1\nvelocity = 45000".into(),
+            "contact.friction_law",
+        ),
+        ("friction = 0.3".into(), STEADY.into(), "rolling.velocity"),
+    ];
+    for (contact, rolling, key) in cases {
+        let err = scene_with(&contact, &rolling).map(|_| ()).unwrap_err().to_string();
+        assert!(err.contains(key), "{contact} / {rolling}: `{err}` does not name {key}");
+    }
+    // A coupled pair (steel on aluminium, coupling on) is refused when its model is built, naming the key.
+    let s = scene_with(EXPONENTIAL, STEADY).unwrap();
+    let coupled = s
+        .edit(|d| {
+            d.counter_body = rollbem::scene::document::CounterBodyTable::HalfPlane {
+                youngs_modulus: 70000.0,
+                poisson_ratio: 0.33,
+                datum_depth: None,
+                viscoelastic: None,
+            }
+        })
+        .unwrap();
+    let err = Model::build(&coupled).unwrap_err();
+    assert!(err.to_string().contains("contact.friction_law"), "{err}");
+    assert_eq!(err.exit_code(), 2);
+}
+
+/// Through the CLI: a bad friction-law value exits 2 naming the key, and writes nothing.
+#[test]
+fn the_cli_refuses_a_bad_law_with_exit_2() {
+    let dir = std::env::temp_dir().join(format!("rollbem-veldep-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("bad-law.toml");
+    // The base scene, with a negative half-value slip velocity.
+    let scene = format!(
+        "{BASE}\n[contact]\nfriction_law = {{ kind = \"exponential\", kinetic = 0.18, first = [0.12, -100.0] }}\n\
+         [rolling]\n{STEADY}\n"
+    );
+    std::fs::write(&path, scene).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rollbem"))
+        .args(["run", path.to_str().unwrap(), "--json", dir.join("out").to_str().unwrap()])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("contact.friction_law.first"), "{stderr}");
+    assert!(!dir.join("out").join("veldep-fric.json").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
