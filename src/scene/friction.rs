@@ -102,3 +102,11 @@ fn check_values(t: &FrictionLawTable) -> std::result::Result<(), (String, String
     }
     Ok(())
 }
+
+/// A friction law's static coefficient μ(0) is the scene's `friction` (what builds the tangential blocks and bounds
+/// the shear): filled in as a default; a constant law is thereby Coulomb's μ = kinetic.
+pub(super) fn fill_static_coefficient(document: &mut SceneDocument) {
+    if let Some(t) = document.contact.friction_law {
+        document.contact.friction = t.law().static_coefficient();
+    }
+}

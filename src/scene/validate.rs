@@ -22,11 +22,7 @@ pub(super) fn validate(document: SceneDocument, path: &Path) -> Result<Scene> {
 /// whose checks it passed: [`Scene::from_record`]); only what the typed parts need is required.
 pub(super) fn build(mut document: SceneDocument, path: &Path) -> Result<Scene> {
     let solvers = document.solvers.typed().map_err(|e| e.into_error(path))?;
-    // A friction law's static coefficient μ(0) is the scene's `friction` (what builds the tangential blocks and
-    // bounds the shear); a constant law is Coulomb's μ = kinetic.
-    if let Some(t) = document.contact.friction_law {
-        document.contact.friction = t.law().static_coefficient();
-    }
+    super::friction::fill_static_coefficient(&mut document);
     // The scene as parsed: every solver's settings with the defaults filled in.
     document.solvers.settings = solvers.settings.tables();
     let d = &document;
