@@ -28,7 +28,9 @@
 //! kinetic coefficient (`Above`, INISLP < 0). The outcome names its start; a run that does not converge is a status
 //! with its residual ([`SteadyStatus::NotConverged`]), not a solution.
 //!
-//! A time step of transient rolling is the same problem with another matrix and an offset ([`transient_step`]).
+//! A time step of transient rolling is the same problem with another matrix and an offset ([`transient_step`]);
+//! [`transient::roll`] rolls many steps in sequence, stopping (with the step's status and residual) at a step that
+//! does not converge.
 //!
 //! ## In scenes
 //!
@@ -39,6 +41,8 @@
 //!
 //! Not done: the friction memory (CONTACT's MEMDST, MEM_S0). Tested against CONTACT's `veldep_fric.inp`
 //! (tests/veldep.rs).
+
+pub mod transient;
 
 use crate::error::ArgumentError;
 use faer::linalg::solvers::Solve;
@@ -264,6 +268,8 @@ pub struct SteadyOutcome {
     pub slip: Vec<f64>,
     /// Stick flags (in contact and `s_i = 0`).
     pub stick: Vec<bool>,
+    /// Outer iterations of CONTACT's scheme it needed before the Newton settled ([`solve_steady`]; 0: none).
+    pub fixed_point: usize,
 }
 
 /// The law's residual of `(h, s)` with the sets `state` (0 out of contact, 1 stick, ±2 slip with σ = ±1): stick
@@ -303,6 +309,15 @@ pub fn solves_on_this_thread() -> usize {
 /// Solve the steady problem (module docs) from `start`; the law's residual must fall below `tolerance`; at most
 /// `max_iterations` active-set iterations (each with up to 30 Newton steps). Refused: shapes that differ, a speed
 /// that is not finite and > 0, a creepage that is not finite, an invalid law.
+///
+/// First CONTACT's outer iteration from the start ([`fixed_point`]): the coefficients frozen at the previous slip
+/// velocities (the start's: μ(0) below, μ_kin above), the per-node Coulomb problem solved, the coefficients
+/// updated, until the slip velocities settle. Then the semismooth Newton with the law's slope from the sets and
+/// forces it reached, to `tolerance` (the outer iteration alone converges only linearly). Where the problem has
+/// several solutions the outer iteration picks CONTACT's (the Newton alone, started from the start's sets, finds
+/// other ones in `veldep_fric.inp`'s time steps, and its sets can cycle); where the Newton does not settle from the
+/// outer iteration's end, it is started from the start's sets. The outcome's `fixed_point` says how many outer
+/// iterations the answer came through (0: the Newton from the start).
 pub fn solve_steady(
     p: &SteadyProblem,
     start: Start,
@@ -321,68 +336,160 @@ pub fn solve_steady(
     if !p.creepage.is_finite() {
         return Err(ArgumentError::new(F, "creepage", format!("must be finite, got {}", p.creepage)));
     }
-    let law = p.law.validated()?;
-    SOLVES.with(|c| c.set(c.get() + 1));
-    let mu0 = law.static_coefficient();
-    let scale = p.normal.iter().fold(0.0f64, |a, &f| a.max(mu0 * f)).max(f64::MIN_POSITIVE);
-    let sigma0: i8 = if p.creepage < 0.0 { -2 } else { 2 };
-    let mut state: Vec<i8> = p
-        .normal
-        .iter()
-        .map(|&f| {
-            if f <= 0.0 {
-                0
-            } else if start == Start::Below {
-                1
-            } else {
-                sigma0
-            }
-        })
-        .collect();
-    let mut h: Vec<f64> = (0..n)
-        .map(|i| {
-            if state[i].abs() == 2 {
-                -law.kinetic_coefficient() * p.normal[i] * f64::from(state[i].signum())
-            } else {
-                0.0
-            }
-        })
-        .collect();
     if p.offset.is_some_and(|c| c.len() != n) {
         return Err(ArgumentError::new(F, "offset", format!("must have {n} entries")));
     }
+    let law = p.law.validated()?;
+    SOLVES.with(|c| c.set(c.get() + 1));
+    let scale = p.normal.iter().fold(0.0f64, |a, &f| a.max(law.static_coefficient() * f)).max(f64::MIN_POSITIVE);
     let offset = |i: usize| p.offset.map_or(0.0, |c| c[i]);
     let slip_of = |h: &[f64]| -> Vec<f64> {
         (0..n).map(|i| p.creepage + offset(i) + (0..n).map(|j| m[(i, j)] * h[j]).sum::<f64>()).collect()
     };
-    for iteration in 1..=max_iterations {
-        newton(p, &law, &state, &mut h, &slip_of);
+    let finish = |state: Vec<i8>, h: Vec<f64>, iterations: usize, fixed_point: usize| {
         let s = slip_of(&h);
+        let residual = law_residual(p, &h, &s, &state, scale);
+        let stick: Vec<bool> = state.iter().map(|&st| st == 1).collect();
+        let converged = residual <= tolerance;
+        let slip = s.iter().zip(&stick).map(|(&v, &st)| if st && converged { 0.0 } else { v }).collect();
+        let status = if converged {
+            SteadyStatus::Converged { iterations, residual }
+        } else {
+            SteadyStatus::NotConverged { iterations, residual }
+        };
+        SteadyOutcome { status, start, tangential: h, slip, stick, fixed_point }
+    };
+    let newton_sets = |state: &mut Vec<i8>, h: &mut Vec<f64>| {
+        active_set(p, Coefficients::Law(&law), state, h, &slip_of, max_iterations, |st, h| {
+            law_residual(p, h, &slip_of(h), st, scale) <= tolerance
+        })
+    };
+    let (mut state, mut h) = initial(p, &law, start);
+    let outer = fixed_point(p, &law, start, &mut state, &mut h, &slip_of, max_iterations);
+    if let Some(iterations) = newton_sets(&mut state, &mut h) {
+        return Ok(finish(state, h, iterations, outer));
+    }
+    // The outer iteration led nowhere the Newton settles from: the Newton from the start itself.
+    let (mut state, mut h) = initial(p, &law, start);
+    let iterations = newton_sets(&mut state, &mut h);
+    Ok(finish(state, h, iterations.unwrap_or(max_iterations), 0))
+}
+
+/// The sets and forces a start begins from: every contact node sticking with no force (below), or sliding against
+/// the creepage at μ_kin (above); out of contact 0.
+fn initial(p: &SteadyProblem, law: &FrictionLaw, start: Start) -> (Vec<i8>, Vec<f64>) {
+    let sigma0: i8 = if p.creepage < 0.0 { -2 } else { 2 };
+    let state: Vec<i8> = p
+        .normal
+        .iter()
+        .map(|&f| match (f <= 0.0, start) {
+            (true, _) => 0,
+            (false, Start::Below) => 1,
+            (false, Start::Above) => sigma0,
+        })
+        .collect();
+    let h = state
+        .iter()
+        .zip(p.normal)
+        .map(|(&st, &f)| if st.abs() == 2 { -law.kinetic_coefficient() * f * f64::from(st.signum()) } else { 0.0 })
+        .collect();
+    (state, h)
+}
+
+/// The coefficient a node's slip row uses at its absolute slip velocity `V t`, `(μ, dμ/ds_a)`, and the bound of a
+/// sticking node's force: the law's own (its slope; bound μ(0)), or frozen per node (CONTACT's outer iteration: μ_i
+/// fixed, slope 0, bound μ_i).
+#[derive(Clone, Copy)]
+enum Coefficients<'a> {
+    Law(&'a FrictionLaw),
+    Frozen(&'a [f64]),
+}
+
+impl Coefficients<'_> {
+    fn at(&self, i: usize, v_t: f64) -> (f64, f64) {
+        match self {
+            Coefficients::Law(law) => (law.mu(v_t), law.slope(v_t)),
+            Coefficients::Frozen(mu) => (mu[i], 0.0),
+        }
+    }
+
+    fn bound(&self, i: usize) -> f64 {
+        match self {
+            Coefficients::Law(law) => law.static_coefficient(),
+            Coefficients::Frozen(mu) => mu[i],
+        }
+    }
+}
+
+/// The primal–dual active-set iteration from `state`, `h`: Newton on the sets, then a stick node whose force
+/// exceeds its bound slips, a slip node whose slip turns against its sign sticks; `Some(iterations)` once the sets
+/// stand and `done` accepts the forces, `None` after `max_iterations`.
+fn active_set(
+    p: &SteadyProblem,
+    coef: Coefficients,
+    state: &mut [i8],
+    h: &mut [f64],
+    slip_of: &dyn Fn(&[f64]) -> Vec<f64>,
+    max_iterations: usize,
+    done: impl Fn(&[i8], &[f64]) -> bool,
+) -> Option<usize> {
+    for iteration in 1..=max_iterations {
+        newton(p, coef, state, h, slip_of);
+        let s = slip_of(h);
         let mut changed = false;
-        for i in 0..n {
+        for i in 0..h.len() {
             let next = match state[i] {
-                1 if h[i].abs() > mu0 * p.normal[i] * (1.0 + 1e-12) => -2 * h[i].signum() as i8,
+                1 if h[i].abs() > coef.bound(i) * p.normal[i] * (1.0 + 1e-12) => -2 * h[i].signum() as i8,
                 st if st.abs() == 2 && f64::from(st.signum()) * s[i] < 0.0 => 1,
                 st => st,
             };
             changed |= next != state[i];
             state[i] = next;
         }
-        if !changed {
-            let residual = law_residual(p, &h, &s, &state, scale);
-            if residual <= tolerance {
-                let stick: Vec<bool> = state.iter().map(|&st| st == 1).collect();
-                let slip = s.iter().zip(&stick).map(|(&v, &st)| if st { 0.0 } else { v }).collect();
-                let status = SteadyStatus::Converged { iterations: iteration, residual };
-                return Ok(SteadyOutcome { status, start, tangential: h, slip, stick });
-            }
+        if !changed && done(state, h) {
+            return Some(iteration);
         }
     }
-    let s = slip_of(&h);
-    let residual = law_residual(p, &h, &s, &state, scale);
-    let stick: Vec<bool> = state.iter().map(|&st| st == 1).collect();
-    let status = SteadyStatus::NotConverged { iterations: max_iterations, residual };
-    Ok(SteadyOutcome { status, start, tangential: h, slip: s, stick })
+    None
+}
+
+/// CONTACT's outer iteration for velocity-dependent friction (its user guide, "Velocity dependent friction"; the
+/// idea, not its code): coefficients frozen per node at the start's slip velocity (μ(0) below, μ_kin above), the
+/// per-node Coulomb problem solved by [`active_set`], the coefficients set to μ(V|s_i|) of the new slip velocities
+/// (μ(0) in stick), until the slip velocities change by less than 1e-9 of their size (at most `max_iterations` and
+/// 200 times, each inner solve at most `max_iterations` active-set iterations). Leaves
+/// the sets and forces it reached; returns the outer iterations taken.
+fn fixed_point(
+    p: &SteadyProblem,
+    law: &FrictionLaw,
+    start: Start,
+    state: &mut [i8],
+    h: &mut [f64],
+    slip_of: &dyn Fn(&[f64]) -> Vec<f64>,
+    max_iterations: usize,
+) -> usize {
+    let n = h.len();
+    let first = match start {
+        Start::Below => law.static_coefficient(),
+        Start::Above => law.kinetic_coefficient(),
+    };
+    let mut mu = vec![first; n];
+    let mut previous = vec![0.0; n];
+    for outer in 1..=max_iterations.min(200) {
+        active_set(p, Coefficients::Frozen(&mu), state, h, slip_of, max_iterations, |_, _| true);
+        let s: Vec<f64> =
+            slip_of(h).iter().zip(state.iter()).map(|(&v, &st)| if st.abs() == 2 { v } else { 0.0 }).collect();
+        let change = s.iter().zip(&previous).fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
+        let size = s.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+        for i in 0..n {
+            mu[i] = law.mu(p.velocity * s[i].abs());
+        }
+        if outer > 1 && change <= 1e-9 * size {
+            return outer;
+        }
+        previous = s;
+    }
+    max_iterations.min(200)
 }
 
 /// One time step of transient rolling (CONTACT's T = 2 with a shift Δq per step): the slip velocity of node i is
@@ -542,7 +649,7 @@ impl BranchReport {
 
 /// Newton's method on the equations of fixed sets `state` (out of contact `h_i = 0`, stick `s_i = 0`, slip
 /// `h_i + μ(V σ s_i) f_i σ = 0`), up to 30 steps.
-fn newton(p: &SteadyProblem, law: &FrictionLaw, state: &[i8], h: &mut [f64], slip_of: &dyn Fn(&[f64]) -> Vec<f64>) {
+fn newton(p: &SteadyProblem, coef: Coefficients, state: &[i8], h: &mut [f64], slip_of: &dyn Fn(&[f64]) -> Vec<f64>) {
     let n = h.len();
     let m = p.slip_matrix;
     for _ in 0..30 {
@@ -564,12 +671,13 @@ fn newton(p: &SteadyProblem, law: &FrictionLaw, state: &[i8], h: &mut [f64], sli
                 st => {
                     let sigma = f64::from(st.signum());
                     let t = (sigma * s[i]).max(0.0);
-                    let slope = law.slope(p.velocity * t) * p.velocity * p.normal[i];
+                    let (mu, slope) = coef.at(i, p.velocity * t);
+                    let slope = slope * p.velocity * p.normal[i];
                     for c in 0..n {
                         j[(i, c)] = slope * m[(i, c)];
                     }
                     j[(i, i)] += 1.0;
-                    r[(i, 0)] = -(h[i] + law.mu(p.velocity * t) * p.normal[i] * sigma);
+                    r[(i, 0)] = -(h[i] + mu * p.normal[i] * sigma);
                 }
             }
         }
@@ -578,7 +686,7 @@ fn newton(p: &SteadyProblem, law: &FrictionLaw, state: &[i8], h: &mut [f64], sli
             break;
         }
         // Damped: halve the step until the equations' residual falls (a falling law can throw a full step far).
-        let norm = |h: &[f64]| set_residual(p, law, state, h, &slip_of(h));
+        let norm = |h: &[f64]| set_residual(p, coef, state, h, &slip_of(h));
         let before = norm(h);
         let mut lambda = 1.0;
         let mut trial: Vec<f64> = (0..n).map(|i| h[i] + d[(i, 0)]).collect();
@@ -599,7 +707,7 @@ fn newton(p: &SteadyProblem, law: &FrictionLaw, state: &[i8], h: &mut [f64], sli
 }
 
 /// The sum of squares of the fixed-set equations of [`newton`] at `h` (with its slip `s`).
-fn set_residual(p: &SteadyProblem, law: &FrictionLaw, state: &[i8], h: &[f64], s: &[f64]) -> f64 {
+fn set_residual(p: &SteadyProblem, coef: Coefficients, state: &[i8], h: &[f64], s: &[f64]) -> f64 {
     (0..h.len())
         .map(|i| match state[i] {
             0 => h[i] * h[i],
@@ -611,7 +719,7 @@ fn set_residual(p: &SteadyProblem, law: &FrictionLaw, state: &[i8], h: &[f64], s
             st => {
                 let sigma = f64::from(st.signum());
                 let t = (sigma * s[i]).max(0.0);
-                let v = h[i] + law.mu(p.velocity * t) * p.normal[i] * sigma;
+                let v = h[i] + coef.at(i, p.velocity * t).0 * p.normal[i] * sigma;
                 v * v
             }
         })

@@ -40,7 +40,7 @@ impl SceneDocument {
             return Err(bad(
                 key,
                 "a falling friction law is posed in steady rolling (`[rolling] mode = \"steady\"`, no `[[steps]]`); \
-                 transient rolling with it is the library's `veldep::TransientRun`"
+                 transient rolling with it is the library's `rollbem::veldep::transient::roll`"
                     .into(),
             ));
         };
