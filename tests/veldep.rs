@@ -102,8 +102,7 @@ fn veldep_fric_case_1_against_contact() {
 
 /// CONTACT's rational law (L = 3: FKIN 0.18, FRAT1 0.06, SABSH1 100, FRAT2 0.06, SABSH2 0.3162) falls steeply at
 /// small slip velocities: at CKSI = −0.0009999 the two starts converge (residual ≤ 1e-12) to two different solutions,
-/// and the outcome says so. Figures of this run (no peer prints them: CONTACT's input uses L = 4): FX/(μ FN) =
-/// 0.56550 with 40 sticking elements from below, 0.56520 with 39 from above.
+/// and the outcome says so (CONTACT finds two as well: `branch_pair_against_contact`).
 #[test]
 fn falling_friction_has_two_branches_and_says_so() {
     let law = FrictionLaw::Rational { kinetic: 0.18, first: (0.06, 100.0), second: (0.06, 0.3162) };
@@ -115,15 +114,9 @@ fn falling_friction_has_two_branches_and_says_so() {
     for o in [&b.below, &b.above] {
         assert!(matches!(o.status, SteadyStatus::Converged { residual, .. } if residual < 1e-12), "{:?}", o.status);
     }
+    // The forces differ between the branches (CONTACT: 0.5655 and 0.5652; compared in branch_pair_against_contact).
     let q = |o: &SteadyOutcome| o.tangential.iter().sum::<f64>() * force / (0.3 * 3111.08);
-    let sticks = |o: &SteadyOutcome| o.stick.iter().filter(|&&x| x).count();
-    assert!(
-        (q(&b.below) - 0.56550).abs() < 5e-5 && (q(&b.above) - 0.56520).abs() < 5e-5,
-        "{} {}",
-        q(&b.below),
-        q(&b.above)
-    );
-    assert_eq!((sticks(&b.below), sticks(&b.above)), (40, 39));
+    assert!(q(&b.below) - q(&b.above) > 2e-4, "{} {}", q(&b.below), q(&b.above));
     // The exponential law of case 1 has one: not distinct.
     let exp = SteadyProblem {
         law: FrictionLaw::Exponential { kinetic: 0.18, first: (0.12, 100.0), second: (0.0, 0.0) },
@@ -152,7 +145,7 @@ fn a_cut_short_iteration_is_not_a_solution() {
 /// CONTACT's cases 2 and 4: one time step (Δq = DX = 0.1 mm, CKSI = −0.001) from the steady state of case 1 (case 3
 /// repeats it), started from below (case 2, INISLP = 1: FX/(μ FN) = 0.5977, NCON 81, NADH 77) and from above (case 4,
 /// INISLP = −1: 0.5702, 81, 34), the exponential law: two different solutions of one step from two starts, both
-/// converged. The counts agree in both, FX in case 4 to the printed digits, in case 2 to 1.7e-5 (0.59764).
+/// converged. The counts agree in both, FX within 1e-4 (case 4 to the printed digits, case 2 0.59764).
 #[test]
 fn veldep_fric_time_steps_against_contact() {
     let law = FrictionLaw::Exponential { kinetic: 0.18, first: (0.12, 100.0), second: (0.0, 0.0) };
@@ -174,13 +167,10 @@ fn veldep_fric_time_steps_against_contact() {
         let n_stick = out.stick.iter().filter(|&&b| b).count();
         assert!(matches!(out.status, SteadyStatus::Converged { residual, .. } if residual < 1e-12), "{:?}", out.status);
         assert_eq!((f.iter().filter(|&&v| v > 0.0).count(), n_stick), (81, stick), "{start:?}");
-        if start == Start::Above {
-            assert_eq!((q * 1e4).round() / 1e4, ratio, "{start:?}: {q}");
-        } else {
-            // 0.59764 here against CONTACT's printed 0.5977 (≥ 0.59765): 1e-5 below its printing, not explained
-            // (CONTACT stops at EPS = 1e-7 of its own residual); asserted as it stands.
-            assert!((q - 0.59764).abs() < 5e-6, "{start:?}: {q}");
-        }
+        // Within 1e-4 of the printed value: print rounding plus CONTACT's stopping rule (the bound of
+        // `veldep_fric_fifty_time_steps_against_contact`); case 4 rounds to the printed digits, case 2 is 0.59764
+        // against the printed 0.5977.
+        assert!((q - ratio).abs() <= 1e-4, "{start:?}: {q}");
     }
 }
 
@@ -280,7 +270,7 @@ fn a_constant_law_scene_is_coulomb_bit_for_bit() {
 }
 
 /// The rational law's two branches at CKSI = −0.0009999 through a scene: both starts reported, distinct, each with
-/// its force and stick count (the library's figures of `falling_friction_has_two_branches_and_says_so`), the run
+/// its force and stick count (the library's, compared with CONTACT in `branch_pair_against_contact`), the run
 /// carrying the start the scene names; the table says "two different solutions".
 #[test]
 fn a_scene_reports_both_branches() {
@@ -295,6 +285,7 @@ fn a_scene_reports_both_branches() {
         assert_eq!(run.status, Status::Solved, "{}", run.explanation());
         let b = run.branches.unwrap();
         assert!(b.distinct && b.carried == carried, "{b:?}");
+        // CONTACT: 40 from below, 38 from above (39 here: see branch_pair_against_contact).
         assert_eq!((b.below.nodes_stick, b.above.nodes_stick), (Some(40), Some(39)));
         assert_eq!(run.contact.as_ref().unwrap().nodes_stick, stick);
         let text = rollbem::results::render::run_table(&report);
@@ -455,4 +446,53 @@ fn veldep_fric_fifty_time_steps_against_contact() {
         }
     }
     assert!(misses.is_empty(), "{misses:#?}");
+}
+
+// ---- The branch pair: the steady problem at CKSI = −0.001 and −0.0009999 from both starts --------------------------
+
+/// CONTACT's steady solutions at the issue's two creepages from both starts (reference/veldep/steady_branches.csv,
+/// written by reference/veldep/steady_branches.sh running CONTACT r2707): (law, CKSI, INISLP, FX/FSTAT/FN, NADH).
+fn contact_branches() -> Vec<(String, f64, i32, f64, usize)> {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/reference/veldep/steady_branches.csv");
+    std::fs::read_to_string(path)
+        .unwrap()
+        .lines()
+        .skip(1)
+        .map(|l| {
+            let c: Vec<&str> = l.split(',').collect();
+            (c[1].into(), c[2].parse().unwrap(), c[3].parse().unwrap(), c[4].parse().unwrap(), c[6].parse().unwrap())
+        })
+        .collect()
+}
+
+/// The branch pair (issue 33): the steady problem at CKSI = −0.001 and −0.0009999, from below (INISLP = 1) and from
+/// above (INISLP = −1), against CONTACT's own runs of the same eight cases (`contact_branches`). The exponential law
+/// of veldep_fric.inp has one solution at both creepages (both starts meet: 0.5941, 45 stick, as CONTACT); the
+/// rational law has two, found from the two starts at both creepages and reported as two (`distinct`), as CONTACT
+/// finds two (0.5656/0.5655 from below, 0.5652 from above). FX/(μ FN) within 1e-4 of CONTACT's printed value (the
+/// bound of `veldep_fric_fifty_time_steps_against_contact`: print rounding plus CONTACT's stopping rule); the stick
+/// counts equal CONTACT's NADH except the rational law from above, 39 here against CONTACT's 38 at both creepages
+/// (CONTACT's last outer iteration there changes the slip velocities by 0.78 to 0.92 of its stopping bound, i.e. it
+/// stops barely converged; not explained further, asserted as it stands).
+#[test]
+fn branch_pair_against_contact() {
+    let (m, f, force, _) = parts();
+    for (law_name, cksi, inislp, fx, nadh) in contact_branches() {
+        let law = match law_name.as_str() {
+            "exponential" => FrictionLaw::Exponential { kinetic: 0.18, first: (0.12, 100.0), second: (0.0, 0.0) },
+            _ => FrictionLaw::Rational { kinetic: 0.18, first: (0.06, 100.0), second: (0.06, 0.3162) },
+        };
+        let p = SteadyProblem { slip_matrix: &m, normal: &f, creepage: cksi, offset: None, velocity: 45000.0, law };
+        let b = solve_both(&p, 1e-10, 200).unwrap();
+        let case = format!("{law_name} at {cksi} from {}", if inislp > 0 { "below" } else { "above" });
+        assert_eq!(b.distinct, law_name == "rational", "{case}");
+        let o = if inislp > 0 { &b.below } else { &b.above };
+        assert_eq!(o.start, if inislp > 0 { Start::Below } else { Start::Above });
+        assert!(matches!(o.status, SteadyStatus::Converged { residual, .. } if residual < 1e-12), "{case}");
+        let q = o.tangential.iter().sum::<f64>() * force / (0.3 * 3111.08);
+        assert!((q - fx).abs() <= 1e-4, "{case}: {q} against CONTACT's {fx}");
+        let stick = o.stick.iter().filter(|&&x| x).count();
+        let expected = if law_name == "rational" && inislp < 0 { nadh + 1 } else { nadh };
+        assert_eq!(stick, expected, "{case} (CONTACT: {nadh})");
+    }
 }
