@@ -310,7 +310,7 @@ pub fn solves_on_this_thread() -> usize {
 /// `max_iterations` active-set iterations (each with up to 30 Newton steps). Refused: shapes that differ, a speed
 /// that is not finite and > 0, a creepage that is not finite, an invalid law.
 ///
-/// First CONTACT's outer iteration from the start ([`fixed_point`]): the coefficients frozen at the previous slip
+/// First CONTACT's outer iteration from the start (`fixed_point` below): the coefficients frozen at the previous slip
 /// velocities (the start's: μ(0) below, μ_kin above), the per-node Coulomb problem solved, the coefficients
 /// updated, until the slip velocities settle. Then the semismooth Newton with the law's slope from the sets and
 /// forces it reached, to `tolerance` (the outer iteration alone converges only linearly). Where the problem has

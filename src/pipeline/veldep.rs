@@ -97,7 +97,13 @@ pub(super) fn solve(
         let (mut run, _) = evaluate_outcome(&ctx, outcome);
         if let (Status::Solved, Some(nsol)) = (run.status, normal_solution) {
             let t0 = Instant::now();
-            let posed = Posed { normal: &normal, frictional: &frictional, slip_matrix: &slip_matrix, friction };
+            let posed = Posed {
+                origin: scene.origin(),
+                normal: &normal,
+                frictional: &frictional,
+                slip_matrix: &slip_matrix,
+                friction,
+            };
             tangential(&posed, &nsol, &mut run)?;
             let dt = t0.elapsed().as_secs_f64();
             run.timing_s.solve += dt;
@@ -112,6 +118,7 @@ pub(super) fn solve(
 
 /// The problems a run's tangential part is posed on.
 struct Posed<'a, 'p> {
+    origin: &'a std::path::Path,
     normal: &'a ContactProblem<'p>,
     frictional: &'a ContactProblem<'p>,
     slip_matrix: &'a faer::Mat<f64>,
@@ -123,7 +130,14 @@ struct Posed<'a, 'p> {
 fn tangential(posed: &Posed, nsol: &Solution, run: &mut SolverRun) -> Result<()> {
     let fp = posed.frictional;
     let flex = fp.flex();
-    let xi = fp.given()[fp.dofs().iter().position(|d| d.kind == DofKind::Creepage).unwrap_or(0)];
+    let Some(k) = fp.dofs().iter().position(|d| d.kind == DofKind::Creepage) else {
+        // A validated falling-law scene prescribes its creepage (scene::friction); say so if one does not.
+        return Err(Error::Unsupported {
+            path: posed.origin.to_path_buf(),
+            message: "rolling.creepage: a falling friction law needs the creepage prescribed".into(),
+        });
+    };
+    let xi = fp.given()[k];
     let p = SteadyProblem {
         slip_matrix: posed.slip_matrix,
         normal: &nsol.f,
