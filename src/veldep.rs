@@ -206,6 +206,60 @@ pub fn slip_roots(law: &FrictionLaw, v: f64, bf: f64, c: f64) -> (f64, f64, bool
     }
 }
 
+/// CONTACT's friction memory (its user guide, "Friction memory"; L = 2, 3, 4 with MEMDST > 0), in steady rolling:
+/// the coefficient relaxes towards the law's value along the material's path, `dμ/dt = −max(s_a, s_0)/d_c (μ −
+/// μ_s(s_a))`, one backward-Euler step per element: `μ_i = θ_i μ_up + (1 − θ_i) μ_s(s_a,i)`, `θ_i = d_c/(d_c + Δt
+/// max(s_a,i, s_0))`, `Δt = Δx/V`, `μ_up` the coefficient of the element upstream (μ(0) ahead of the leading edge),
+/// `s_a = 0` in stick and out of contact. A node's coefficient then depends on its upstream neighbours' slip
+/// velocities: the problem is solved by the outer iteration alone ([`solve_steady_with`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Memory {
+    /// d_c, the memory distance (length, > 0; CONTACT's MEMDST).
+    pub distance: f64,
+    /// s_0, the least slip velocity of the relaxation (length/s, ≥ 0; MEM_S0).
+    pub min_velocity: f64,
+    /// Δx, the distance the material travels from one element to the next (length, > 0: the element length).
+    pub element: f64,
+    /// The rolling direction ±1 (+1: the leading edge is the last node).
+    pub direction: i32,
+}
+
+impl Memory {
+    /// Checks: `distance` finite > 0, `min_velocity` finite ≥ 0, `element` finite > 0, `direction` ±1.
+    pub fn validated(self) -> Result<Self, ArgumentError> {
+        const F: &str = "veldep::Memory";
+        if !(self.distance > 0.0 && self.distance.is_finite()) {
+            return Err(ArgumentError::new(F, "distance", format!("must be finite and > 0, got {}", self.distance)));
+        }
+        if !(self.min_velocity >= 0.0 && self.min_velocity.is_finite()) {
+            return Err(ArgumentError::new(F, "min_velocity", format!("must be finite and ≥ 0, got {}", self.min_velocity)));
+        }
+        if !(self.element > 0.0 && self.element.is_finite()) {
+            return Err(ArgumentError::new(F, "element", format!("must be finite and > 0, got {}", self.element)));
+        }
+        if self.direction.abs() != 1 {
+            return Err(ArgumentError::new(F, "direction", format!("must be ±1, got {}", self.direction)));
+        }
+        Ok(self)
+    }
+
+    /// The coefficients of the nodes with slip velocities `s` (dimensionless, 0 where not slipping) at speed `v`.
+    fn coefficients(&self, law: &FrictionLaw, v: f64, s: &[f64]) -> Vec<f64> {
+        let n = s.len();
+        let mut mu = vec![0.0; n];
+        let mut upstream = law.static_coefficient();
+        let order: Box<dyn Iterator<Item = usize>> =
+            if self.direction > 0 { Box::new((0..n).rev()) } else { Box::new(0..n) };
+        for i in order {
+            let sa = v * s[i].abs();
+            let theta = self.distance / (self.distance + self.element / v * sa.max(self.min_velocity));
+            mu[i] = theta * upstream + (1.0 - theta) * law.mu(sa);
+            upstream = mu[i];
+        }
+        mu
+    }
+}
+
 /// Where the iteration starts (module docs): it picks the branch where the steady problem has several solutions.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -275,23 +329,27 @@ pub struct SteadyOutcome {
 /// The law's residual of `(h, s)` with the sets `state` (0 out of contact, 1 stick, ±2 slip with σ = ±1): stick
 /// `|s_i|` relative to `|ξ|` and the excess of `|h_i|` over `μ(0) f_i`; slip `|h_i + μ(V|s_i|) f_i σ_i|` and a slip
 /// against its sign, relative to `max μ(0) f`.
-fn law_residual(p: &SteadyProblem, h: &[f64], s: &[f64], state: &[i8], scale: f64) -> f64 {
-    let mu0 = p.law.static_coefficient();
+fn law_residual(p: &SteadyProblem, coef: Coefficients, h: &[f64], s: &[f64], state: &[i8], scale: f64) -> f64 {
     let xi = p.creepage.abs().max(f64::MIN_POSITIVE);
     let mut worst = 0.0f64;
     for i in 0..h.len() {
         let r = match state[i] {
             0 => h[i].abs() / scale,
-            1 => (s[i].abs() / xi).max((h[i].abs() - mu0 * p.normal[i]).max(0.0) / scale),
+            1 => (s[i].abs() / xi).max((h[i].abs() - coef.bound(i) * p.normal[i]).max(0.0) / scale),
             st => {
                 let sigma = f64::from(st.signum());
                 let wrong_way = (-sigma * s[i]).max(0.0) / xi;
-                ((h[i] + p.law.mu(p.velocity * s[i].abs()) * p.normal[i] * sigma).abs() / scale).max(wrong_way)
+                ((h[i] + coef.at(i, p.velocity * s[i].abs()).0 * p.normal[i] * sigma).abs() / scale).max(wrong_way)
             }
         };
         worst = worst.max(r);
     }
     worst
+}
+
+/// The slip velocities of the slipping nodes (`state` ±2), 0 elsewhere.
+fn slipping(s: &[f64], state: &[i8]) -> Vec<f64> {
+    s.iter().zip(state).map(|(&v, &st)| if st.abs() == 2 { v } else { 0.0 }).collect()
 }
 
 thread_local! {
@@ -324,6 +382,20 @@ pub fn solve_steady(
     tolerance: f64,
     max_iterations: usize,
 ) -> Result<SteadyOutcome, ArgumentError> {
+    solve_steady_with(p, None, start, tolerance, max_iterations)
+}
+
+/// [`solve_steady`] with CONTACT's friction memory ([`Memory`]; `None`: none, [`solve_steady`]). With memory a
+/// node's coefficient depends on the slip upstream, so the outer iteration alone solves it (no Newton after it): to
+/// a change of the slip velocities below 1e-13 of their size, then the law's residual with the coefficients of
+/// the final slip velocities must be below `tolerance`. Refused as [`solve_steady`], and for an invalid memory.
+pub fn solve_steady_with(
+    p: &SteadyProblem,
+    memory: Option<Memory>,
+    start: Start,
+    tolerance: f64,
+    max_iterations: usize,
+) -> Result<SteadyOutcome, ArgumentError> {
     const F: &str = "veldep::solve_steady";
     let n = p.normal.len();
     let m = p.slip_matrix;
@@ -340,6 +412,7 @@ pub fn solve_steady(
         return Err(ArgumentError::new(F, "offset", format!("must have {n} entries")));
     }
     let law = p.law.validated()?;
+    let memory = memory.map(Memory::validated).transpose()?;
     SOLVES.with(|c| c.set(c.get() + 1));
     let scale = p.normal.iter().fold(0.0f64, |a, &f| a.max(law.static_coefficient() * f)).max(f64::MIN_POSITIVE);
     let offset = |i: usize| p.offset.map_or(0.0, |c| c[i]);
@@ -348,7 +421,13 @@ pub fn solve_steady(
     };
     let finish = |state: Vec<i8>, h: Vec<f64>, iterations: usize, fixed_point: usize| {
         let s = slip_of(&h);
-        let residual = law_residual(p, &h, &s, &state, scale);
+        let residual = match &memory {
+            None => law_residual(p, Coefficients::Law(&law), &h, &s, &state, scale),
+            Some(mem) => {
+                let mu = mem.coefficients(&law, p.velocity, &slipping(&s, &state));
+                law_residual(p, Coefficients::Frozen(&mu), &h, &s, &state, scale)
+            }
+        };
         let stick: Vec<bool> = state.iter().map(|&st| st == 1).collect();
         let converged = residual <= tolerance;
         let slip = s.iter().zip(&stick).map(|(&v, &st)| if st && converged { 0.0 } else { v }).collect();
@@ -361,11 +440,14 @@ pub fn solve_steady(
     };
     let newton_sets = |state: &mut Vec<i8>, h: &mut Vec<f64>| {
         active_set(p, Coefficients::Law(&law), state, h, &slip_of, max_iterations, |st, h| {
-            law_residual(p, h, &slip_of(h), st, scale) <= tolerance
+            law_residual(p, Coefficients::Law(&law), h, &slip_of(h), st, scale) <= tolerance
         })
     };
     let (mut state, mut h) = initial(p, &law, start);
-    let outer = fixed_point(p, &law, start, &mut state, &mut h, &slip_of, max_iterations);
+    let outer = fixed_point(p, &law, memory.as_ref(), start, &mut state, &mut h, &slip_of, max_iterations);
+    if memory.is_some() {
+        return Ok(finish(state, h, outer, outer));
+    }
     if let Some(iterations) = newton_sets(&mut state, &mut h) {
         return Ok(finish(state, h, iterations, outer));
     }
@@ -459,9 +541,11 @@ fn active_set(
 /// (μ(0) in stick), until the slip velocities change by less than 1e-9 of their size (at most `max_iterations` and
 /// 200 times, each inner solve at most `max_iterations` active-set iterations). Leaves
 /// the sets and forces it reached; returns the outer iterations taken.
+#[allow(clippy::too_many_arguments)]
 fn fixed_point(
     p: &SteadyProblem,
     law: &FrictionLaw,
+    memory: Option<&Memory>,
     start: Start,
     state: &mut [i8],
     h: &mut [f64],
@@ -477,14 +561,16 @@ fn fixed_point(
     let mut previous = vec![0.0; n];
     for outer in 1..=max_iterations.min(200) {
         active_set(p, Coefficients::Frozen(&mu), state, h, slip_of, max_iterations, |_, _| true);
-        let s: Vec<f64> =
-            slip_of(h).iter().zip(state.iter()).map(|(&v, &st)| if st.abs() == 2 { v } else { 0.0 }).collect();
+        let s = slipping(&slip_of(h), state);
         let change = s.iter().zip(&previous).fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
         let size = s.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-        for i in 0..n {
-            mu[i] = law.mu(p.velocity * s[i].abs());
-        }
-        if outer > 1 && change <= 1e-9 * size {
+        mu = match memory {
+            Some(m) => m.coefficients(law, p.velocity, &s),
+            None => s.iter().map(|v| law.mu(p.velocity * v.abs())).collect(),
+        };
+        // Without memory the Newton finishes from here; with memory this is the answer, so converged further.
+        let settled = if memory.is_some() { 1e-13 } else { 1e-9 };
+        if outer > 1 && change <= settled * size {
             return outer;
         }
         previous = s;
@@ -538,8 +624,18 @@ pub struct Branches {
 
 /// [`solve_steady`] from [`Start::Below`] and from [`Start::Above`] ([`Branches`]). Refused as [`solve_steady`].
 pub fn solve_both(p: &SteadyProblem, tolerance: f64, max_iterations: usize) -> Result<Branches, ArgumentError> {
-    let below = solve_steady(p, Start::Below, tolerance, max_iterations)?;
-    let above = solve_steady(p, Start::Above, tolerance, max_iterations)?;
+    solve_both_with(p, None, tolerance, max_iterations)
+}
+
+/// [`solve_both`] with friction memory ([`solve_steady_with`]).
+pub fn solve_both_with(
+    p: &SteadyProblem,
+    memory: Option<Memory>,
+    tolerance: f64,
+    max_iterations: usize,
+) -> Result<Branches, ArgumentError> {
+    let below = solve_steady_with(p, memory, Start::Below, tolerance, max_iterations)?;
+    let above = solve_steady_with(p, memory, Start::Above, tolerance, max_iterations)?;
     let mu0 = p.law.static_coefficient();
     let scale = p.normal.iter().fold(0.0f64, |a, &f| a.max(mu0 * f)).max(f64::MIN_POSITIVE);
     let converged = |o: &SteadyOutcome| matches!(o.status, SteadyStatus::Converged { .. });

@@ -2,7 +2,9 @@
 # CONTACT's steady solutions of veldep_fric.inp's problem from both starts, at the issue's two creepages, for the
 # exponential law (veldep_fric.inp's own, L = 4) and the rational law (its commented alternative, L = 3):
 # 2 laws x 2 creepages (CKSI = -0.001, -0.0009999) x 2 starts (INISLP = +1 from below, -1 from above), every case
-# case 1 of veldep_fric.inp with those three values changed. Runs the CONTACT build given (default: the MKL build of
+# case 1 of veldep_fric.inp with those three values changed; then the exponential law with friction memory (MEMDST =
+# 0.003 mm, MEM_S0 = 1 mm/s, the user guide's example values) at both creepages from both starts (cases 9-12).
+# Runs the CONTACT build given (default: the MKL build of
 # r2707 on this machine) and writes reference/veldep/steady_branches.csv (CONTACT's printed figures, nothing
 # computed by rollbem).
 #
@@ -14,13 +16,15 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 inp="$work/branches.inp"
 : > "$inp"
-for law in exponential rational; do
+for law in exponential rational memory; do
   for cksi in -0.001 -0.0009999; do
     for inislp in 1 -1; do
       case $law in
         exponential) l=4; line="   0.180    0.120      100.    0.0     0.0     FKIN, FEXP1, SABSH1, FE2, SH2" ;;
         rational)    l=3; line="   0.180    0.060      100.    0.060   0.3162  FKIN, FRAT1, SABSH1, FR2, SH2" ;;
+        memory)      l=4; line="   0.180    0.120      100.    0.0     0.0     FKIN, FEXP1, SABSH1, FE2, SH2" ;;
       esac
+      memdst="0.000"; [ $law = memory ] && memdst="0.003"
       cat >> "$inp" <<CASE
 % $law law, CKSI = $cksi, INISLP = $inislp
  3  MODULE
@@ -31,7 +35,7 @@ for law in exponential rational; do
     0.5   1.0     $inislp    1.1                     OMEGAH, OMEGAS, INISLP, OMGSLP
  622216.   $cksi 0.000    0.000           FN, CKSI, CETA, CPHI
 $line
-   0.000    1.000                              MEMDST, MEM_S0
+   $memdst    1.000                              MEMDST, MEM_S0
    0.000    0.100    45000.                    CHI, DQ, VELOC
    0.280    0.280    82000.   82000.           POISS 1,2,  GG 1,2
     3                                          IPOTCN
@@ -50,13 +54,15 @@ python3 - "$work/branches.out" > "$here/steady_branches.csv" <<'PY'
 import re, sys
 text = open(sys.argv[1], encoding="latin-1").read()
 parts = re.split(r"^ Case +(\d+)\s*$", text, flags=re.M)
-print("case,law,cksi,inislp,fx_fstat_fn,ncon,nadh,nslip")
-order = [(law, c, i) for law in ("exponential", "rational") for c in (-0.001, -0.0009999) for i in (1, -1)]
+print("case,law,cksi,inislp,fx_fstat_fn,ncon,nadh,nslip,memdst")
+order = [(law, c, i) for law in ("exponential", "rational", "memory") for c in (-0.001, -0.0009999) for i in (1, -1)]
 for k in range(1, len(parts), 2):
     case, body = int(parts[k]), parts[k + 1]
     law, cksi, inislp = order[case - 1]
     fx = re.search(r"FN/G\s+FX/FSTAT/FN.*\n\s*(\S+)\s+(\S+)", body).group(2)
     stats = re.search(r"NPOT\s+NCON\s+NADH\s+NSLIP.*\n\s*(\d+)\s+(\d+)\s+(\d+)\s+(\d+)", body).group(2, 3, 4)
-    print(f"{case},{law},{cksi:.7g},{inislp},{fx},{','.join(stats)}")
+    memdst = 0.003 if law == "memory" else 0.0
+    law = "exponential" if law == "memory" else law
+    print(f"{case},{law},{cksi:.7g},{inislp},{fx},{','.join(stats)},{memdst}")
 PY
 cat "$here/steady_branches.csv"
