@@ -39,8 +39,9 @@
 //! a scene reaches this module: a Coulomb scene (and a constant law, which is Coulomb's) never does
 //! ([`solves_on_this_thread`] counts the solves).
 //!
-//! Not done: the friction memory (CONTACT's MEMDST, MEM_S0). Tested against CONTACT's `veldep_fric.inp`
-//! (tests/veldep.rs).
+//! Friction memory (CONTACT's MEMDST, MEM_S0): [`Memory`], in steady rolling ([`solve_steady_with`]; a scene's
+//! `memory = { ... }`); not in [`transient::roll`]. Tested against CONTACT's `veldep_fric.inp` and its own runs of
+//! that problem (tests/veldep.rs).
 
 pub mod transient;
 
@@ -232,7 +233,11 @@ impl Memory {
             return Err(ArgumentError::new(F, "distance", format!("must be finite and > 0, got {}", self.distance)));
         }
         if !(self.min_velocity >= 0.0 && self.min_velocity.is_finite()) {
-            return Err(ArgumentError::new(F, "min_velocity", format!("must be finite and ≥ 0, got {}", self.min_velocity)));
+            return Err(ArgumentError::new(
+                F,
+                "min_velocity",
+                format!("must be finite and ≥ 0, got {}", self.min_velocity),
+            ));
         }
         if !(self.element > 0.0 && self.element.is_finite()) {
             return Err(ArgumentError::new(F, "element", format!("must be finite and > 0, got {}", self.element)));
@@ -654,6 +659,9 @@ pub struct SceneFriction {
     pub velocity: f64,
     /// The start whose solution the runs carry (both are solved).
     pub start: Start,
+    /// Friction memory `(d_c, s_0)` (length, length/s), or none; the pipeline adds the grid's element length and
+    /// the rolling direction ([`Memory`]).
+    pub memory: Option<(f64, f64)>,
 }
 
 /// One start's outcome, as a scene's run reports it (user's units).

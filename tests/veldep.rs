@@ -326,6 +326,25 @@ fn bad_friction_law_keys_are_refused_naming_them() {
             "contact.friction_law",
         ),
         ("friction = 0.3".into(), STEADY.into(), "rolling.velocity"),
+        (
+            law(
+                r#"kind = "exponential", kinetic = 0.18, first = [0.12, 100.0], memory = { distance = 0.0, min_velocity = 1.0 }"#,
+            ),
+            STEADY.into(),
+            "friction_law.memory.distance",
+        ),
+        (
+            law(
+                r#"kind = "exponential", kinetic = 0.18, first = [0.12, 100.0], memory = { distance = 0.003, min_velocity = -1.0 }"#,
+            ),
+            STEADY.into(),
+            "friction_law.memory.min_velocity",
+        ),
+        (
+            law(r#"kind = "exponential", kinetic = 0.18, first = [0.12, 100.0], memory = { distance = 0.003 }"#),
+            STEADY.into(),
+            "min_velocity",
+        ),
     ];
     for (contact, rolling, key) in cases {
         let err = scene_with(&contact, &rolling).map(|_| ()).unwrap_err().to_string();
@@ -534,4 +553,22 @@ fn friction_memory_against_contact() {
         assert!((q - fx).abs() <= 1e-4, "{cksi} {inislp}: {q} against CONTACT's {fx}");
         assert_eq!(o.stick.iter().filter(|&&x| x).count(), nadh, "{cksi} {inislp}");
     }
+}
+
+/// Friction memory through a scene (`memory = { distance, min_velocity }`): CONTACT's case 11 of
+/// steady_branches.csv (CKSI = −0.0009999, MEMDST = 0.003, MEM_S0 = 1: 0.6116, NADH 48) within 1e-4 of μ FN, both
+/// starts one solution.
+#[test]
+fn friction_memory_in_a_scene() {
+    let s = scene_with(
+        r#"friction_law = { kind = "exponential", kinetic = 0.18, first = [0.12, 100.0], memory = { distance = 0.003, min_velocity = 1.0 } }"#,
+        STEADY,
+    )
+    .unwrap();
+    let run = run_scene(&s).unwrap().runs[0].clone();
+    assert_eq!(run.status, Status::Solved, "{}", run.explanation());
+    let q = run.resultants.unwrap().tangential / (0.3 * 3111.08);
+    assert!((q - 0.6116).abs() <= 1e-4, "{q}");
+    assert_eq!(run.contact.as_ref().unwrap().nodes_stick, 48);
+    assert!(!run.branches.unwrap().distinct);
 }

@@ -99,6 +99,7 @@ pub(super) fn solve(
             let t0 = Instant::now();
             let posed = Posed {
                 origin: scene.origin(),
+                direction: scene.rolling().map_or(1, |r| r.direction()),
                 normal: &normal,
                 frictional: &frictional,
                 slip_matrix: &slip_matrix,
@@ -119,6 +120,7 @@ pub(super) fn solve(
 /// The problems a run's tangential part is posed on.
 struct Posed<'a, 'p> {
     origin: &'a std::path::Path,
+    direction: i32,
     normal: &'a ContactProblem<'p>,
     frictional: &'a ContactProblem<'p>,
     slip_matrix: &'a faer::Mat<f64>,
@@ -146,7 +148,16 @@ fn tangential(posed: &Posed, nsol: &Solution, run: &mut SolverRun) -> Result<()>
         velocity: posed.friction.velocity,
         law: posed.friction.law,
     };
-    let both = crate::veldep::solve_both(&p, TOLERANCE, MAX_ITERATIONS).map_err(Error::from)?;
+    // Memory: the material moves one element per Δt = Δx/V (a uniform grid: the mean spacing), leading edge first.
+    let memory = posed.friction.memory.map(|(distance, min_velocity)| {
+        let n = flex.x.len();
+        let element = match n {
+            0 | 1 => flex.weights.first().copied().unwrap_or(1.0) * flex.scales.length,
+            _ => (flex.x[n - 1] - flex.x[0]).abs() / (n - 1) as f64 * flex.scales.length,
+        };
+        crate::veldep::Memory { distance, min_velocity, element, direction: posed.direction }
+    });
+    let both = crate::veldep::solve_both_with(&p, memory, TOLERANCE, MAX_ITERATIONS).map_err(Error::from)?;
     let force = flex.scales.modulus * flex.scales.length;
     let report = BranchReport {
         carried: posed.friction.start,

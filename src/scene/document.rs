@@ -233,6 +233,20 @@ pub struct FrictionLawTable {
     /// reported ([`crate::veldep::BranchReport`]).
     #[serde(default)]
     pub start: crate::veldep::Start,
+    /// CONTACT's friction memory (`{ distance, min_velocity }`: MEMDST d_c > 0 in length, MEM_S0 s_0 ≥ 0 in
+    /// length/s; [`crate::veldep::Memory`]); absent: none (the coefficient follows the slip velocity at once).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub memory: Option<FrictionMemoryTable>,
+}
+
+/// `memory = { distance, min_velocity }` of `[contact.friction_law]`: CONTACT's MEMDST and MEM_S0.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FrictionMemoryTable {
+    /// d_c, the memory distance (length, > 0).
+    pub distance: f64,
+    /// s_0, the least slip velocity of the relaxation (length/s, ≥ 0).
+    pub min_velocity: f64,
 }
 
 /// The family of a [`FrictionLawTable`].
@@ -259,7 +273,8 @@ impl FrictionLawTable {
         }
     }
 
-    /// Whether the law is a constant (both terms' coefficients 0): Coulomb's `μ = kinetic`.
+    /// Whether the law is a constant (both terms' coefficients 0): Coulomb's `μ = kinetic` (memory then changes
+    /// nothing: the coefficient relaxes towards the constant it starts from).
     pub fn is_constant(&self) -> bool {
         self.first[0] == 0.0 && self.second[0] == 0.0
     }

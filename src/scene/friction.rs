@@ -100,6 +100,17 @@ fn check_values(t: &FrictionLawTable) -> std::result::Result<(), (String, String
             return Err((key(name), format!("its slip velocity must be finite (got {s})")));
         }
     }
+    if let Some(m) = t.memory {
+        if !(m.distance > 0.0 && m.distance.is_finite()) {
+            return Err((key("memory.distance"), format!("must be a finite number > 0 (length) (got {})", m.distance)));
+        }
+        if !(m.min_velocity >= 0.0 && m.min_velocity.is_finite()) {
+            return Err((
+                key("memory.min_velocity"),
+                format!("must be a finite number ≥ 0 (length/s) (got {})", m.min_velocity),
+            ));
+        }
+    }
     Ok(())
 }
 

@@ -955,7 +955,8 @@ impl Scene {
     pub fn slip_velocity_friction(&self) -> Option<crate::veldep::SceneFriction> {
         let t = self.document.contact.friction_law.filter(|t| !t.is_constant())?;
         let velocity = self.document.rolling.as_ref().and_then(|r| r.velocity)?;
-        Some(crate::veldep::SceneFriction { law: t.law(), velocity, start: t.start })
+        let memory = t.memory.map(|m| (m.distance, m.min_velocity));
+        Some(crate::veldep::SceneFriction { law: t.law(), velocity, start: t.start, memory })
     }
 
     /// How the support is driven.

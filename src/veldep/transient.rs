@@ -6,6 +6,9 @@
 //! A step that does not converge ends the run: it is reported with its status and residual
 //! ([`TransientStatus::Stopped`]), never taken as the state the next step starts from, and no step after it is
 //! computed.
+//!
+//! No friction memory here ([`super::Memory`] is steady rolling's): CONTACT carries each material point's
+//! coefficient from one time step to the next, which this driver does not yet do.
 
 use super::{solve_steady, transient_step, FrictionLaw, Start, SteadyOutcome, SteadyProblem, SteadyStatus};
 use crate::error::ArgumentError;
