@@ -233,6 +233,14 @@ pub fn make_checks(
             "not compared: a body is viscoelastic (`viscoelastic = { ... }`), the theories are elastic".into(),
         ));
     }
+    if scene.slip_velocity_friction().is_some() {
+        out.push(not_applicable(
+            "Coulomb theories (Cattaneo–Mindlin, Carter)".into(),
+            "not compared: the friction falls with the slip velocity (`[contact] friction_law`), the theories are \
+             Coulomb's"
+                .into(),
+        ));
+    }
     if crate::references::cattaneo_applies(scene) {
         out.extend(cattaneo_checks(scene, runs, model));
     }

@@ -89,14 +89,14 @@ pub enum Domain {
     /// comparison, with the model error computed on the half-plane counterpart ([`half_space_counterpart`]).
     FiniteBody,
     /// β ≠ 0 with the coupling on, a strip of half-spaces (`[mesh] strip_width`, not the theory's plane
-    /// strain) or a viscoelastic body: the theory's problem is not this one; no comparison.
+    /// strain), a viscoelastic body or a falling friction law: the theory's problem is not this one; no comparison.
     Outside,
 }
 
 /// The domain of the decoupled half-space theories for a scene ([`Domain`]).
 pub fn decoupled_domain(scene: &Scene) -> Domain {
     let decoupled = !scene.law().coupling || scene.dundurs_beta().abs() < 1e-12;
-    if scene.strip_width().is_some() || scene.is_viscoelastic() {
+    if scene.strip_width().is_some() || scene.is_viscoelastic() || scene.slip_velocity_friction().is_some() {
         return Domain::Outside;
     }
     match (decoupled, scene.model()) {

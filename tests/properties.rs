@@ -209,7 +209,7 @@ impl SceneParams {
             },
             counter_body: CounterBodyTable::Rigid,
             steps: Vec::new(),
-            contact: ContactTable { friction: self.friction, coupling: self.coupling },
+            contact: ContactTable { friction: self.friction, coupling: self.coupling, friction_law: None },
             drive,
             rolling: self.creepage.map(|creepage| RollingTable {
                 mode: RollingMode::Seed,

@@ -26,8 +26,10 @@
 #                                  CONTACT's strip of width DY towards the plane strain rollbem solves, at the same
 #                                  pressure: how much of a difference is the strip's finite width; the timed runs
 #                                  keep the input's)
-#       EXAMPLES=1                 also run CONTACT's examples bentall, visc_cylindr and veldep_fric beside rollbem,
-#                                  case by case (contact_examples.py), in a second table; EXAMPLES=0 skips them
+#       EXAMPLES=1                 also run CONTACT's four 2D examples carter2d, bentall, visc_cylindr and veldep_fric
+#                                  beside rollbem, case by case with CPU times (contact_examples.py), in a second
+#                                  table; EXAMPLES=0 skips them
+#       VELDEP_EXAMPLE=PATH        rollbem's example veldep_fric (built by the script unless ROLLBEM is given)
 #       KEEP=DIR                   keep the work folder (CONTACT build, inputs, outputs, scenes) in DIR
 #       ROLLBEM=PATH               use this rollbem binary instead of building one
 #       CONTACT_BIN=PATH           use this CONTACT executable instead of building one (it is checked all the same)
@@ -109,6 +111,22 @@ fi
 rollbem="$work/rollbem"
 cp "$built" "$rollbem"
 rollbem_version=$("$rollbem" --version)
+# rollbem's example that runs veldep_fric's steady and transient cases (contact_examples.py); VELDEP_EXAMPLE=PATH
+# uses a given one, and with ROLLBEM given and no VELDEP_EXAMPLE veldep_fric's rollbem columns stay empty.
+veldep_example=""
+if [[ ${EXAMPLES:-1} == 1 ]]; then
+  if [[ -n ${VELDEP_EXAMPLE:-} ]]; then
+    veldep_example=$VELDEP_EXAMPLE
+  elif [[ -z ${ROLLBEM:-} ]]; then
+    say "building rollbem's example veldep_fric (cargo build --release --example veldep_fric)"
+    (cd "$root" && nice cargo build --release --quiet --example veldep_fric)
+    veldep_example="${CARGO_TARGET_DIR:-$root/target}/release/examples/veldep_fric"
+  fi
+  if [[ -n $veldep_example ]]; then
+    cp "$veldep_example" "$work/veldep_fric"
+    veldep_example="$work/veldep_fric"
+  fi
+fi
 
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 loadavg() { cut -d' ' -f1-3 /proc/loadavg; }
@@ -537,10 +555,10 @@ fi
   for note in "${notes[@]}"; do echo "Note: $note"; done
   if [[ ${EXAMPLES:-1} == 1 ]]; then
     echo
-    echo "### CONTACT's other 2D examples, case by case (benches/peer/contact_examples.py)"
+    echo "### CONTACT's four 2D examples, case by case (benches/peer/contact_examples.py)"
     echo
-    say "CONTACT's examples bentall, visc_cylindr, veldep_fric beside rollbem"
-    python3 "$here/contact_examples.py" "$contact_bin" "$contact_src/examples" "$rollbem" "$work/examples" ||
+    say "CONTACT's examples carter2d, bentall, visc_cylindr, veldep_fric beside rollbem"
+    python3 "$here/contact_examples.py" "$contact_bin" "$contact_src/examples" "$rollbem" "$work/examples" $veldep_example ||
       die "contact_examples.py failed"
   fi
 } | tee "$table_out"

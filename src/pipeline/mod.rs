@@ -60,6 +60,7 @@ mod single;
 pub mod space;
 mod space_checks;
 pub mod stages;
+mod veldep;
 
 use crate::cancel::Cancel;
 use crate::error::{Error, Result};
@@ -93,6 +94,7 @@ impl Model {
     /// [`Error::Numerical`] when the BEM system is singular or not finite (a degenerate mesh or support).
     pub fn build(scene: &Scene) -> Result<Model> {
         scene.runnable()?;
+        veldep::applies(scene)?;
         let blocks = stages::blocks_for(scene);
         let built = source::build(scene, blocks)?;
         Ok(Model { scene: scene.clone(), built, blocks, solves: AtomicUsize::new(0) })

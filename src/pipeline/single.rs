@@ -26,6 +26,9 @@ pub(super) fn solve(
     warm: &mut super::Warm,
     cancel: &crate::cancel::Cancel,
 ) -> Result<Report> {
+    if let Some(friction) = scene.slip_velocity_friction() {
+        return super::veldep::solve(scene, drive, friction, built, setup, cancel);
+    }
     let flex = &built.flex;
     let tf = Instant::now();
     let problem = build_problem(scene, flex, drive, slip_operator(scene, flex))?;

@@ -423,6 +423,7 @@ pub fn evaluate_outcome(ctx: &RunContext, outcome: Outcome) -> (SolverRun, Optio
         history: None,
         stresses: None,
         counter_body_stresses: None,
+        branches: None,
     };
     (run, ev)
 }

@@ -161,6 +161,11 @@ pub struct SolverRun {
     /// `[counter_body] kind = "half_plane"`; depth measured into the counter-body): [`crate::stresses`].
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub counter_body_stresses: Option<crate::stresses::StressResult>,
+    /// With a falling friction law of the slip velocity (`[contact] friction_law`): the steady problem solved from
+    /// both starts, which one the run carries, and whether they are two solutions ([`crate::veldep::BranchReport`]).
+    /// Absent for Coulomb.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub branches: Option<crate::veldep::BranchReport>,
 }
 
 impl SolverRun {

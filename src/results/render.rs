@@ -152,6 +152,9 @@ fn runs_table(out: &mut String, r: &Report) {
         if run.status != Status::Solved || run.problem == ProblemClass::SlidingLimit {
             w!(out, "            {}", run.explanation());
         }
+        if let Some(b) = &run.branches {
+            w!(out, "            {}", b.describe());
+        }
     }
 }
 

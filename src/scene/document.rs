@@ -205,6 +205,79 @@ pub struct ContactTable {
     /// Keep the normal–tangential cross flexibilities F_NT, F_TN (true) or drop them (false).
     #[serde(default = "default_true")]
     pub coupling: bool,
+    /// A friction law of the slip velocity ([`crate::veldep`], CONTACT's L = 2, 3, 4) instead of Coulomb's constant
+    /// `friction`, which is then the law's static coefficient μ(0) (leave it out, or give that value). Absent (the
+    /// default): Coulomb.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub friction_law: Option<FrictionLawTable>,
+}
+
+/// `[contact.friction_law]` (or `friction_law = { ... }` in `[contact]`): CONTACT's falling friction laws of the
+/// absolute slip velocity `s_a` (length/s; [`crate::veldep`] has the formulas). Each term is `[coefficient, s_h]`:
+/// the coefficient ≥ 0 (dimensionless) and, when it is not 0, its half-value slip velocity `s_h > 0` (length/s,
+/// CONTACT's SABSH1, SABSH2). A law whose terms are both 0 is Coulomb's `μ = kinetic` and is solved as Coulomb.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FrictionLawTable {
+    /// `linear` (L = 2), `rational` (L = 3) or `exponential` (L = 4).
+    pub kind: FrictionLawKind,
+    /// The kinetic coefficient μ_kin = μ(∞) > 0 (FKIN).
+    pub kinetic: f64,
+    /// The first term `[coefficient, s_h]` (FLIN1/FRAT1/FEXP1, SABSH1).
+    pub first: [f64; 2],
+    /// The second term (FLIN2/FRAT2/FEXP2, SABSH2); default `[0, 0]` (off).
+    #[serde(default)]
+    pub second: [f64; 2],
+    /// Where the iteration starts whose solution the runs carry: `below` (every node sticking, CONTACT's INISLP > 0;
+    /// the default) or `above` (every node sliding at μ_kin, INISLP < 0). Both starts are always solved and
+    /// reported ([`crate::veldep::BranchReport`]).
+    #[serde(default)]
+    pub start: crate::veldep::Start,
+    /// CONTACT's friction memory (`{ distance, min_velocity }`: MEMDST d_c > 0 in length, MEM_S0 s_0 ≥ 0 in
+    /// length/s; [`crate::veldep::Memory`]); absent: none (the coefficient follows the slip velocity at once).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub memory: Option<FrictionMemoryTable>,
+}
+
+/// `memory = { distance, min_velocity }` of `[contact.friction_law]`: CONTACT's MEMDST and MEM_S0.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FrictionMemoryTable {
+    /// d_c, the memory distance (length, > 0).
+    pub distance: f64,
+    /// s_0, the least slip velocity of the relaxation (length/s, ≥ 0).
+    pub min_velocity: f64,
+}
+
+/// The family of a [`FrictionLawTable`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FrictionLawKind {
+    /// `μ_kin + c1 max(0, 1 − s/(2 s1)) + c2 max(0, 1 − s/(2 s2))`.
+    Linear,
+    /// `μ_kin + c1/(1 + s/s1) + c2/(1 + (s/s2)²)`.
+    Rational,
+    /// `μ_kin + c1 exp(−ln2 s/s1) + c2 exp(−ln2 s/s2)`.
+    Exponential,
+}
+
+impl FrictionLawTable {
+    /// The law it writes ([`crate::veldep::FrictionLaw`]; not checked).
+    pub fn law(&self) -> crate::veldep::FrictionLaw {
+        use crate::veldep::FrictionLaw as L;
+        let (kinetic, first, second) = (self.kinetic, (self.first[0], self.first[1]), (self.second[0], self.second[1]));
+        match self.kind {
+            FrictionLawKind::Linear => L::Linear { kinetic, first, second },
+            FrictionLawKind::Rational => L::Rational { kinetic, first, second },
+            FrictionLawKind::Exponential => L::Exponential { kinetic, first, second },
+        }
+    }
+
+    /// Whether the law is a constant (both terms' coefficients 0): Coulomb's `μ = kinetic` (memory then changes
+    /// nothing: the coefficient relaxes towards the constant it starts from).
+    pub fn is_constant(&self) -> bool {
+        self.first[0] == 0.0 && self.second[0] == 0.0
+    }
 }
 
 fn default_true() -> bool {
@@ -213,7 +286,7 @@ fn default_true() -> bool {
 
 impl Default for ContactTable {
     fn default() -> Self {
-        ContactTable { friction: 0.0, coupling: true }
+        ContactTable { friction: 0.0, coupling: true, friction_law: None }
     }
 }
 
@@ -334,8 +407,9 @@ pub struct RollingTable {
     pub creepage: Option<f64>,
     /// The rolling direction: +1 towards +x (the leading edge is at +x), −1 towards −x.
     pub direction: i32,
-    /// The rolling speed V (length unit per second, > 0): steady rolling of a viscoelastic body only, whose
-    /// relaxation distance is V·τ_C. Required there, refused elsewhere.
+    /// The rolling speed V (length unit per second, > 0): steady rolling of a viscoelastic body, whose relaxation
+    /// distance is V·τ_C, or with a falling friction law (`[contact] friction_law`), whose absolute slip velocity
+    /// is V·|s|. Required there, refused without either.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub velocity: Option<f64>,
 }

@@ -38,6 +38,7 @@
 //! ```
 
 pub mod document;
+mod friction;
 pub mod space;
 mod space_validate;
 mod validate;
@@ -326,7 +327,8 @@ pub enum Rolling {
     Steady {
         /// ±1.
         direction: i32,
-        /// The rolling speed V (length/s), given only with a viscoelastic body (`[rolling] velocity`).
+        /// The rolling speed V (length/s), given only with a viscoelastic body or a friction law of the slip
+        /// velocity (`[rolling] velocity`).
         velocity: Option<f64>,
     },
     /// The seed's formulation: a static solve, then the slip velocity of eq. 12 at the creepage.
@@ -941,9 +943,20 @@ impl Scene {
         self.law
     }
 
-    /// Coulomb's μ (0: frictionless, the normal problem only).
+    /// Coulomb's μ (0: frictionless, the normal problem only); with a friction law of the slip velocity its static
+    /// coefficient μ(0) ([`Scene::slip_velocity_friction`]).
     pub fn friction(&self) -> f64 {
         self.law.friction
+    }
+
+    /// The friction law of the slip velocity the scene calls for (`[contact] friction_law` that is not constant,
+    /// with `[rolling] velocity`), or `None`: Coulomb (the default, and a constant law, which is Coulomb's
+    /// `μ = kinetic` and solved as such). Derived from the document on each call; a Coulomb scene never builds one.
+    pub fn slip_velocity_friction(&self) -> Option<crate::veldep::SceneFriction> {
+        let t = self.document.contact.friction_law.filter(|t| !t.is_constant())?;
+        let velocity = self.document.rolling.as_ref().and_then(|r| r.velocity)?;
+        let memory = t.memory.map(|m| (m.distance, m.min_velocity));
+        Some(crate::veldep::SceneFriction { law: t.law(), velocity, start: t.start, memory })
     }
 
     /// How the support is driven.

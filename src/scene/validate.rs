@@ -22,6 +22,7 @@ pub(super) fn validate(document: SceneDocument, path: &Path) -> Result<Scene> {
 /// whose checks it passed: [`Scene::from_record`]); only what the typed parts need is required.
 pub(super) fn build(mut document: SceneDocument, path: &Path) -> Result<Scene> {
     let solvers = document.solvers.typed().map_err(|e| e.into_error(path))?;
+    super::friction::fill_static_coefficient(&mut document);
     // The scene as parsed: every solver's settings with the defaults filled in.
     document.solvers.settings = solvers.settings.tables();
     let d = &document;
@@ -254,6 +255,7 @@ impl SceneDocument {
         self.validate_mesh(&c)?;
         self.validate_counter_body(&c)?;
         self.validate_viscoelastic(path)?;
+        self.validate_friction_law(path)?;
         let mu = self.contact.friction;
         if !mu.is_finite() || mu < 0.0 {
             return Err(c.bad("contact.friction", format!("must be a finite number ≥ 0 (got {mu})")));

@@ -48,10 +48,13 @@ impl SceneDocument {
         let velocity = self.rolling.as_ref().and_then(|r| r.velocity);
         let Some(key) = any else {
             return match velocity {
+                // A friction law of the slip velocity reads the speed (its checks: super::friction).
+                Some(_) if self.contact.friction_law.is_some() => Ok(()),
                 Some(_) => Err(bad(
                     "rolling.velocity",
                     "means nothing without a viscoelastic body (`[wheel] viscoelastic` or `[counter_body] \
-                     viscoelastic`): an elastic contact with Coulomb friction does not depend on the speed"
+                     viscoelastic`) or a friction law of the slip velocity (`[contact] friction_law`): an elastic \
+                     contact with Coulomb friction does not depend on the speed"
                         .into(),
                 )),
                 None => Ok(()),
