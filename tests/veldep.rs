@@ -497,9 +497,10 @@ fn contact_branches() -> Vec<(String, f64, i32, f64, usize)> {
 /// rational law has two, found from the two starts at both creepages and reported as two (`distinct`), as CONTACT
 /// finds two (0.5656/0.5655 from below, 0.5652 from above). FX/(μ FN) within 1e-4 of CONTACT's printed value (the
 /// bound of `veldep_fric_fifty_time_steps_against_contact`: print rounding plus CONTACT's stopping rule); the stick
-/// counts equal CONTACT's NADH except the rational law from above, 39 here against CONTACT's 38 at both creepages
-/// (CONTACT's last outer iteration there changes the slip velocities by 0.78 to 0.92 of its stopping bound, i.e. it
-/// stops barely converged; not explained further, asserted as it stands).
+/// counts equal CONTACT's NADH except the rational law from above, where one element differs (39 here against
+/// CONTACT's 38 at both creepages; CONTACT run with EPS = 1e-12 instead of 1e-7 still prints 38, so it is not its
+/// stopping rule). Not explained: that branch's count is held to within one element of CONTACT's, not to our own
+/// figure.
 #[test]
 fn branch_pair_against_contact() {
     let (m, f, force, _) = parts();
@@ -518,8 +519,8 @@ fn branch_pair_against_contact() {
         let q = o.tangential.iter().sum::<f64>() * force / (0.3 * 3111.08);
         assert!((q - fx).abs() <= 1e-4, "{case}: {q} against CONTACT's {fx}");
         let stick = o.stick.iter().filter(|&&x| x).count();
-        let expected = if law_name == "rational" && inislp < 0 { nadh + 1 } else { nadh };
-        assert_eq!(stick, expected, "{case} (CONTACT: {nadh})");
+        let allowed = if law_name == "rational" && inislp < 0 { 1 } else { 0 };
+        assert!(stick.abs_diff(nadh) <= allowed, "{case}: {stick} stick (CONTACT: {nadh})");
     }
 }
 

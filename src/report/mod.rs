@@ -44,6 +44,7 @@ mod rolling;
 mod rolling3d;
 mod space;
 mod table;
+mod veldep;
 mod visco;
 
 pub use paths::{md_curve, md_pattern, md_shift, path_figures};
@@ -300,6 +301,9 @@ fn compute(
     family.entry(Family::Space3d).or_default().push_str(&f3);
     let mut visco_md = String::new();
     visco::section(&mut visco_md)?;
+    let mut sink_v = Figs::new(out, "figures/");
+    veldep::section(&mut visco_md, &mut sink_v, &opts.reference)?;
+    path_figs.extend(sink_v.list);
     family.entry(Family::Carter).or_default().push_str(&visco_md);
     if !path_md.is_empty() {
         family.insert(Family::Paths, path_md);

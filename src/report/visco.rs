@@ -2,8 +2,8 @@
 //! [`crate::viscoelastic`]) swept over the relaxation distance V·τ_C, from instantaneous creep (the elastic body of
 //! the relaxed modulus) to frozen creep (that of the glassy modulus): the creepage at the prescribed traction, the
 //! peak pressure, the contact's ends, and the rolling resistance, the normal load's moment arm x̄ = Σ x p / Σ p ahead
-//! of the contact's centre. Computed afresh by every `rollbem report` (about a second). Falling friction is a
-//! library-level solver so far (steady rolling and single time steps) (`crate::veldep`), and the section says so.
+//! of the contact's centre. Computed afresh by every `rollbem report` (about a second). Falling friction has its own
+//! section (`report::veldep`).
 
 use crate::error::Result;
 use crate::pipeline::run_scene;
@@ -102,13 +102,6 @@ pub(super) fn section(md: &mut String) -> Result<()> {
         }
         .unwrap();
     }
-    writeln!(
-        md,
-        "\nFalling friction (the friction laws of the slip velocity of CONTACT's `veldep_fric.inp`, Vollebregt & \
-         Schuttelaars 2012) is a library-level solver so far (`src/veldep.rs`, tests/veldep.rs: CONTACT's \
-         cases 1, 2 and 4, two branches of the rational law from two starts), not a scene: no figure."
-    )
-    .unwrap();
     Ok(())
 }
 
