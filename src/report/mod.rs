@@ -31,6 +31,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 mod accuracy;
+mod finite_bodies;
 mod friction3d;
 mod front;
 mod html;
@@ -276,6 +277,11 @@ fn compute(
     let mut visco_md = String::new();
     visco::section(&mut visco_md)?;
     family.entry(Family::Carter).or_default().push_str(&visco_md);
+    let mut finite_md = String::new();
+    let mut sink_fb = Figs::new(out, "figures/");
+    finite_bodies::section(&mut finite_md, &mut sink_fb)?;
+    path_figs.extend(sink_fb.list);
+    family.entry(Family::Hertz).or_default().push_str(&finite_md);
     if !path_md.is_empty() {
         family.insert(Family::Paths, path_md);
     }
