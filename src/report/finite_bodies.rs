@@ -499,6 +499,195 @@ pub(super) fn section(md: &mut String, figs: &mut Figs<'_>) -> Result<()> {
     Ok(())
 }
 
+/// The pin-bore reference as curves against P/(E*ΔR): (P/(E*ΔR), b in degrees) and (P/(E*ΔR), p0·R/P), for b from
+/// 1° to 80° (below the zero-clearance angle, 84.8°, where the load grows without bound).
+fn pin_bore_curves() -> (Vec<(f64, f64)>, Vec<(f64, f64)>) {
+    let mut angle = Vec::new();
+    let mut peak = Vec::new();
+    for k in 0..=40 {
+        let deg = 1.0 * 80f64.powf(k as f64 / 40.0);
+        let t = PinBore::at_half_angle(deg.to_radians(), THEORY_NODES);
+        let x = t.load_over_estar_clearance();
+        angle.push((x, deg));
+        peak.push((x, t.peak_times_radius_over_load()));
+    }
+    (angle, peak)
+}
+
+/// A sweep of two finite bodies (`analysis = "finite_bodies"`): the twin disc's departures from Hertz against
+/// a_H/R, the bore's half-angle and peak pressure against P/(E*ΔR) (on which the pin-bore reference depends alone,
+/// so a load sweep and a clearance sweep fall on one curve) beside the reference and Hertz; a table of the rows.
+pub(super) fn sweep_figures(sw: &super::table::Sweep, md: &mut String, figs: &mut Figs<'_>) -> Result<()> {
+    use super::table::Row;
+    let solved: Vec<&Row> = sw.rows.iter().filter(|r| r.status.solved()).collect();
+    let of = |kind: &str| -> Vec<&Row> {
+        solved.iter().copied().filter(|r| r.bodies.counter_body.as_deref() == Some(kind)).collect()
+    };
+    let (discs, bores) = (of("disc"), of("bore"));
+    if discs.is_empty() && bores.is_empty() {
+        writeln!(md, "No solved row of two finite bodies (`counter_body` disc or bore): nothing to draw.\n").unwrap();
+        return Ok(());
+    }
+    // The load, the clearance and the mesh that follows them are the abscissa, not series.
+    let axis = ["drive.normal_load", "counter_body.radius", "mesh.contact_arc_deg"];
+    let varied: Vec<String> = sw.varied(&solved).into_iter().filter(|k| !axis.contains(&k.as_str())).collect();
+    if !discs.is_empty() {
+        sweep_discs(sw, &discs, &varied, md, figs)?;
+    }
+    if !bores.is_empty() {
+        sweep_bores(sw, &bores, &varied, md, figs)?;
+    }
+    Ok(())
+}
+
+/// Points (x, y) of rows grouped by series label, sorted by x.
+type Groups = std::collections::BTreeMap<String, Vec<(f64, f64)>>;
+
+fn group(
+    sw: &super::table::Sweep,
+    rows: &[&super::table::Row],
+    varied: &[String],
+    f: impl Fn(&super::table::Row) -> Option<(f64, f64)>,
+) -> Groups {
+    let mut g = Groups::new();
+    for r in rows {
+        if let Some(p) = f(r) {
+            g.entry(sw.label(r, varied)).or_default().push(p);
+        }
+    }
+    for v in g.values_mut() {
+        v.sort_by(|a, b| a.0.total_cmp(&b.0));
+    }
+    g
+}
+
+/// The twin disc's rows of a sweep: departures of a and p0 from Hertz against a_H/R.
+fn sweep_discs(
+    sw: &super::table::Sweep,
+    rows: &[&super::table::Row],
+    varied: &[String],
+    md: &mut String,
+    figs: &mut Figs<'_>,
+) -> Result<()> {
+    writeln!(
+        md,
+        "Two finite discs: the fitted half-width a and peak pressure p0 against Hertz's with R* = R₁R₂/(R₁ + R₂) \
+         (`contact_radius`) at each row's load, against Hertz's a_H over the wheel's radius R.\n\n\
+         | series | P | a_H/R | R* | \\|a − a_H\\|/a_H | \\|p0 − p0_H\\|/p0_H |\n|---|---:|---:|---:|---:|---:|"
+    )
+    .unwrap();
+    for r in rows {
+        let e = |v: Option<f64>| v.map(|v| format!("{v:.2e}")).unwrap_or_else(|| "–".into());
+        writeln!(
+            md,
+            "| {} | {} | {} | {} | {} | {} |",
+            sw.label(r, varied),
+            r.normal_load.map(|v| format!("{v:.4e}")).unwrap_or_default(),
+            r.hertz_a.zip(r.radius).map(|(a, rr)| format!("{:.4}", a / rr)).unwrap_or_default(),
+            e(r.bodies.contact_radius),
+            e(r.metrics.hertz_a_err),
+            e(r.metrics.hertz_p0_err)
+        )
+        .unwrap();
+    }
+    let x = |r: &super::table::Row| Some(r.hertz_a? / r.radius?);
+    let mut chart =
+        Chart::new(format!("{}: twin disc against Hertz", sw.name), "a_H/R", "|relative departure from Hertz|")
+            .x_unit("1")
+            .y_unit("1")
+            .log_x()
+            .log_y();
+    for (name, f) in [
+        ("a", (|r: &super::table::Row| r.metrics.hertz_a_err) as fn(&super::table::Row) -> Option<f64>),
+        ("p0", |r: &super::table::Row| r.metrics.hertz_p0_err),
+    ] {
+        for (label, pts) in group(sw, rows, varied, |r| Some((x(r)?, f(r)?)).filter(|p| p.1 > 0.0)) {
+            let label = if label.is_empty() { name.to_string() } else { format!("{name}, {label}") };
+            chart = chart.add(Series::new(label, pts, Style::LineMarkers));
+        }
+    }
+    let file =
+        figs.save(&chart, &format!("{}-twin-disc.svg", sw.stem), format!("{}: twin disc against Hertz", sw.name))?;
+    writeln!(md, "\n![twin disc against Hertz]({file})\n").unwrap();
+    Ok(())
+}
+
+/// The bore's rows of a sweep: half-angle and p0·R/P against P/(E*ΔR), with the pin-bore reference and Hertz.
+fn sweep_bores(
+    sw: &super::table::Sweep,
+    rows: &[&super::table::Row],
+    varied: &[String],
+    md: &mut String,
+    figs: &mut Figs<'_>,
+) -> Result<()> {
+    type R<'a> = &'a super::table::Row;
+    let clearance = |r: R| Some(r.bodies.counter_radius? - r.radius?);
+    let x = |r: R| Some(r.normal_load? / (r.contact_modulus? * clearance(r).filter(|c| *c > 0.0)?));
+    writeln!(
+        md,
+        "A pin in a bore: the BEM's contact half-angle b (`contact_half_angle`) and peak pressure p0 against the \
+         pin-bore reference (`theory::pin_bore`: Persson's pin in an infinite plate of the same material, derived) \
+         and Hertz with 1/R* = 1/R − 1/(R + ΔR). Drawn against P/(E*ΔR), which alone fixes the reference's b and \
+         p0·R/P, so loads and clearances fall on one curve; rows at zero clearance are in the table only.\n\n\
+         | series | ΔR | P | P/(E*ΔR) | b [°] | b reference [°] | b_H [°] | p0 | p0 reference | p0_H | errors b, p0 |\n\
+         |---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+    )
+    .unwrap();
+    let deg = |v: Option<f64>| v.map(|v| format!("{:.3}", v.to_degrees())).unwrap_or_else(|| "–".into());
+    let g = |v: Option<f64>| v.map(|v| format!("{v:.4}")).unwrap_or_else(|| "–".into());
+    for r in rows {
+        writeln!(
+            md,
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {}, {} |",
+            sw.label(r, varied),
+            g(clearance(r)),
+            g(r.normal_load),
+            x(r).map(|v| format!("{v:.4}")).unwrap_or_else(|| "∞".into()),
+            deg(r.bodies.contact_half_angle),
+            deg(r.bodies.pin_bore_half_angle),
+            deg(r.hertz_a.zip(r.radius).map(|(a, rr)| a / rr)),
+            g(r.bodies.peak_pressure),
+            g(r.bodies.pin_bore_p0),
+            g(r.hertz_p0),
+            r.bodies.pin_bore_half_angle_err.map(|v| format!("{v:.2e}")).unwrap_or_else(|| "–".into()),
+            r.bodies.pin_bore_p0_err.map(|v| format!("{v:.2e}")).unwrap_or_else(|| "–".into()),
+        )
+        .unwrap();
+    }
+    let (ref_angle, ref_peak) = pin_bore_curves();
+    let mut angle = Chart::new(format!("{}: pin in a bore, contact half-angle", sw.name), "P/(E*ΔR)", "half-angle b")
+        .x_unit("1")
+        .y_unit("°")
+        .log_x()
+        .add(Series::new("pin_bore reference", ref_angle, Style::Dashed));
+    let mut peak = Chart::new(format!("{}: pin in a bore, peak pressure", sw.name), "P/(E*ΔR)", "p0·R/P")
+        .x_unit("1")
+        .y_unit("1")
+        .log_x()
+        .log_y()
+        .add(Series::new("pin_bore reference", ref_peak, Style::Dashed));
+    let hb = group(sw, rows, &[], |r| Some((x(r)?, (r.hertz_a? / r.radius?).to_degrees())));
+    let hp = group(sw, rows, &[], |r| Some((x(r)?, r.hertz_p0? * r.radius? / r.normal_load?)));
+    for (pts, chart) in [(hb, &mut angle), (hp, &mut peak)] {
+        for (_, v) in pts {
+            *chart = chart.clone().add(Series::new("Hertz, 1/R* = 1/R − 1/(R + ΔR)", v, Style::Dashed));
+        }
+    }
+    for (label, pts) in group(sw, rows, varied, |r| Some((x(r)?, r.bodies.contact_half_angle?.to_degrees()))) {
+        angle = angle.add(Series::new(if label.is_empty() { "BEM".into() } else { label }, pts, Style::Markers));
+    }
+    for (label, pts) in group(sw, rows, varied, |r| Some((x(r)?, r.bodies.peak_pressure? * r.radius? / r.normal_load?)))
+    {
+        peak = peak.add(Series::new(if label.is_empty() { "BEM".into() } else { label }, pts, Style::Markers));
+    }
+    let f1 =
+        figs.save(&angle, &format!("{}-bore-angle.svg", sw.stem), format!("{}: pin in a bore, half-angle", sw.name))?;
+    let f2 =
+        figs.save(&peak, &format!("{}-bore-peak.svg", sw.stem), format!("{}: pin in a bore, peak pressure", sw.name))?;
+    writeln!(md, "\n![pin in a bore: half-angle]({f1})\n\n![pin in a bore: peak pressure]({f2})\n").unwrap();
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -77,6 +77,7 @@ impl SweepFigures {
         let mut md = String::new();
         match analysis {
             Analysis::CreepCurve => physics::creep_curves(&self.sweep, &mut md, figs),
+            Analysis::FiniteBodies => finite_bodies::sweep_figures(&self.sweep, &mut md, figs),
             Analysis::FiniteVsHalfPlane => physics::finite_vs_half_plane(&self.sweep, &mut md, figs),
             Analysis::Accuracy => accuracy::sections(&mut self.sweep, &mut md, figs).map(|_| ()),
             Analysis::Table => Ok(()),
@@ -629,6 +630,10 @@ fn sweeps(
             }
             Analysis::FiniteVsHalfPlane => {
                 physics::finite_vs_half_plane(&sw, &mut md, &mut sink)?;
+                Family::Hertz
+            }
+            Analysis::FiniteBodies => {
+                finite_bodies::sweep_figures(&sw, &mut md, &mut sink)?;
                 Family::Hertz
             }
             Analysis::Accuracy => {

@@ -11,7 +11,8 @@
 //!   so, rather than its round-off.
 //! - A **sweep's CSV** (`rollbem sweep`): the figures of its analysis (`--analysis`, as the sweep spec names it:
 //!   `creep_curve` draws Q/(μP) against ξR/(μa) with Carter's curve; `accuracy` the errors against the mesh and
-//!   against time; `finite_vs_half_plane` the relative differences against a/R). The analysis is not guessed from
+//!   against time; `finite_vs_half_plane` the relative differences against a/R; `finite_bodies` a twin disc's and a
+//!   pin in a bore's departures from Hertz and the pin-bore reference). The analysis is not guessed from
 //!   the rows: a sweep CSV without `--analysis` is refused with the choices.
 //!
 //! Files are written into the output folder as `STEM-WHAT.svg` (STEM the table's file name without `.csv`).
@@ -46,8 +47,8 @@ pub fn plot_csv(csv: &Path, out: &Path, analysis: Option<Analysis>, scene: Optio
                 return Err(Error::Invalid {
                     path: csv.to_path_buf(),
                     field: "--analysis".into(),
-                    message: "a sweep's CSV does not say what the sweep is: give --analysis creep_curve, accuracy or \
-                              finite_vs_half_plane (as its spec's `analysis`)"
+                    message: "a sweep's CSV does not say what the sweep is: give --analysis creep_curve, accuracy, \
+                              finite_vs_half_plane or finite_bodies (as its spec's `analysis`)"
                         .into(),
                 });
             };
