@@ -373,3 +373,72 @@ fn unequal_discs_roll_as_carter_with_the_turning_frame() {
         assert!((q - carter).abs() <= 0.01, "ξ/ξc = {frac}: Q/μP {q} against Carter {carter}");
     }
 }
+
+/// The subsurface fields of two equal steel discs (R = 40 mm) at Hertz's a = `a_over_r` R, 80 quadratic elements on
+/// 4a, on a grid x in [−a, a], depth 0.5a to 2.5a, against McEwen's field (theory::mcewen_normal): per body
+/// (wheel, counter-disc) the largest |σ_zz − σ_zz,M| and |τ_xz − τ_xz,M| over p0, the mean and the spread (max −
+/// min) of σ_xx − σ_xx,M over p0; and the largest difference between the two bodies' fields over p0.
+fn twin_disc_fields(a_over_r: f64) -> ([[f64; 3]; 2], f64) {
+    let (r, estar) = (40.0, E / (2.0 * (1.0 - NU * NU)));
+    let a = a_over_r * r;
+    let load = Hertz2D::from_half_width(a, 0.5 * r, estar).load;
+    let text = format!(
+        "name = \"twin-stresses\"\n[wheel]\nradius = {r}\nyoungs_modulus = {E}\npoisson_ratio = {NU}\nsupport = {{ kind = \
+         \"hub\", radius = 8.0 }}\n[counter_body]\nkind = \"disc\"\nradius = {r}\nyoungs_modulus = {E}\npoisson_ratio = \
+         {NU}\nsupport = {{ kind = \"hub\", radius = 8.0 }}\nother_elements = 96\n[mesh]\nelement = \"quadratic\"\n\
+         contact_arc_deg = {}\ncontact_elements = 80\nother_elements = 96\n[stresses]\nx = [{}, {a}]\ndepth = [{}, {}]\n\
+         points = [5, 5]\n[drive]\nnormal_load = {load}\n[solvers]\nuse = [\"lemke\"]\n",
+        (4.0 * a_over_r).to_degrees(),
+        -a,
+        0.5 * a,
+        2.5 * a
+    );
+    let scene = rollbem::scene::Scene::from_toml(&text, std::path::Path::new("twin-stresses.toml")).unwrap();
+    let report = rollbem::pipeline::run_scene(&scene).unwrap();
+    let run = run_of(&report, "lemke");
+    let wheel = run.stresses.as_ref().expect("the wheel's field");
+    let counter = run.counter_body_stresses.as_ref().expect("the counter-disc's field");
+    assert_eq!(counter.body, "counter_body");
+    let h = hertz_pair(run.resultants.unwrap().normal, r, r);
+    let mut out = [[0.0_f64; 3]; 2];
+    let mut symmetry = 0.0_f64;
+    for (b, field) in [wheel, counter].iter().enumerate() {
+        let mut dxx = Vec::new();
+        for k in 0..field.field.stress.len() {
+            let (x, z) = field.field.grid.point(k);
+            let m = rollbem::theory::mcewen_normal(&h, x, z);
+            let s = field.field.stress[k].expect("a value at every grid point");
+            out[b][0] = out[b][0].max((s[1] - m.yy).abs().max((s[2] - m.xy).abs()) / h.p0);
+            dxx.push((s[0] - m.xx) / h.p0);
+            let w = wheel.field.stress[k].unwrap();
+            symmetry = symmetry.max((0..3).map(|i| (w[i] - s[i]).abs()).fold(0.0, f64::max) / h.p0);
+        }
+        out[b][1] = dxx.iter().sum::<f64>() / dxx.len() as f64;
+        out[b][2] = dxx.iter().copied().fold(f64::MIN, f64::max) - dxx.iter().copied().fold(f64::MAX, f64::min);
+    }
+    (out, symmetry)
+}
+
+#[test]
+fn twin_disc_subsurface_stresses_are_hertz_in_both_discs() {
+    // Expected (theory): under the contact each disc's field is McEwen's (Hertz's pressure on a half-plane;
+    // Johnson §4.3) plus the finite disc's own stress, smooth on the scale of a: σ_zz and τ_xz within 3e-3 p0 of
+    // McEwen in both discs; σ_xx off by a nearly uniform amount (spread below 2e-3 p0) that is O(a/R) — it halves
+    // with a/R (ratio 0.5 ± 0.1 from a/R = 0.01 to 0.005: the half-space limit); and by the symmetry of two equal
+    // discs the counter-disc's field (its own BEM solution under the opposite tractions, depth measured into it)
+    // equals the wheel's within 1e-3 p0. Measured at a/R = 0.01: σ_xx offset +0.9 % of p0 (tension) in both.
+    let (f1, sym1) = twin_disc_fields(0.01);
+    let (f2, sym2) = twin_disc_fields(0.005);
+    eprintln!("a/R 0.01: wheel {:?}, counter {:?}, symmetry {sym1:.2e}", f1[0], f1[1]);
+    eprintln!("a/R 0.005: wheel {:?}, counter {:?}, symmetry {sym2:.2e}", f2[0], f2[1]);
+    for (f, sym) in [(f1, sym1), (f2, sym2)] {
+        for body in f {
+            assert!(body[0] < 3e-3 && body[2] < 2e-3, "{body:?}");
+        }
+        assert!(sym < 1e-3, "the two discs' fields differ by {sym:e} p0");
+    }
+    for b in 0..2 {
+        let ratio = f2[b][1] / f1[b][1];
+        assert!((ratio - 0.5).abs() < 0.1, "body {b}: σ_xx offset {} then {} (ratio {ratio})", f1[b][1], f2[b][1]);
+    }
+}
