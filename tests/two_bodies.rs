@@ -379,27 +379,41 @@ fn unequal_discs_roll_as_carter_with_the_turning_frame() {
 /// (wheel, counter-disc) the largest |σ_zz − σ_zz,M| and |τ_xz − τ_xz,M| over p0, the mean and the spread (max −
 /// min) of σ_xx − σ_xx,M over p0; and the largest difference between the two bodies' fields over p0.
 fn twin_disc_fields(a_over_r: f64) -> ([[f64; 3]; 2], f64) {
+    let (scene, _) = disc_pair_stress_scene(40.0, a_over_r, [0.5, 2.5]);
+    fields_against_mcewen(&scene.unwrap(), 40.0)
+}
+
+/// A steel wheel of R = 40 mm on a steel counter-disc of radius `r2` (hubs of 0.2 R), loaded to Hertz's a =
+/// `a_over_r`·40 mm with R* = 40 r2/(40 + r2), 80 quadratic elements on 4a, `[stresses]` on x in [−a, a] and depth
+/// from `depth[0]` a to `depth[1]` a (5 × 5 points): the scene (or the error reading it) and its text.
+fn disc_pair_stress_scene(r2: f64, a_over_r: f64, depth: [f64; 2]) -> (rollbem::Result<rollbem::scene::Scene>, String) {
     let (r, estar) = (40.0, E / (2.0 * (1.0 - NU * NU)));
     let a = a_over_r * r;
-    let load = Hertz2D::from_half_width(a, 0.5 * r, estar).load;
+    let load = Hertz2D::from_half_width(a, r * r2 / (r + r2), estar).load;
     let text = format!(
         "name = \"twin-stresses\"\n[wheel]\nradius = {r}\nyoungs_modulus = {E}\npoisson_ratio = {NU}\nsupport = {{ kind = \
-         \"hub\", radius = 8.0 }}\n[counter_body]\nkind = \"disc\"\nradius = {r}\nyoungs_modulus = {E}\npoisson_ratio = \
-         {NU}\nsupport = {{ kind = \"hub\", radius = 8.0 }}\nother_elements = 96\n[mesh]\nelement = \"quadratic\"\n\
+         \"hub\", radius = 8.0 }}\n[counter_body]\nkind = \"disc\"\nradius = {r2}\nyoungs_modulus = {E}\npoisson_ratio = \
+         {NU}\nsupport = {{ kind = \"hub\", radius = {} }}\nother_elements = 96\n[mesh]\nelement = \"quadratic\"\n\
          contact_arc_deg = {}\ncontact_elements = 80\nother_elements = 96\n[stresses]\nx = [{}, {a}]\ndepth = [{}, {}]\n\
          points = [5, 5]\n[drive]\nnormal_load = {load}\n[solvers]\nuse = [\"lemke\"]\n",
+        0.2 * r2,
         (4.0 * a_over_r).to_degrees(),
         -a,
-        0.5 * a,
-        2.5 * a
+        depth[0] * a,
+        depth[1] * a
     );
-    let scene = rollbem::scene::Scene::from_toml(&text, std::path::Path::new("twin-stresses.toml")).unwrap();
-    let report = rollbem::pipeline::run_scene(&scene).unwrap();
+    (rollbem::scene::Scene::from_toml(&text, std::path::Path::new("twin-stresses.toml")), text)
+}
+
+/// Both bodies' fields of a solved disc pair against McEwen's with the pair's Hertz (see [`twin_disc_fields`]).
+fn fields_against_mcewen(scene: &rollbem::scene::Scene, r2: f64) -> ([[f64; 3]; 2], f64) {
+    let r = 40.0;
+    let report = rollbem::pipeline::run_scene(scene).unwrap();
     let run = run_of(&report, "lemke");
     let wheel = run.stresses.as_ref().expect("the wheel's field");
     let counter = run.counter_body_stresses.as_ref().expect("the counter-disc's field");
     assert_eq!(counter.body, "counter_body");
-    let h = hertz_pair(run.resultants.unwrap().normal, r, r);
+    let h = hertz_pair(run.resultants.unwrap().normal, r, r2);
     let mut out = [[0.0_f64; 3]; 2];
     let mut symmetry = 0.0_f64;
     for (b, field) in [wheel, counter].iter().enumerate() {
@@ -441,4 +455,21 @@ fn twin_disc_subsurface_stresses_are_hertz_in_both_discs() {
         let ratio = f2[b][1] / f1[b][1];
         assert!((ratio - 0.5).abs() < 0.1, "body {b}: σ_xx offset {} then {} (ratio {ratio})", f1[b][1], f2[b][1]);
     }
+}
+
+#[test]
+fn unequal_discs_stresses_are_mcewen_and_points_outside_the_counter_disc_are_refused() {
+    // Expected: a wheel of R = 40 mm on a disc of 80 mm at a/R = 0.01 (R* = 80/3 mm): both fields McEwen's with the
+    // pair's Hertz (σ_zz, τ_xz within 3e-3 p0; the pair's normals tilt by under 1e-3 rad here, so this does not
+    // resolve their rotation of the tractions); measured: the σ_xx offset of the 80 mm disc is half the wheel's
+    // (0.46 % against 0.88 % of p0, O(a/R) of each body); a grid reaching
+    // 12 mm deep is inside the wheel (80 mm across) but beyond a 5 mm counter-disc: refused before anything is
+    // solved, naming stresses.depth and the counter-disc.
+    let (scene, _) = disc_pair_stress_scene(80.0, 0.01, [0.5, 2.5]);
+    let (f, _) = fields_against_mcewen(&scene.unwrap(), 80.0);
+    eprintln!("R2 = 2R1, a/R = 0.01: wheel {:?}, counter {:?}", f[0], f[1]);
+    assert!(f[0][0] < 3e-3 && f[1][0] < 3e-3, "{f:?}");
+    let (scene, _) = disc_pair_stress_scene(5.0, 0.001, [0.5, 300.0]);
+    let err = rollbem::pipeline::run_scene(&scene.unwrap()).unwrap_err().to_string();
+    assert!(err.contains("stresses.depth") && err.contains("counter-disc"), "{err}");
 }
