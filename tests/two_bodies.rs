@@ -13,7 +13,7 @@ use rollbem::scene::{ElementKind, Support, Wheel};
 use rollbem::source::two_body::{build, steady_slip, Counter, TwoBodies};
 use rollbem::source::Blocks;
 use rollbem::status::Termination;
-use rollbem::theory::{carter_force, Hertz2D, PinBore};
+use rollbem::theory::{carter_force, Hertz2D, PinBore, TangentialPath};
 
 const E: f64 = 210_000.0;
 const NU: f64 = 0.3;
@@ -472,4 +472,66 @@ fn unequal_discs_stresses_are_mcewen_and_points_outside_the_counter_disc_are_ref
     let (scene, _) = disc_pair_stress_scene(5.0, 0.001, [0.5, 300.0]);
     let err = rollbem::pipeline::run_scene(&scene.unwrap()).unwrap_err().to_string();
     assert!(err.contains("stresses.depth") && err.contains("counter-disc"), "{err}");
+}
+
+#[test]
+fn twin_disc_fretting_loop_is_mindlin_deresiewicz() {
+    // Expected: two equal steel discs (β = 0) at a/R = 0.01, μ = 0.3, P held and Q cycled 0 → Q* → −Q* → Q* with
+    // Q* = 0.5 μP: the stick zone and the shear of each branch are Mindlin–Deresiewicz's in 2D with R* = R/2
+    // (theory::md_stick_half_width, md_traction; Johnson §7.3): stick half-width within one element, shear RMS
+    // within 1 % of μp0 over the contact (the tolerances of tests/history.rs on the half-plane).
+    let base = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("reference/two_bodies/twin-disc-hertz.toml"),
+    )
+    .unwrap();
+    let (p, mu, m) = (724.982920059183, 0.3, 6);
+    let q_star = 0.5 * mu * p;
+    let steps = format!(
+        "[contact]\nfriction = {mu}\n\n[[steps]]\nnormal_load = {p}\n\n[[steps]]\nnormal_load = {p}\ntangential_load = \
+         {q_star}\nsubsteps = {m}\n\n[[steps]]\nnormal_load = {p}\ntangential_load = {}\nsubsteps = {}\n\n[[steps]]\n\
+         normal_load = {p}\ntangential_load = {q_star}\nsubsteps = {}\n\n[solvers]",
+        -q_star,
+        2 * m,
+        2 * m
+    );
+    let text = base.replacen("[drive]\nnormal_load = 724.982920059183\n\n[solvers]", &steps, 1).replacen(
+        "use = [\"lemke\", \"active_set\"]",
+        "use = [\"lemke\"]",
+        1,
+    );
+    assert!(text.contains("[[steps]]"), "{text}");
+    let scene = rollbem::scene::Scene::from_toml(&text, std::path::Path::new("twin-fretting.toml")).unwrap();
+    let report = rollbem::pipeline::run_scene(&scene).unwrap();
+    let element = 4.0 * 0.4 / 40.0;
+    let checkpoints = [
+        (TangentialPath::Loading, 1, m),
+        (TangentialPath::Unloading { q_star }, 2, m),
+        (TangentialPath::Unloading { q_star }, 2, 2 * m),
+        (TangentialPath::Reloading { q_star }, 3, m),
+        (TangentialPath::Reloading { q_star }, 3, 2 * m),
+    ];
+    for (branch, step, sub) in checkpoints {
+        let st = report.steps.iter().find(|s| s.step == step && s.substep == sub).expect("the substep");
+        let r = run_of_step(&st.runs, "lemke");
+        assert_eq!(r.status, rollbem::status::Status::Solved, "{}", r.message);
+        let h = hertz_pair(r.resultants.unwrap().normal, 40.0, 40.0);
+        let q = r.resultants.unwrap().tangential;
+        let c = rollbem::theory::md_stick_half_width(&h, mu, branch, q);
+        let (l, rr) = rollbem::post::stick_edges(&r.nodes).expect("a stick zone");
+        let c_num = 0.5 * (rr - l);
+        let errs: Vec<f64> = r
+            .nodes
+            .iter()
+            .filter(|nd| nd.x.abs() < h.a)
+            .map(|nd| (nd.shear - rollbem::theory::md_traction(&h, mu, branch, q, nd.x)) / (mu * h.p0))
+            .collect();
+        let rms = (errs.iter().map(|e| e * e).sum::<f64>() / errs.len() as f64).sqrt();
+        eprintln!("twin disc {branch:?} Q = {q:.2}: c {c_num:.5} vs {c:.5}, shear RMS {rms:.2e} of μp0");
+        assert!((c_num - c).abs() <= element, "{branch:?}: c {c_num} against {c}");
+        assert!(rms < 0.01, "{branch:?}: RMS {rms}");
+    }
+}
+
+fn run_of_step<'a>(runs: &'a [rollbem::results::SolverRun], solver: &str) -> &'a rollbem::results::SolverRun {
+    runs.iter().find(|x| x.solver == solver).unwrap()
 }

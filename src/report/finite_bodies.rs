@@ -499,9 +499,12 @@ pub(super) fn section(md: &mut String, figs: &mut Figs<'_>) -> Result<()> {
     Ok(())
 }
 
+/// Points (x, y) of a series.
+type Points = Vec<(f64, f64)>;
+
 /// The pin-bore reference as curves against P/(E*ΔR): (P/(E*ΔR), b in degrees) and (P/(E*ΔR), p0·R/P), for b from
 /// 1° to 80° (below the zero-clearance angle, 84.8°, where the load grows without bound).
-fn pin_bore_curves() -> (Vec<(f64, f64)>, Vec<(f64, f64)>) {
+fn pin_bore_curves() -> (Points, Points) {
     let mut angle = Vec::new();
     let mut peak = Vec::new();
     for k in 0..=40 {
