@@ -76,7 +76,7 @@ fn run_row(case: &Case<AnyScene>, scene: &Scene, contact_nodes: usize, r: &Solve
     row.stick_left = edges.map(|e| e.0);
     row.stick_right = edges.map(|e| e.1);
     row.creepage = r.rolling.as_ref().and_then(|x| x.creepage);
-    super::two_body::fill(&mut row, scene, r);
+    row.bodies = super::two_body::figures(scene, r);
     set_timing(&mut row, &r.timing_s, None);
     // One line per row (the journal's rule): a line break in a message is written as a space.
     row.message = r.explanation().replace(['\n', '\r'], " ");

@@ -1,6 +1,6 @@
 //! The two-body side of a 2D sweep row (issue 34): the columns a twin disc or a pin in a bore
 //! ([`crate::source::two_body`]) needs beside the one-wheel ones, filled by the case runner for every 2D run
-//! ([`fill`]).
+//! ([`figures`]).
 //!
 //! - `peak_pressure`: the largest nodal pressure (every 2D row; for a bore the pressure on the load's line, where the
 //!   ellipse fit `peak_pressure_fit` of a conformal contact is no Hertzian ellipse).
@@ -16,7 +16,6 @@
 //!   is finite (its outer circle clamped), so the error also carries the plate's size: an outer radius of 30R costs
 //!   about 1e-3 (tests/two_bodies.rs).
 
-use super::row::SweepRow;
 use crate::post::NodeResult;
 use crate::results::SolverRun;
 use crate::scene::{CounterBody, Scene};
@@ -88,10 +87,15 @@ pub fn pin_bore_reference(scene: &Scene, p: f64) -> Option<(f64, f64)> {
     Some((theory.half_angle, theory.peak_times_radius_over_load() * p / r))
 }
 
-/// Fill a 2D row's two-body figures from its scene and run.
-pub(super) fn fill(row: &mut SweepRow, scene: &Scene, r: &SolverRun) {
+/// A 2D row's two-body figures from its scene and run.
+pub(super) fn figures(scene: &Scene, r: &SolverRun) -> TwoBodyFigures {
+    let mut out = TwoBodyFigures::default();
+    fill(&mut out, scene, r);
+    out
+}
+
+fn fill(f: &mut TwoBodyFigures, scene: &Scene, r: &SolverRun) {
     let nodes = r.answer_nodes();
-    let f = &mut row.bodies;
     f.peak_pressure = nodes.iter().map(|n| n.pressure).reduce(f64::max);
     f.contact_radius = Some(scene.contact_radius()).filter(|v| v.is_finite() && *v > 0.0);
     f.counter_body = kind_name(scene.counter_body()).map(str::to_string);
