@@ -1,5 +1,5 @@
 //! The report's section "finite bodies" (issue 34): how far two finite bodies are from the half-space answer, against
-//! the load. Computed afresh by every `rollbem report` (a few seconds), both bodies BEM models
+//! the load. Computed afresh by every `rollbem report` (about ten seconds on 2 cores), both bodies BEM models
 //! ([`crate::source::two_body`]):
 //!
 //! - **The twin disc** (two equal steel discs, R = 40 mm on hubs of 0.2R): at loads giving Hertz's half-width
@@ -23,6 +23,7 @@ use crate::scene::{ElementKind, Support, Wheel};
 use crate::source::two_body::{build, steady_slip, Counter, TwoBodies};
 use crate::source::Blocks;
 use crate::status::Termination;
+use crate::sweep::two_body::loaded_arc_edge;
 use crate::theory::{carter_force, Hertz2D, PinBore};
 use std::fmt::Write as _;
 
@@ -189,16 +190,6 @@ fn pin_in_bore(dr: f64, b: f64) -> TwoBodies {
     TwoBodies::new(Wheel { radius: R_PIN, material: steel() }, Support::Hub { radius: 0.05 * R_PIN }, spec, counter, 60)
 }
 
-/// The right edge of the loaded arc (radians from the load's line): p² extrapolated linearly to zero through the last
-/// two loaded nodes (p ∝ √(b − θ) at a smooth edge).
-fn edge_angle(ev: &Evaluation) -> Option<f64> {
-    let theta: Vec<f64> = ev.nodes.iter().map(|n| n.x.atan2(-n.y)).collect();
-    let i = (1..theta.len()).rev().find(|&i| ev.nodes[i].pressure > 0.0)?;
-    let (t1, t2) = (theta[i - 1], theta[i]);
-    let (q1, q2) = (ev.nodes[i - 1].pressure.powi(2), ev.nodes[i].pressure.powi(2));
-    (q1 > q2).then(|| t2 + q2 * (t2 - t1) / (q1 - q2))
-}
-
 /// The pressure at the node on the load's line.
 fn peak_on_axis(ev: &Evaluation) -> Option<f64> {
     let c = ev.nodes.iter().min_by(|a, b| a.x.abs().total_cmp(&b.x.abs()))?;
@@ -208,7 +199,7 @@ fn peak_on_axis(ev: &Evaluation) -> Option<f64> {
 /// One bore row at the reference's solution `theory` and the load P.
 fn bore_row(dr: f64, load: f64, theory: &PinBore) -> Result<BoreRow> {
     let ev = solve_normal(&pin_in_bore(dr, theory.half_angle), load)?;
-    let bem = ev.and_then(|ev| edge_angle(&ev).zip(peak_on_axis(&ev)));
+    let bem = ev.and_then(|ev| loaded_arc_edge(&ev.nodes).zip(peak_on_axis(&ev)));
     let hertz = (dr > 0.0).then(|| {
         let h = Hertz2D::from_load(load, R_PIN * (R_PIN + dr) / dr, estar());
         (h.a / R_PIN, h.p0)
@@ -338,7 +329,8 @@ fn bore_md(md: &mut String, rows: &[BoreRow]) {
         md,
         "### The pin in a bore against Hertz and Persson's problem\n\n\
          A steel pin (R = {R_PIN} mm, on a hub of 0.05R) in a bore of a steel plate (outer radius 30R, clamped), both \
-         BEM bodies, 61 quadratic elements on 2.5 times the contact arc. The BEM's contact half-angle b (the loaded \
+         BEM bodies, 61 quadratic elements on a candidate arc 2.5 times the reference's contact arc (at most 176°). \
+         The BEM's contact half-angle b (the loaded \
          arc's edge, p² extrapolated to zero) and peak pressure p0 (on the load's line) against Persson's \
          frictionless pin in an infinite plate as `theory::pin_bore` derives it (Michell's solution and a singular \
          integral equation by Gauss–Chebyshev, not the published closed forms) and against Hertz's line contact with \
