@@ -4,8 +4,8 @@
 //!
 //! - **The twin disc** (two equal steel discs, R = 40 mm on hubs of 0.2R): at loads giving Hertz's half-width
 //!   a/R = 0.005 … 0.2 (R* = R/2, E* of the pair), the contact's half-width and peak pressure (fitted ellipse) against
-//!   Hertz, and the steady-rolling creep curve (μ = 0.3, coupling on) against Carter's; each at two meshes, so the
-//!   departure is read beside the mesh's own share of it.
+//!   Hertz, and the steady-rolling creep curve (μ = 0.3, coupling on) against Carter's; both on one model per mesh,
+//!   at two meshes, so the departure is read beside the mesh's own share of it.
 //! - **The pin in a bore** (a steel pin of R = 10 mm in a bore of clearance 0.01 mm of a steel plate, outer radius
 //!   30R, clamped): at loads P/(E*ΔR) = 0.003 … 2, the contact half-angle and the peak pressure against Hertz with
 //!   1/R* = 1/R − 1/(R + ΔR) and against Persson's problem as [`crate::theory::pin_bore`] derives and solves it; and at
@@ -103,43 +103,47 @@ struct DiscRow {
     creep: Option<(f64, f64, f64)>,
 }
 
-/// a and p0 of the twin disc against Hertz at `ne` elements on 4a.
-fn disc_normal(a_over_r: f64, ne: usize) -> Result<Option<[f64; 2]>> {
-    let a = a_over_r * R_DISC;
-    let h = Hertz2D::from_half_width(a, 0.5 * R_DISC, estar());
-    let Some(ev) = solve_normal(&twin_disc(a, 4.0, ne), h.load)? else { return Ok(None) };
-    Ok(ev.contact.fit_half_width.zip(ev.contact.fit_peak_pressure).map(|(fa, fp)| [fa / h.a - 1.0, fp / h.p0 - 1.0]))
-}
-
-/// The twin disc's creep curve at `ne` elements on 2.5a: Q/(μP) and Carter's at each of [`FRACTIONS`].
-fn disc_creep(a_over_r: f64, ne: usize) -> Result<Option<Vec<(f64, f64)>>> {
+/// The twin disc at `ne` elements on 2.5a, built once: a and p0 against Hertz (frictionless, lemke), and the creep
+/// curve, Q/(μP) and Carter's at each of [`FRACTIONS`] (active set, coupling on).
+#[allow(clippy::type_complexity)]
+fn disc_model(a_over_r: f64, ne: usize) -> Result<(Option<[f64; 2]>, Option<Vec<(f64, f64)>>)> {
     let (r_star, a) = (0.5 * R_DISC, a_over_r * R_DISC);
     let h = Hertz2D::from_half_width(a, r_star, estar());
     let built = build(&twin_disc(a, 2.5, ne), Blocks::All)?;
+    let pressed =
+        Drive { normal: Dof::Load(h.load), tangential: Dof::Displacement(0.0), rotational: Dof::Displacement(0.0) };
+    let frictionless = ContactLaw { friction: 0.0, coupling: false };
+    let normal =
+        solve(&built.flex, frictionless, pressed, SlipOperator::static_slip(), "lemke", None)?.and_then(|ev| {
+            ev.contact
+                .fit_half_width
+                .zip(ev.contact.fit_peak_pressure)
+                .map(|(fa, fp)| [fa / h.a - 1.0, fp / h.p0 - 1.0])
+        });
     let law = ContactLaw { friction: MU, coupling: true };
     let mut curve = Vec::new();
     for frac in FRACTIONS {
         let xi = frac * MU * h.a / r_star;
-        let drive =
-            Drive { normal: Dof::Load(h.load), tangential: Dof::Displacement(xi), rotational: Dof::Displacement(0.0) };
+        let drive = Drive { tangential: Dof::Displacement(xi), ..pressed };
         let slip = steady_slip(&built.flex, 1);
         let Some(ev) = solve(&built.flex, law, drive, slip, "active_set", Some(RollingPost::Steady))? else {
-            return Ok(None);
+            return Ok((normal, None));
         };
         curve.push((ev.resultants.tangential / (MU * h.load), carter_force(&h, MU, r_star, xi) / (MU * h.load)));
     }
-    Ok(Some(curve))
+    Ok((normal, Some(curve)))
 }
 
 /// The twin disc's rows.
 fn disc_rows() -> Result<Vec<DiscRow>> {
     let mut rows = Vec::new();
     for a_over_r in A_OVER_R {
-        let normal = match (disc_normal(a_over_r, 40)?, disc_normal(a_over_r, 80)?) {
+        let ((nc, cc), (nf, cf)) = (disc_model(a_over_r, 61)?, disc_model(a_over_r, 121)?);
+        let normal = match (nc, nf) {
             (Some(c), Some(f)) => Some((f, (f[0] - c[0]).abs().max((f[1] - c[1]).abs()))),
             _ => None,
         };
-        let creep = match (disc_creep(a_over_r, 61)?, disc_creep(a_over_r, 121)?) {
+        let creep = match (cc, cf) {
             (Some(c), Some(f)) => {
                 let mesh = c.iter().zip(&f).map(|(c, f)| (f.0 - c.0).abs()).fold(0.0, f64::max);
                 let (k, d) = f.iter().map(|(q, carter)| q - carter).enumerate().fold((0, 0.0), |(k, m), (i, d)| {
@@ -235,11 +239,10 @@ fn disc_md(md: &mut String, rows: &[DiscRow]) {
         md,
         "### The twin disc against Hertz and Carter\n\n\
          Two equal steel discs (R = {R_DISC} mm, hubs of 0.2R, E = {E} MPa, ν = {NU}), both BEM bodies, at the loads \
-         that give Hertz's half-width a_H/R below (R* = R/2, E* of the pair). Normal contact: the fitted half-width a \
-         and peak pressure p0 against Hertz's, 80 quadratic elements on 4a_H (\"mesh\": the largest change of either \
-         from 40 elements). Steady rolling at μ = {MU} with normal–tangential coupling: the largest |Q/(μP) − \
-         Carter| over ξ = {FRACTIONS:?} of the critical creepage μa/R*, 121 quadratic elements on 2.5a_H (\"mesh\": \
-         the largest change of Q/(μP) from 61 elements).\n\n\
+         that give Hertz's half-width a_H/R below (R* = R/2, E* of the pair), 121 quadratic elements on 2.5a_H (\"mesh\": \
+         the largest change from 61 elements). Normal contact: the fitted half-width a and peak pressure p0 against \
+         Hertz's. Steady rolling at μ = {MU} with normal–tangential coupling: the largest |Q/(μP) − Carter| over ξ = \
+         {FRACTIONS:?} of the critical creepage μa/R*.\n\n\
          | a_H/R | (a − a_H)/a_H | (p0 − p0_H)/p0_H | mesh | Q/(μP) − Carter [μP] | at ξ/ξ_c | mesh [μP] |\n\
          |---:|---:|---:|---:|---:|---:|---:|"
     )
@@ -693,7 +696,9 @@ mod tests {
     /// zero-clearance row has no Hertz answer.
     #[test]
     fn the_section_meets_theory_where_theory_holds() {
+        let t0 = std::time::Instant::now();
         let discs = disc_rows().unwrap();
+        eprintln!("twin disc rows: {:.1} s", t0.elapsed().as_secs_f64());
         let d = discs.iter().find(|r| r.a_over_r == 0.01).unwrap();
         let (n, _) = d.normal.unwrap();
         assert!(n[0].abs() < 5e-3 && n[1].abs() < 5e-3, "{d:?}");
