@@ -131,8 +131,8 @@ enum Cmd {
         /// Output folder (default: the input's folder).
         #[arg(long)]
         out: Option<PathBuf>,
-        /// For a sweep's CSV: what the sweep is (its spec's `analysis`): creep_curve, accuracy or
-        /// finite_vs_half_plane.
+        /// For a sweep's CSV: what the sweep is (its spec's `analysis`): creep_curve, accuracy,
+        /// finite_vs_half_plane or finite_bodies.
         #[arg(long)]
         analysis: Option<String>,
         /// For a load path's CSV: the scene that wrote it, for the theory drawn beside it.

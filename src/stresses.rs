@@ -40,7 +40,11 @@
 //!
 //! With an elastic counter-body (`[counter_body] kind = "half_plane"`) the counter-body's own field is computed
 //! beside the wheel's ([`StressEvaluator::evaluate_counter_body`]): the half-plane below the contact under the
-//! opposite tractions, on the same grid, depth measured into it.
+//! opposite tractions, on the same grid, depth measured into it. A counter-disc (`kind = "disc"`, two finite bodies,
+//! [`crate::source::two_body`]) gets its own BEM field the same way: its boundary solution under the opposite
+//! tractions along the pair's frames, the grid's depth measured into it from the contact point, τ_xz in its (x,
+//! depth) axes, its points refused near its boundary as the wheel's are (tests/two_bodies.rs: both discs' fields
+//! against McEwen's at a/R = 0.01 and 0.005). A bore's plate has no field (refused with `[stresses]`).
 //!
 //! # The surface
 //! Besides the grid, every field is evaluated on the surface (depth 0) at the contact elements' centres — the
@@ -71,6 +75,7 @@ use crate::post::NodeResult;
 pub use crate::scene::StressQuantity;
 use crate::scene::{BodyModel, ElementKind, Scene, Support};
 use crate::source::bem_wheel::BoundaryResponse;
+use crate::source::two_body::PairResponse;
 use crate::source::{half_plane::Grid, Built};
 use crate::tolerances::{STRESS_NEAR_BOUNDARY_CONSTANT, STRESS_NEAR_BOUNDARY_QUADRATIC};
 use rayon::prelude::*;
@@ -433,8 +438,34 @@ mod ordered_maxima {
 enum Body<'a> {
     /// The half-plane's strips `[a_j, b_j]` (user's length unit), one per contact node.
     HalfPlane { a: Vec<f64>, b: Vec<f64> },
-    /// The BEM wheel: its boundary response, the dimensionless grid points and, per point, why it is refused.
-    Wheel { response: &'a BoundaryResponse, points: Vec<[f64; 2]>, refused: Vec<Option<PointError>> },
+    /// The BEM wheel: its boundary response, the dimensionless grid points and, per point, why it is refused; with
+    /// a second finite body, the pair's normals (the contact tractions act along them, not along y and x).
+    Wheel {
+        response: &'a BoundaryResponse,
+        points: Vec<[f64; 2]>,
+        refused: Vec<Option<PointError>>,
+        normals: Option<&'a [[f64; 2]]>,
+    },
+}
+
+/// An elastic counter-body's field.
+#[derive(Debug)]
+enum CounterField<'a> {
+    /// A half-plane: its strips (the contact grid's, user's length unit) and its ν.
+    HalfPlane { a: Vec<f64>, b: Vec<f64>, nu: f64 },
+    /// A finite disc (`[counter_body] kind = "disc"`): its boundary response with the pair's frames, the grid points
+    /// in its own dimensionless axes (depth measured into it from the contact point) and, per point, why refused.
+    Disc { pair: &'a PairResponse, points: Vec<[f64; 2]>, refused: Vec<Option<PointError>> },
+}
+
+/// The contact tractions on a body as the global components its boundary response takes, (t_y, t_x), divided by
+/// `e`: on the wheel (`sign` = 1) the pressure acts along the pair's normal N and the shear along T = (N_y, −N_x)
+/// (N = y, T = x without a second finite body), on the counter-body (`sign` = −1) the opposite.
+fn global_tractions(nodes: &[NodeResult], normals: Option<&[[f64; 2]]>, sign: f64, e: f64) -> (Vec<f64>, Vec<f64>) {
+    let n = |i: usize| normals.map_or([0.0, 1.0], |v| v[i]);
+    let ty = nodes.iter().enumerate().map(|(i, v)| sign * (v.pressure * n(i)[1] - v.shear * n(i)[0]) / e).collect();
+    let tx = nodes.iter().enumerate().map(|(i, v)| sign * (v.pressure * n(i)[0] + v.shear * n(i)[1]) / e).collect();
+    (ty, tx)
 }
 
 /// The stress evaluation of a scene, set up once and applied to every solved run ([`StressEvaluator::evaluate`]).
@@ -446,8 +477,8 @@ pub struct StressEvaluator<'a> {
     nu: f64,
     modulus: f64,
     body: Body<'a>,
-    /// An elastic (half-plane) counter-body: its strips (the contact grid's, user's length unit) and its ν.
-    counter: Option<(Vec<f64>, Vec<f64>, f64)>,
+    /// An elastic counter-body's field (`None` for a rigid flat, or a bore: no field).
+    counter: Option<CounterField<'a>>,
 }
 
 impl<'a> StressEvaluator<'a> {
@@ -497,17 +528,19 @@ impl<'a> StressEvaluator<'a> {
                 let refused: Vec<Option<PointError>> =
                     points.par_iter().map(|&p| refusal(mesh, p, r / l0, hub / l0)).collect();
                 if let Some(k) = refused.iter().position(Option::is_some) {
-                    return Err(refused_grid(&grid, &refused, k, mesh, points[k], l0, r, path));
+                    return Err(refused_grid(&grid, &refused, k, mesh, points[k], (l0, r), path, "BEM wheel"));
                 }
-                Body::Wheel { response, points, refused }
+                let normals = built.pair.as_ref().map(|p| p.normals.as_slice());
+                Body::Wheel { response, points, refused, normals }
             }
         };
         let counter = match scene.counter_body() {
             crate::scene::CounterBody::HalfPlane { material, .. } => {
                 let g = Grid::of(scene);
                 let scale = |v: &[f64]| v.iter().map(|x| x * l0).collect::<Vec<f64>>();
-                Some((scale(&g.a), scale(&g.b), material.poisson_ratio))
+                Some(CounterField::HalfPlane { a: scale(&g.a), b: scale(&g.b), nu: material.poisson_ratio })
             }
+            crate::scene::CounterBody::Disc { radius, .. } => Some(disc_field(scene, built, &grid, *radius, path)?),
             _ => None,
         };
         Ok(Some(StressEvaluator {
@@ -553,26 +586,9 @@ impl<'a> StressEvaluator<'a> {
         let t0 = Instant::now();
         let (stress, surface) = match &self.body {
             Body::HalfPlane { a, b } => (half_plane_field(&self.grid, a, b, nodes), half_plane_surface(a, b, nodes)),
-            Body::Wheel { response, points, refused } => {
-                let e = self.modulus;
-                let p: Vec<f64> = nodes.iter().map(|n| n.pressure / e).collect();
-                let q: Vec<f64> = nodes.iter().map(|n| n.shear / e).collect();
-                let (u, t) = response.boundary(&p, &q)?;
-                let model = &response.model;
-                let ev = InteriorStress::new(&model.mesh, &model.kelvin, &u, &t)?;
-                let todo: Vec<usize> = (0..points.len()).filter(|&k| refused[k].is_none()).collect();
-                let sub: Vec<[f64; 2]> = todo.iter().map(|&k| points[k]).collect();
-                let mut out: Vec<Result<[f64; 3], PointError>> =
-                    refused.iter().map(|r| Err(r.unwrap_or(PointError::Singular))).collect();
-                for (k, s) in todo.into_iter().zip(ev.evaluate_par(&sub)) {
-                    out[k] = match s {
-                        Ok(s) => finite([s[0] * e, s[1] * e, s[2] * e]),
-                        Err(StressError::OutsideBody) => Err(PointError::OutsideBody),
-                        Err(StressError::OnBoundary { .. }) => Err(PointError::NearBoundary),
-                        Err(StressError::NotFinite) => Err(PointError::Singular),
-                    };
-                }
-                (out, wheel_surface(response, &u, &t, e))
+            Body::Wheel { response, points, refused, normals } => {
+                let (ty, tx) = global_tractions(nodes, *normals, 1.0, self.modulus);
+                bem_field(response, &ty, &tx, points, refused, 1.0)?
             }
         };
         let field = StressField { grid: self.grid, nu: self.nu, stress, surface };
@@ -584,8 +600,27 @@ impl<'a> StressEvaluator<'a> {
     /// as on the wheel. Mirrored into the wheel's configuration the counter-body carries the pressure p and the
     /// shear −q, so its field is the half-plane formula with (p, −q) and its own ν; τ_xz is in its (x, depth) axes.
     /// Refused as [`StressEvaluator::evaluate`].
+    ///
+    /// A finite disc's field (`[counter_body] kind = "disc"`) is its own BEM solution under the opposite contact
+    /// tractions (along the pair's frames), on the same grid with depth measured into the disc from the contact
+    /// point and x as on the wheel, τ_xz in its (x, depth) axes.
     pub fn evaluate_counter_body(&self, nodes: &[NodeResult]) -> Result<Option<StressResult>, ArgumentError> {
-        let Some((a, b, nu)) = self.counter.as_ref() else { return Ok(None) };
+        let (a, b, nu) = match self.counter.as_ref() {
+            None => return Ok(None),
+            Some(CounterField::Disc { pair, points, refused }) => {
+                self.check_nodes("StressEvaluator::evaluate_counter_body", nodes)?;
+                let t0 = Instant::now();
+                let model = &pair.counter.model;
+                let (ty, tx) = global_tractions(nodes, Some(&pair.normals), -1.0, model.modulus);
+                let (stress, surface) = bem_field(&pair.counter, &ty, &tx, points, refused, -1.0)?;
+                let field = StressField { grid: self.grid, nu: model.kelvin.nu, stress, surface };
+                let mut r =
+                    StressResult::of(BodyModel::Bem, self.quantities.clone(), field, t0.elapsed().as_secs_f64());
+                r.body = "counter_body".into();
+                return Ok(Some(r));
+            }
+            Some(CounterField::HalfPlane { a, b, nu }) => (a, b, nu),
+        };
         self.check_nodes("StressEvaluator::evaluate_counter_body", nodes)?;
         if a.len() != nodes.len() {
             return Err(ArgumentError::new(
@@ -606,6 +641,75 @@ impl<'a> StressEvaluator<'a> {
         r.body = "counter_body".into();
         Ok(Some(r))
     }
+}
+
+/// A BEM body's field and surface values (user's units) from its contact tractions (t_y, t_x, dimensionless by its
+/// modulus, in its contact-node order) at its dimensionless `points` (those refused left as their reason): `tz` = 1
+/// when the grid's depth runs along +y (the wheel, depth upward from its bottom point), −1 along −y (a counter-disc
+/// below the contact), so that τ_xz = tz σ_xy.
+#[allow(clippy::type_complexity)]
+fn bem_field(
+    response: &BoundaryResponse,
+    ty: &[f64],
+    tx: &[f64],
+    points: &[[f64; 2]],
+    refused: &[Option<PointError>],
+    tz: f64,
+) -> Result<(Vec<Result<[f64; 3], PointError>>, Vec<(f64, Result<[f64; 3], PointError>)>), ArgumentError> {
+    let e = response.model.modulus;
+    let (u, t) = response.boundary(ty, tx)?;
+    let model = &response.model;
+    let ev = InteriorStress::new(&model.mesh, &model.kelvin, &u, &t)?;
+    let todo: Vec<usize> = (0..points.len()).filter(|&k| refused[k].is_none()).collect();
+    let sub: Vec<[f64; 2]> = todo.iter().map(|&k| points[k]).collect();
+    let mut out: Vec<Result<[f64; 3], PointError>> =
+        refused.iter().map(|r| Err(r.unwrap_or(PointError::Singular))).collect();
+    for (k, s) in todo.into_iter().zip(ev.evaluate_par(&sub)) {
+        out[k] = match s {
+            Ok(s) => finite([s[0] * e, s[1] * e, tz * s[2] * e]),
+            Err(StressError::OutsideBody) => Err(PointError::OutsideBody),
+            Err(StressError::OnBoundary { .. }) => Err(PointError::NearBoundary),
+            Err(StressError::NotFinite) => Err(PointError::Singular),
+        };
+    }
+    let surface =
+        wheel_surface(response, &u, &t, e).into_iter().map(|(x, s)| (x, s.map(|s| [s[0], s[1], tz * s[2]]))).collect();
+    Ok((out, surface))
+}
+
+/// The counter-disc's field set-up: the grid's points in its own axes (depth into it from the contact point at
+/// (0, −R₁)), refused as the wheel's are.
+fn disc_field<'a>(
+    scene: &Scene,
+    built: &'a Built,
+    grid: &StressGrid,
+    radius: f64,
+    path: &Path,
+) -> crate::error::Result<CounterField<'a>> {
+    let Some(pair) = built.pair.as_ref() else {
+        return Err(Error::Unsupported {
+            path: path.to_path_buf(),
+            message: "stresses: the model was built without the counter-disc's boundary response (build it from a \
+                      scene with [stresses])"
+                .into(),
+        });
+    };
+    let (l0, r1) = (built.flex.scales.length, scene.radius());
+    let points: Vec<[f64; 2]> = (0..grid.len())
+        .map(|k| {
+            let (x, z) = grid.point(k);
+            let (xw, yw) = (x / l0, (-r1 - z) / l0);
+            [(xw - pair.centre[0]) / pair.scale, (yw - pair.centre[1]) / pair.scale]
+        })
+        .collect();
+    let mesh = &pair.counter.model.mesh;
+    let refused: Vec<Option<PointError>> =
+        points.par_iter().map(|&p| refusal(mesh, p, pair.radius, pair.hub)).collect();
+    if let Some(k) = refused.iter().position(Option::is_some) {
+        let l2 = pair.counter.model.length;
+        return Err(refused_grid(grid, &refused, k, mesh, points[k], (l2, radius), path, "counter-disc"));
+    }
+    Ok(CounterField::Disc { pair, points, refused })
 }
 
 /// The half-plane's surface values at its strips' centres (user's units).
@@ -738,9 +842,9 @@ fn refused_grid(
     k: usize,
     mesh: &Mesh,
     p: [f64; 2],
-    l0: f64,
-    r: f64,
+    (l0, r): (f64, f64),
     path: &Path,
+    body: &str,
 ) -> Error {
     let (x, z) = grid.point(k);
     let count = refused.iter().filter(|e| e.is_some()).count();
@@ -756,7 +860,7 @@ fn refused_grid(
     };
     let field = if k < grid.points[0] || p[0].hypot(p[1]) * l0 < 0.5 * r { "stresses.depth" } else { "stresses.x" };
     let why = match refused[k] {
-        Some(PointError::OutsideBody) => "lies outside the wheel (below its rim or in the hub's hole)".to_string(),
+        Some(PointError::OutsideBody) => format!("lies outside the {body} (beyond its rim or in the hub's hole)"),
         _ => format!(
             "lies {:.4e} from the boundary, within {reach} lengths of an element ({:.4e} long): there the BEM \
              field is not accurate (the boundary data jump between elements)",
@@ -768,7 +872,7 @@ fn refused_grid(
         path: path.to_path_buf(),
         field: field.to_string(),
         message: format!(
-            "{count} of the {} grid points cannot be evaluated for the BEM wheel; the first, x = {x:.6e}, depth = \
+            "{count} of the {} grid points cannot be evaluated for the {body}; the first, x = {x:.6e}, depth = \
              {z:.6e}, {why}. Move the grid away from the boundary (start it deeper, or narrow it), or refine the mesh \
              there (the half-plane model has values up to the surface)",
             grid.len()

@@ -412,7 +412,8 @@ class Run:
         """With ``[stresses]``, for a solved run."""
     @property
     def counter_body_stresses(self) -> Optional[Stresses]:
-        """The elastic counter-body's own field (``[counter_body] kind = "half_plane"`` with ``[stresses]``)."""
+        """The elastic counter-body's own field (``[counter_body] kind = "half_plane"`` or ``"disc"`` with
+        ``[stresses]``; depth measured into it)."""
     def raise_for_status(self) -> None:
         """Raise ``SolveError`` unless the run ended with the status its scene expects."""
     def to_dict(self) -> Dict[str, Any]:

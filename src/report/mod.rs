@@ -31,6 +31,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 mod accuracy;
+mod finite_bodies;
 mod friction3d;
 mod front;
 mod html;
@@ -103,6 +104,7 @@ impl SweepFigures {
                 analysis.name()
             ))),
             Analysis::CreepCurve => physics::creep_curves(&self.sweep, &mut md, figs),
+            Analysis::FiniteBodies => finite_bodies::sweep_figures(&self.sweep, &mut md, figs),
             Analysis::FiniteVsHalfPlane => physics::finite_vs_half_plane(&self.sweep, &mut md, figs),
             Analysis::Accuracy => accuracy::sections(&mut self.sweep, &mut md, figs).map(|_| ()),
         }
@@ -305,6 +307,11 @@ fn compute(
     veldep::section(&mut visco_md, &mut sink_v, &opts.reference)?;
     path_figs.extend(sink_v.list);
     family.entry(Family::Carter).or_default().push_str(&visco_md);
+    let mut finite_md = String::new();
+    let mut sink_fb = Figs::new(out, "figures/");
+    finite_bodies::section(&mut finite_md, &mut sink_fb)?;
+    path_figs.extend(sink_fb.list);
+    family.entry(Family::Hertz).or_default().push_str(&finite_md);
     if !path_md.is_empty() {
         family.insert(Family::Paths, path_md);
     }
@@ -658,6 +665,10 @@ fn sweeps(
             }
             Analysis::FiniteVsHalfPlane => {
                 physics::finite_vs_half_plane(&sw, &mut md, &mut sink)?;
+                Family::Hertz
+            }
+            Analysis::FiniteBodies => {
+                finite_bodies::sweep_figures(&sw, &mut md, &mut sink)?;
                 Family::Hertz
             }
             Analysis::Accuracy => {

@@ -155,7 +155,8 @@ pub fn creep_curves(sw: &Sweep, md: &mut String, figs: &mut Figs) -> Result<()> 
     let mut models: BTreeMap<String, (Option<BodyModel>, bool)> = BTreeMap::new();
     for r in &solved {
         let (Some(xi), Some(q), Some(p), Some(mu), Some(a), Some(rad)) =
-            (r.creepage, r.tangential_load, r.normal_load, r.friction, r.hertz_a, r.radius)
+            // R* of the pair (a twin disc's R₁R₂/(R₁ + R₂)), the wheel's R in a CSV without the column.
+            (r.creepage, r.tangential_load, r.normal_load, r.friction, r.hertz_a, r.bodies.contact_radius.or(r.radius))
         else {
             continue;
         };
@@ -217,5 +218,41 @@ mod tests {
         assert_eq!(carter_domain(Some(BodyModel::HalfPlane), false, None), "check (Carter's model)");
         // A strip of half-spaces is not Carter's plane strain (src/halfplane.rs, "Strip of half-spaces").
         assert!(carter_domain(Some(BodyModel::HalfPlane), true, Some(0.0)).contains("strip"));
+    }
+
+    /// A twin disc's creep curve is normalised by the pair's R* (`contact_radius`), not the wheel's R: rows that
+    /// lie exactly on Carter's curve with R* = R/2 (theory::carter_force) show a zero departure. With the wheel's R
+    /// the abscissa doubles and the departure is of order 0.5 (the old code).
+    #[test]
+    fn a_twin_disc_creep_curve_is_normalised_by_the_pairs_radius() {
+        let (r, r_star, mu, p) = (40.0, 20.0, 0.3, 724.982920059183);
+        let h = Hertz2D::from_load(p, r_star, 115_384.615_384_615_4);
+        let rows = [0.1, 0.3, 0.6, 0.9]
+            .iter()
+            .enumerate()
+            .map(|(k, frac)| {
+                let xi = frac * mu * h.a / r_star;
+                let mut row = Row::new(k, "active_set", crate::sweep::RowStatus::Run(crate::status::Status::Solved));
+                row.creepage = Some(xi);
+                row.normal_load = Some(p);
+                row.tangential_load = Some(theory::carter_force(&h, mu, r_star, xi));
+                row.friction = Some(mu);
+                row.hertz_a = Some(h.a);
+                row.radius = Some(r);
+                row.bodies.contact_radius = Some(r_star);
+                row
+            })
+            .collect();
+        let sw = Sweep {
+            name: "t".into(),
+            description: String::new(),
+            stem: "t".into(),
+            keys: vec!["rolling.creepage".into()],
+            rows,
+        };
+        let tmp = tempfile::tempdir().unwrap();
+        let mut md = String::new();
+        creep_curves(&sw, &mut md, &mut Figs::new(tmp.path(), "")).unwrap();
+        assert!(md.contains("| active_set | 4 | 0.00e0 |"), "{md}");
     }
 }

@@ -11,10 +11,11 @@
 //!   so, rather than its round-off.
 //! - A **sweep's CSV** (`rollbem sweep`): the figures of its analysis (`--analysis`, as the sweep spec names it:
 //!   `creep_curve` draws Q/(μP) against ξR/(μa) with Carter's curve; `accuracy` the errors against the mesh and
-//!   against time; `finite_vs_half_plane` the relative differences against a/R; `table`, a 3D half-space sweep's,
-//!   its Pareto fronts against time per error measure). The analysis is not guessed from the rows: a sweep CSV
-//!   without `--analysis` is refused with the choices, and one whose analysis does not fit its rows (a 2D analysis on
-//!   3D rows, `table` on 2D rows) is refused before anything is drawn.
+//!   against time; `finite_vs_half_plane` the relative differences against a/R; `finite_bodies` a twin disc's and a
+//!   pin in a bore's departures from Hertz and the pin-bore reference; `table`, a 3D half-space sweep's, its Pareto
+//!   fronts against time per error measure). The analysis is not guessed from the rows: a sweep CSV without
+//!   `--analysis` is refused with the choices, and one whose analysis does not fit its rows (a 2D analysis on 3D
+//!   rows, `table` on 2D rows) is refused before anything is drawn.
 //!
 //! Files are written into the output folder as `STEM-WHAT.svg` (STEM the table's file name without `.csv`).
 
@@ -49,7 +50,7 @@ pub fn plot_csv(csv: &Path, out: &Path, analysis: Option<Analysis>, scene: Optio
                     path: csv.to_path_buf(),
                     field: "--analysis".into(),
                     message: "a sweep's CSV does not say what the sweep is: give --analysis creep_curve, accuracy, \
-                              finite_vs_half_plane or table (as its spec's `analysis`)"
+                              finite_vs_half_plane, finite_bodies or table (as its spec's `analysis`)"
                         .into(),
                 });
             };

@@ -439,7 +439,7 @@ impl SceneDocument {
     }
 
     /// A second finite body (`kind = "disc"` or `"bore"`, [`crate::source::two_body`]): a BEM wheel's, its values in
-    /// range, its zone on the wheel's rays, no interior stresses, no rolling in a bore.
+    /// range, its zone on the wheel's rays, no interior stresses in a bore, no rolling in a bore.
     fn validate_finite_counter(&self, c: &Checker) -> Result<()> {
         let (radius, e, nu, other, kind) = match self.counter_body {
             CounterBodyTable::Disc { radius, youngs_modulus, poisson_ratio, other_elements, .. } => {
@@ -478,10 +478,13 @@ impl SceneDocument {
                 c.bad("counter_body.other_elements", format!("more than the {MAX_NODES} nodes a BEM body may have"))
             );
         }
-        if self.stresses.is_some() {
-            return Err(
-                c.bad("stresses", format!("interior stresses are not computed for two finite bodies (a {kind})"))
-            );
+        if self.stresses.is_some() && kind == "bore" {
+            return Err(c.bad(
+                "stresses",
+                "interior stresses are computed for a counter-disc, not for a bore (its plate's field is not \
+                 implemented)"
+                    .to_string(),
+            ));
         }
         self.validate_counter_geometry(c, radius, nu)
     }

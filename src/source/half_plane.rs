@@ -193,6 +193,7 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
         },
         timing: SourceTiming { assembly, condensation: 0.0 },
         boundary: None,
+        pair: None,
     })
 }
 

@@ -74,6 +74,9 @@ pub struct Built {
     /// The BEM wheel's whole boundary response to unit contact tractions, kept only when the scene asks for
     /// interior stresses (`[stresses]`); `None` otherwise and for closed-form sources.
     pub boundary: Option<bem_wheel::BoundaryResponse>,
+    /// Two finite bodies with `[stresses]`: the counter-body's boundary response and the pair's frames
+    /// ([`two_body::PairResponse`]); `None` otherwise.
+    pub pair: Option<two_body::PairResponse>,
 }
 
 /// Build the flexibility a (validated) scene describes, with the blocks it needs.
@@ -85,7 +88,7 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
     };
     if let Some((counter, other)) = two_body::counter_of(scene.counter_body()) {
         let bodies = two_body::TwoBodies::new(*scene.wheel(), support, spec, counter, other);
-        return two_body::build(&bodies, blocks);
+        return two_body::build_with(&bodies, blocks, scene.stresses().is_some());
     }
     let model = bem_wheel::Model::new(scene.wheel(), support, &spec)?;
     let (mut flex, health, t, response) = bem_wheel::condense_with_response(&model, blocks)?;
@@ -111,5 +114,6 @@ pub fn build(scene: &Scene, blocks: Blocks) -> Result<Built> {
         flex,
         timing: SourceTiming { assembly: t.assembly, condensation: t.condensation },
         boundary,
+        pair: None,
     })
 }

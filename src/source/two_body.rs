@@ -29,7 +29,10 @@
 //! scales of the logarithmic kernel) and its own modulus; a 2D flexibility per unit nodal force is then E·u/F in
 //! either unit, so K₂ enters the wheel's units multiplied by E₁/E₂.
 //!
-//! Interior stresses of the pair are not computed ([`super::Built::boundary`] is `None`).
+//! **Interior stresses** ([`build_with`] asked for them): the wheel's boundary response is kept as for one wheel
+//! ([`super::Built::boundary`]) and the counter-body's beside it with the pair's frames ([`PairResponse`]), so that
+//! each body's field follows from its own boundary solution under the contact tractions (on the counter-body the
+//! opposite ones).
 
 use super::{Blocks, Built, SourceInfo, SourceTiming};
 use crate::bem::kelvin::Kelvin;
@@ -312,6 +315,28 @@ fn pair_normals(w: &Mesh, c: &Mesh) -> Vec<[f64; 2]> {
         .collect()
 }
 
+/// The counter-body's whole boundary response to unit contact tractions and the pair's frames, kept when the scene
+/// asks for interior stresses ([`build_with`]). The counter-body's model is its own: lengths over its length L₂,
+/// stresses over its modulus, its centre at the origin; its contact node i faces the wheel's contact node i.
+#[derive(Debug, Clone)]
+#[non_exhaustive]
+pub struct PairResponse {
+    /// The counter-body's response (its model, dimensionless by its own length and modulus).
+    pub counter: super::bem_wheel::BoundaryResponse,
+    /// The pair's normal N_i at each contact node (the pressure on the wheel acts along N_i, the shear along
+    /// T_i = (N_y, −N_x)).
+    pub normals: Vec<[f64; 2]>,
+    /// The counter-body's centre in the wheel's dimensionless units (lengths over L₀ = 2R₁, the wheel's centre at
+    /// the origin).
+    pub centre: [f64; 2],
+    /// L₂/L₀: a length in the counter-body's units times this is one in the wheel's.
+    pub scale: f64,
+    /// The counter-body's circle (radius) and its hub's radius (0 for a clamped arc), in its own units.
+    pub radius: f64,
+    /// The hub's radius in its own units (0 without a hub).
+    pub hub: f64,
+}
+
 /// The steady-rolling slip operator of a pair of finite bodies rolling in direction `direction` (±1): the upwind
 /// difference of [`crate::formulation::SlipOperator::steady`] on the contact nodes' x, plus the frame's turning.
 /// The slip is the tangential component of the derivative of the relative displacement vector,
@@ -338,6 +363,12 @@ pub fn steady_slip(flex: &Flexibility, direction: i32) -> crate::formulation::Sl
 /// Build the flexibility of a pair of finite bodies with the blocks asked for (see the module docs). A pair it
 /// cannot mesh is refused, naming the argument; a singular BEM system is [`crate::error::Error::Numerical`].
 pub fn build(bodies: &TwoBodies, blocks: Blocks) -> Result<Built> {
+    build_with(bodies, blocks, false)
+}
+
+/// [`build`], keeping both bodies' boundary responses when `responses` is true (a scene with `[stresses]`): the
+/// wheel's in [`Built::boundary`], the counter-body's with the pair's frames in [`Built::pair`].
+pub fn build_with(bodies: &TwoBodies, blocks: Blocks, responses: bool) -> Result<Built> {
     let m = models(bodies)?;
     let (_, h1, t1, sol1) = super::bem_wheel::condense_with_response(&m.wheel, Blocks::All)?;
     let (_, h2, t2, sol2) = super::bem_wheel::condense_with_response(&m.counter, Blocks::All)?;
@@ -398,19 +429,50 @@ pub fn build(bodies: &TwoBodies, blocks: Blocks) -> Result<Built> {
         derived: Default::default(),
     };
     debug_assert_eq!(cm.contact_nodes.len(), n);
+    let info = SourceInfo {
+        elements: wm.elements.len() + cm.elements.len(),
+        nodes: wm.n_nodes() + cm.n_nodes(),
+        element: bodies.spec.element,
+        system_size: Some(h1.system_size.max(h2.system_size)),
+        pivot_ratio: Some(h1.pivot_ratio.max(h2.pivot_ratio)),
+        condition: Some(h1.system_condition.max(h2.system_condition)),
+        contact_element_length: bodies.spec.zone.element_length(bodies.wheel.radius),
+        viscoelastic: false,
+    };
+    let (boundary, pair) = if responses {
+        let (boundary, pair) = keep_responses(bodies, m, sol1, sol2, flex.normals.clone().unwrap_or_default());
+        (Some(boundary), Some(pair))
+    } else {
+        (None, None)
+    };
     Ok(Built {
-        info: SourceInfo {
-            elements: wm.elements.len() + cm.elements.len(),
-            nodes: wm.n_nodes() + cm.n_nodes(),
-            element: bodies.spec.element,
-            system_size: Some(h1.system_size.max(h2.system_size)),
-            pivot_ratio: Some(h1.pivot_ratio.max(h2.pivot_ratio)),
-            condition: Some(h1.system_condition.max(h2.system_condition)),
-            contact_element_length: bodies.spec.zone.element_length(bodies.wheel.radius),
-            viscoelastic: false,
-        },
+        info,
         flex,
         timing: SourceTiming { assembly: t1.assembly + t2.assembly, condensation: t1.condensation + t2.condensation },
-        boundary: None,
+        boundary,
+        pair,
     })
+}
+
+/// Both bodies' boundary responses (both built with the tangential columns), the counter-body's with the pair's
+/// frames.
+fn keep_responses(
+    bodies: &TwoBodies,
+    m: Models,
+    sol1: Mat<f64>,
+    sol2: Mat<f64>,
+    normals: Vec<[f64; 2]>,
+) -> (super::bem_wheel::BoundaryResponse, PairResponse) {
+    use super::bem_wheel::BoundaryResponse;
+    let l2 = bodies.counter_length();
+    let hub = match bodies.counter {
+        Counter::Disc { support: Support::Hub { radius }, .. } => radius / l2,
+        _ => 0.0,
+    };
+    let radius = match bodies.counter {
+        Counter::Disc { radius, .. } | Counter::Bore { radius, .. } => radius / l2,
+    };
+    let wheel = BoundaryResponse { model: m.wheel, matrix: sol1, tangential: true };
+    let counter = BoundaryResponse { model: m.counter, matrix: sol2, tangential: true };
+    (wheel, PairResponse { counter, normals, centre: m.centre, scale: m.scale, radius, hub })
 }

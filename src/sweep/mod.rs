@@ -44,6 +44,7 @@ mod plan;
 pub mod row;
 mod run;
 mod space;
+pub mod two_body;
 
 pub use journal::MARKER;
 pub use plan::{Counts, Estimate, Plan, SweepOptions};
@@ -106,6 +107,10 @@ pub enum Analysis {
     /// `creep_curve`: steady-rolling creep curves against Carter (`rolling.creepage` or `drive.tangential_load`
     /// swept).
     CreepCurve,
+    /// `finite_bodies`: two finite bodies (a twin disc, a pin in a bore: [`crate::source::two_body`]) against the
+    /// half-space answer and the pin-bore reference as the load or the clearance grows (`drive.normal_load` or
+    /// `counter_body.radius` swept).
+    FiniteBodies,
     /// `table` (default): the rows only.
     #[default]
     Table,
@@ -118,13 +123,20 @@ impl Analysis {
             Analysis::Accuracy => "accuracy",
             Analysis::FiniteVsHalfPlane => "finite_vs_half_plane",
             Analysis::CreepCurve => "creep_curve",
+            Analysis::FiniteBodies => "finite_bodies",
             Analysis::Table => "table",
         }
     }
 
     /// The analysis of a name; an unknown one is bad input naming `field` of `path`.
     pub fn from_name(name: &str, path: &Path) -> Result<Analysis> {
-        let all = [Analysis::Accuracy, Analysis::FiniteVsHalfPlane, Analysis::CreepCurve, Analysis::Table];
+        let all = [
+            Analysis::Accuracy,
+            Analysis::FiniteVsHalfPlane,
+            Analysis::CreepCurve,
+            Analysis::FiniteBodies,
+            Analysis::Table,
+        ];
         all.into_iter().find(|x| x.name() == name).ok_or_else(|| {
             let names: Vec<&str> = all.iter().map(|x| x.name()).collect();
             invalid(path, "analysis", format!("unknown analysis `{name}` (expected one of: {})", names.join(", ")))
@@ -137,6 +149,7 @@ impl Analysis {
             Analysis::Accuracy => (&["mesh.contact_elements"], "a mesh refinement"),
             Analysis::FiniteVsHalfPlane => (&["wheel.model"], "both models of the wheel"),
             Analysis::CreepCurve => (&["rolling.creepage", "drive.tangential_load"], "the creepage or the creep force"),
+            Analysis::FiniteBodies => (&["drive.normal_load", "counter_body.radius"], "the load or the clearance"),
             Analysis::Table => (&[], ""),
         }
     }

@@ -8,7 +8,8 @@
 //! Columns, in order: `case`; the swept keys (one per key of the spec, empty where a case's grid does not set it);
 //! `scene, scene_digest, element, contact_elements, contact_nodes, solver, formulation, status, problem_size`; the
 //! registry's work counters ([`crate::solvers::work_columns`]); the figures of the run (resultants, fits, the errors
-//! against the references that apply, [`crate::references::Metrics`]), the pair and the rigid motion; `message`.
+//! against the references that apply, [`crate::references::Metrics`]), the pair and the rigid motion, the two-body
+//! figures ([`super::two_body`]); `message`.
 //! Those are the **results**: the same cases give the same cells whichever run wrote them (serial, sharded and
 //! merged, resumed; with `warm_start` the work counters and the last bits of Lemke's answers aside). Last come the
 //! **provenance** columns, [`PROVENANCE_COLUMNS`]: how this run went (the timings, `timing_runs`, and `setup`:
@@ -146,6 +147,8 @@ pub struct SweepRow {
     pub message: String,
     /// The figures of a 3D case that the 2D columns do not hold (all empty in a 2D row).
     pub space: SpaceFigures,
+    /// The figures of two finite bodies, and the nodal peak pressure and R* of every 2D row (all empty in a 3D row).
+    pub bodies: super::two_body::TwoBodyFigures,
     /// Figures a reader derives from the rows, by name (not written to the CSV; e.g. the report's errors against a
     /// mesh's limit). [`SweepRow::number`] finds them as it finds the columns.
     pub derived: std::collections::BTreeMap<String, f64>,
@@ -261,6 +264,7 @@ impl SweepRow {
             setup: None,
             message: String::new(),
             space: SpaceFigures::default(),
+            bodies: Default::default(),
             derived: Default::default(),
         }
     }
@@ -507,7 +511,18 @@ pub fn space_columns() -> Vec<&'static str> {
 }
 
 /// Columns a CSV of an older rollbem may lack (read as empty).
-const OPTIONAL: &[&str] = &["scene_digest"];
+const OPTIONAL: &[&str] = &[
+    "scene_digest",
+    "peak_pressure",
+    "contact_radius",
+    "counter_body",
+    "counter_radius",
+    "contact_half_angle",
+    "pin_bore_half_angle",
+    "pin_bore_p0",
+    "pin_bore_half_angle_err",
+    "pin_bore_p0_err",
+];
 
 /// A cell's value before formatting.
 enum Cell {
@@ -668,6 +683,7 @@ static COLUMNS: &[Column] = &[
     num_col!(S, "peak_pressure", space.peak_pressure),
     num_col!(P, "half_width_fit", half_width_fit),
     num_col!(B, "peak_pressure_fit", peak_pressure_fit),
+    num_col!(P, "peak_pressure", bodies.peak_pressure),
     num_col!(S, "a_x_fit", space.a_x_fit),
     num_col!(S, "a_y_fit", space.a_y_fit),
     num_col!(S, "hertz_a_x_err", space.hertz_a_x_err),
@@ -694,6 +710,17 @@ static COLUMNS: &[Column] = &[
     },
     num_col!(P, "strip_width", strip_width),
     num_col!(P, "radius", radius),
+    num_col!(P, "contact_radius", bodies.contact_radius),
+    Column {
+        name: "counter_body",
+        kinds: Kinds::P,
+        get: |r| Cell::Text(r.bodies.counter_body.clone().unwrap_or_default()),
+        set: |r, s| {
+            r.bodies.counter_body = (!s.is_empty()).then(|| s.to_string());
+            Ok(())
+        },
+    },
+    num_col!(P, "counter_radius", bodies.counter_radius),
     num_col!(S, "curvature_a", space.curvature_a),
     num_col!(S, "curvature_b", space.curvature_b),
     num_col!(B, "contact_modulus", contact_modulus),
@@ -716,6 +743,11 @@ static COLUMNS: &[Column] = &[
     num_col!(P, "carter_c_over_a_exact", metrics.carter_c_over_a_exact),
     num_col!(P, "carter_c_err_elements", metrics.carter_c_err_elements),
     num_col!(P, "carter_shear_rms", metrics.carter_shear_rms),
+    num_col!(P, "contact_half_angle", bodies.contact_half_angle),
+    num_col!(P, "pin_bore_half_angle", bodies.pin_bore_half_angle),
+    num_col!(P, "pin_bore_p0", bodies.pin_bore_p0),
+    num_col!(P, "pin_bore_half_angle_err", bodies.pin_bore_half_angle_err),
+    num_col!(P, "pin_bore_p0_err", bodies.pin_bore_p0_err),
     Column {
         name: "message",
         kinds: Kinds::B,

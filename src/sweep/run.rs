@@ -63,7 +63,11 @@ fn run_row(case: &Case<AnyScene>, scene: &Scene, contact_nodes: usize, r: &Solve
     row.radius = Some(scene.radius());
     row.contact_modulus = Some(scene.contact_modulus());
     row.friction = Some(scene.friction());
-    let hertz = r.resultants.filter(|f| f.normal > 0.0).map(|f| crate::references::hertz_at(scene, f.normal));
+    // A bore at zero clearance has no Hertzian R* (infinite): no Hertz figures.
+    let hertz = r
+        .resultants
+        .filter(|f| f.normal > 0.0 && scene.contact_radius().is_finite())
+        .map(|f| crate::references::hertz_at(scene, f.normal));
     row.hertz_a = hertz.map(|h| h.a);
     row.hertz_p0 = hertz.map(|h| h.p0);
     row.shift = r.rigid_body.and_then(|b| b.tangential);
@@ -72,6 +76,7 @@ fn run_row(case: &Case<AnyScene>, scene: &Scene, contact_nodes: usize, r: &Solve
     row.stick_left = edges.map(|e| e.0);
     row.stick_right = edges.map(|e| e.1);
     row.creepage = r.rolling.as_ref().and_then(|x| x.creepage);
+    row.bodies = super::two_body::figures(scene, r);
     set_timing(&mut row, &r.timing_s, None);
     // One line per row (the journal's rule): a line break in a message is written as a space.
     row.message = r.explanation().replace(['\n', '\r'], " ");

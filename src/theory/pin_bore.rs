@@ -67,7 +67,8 @@ impl PinBore {
         // Collocation points: zeros of T_{n+1}, without the middle one (s = 0, where the odd equation is 0 = 0).
         let s: Vec<f64> =
             (1..=n + 1).filter(|&j| 2 * j != n + 2).map(|j| ((2 * j - 1) as f64 * PI / (2.0 * np1)).cos()).collect();
-        let lam = |x: f64| log_matrix_row(x, &sigma, &weight);
+        let u_table: Vec<Vec<f64>> = (0..n).map(|m| sigma.iter().map(|&x| cheb_u(m, x)).collect()).collect();
+        let lam = |x: f64| log_matrix_row(x, &weight, &u_table);
         let mut a = DMatrix::<f64>::zeros(n, n);
         let mut rhs = DVector::<f64>::zeros(n);
         for (row, &sj) in s.iter().enumerate() {
@@ -99,7 +100,7 @@ impl PinBore {
         let peak: f64 = (0..n)
             .step_by(2)
             .map(|m| {
-                let c: f64 = (0..n).map(|k| 2.0 / PI * weight[k] * u[k] * cheb_u(m, sigma[k])).sum();
+                let c: f64 = (0..n).map(|k| 2.0 / PI * weight[k] * u[k] * u_table[m][k]).sum();
                 c * if (m / 2) % 2 == 0 { 1.0 } else { -1.0 }
             })
             .sum();
@@ -117,9 +118,18 @@ impl PinBore {
     }
 
     /// The half-angle at a load P (per unit thickness) with clearance ΔR > 0, pin radius R irrelevant
-    /// (P/(E*ΔR) fixes b), by bisection on b ∈ (0, π/2); `None` if the load opens it beyond π/2.
+    /// (P/(E*ΔR) fixes b), by bisection on b ∈ (10⁻⁴, π/2) of J − (P/(E*ΔR))(1 − k), which is finite everywhere
+    /// (P/(E*ΔR) = J/(1 − k) itself grows without bound as b tends to the zero-clearance angle b₀, where 1 − k
+    /// vanishes, and changes sign beyond it: every load has its b below b₀). `None` for a load that is not finite
+    /// and positive, or below the one at b = 10⁻⁴.
     pub fn at_load(load_over_estar_clearance: f64, n: usize) -> Option<PinBore> {
-        let f = |b: f64| PinBore::at_half_angle(b, n).load_over_estar_clearance() - load_over_estar_clearance;
+        if !(load_over_estar_clearance > 0.0 && load_over_estar_clearance.is_finite()) {
+            return None;
+        }
+        let f = |b: f64| {
+            let s = PinBore::at_half_angle(b, n);
+            s.j - load_over_estar_clearance * (1.0 - s.k)
+        };
         bisect(f, 1e-4, 0.5 * PI).map(|b| PinBore::at_half_angle(b, n))
     }
 
@@ -135,7 +145,7 @@ fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> Option<f64> {
     if flo * fhi > 0.0 || !(flo.is_finite() && fhi.is_finite()) {
         return None;
     }
-    for _ in 0..80 {
+    while hi - lo > 1e-13 * hi {
         let mid = 0.5 * (lo + hi);
         let fm = f(mid);
         if fm * flo > 0.0 {
@@ -178,13 +188,14 @@ fn cheb_t(m: usize, x: f64) -> f64 {
 
 /// The row λ_k(x) with ∫ √(1−σ²) v(σ) ln|x − σ| dσ = Σ_k λ_k v(σ_k) for v interpolated in U_0..U_{n−1} at the
 /// nodes: √(1−t²) U_m = (T_m − T_{m+2})/(2√(1−t²)) and ∫ ln|x−t| T_m/√(1−t²) dt = −π T_m(x)/m (−π ln 2 for m = 0).
-fn log_matrix_row(x: f64, sigma: &[f64], weight: &[f64]) -> Vec<f64> {
-    let n = sigma.len();
+/// `u_table[m][k]` = U_m(σ_k).
+fn log_matrix_row(x: f64, weight: &[f64], u_table: &[Vec<f64>]) -> Vec<f64> {
+    let n = weight.len();
     let l = |m: usize| if m == 0 { -PI * 2f64.ln() } else { -PI * cheb_t(m, x) / m as f64 };
     let lm: Vec<f64> = (0..n).map(|m| 0.5 * (l(m) - l(m + 2))).collect();
     (0..n)
         .map(|k| {
-            let s: f64 = (0..n).map(|m| cheb_u(m, sigma[k]) * lm[m]).sum();
+            let s: f64 = (0..n).map(|m| u_table[m][k] * lm[m]).sum();
             2.0 / PI * weight[k] * s
         })
         .collect()
@@ -205,6 +216,19 @@ mod tests {
             let peak = 2.0 / (PI * b);
             assert!((s.peak_times_radius_over_load() / peak - 1.0).abs() < 2.0 * b * b + 1e-6, "{s:?}");
         }
+    }
+
+    #[test]
+    fn a_load_gives_back_its_half_angle() {
+        // Expected: at_load inverts load_over_estar_clearance (a round trip, 1e-9 in b) from Hertzian to near the
+        // zero-clearance angle, where the load grows without bound (the old bisection on J/(1 − k) − P over
+        // (0, π/2) found no sign change and returned None at every load).
+        for b in [0.05_f64, 0.5, 1.0, 1.4] {
+            let load = PinBore::at_half_angle(b, 64).load_over_estar_clearance();
+            let s = PinBore::at_load(load, 64).expect("a half-angle");
+            assert!((s.half_angle - b).abs() < 1e-9, "b {b}: {s:?}");
+        }
+        assert!(PinBore::at_load(-1.0, 64).is_none() && PinBore::at_load(f64::NAN, 64).is_none());
     }
 
     #[test]
