@@ -1,6 +1,6 @@
 //! The two-body side of a 2D sweep row (issue 34): the columns a twin disc or a pin in a bore
 //! ([`crate::source::two_body`]) needs beside the one-wheel ones, filled by the case runner for every 2D run
-//! ([`figures`]).
+//! (its `figures`).
 //!
 //! - `peak_pressure`: the largest nodal pressure (every 2D row; for a bore the pressure on the load's line, where the
 //!   ellipse fit `peak_pressure_fit` of a conformal contact is no Hertzian ellipse).
