@@ -17,35 +17,9 @@ use rollbem::veldep::{
 /// 92 elements of 0.1 from XC1 = −4.6 on a strip DY = 200, FN = 622 216 (3111.08 per unit width), CKSI =
 /// −0.0009999, CHI = 0 (direction +1).
 fn scene() -> Scene {
-    let text = r#"
-name = "veldep-fric"
-[wheel]
-radius = 460
-youngs_modulus = 209920
-poisson_ratio = 0.28
-model = "half_plane"
-profile = "circle"
-[counter_body]
-kind = "half_plane"
-youngs_modulus = 209920
-poisson_ratio = 0.28
-[mesh]
-element = "constant"
-contact_x = [-4.65, 4.55]
-contact_elements = 92
-strip_width = 200
-[contact]
-friction = 0.3
-[drive]
-normal_load = 3111.08
-[rolling]
-mode = "steady"
-creepage = -0.0009999
-direction = 1
-[solvers]
-use = ["active_set"]
-"#;
-    Scene::from_toml(text, std::path::Path::new("veldep.toml")).unwrap()
+    // The same scene the report's falling-friction section runs.
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/reference/veldep/veldep-fric.toml");
+    Scene::from_file(std::path::Path::new(path)).unwrap()
 }
 
 /// D·K_TT, the normal nodal forces of the Coulomb run (the normal problem does not depend on the tangential one:

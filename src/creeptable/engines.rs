@@ -36,6 +36,18 @@ impl Fastsim {
     }
 }
 
+/// A FASTSIM or FaStrip solution as a table's answer: gross sliding when every element in contact slips.
+fn result_of(s: &fastsim::Solution) -> CreepResult {
+    let status = if s.n_contact > 0 && s.n_adhesion == 0 { CaseStatus::GrossSliding } else { CaseStatus::Solved };
+    CreepResult {
+        status,
+        forces: Some(Forces { fx: s.fx, fy: s.fy, mz: Some(s.mz) }),
+        residual: None,
+        contact_elements: Some(s.n_contact),
+        slip_elements: Some(s.n_slip),
+    }
+}
+
 /// The names of the variants in `[options]`.
 fn flexibility_name(f: Flexibility) -> &'static str {
     match f {
@@ -63,14 +75,7 @@ impl CreepEngine for Fastsim {
 
     fn forces(&self, case: &CreepCase) -> Result<CreepResult, ArgumentError> {
         let s = fastsim::solve(&case.contact(), &case.creepages, &self.options(case))?;
-        let status = if s.n_contact > 0 && s.n_adhesion == 0 { CaseStatus::GrossSliding } else { CaseStatus::Solved };
-        Ok(CreepResult {
-            status,
-            forces: Some(Forces { fx: s.fx, fy: s.fy, mz: Some(s.mz) }),
-            residual: None,
-            contact_elements: Some(s.n_contact),
-            slip_elements: Some(s.n_slip),
-        })
+        Ok(result_of(&s))
     }
 }
 
@@ -133,14 +138,7 @@ impl CreepEngine for Fastrip {
         let options =
             Options { bound: Bound::Elliptic, flexibility: self.flexibility, direction: Direction::PlusX, grid };
         let s = fastsim::fastrip(&case.contact(), &case.creepages, &options)?;
-        let status = if s.n_contact > 0 && s.n_adhesion == 0 { CaseStatus::GrossSliding } else { CaseStatus::Solved };
-        Ok(CreepResult {
-            status,
-            forces: Some(Forces { fx: s.fx, fy: s.fy, mz: Some(s.mz) }),
-            residual: None,
-            contact_elements: Some(s.n_contact),
-            slip_elements: Some(s.n_slip),
-        })
+        Ok(result_of(&s))
     }
 }
 
