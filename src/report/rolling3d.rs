@@ -284,14 +284,27 @@ impl Eurosprinter {
 
     /// The exact pressures on CONTACT's grid layout, MX × MY over 1.1 times the ellipse.
     fn exact_setup(&self, mx: usize, my: usize) -> Result<(Influence, Vec<f64>)> {
-        let (dx, dy) = (2.2 * self.a / mx as f64, 2.2 * self.b / my as f64);
-        let grid = ContactGrid::new(mx, my, dx, dy, -1.1 * self.a + 0.5 * dx, -1.1 * self.b + 0.5 * dy)?;
-        let body = HalfSpace::new(2.0 * G * (1.0 + NU), NU)?;
-        let inf = Influence::new(grid, body.pair(&body), Kernels::Full)?;
-        let h = grid.sample(|x, y| self.curv.0 * x * x + self.curv.1 * y * y);
-        let n = normal::solve(&inf, &h, Drive::Load(FN), &NormalSettings::new(1e-10, 10_000), &Cancel::never())?;
-        Ok((inf, n.pressure))
+        pressure_on_grid((self.a, self.b), self.curv, FN, mx, my)
     }
+}
+
+/// Steel on steel (G, ν) on CONTACT's grid layout, MX × MY elements over 1.1 times the ellipse of semi-axes `ab`:
+/// the influence operator and the pressure of the profile `A x² + B y²` (`curv`) under the normal force `load`.
+fn pressure_on_grid(
+    ab: (f64, f64),
+    curv: (f64, f64),
+    load: f64,
+    mx: usize,
+    my: usize,
+) -> Result<(Influence, Vec<f64>)> {
+    let (a, b) = ab;
+    let (dx, dy) = (2.2 * a / mx as f64, 2.2 * b / my as f64);
+    let grid = ContactGrid::new(mx, my, dx, dy, -1.1 * a + 0.5 * dx, -1.1 * b + 0.5 * dy)?;
+    let body = HalfSpace::new(2.0 * G * (1.0 + NU), NU)?;
+    let inf = Influence::new(grid, body.pair(&body), Kernels::Full)?;
+    let h = grid.sample(|x, y| curv.0 * x * x + curv.1 * y * y);
+    let n = normal::solve(&inf, &h, Drive::Load(load), &NormalSettings::new(1e-10, 10_000), &Cancel::never())?;
+    Ok((inf, n.pressure))
 }
 
 /// One creep curve: `F_x/(μF_n)` per creepage and the seconds per case.
@@ -453,22 +466,16 @@ fn spin_exact(n: usize, cr: &Creepages) -> Result<SpinRow> {
     let (a, b) = (SPIN_A, SPIN_B);
     let e_star = G / (1.0 - NU);
     let bad = || ArgumentError::new("report::rolling3d", "hertz", "no Hertz contact");
-    let (ca, cb) = Hertz3D::curvatures_for(a, b, e_star, SPIN_FN).ok_or_else(bad)?;
-    let (dx, dy) = (2.2 * a / n as f64, 2.2 * b / n as f64);
-    let grid = ContactGrid::new(n, n, dx, dy, -1.1 * a + 0.5 * dx, -1.1 * b + 0.5 * dy)?;
-    let body = HalfSpace::new(2.0 * G * (1.0 + NU), NU)?;
-    let inf = Influence::new(grid, body.pair(&body), Kernels::Full)?;
-    let h = grid.sample(|x, y| ca * x * x + cb * y * y);
-    let p = normal::solve(&inf, &h, Drive::Load(SPIN_FN), &NormalSettings::new(1e-10, 10_000), &Cancel::never())?;
+    let curv = Hertz3D::curvatures_for(a, b, e_star, SPIN_FN).ok_or_else(bad)?;
+    let (inf, pressure) = pressure_on_grid((a, b), curv, SPIN_FN, n, n)?;
     let t0 = Instant::now();
-    let problem = SteadyRolling::new(&p.pressure, SPIN_MU, cr.phi, RollingDrive::Creepage(cr.xi, cr.eta));
+    let problem = SteadyRolling::new(&pressure, SPIN_MU, cr.phi, RollingDrive::Creepage(cr.xi, cr.eta));
     let r = rolling::solve(&inf, &problem, &RollingSettings::new(1e-10, 100_000), &Cancel::never())?;
     let seconds = t0.elapsed().as_secs_f64();
     if r.stop != RollingStop::Converged {
         return Err(ArgumentError::new("report::rolling3d", "exact", format!("{n} × {n}: {:?}", r.stop)).into());
     }
-    let ratio = p
-        .pressure
+    let ratio = pressure
         .iter()
         .enumerate()
         .filter(|(_, &pn)| pn > 0.0)
